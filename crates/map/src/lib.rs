@@ -1,0 +1,24 @@
+//! # dualex-map — the input map model
+//!
+//! Step 1 of the pipeline: a triangle mesh with a 2D map or a tet mesh with
+//! a 3D map, its adjacency, the transitions between the charts of adjacent
+//! simplices, singularities and reverted simplices.
+//!
+//! - [`rotation`]: the grid rotation groups (4 in 2D, 24 in 3D);
+//! - [`mesh`]: [`TriMap`] / [`TetMap`], the raw input;
+//! - [`topology`]: facet adjacency, boundary, manifoldness, orientation;
+//! - [`transition`]: per-facet rotation and integer translation;
+//! - [`singularity`]: singular vertices (2D) and edges (3D), their indices;
+//! - [`weld`]: welding of cut meshes (vertices duplicated along seams).
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod cells;
+pub mod error;
+pub mod mesh;
+pub mod rotation;
+
+pub use cells::{CellMesh, HexMesh, QuadMesh};
+pub use error::InputError;
+pub use mesh::{SimplexMap, TetMap, TriMap};
+pub use rotation::{Rot, Rot2, Rot3};

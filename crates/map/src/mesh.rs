@@ -1,0 +1,127 @@
+//! The input model: a simplicial mesh (triangles in 3-space or tetrahedra)
+//! with map coordinates per simplex corner.
+//!
+//! `N` is the number of corners of a simplex and `D` the map dimension
+//! (`N = D + 1`; stable Rust cannot express that, so both are parameters and
+//! only [`TriMap`] and [`TetMap`] are used).
+//!
+//! Numbering, shared by every crate:
+//! ```text
+//!   corner c of simplex s: simplices[s][c] (vertex), coords[s][c] (map value)
+//!   facet f of simplex s:  the facet opposite corner f
+//!        triangle: edge f = (c[f+1], c[f+2])      tet: face f = the other 3
+//! ```
+//! Invariants checked by [`SimplexMap::validate`]: indices in range, no
+//! repeated vertex in a simplex, every position and map coordinate finite.
+
+use crate::error::InputError;
+
+/// A simplicial mesh with per-corner map coordinates.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SimplexMap<const N: usize, const D: usize> {
+    /// Vertex positions in 3-space.
+    pub positions: Vec<[f64; 3]>,
+    /// Vertex indices of each simplex (consistently oriented).
+    pub simplices: Vec<[u32; N]>,
+    /// Map coordinates of each corner of each simplex, in that simplex's chart.
+    pub coords: Vec<[[f64; D]; N]>,
+}
+
+/// A triangle mesh with a 2D map (`u, v` per corner).
+pub type TriMap = SimplexMap<3, 2>;
+/// A tetrahedral mesh with a 3D map (`u, v, w` per corner).
+pub type TetMap = SimplexMap<4, 3>;
+
+/// Word for a simplex of `N` corners, for messages.
+pub fn simplex_word(n: usize) -> &'static str {
+    if n == 3 {
+        "triangle"
+    } else {
+        "tet"
+    }
+}
+
+impl<const N: usize, const D: usize> SimplexMap<N, D> {
+    /// Number of simplices.
+    pub fn len(&self) -> usize {
+        self.simplices.len()
+    }
+
+    /// Whether there is no simplex.
+    pub fn is_empty(&self) -> bool {
+        self.simplices.is_empty()
+    }
+
+    /// Checks the invariants of the module docs; the error names the element.
+    pub fn validate(&self) -> Result<(), InputError> {
+        let w = simplex_word(N);
+        if self.coords.len() != self.simplices.len() {
+            return Err(InputError::new(format!(
+                "{} {w}s but {} sets of map coordinates",
+                self.simplices.len(),
+                self.coords.len()
+            )));
+        }
+        if self.simplices.is_empty() {
+            return Err(InputError::new(format!("no {w}s")));
+        }
+        for (i, p) in self.positions.iter().enumerate() {
+            if p.iter().any(|x| !x.is_finite()) {
+                return Err(InputError::new(format!(
+                    "vertex {i}: position is not finite ({} {} {})",
+                    p[0], p[1], p[2]
+                )));
+            }
+        }
+        let nv = self.positions.len();
+        for (s, simplex) in self.simplices.iter().enumerate() {
+            for (c, &v) in simplex.iter().enumerate() {
+                if v as usize >= nv {
+                    return Err(InputError::new(format!(
+                        "{w} {s}: corner {c} refers to vertex {v}, but there are {nv} vertices"
+                    )));
+                }
+                if simplex[..c].contains(&v) {
+                    return Err(InputError::new(format!(
+                        "{w} {s}: vertex {v} appears twice"
+                    )));
+                }
+                if self.coords[s][c].iter().any(|x| !x.is_finite()) {
+                    return Err(InputError::new(format!(
+                        "{w} {s}: corner {c} has a non-finite map coordinate"
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Vertex indices of facet `f` of simplex `s` (the corners other than `f`,
+    /// in cyclic order starting after `f`).
+    pub fn facet_corners(f: usize) -> [usize; N]
+    where
+        [usize; N]: Sized,
+    {
+        std::array::from_fn(|i| (f + 1 + i) % N)
+    }
+
+    /// Signed volume of the map image of simplex `s` (area in 2D, 6× volume
+    /// in 3D up to a positive factor): `< 0` means reverted.
+    pub fn map_det(&self, s: usize) -> f64 {
+        det_of::<N, D>(&self.coords[s])
+    }
+}
+
+/// Determinant of the edge vectors `p1-p0, …, pD-p0` of a simplex image.
+pub fn det_of<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> f64 {
+    let e = |i: usize, k: usize| p[i][k] - p[0][k];
+    match D {
+        2 => e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0),
+        3 => {
+            e(1, 0) * (e(2, 1) * e(3, 2) - e(2, 2) * e(3, 1))
+                - e(1, 1) * (e(2, 0) * e(3, 2) - e(2, 2) * e(3, 0))
+                + e(1, 2) * (e(2, 0) * e(3, 1) - e(2, 1) * e(3, 0))
+        }
+        _ => f64::NAN,
+    }
+}
