@@ -8,6 +8,7 @@
 //! - [`mesh`]: [`TriMap`] / [`TetMap`], the raw input;
 //! - [`topology`]: facet adjacency, boundary, manifoldness, orientation;
 //! - [`transition`]: per-facet rotation and integer translation;
+//! - [`star`]: vertex stars with rotations; singular vertices;
 //! - [`singularity`]: singular vertices (2D) and edges (3D), their indices;
 //! - [`weld`]: welding of cut meshes (vertices duplicated along seams).
 #![forbid(unsafe_code)]
@@ -17,8 +18,17 @@ pub mod cells;
 pub mod error;
 pub mod mesh;
 pub mod rotation;
+pub mod star;
+mod star_build;
+pub mod topology;
+mod topology_build;
+pub mod transition;
+mod transition_derive;
 
 pub use cells::{CellMesh, HexMesh, QuadMesh};
 pub use error::InputError;
 pub use mesh::{SimplexMap, TetMap, TriMap};
 pub use rotation::{Rot, Rot2, Rot3};
+pub use star::{StarEntry, Stars};
+pub use topology::{Topology, NONE};
+pub use transition::{TransitionOptions, TransitionReport, Transitions};

@@ -1,0 +1,81 @@
+//! Transitions between the charts of adjacent simplices.
+//!
+//! Across facet `f` of simplex `s` with neighbour `n`:
+//! `chart(n) = rot[s][f] · chart(s) + trans[s][f]` (a point given in `s`'s
+//! chart, re-expressed in `n`'s chart). The rotation is the one that best
+//! matches the facet's edge vectors; the translation is rounded to the
+//! nearest integer and the rounding error is the **residual**.
+//!
+//! Zero-length map facets (collapsed in both charts) do not determine the
+//! rotation: it is chosen so that the translation is integral, then, where
+//! still ambiguous, to minimise the number of singular endpoints (DESIGN §2b).
+//!
+//! Invariants: `rot[n][g] == rot[s][f].inverse()` and
+//! `trans[n][g] == -(rot[n][g] · trans[s][f])` for each interior facet pair.
+
+use crate::{topology::Topology, InputError, Rot, SimplexMap};
+
+/// Options of transition derivation.
+#[derive(Clone, Copy, Debug)]
+pub struct TransitionOptions {
+    /// Largest accepted residual of the translations, relative to the local
+    /// coordinate magnitude's float spacing floor; see [`TransitionOptions::tolerance_at`].
+    pub tolerance: f64,
+    /// Snap non-integer translations instead of failing (`--round-transitions`).
+    pub round: bool,
+}
+
+impl Default for TransitionOptions {
+    fn default() -> Self {
+        TransitionOptions {
+            tolerance: 1e-3,
+            round: false,
+        }
+    }
+}
+
+/// Per-facet transitions (boundary facets hold the identity and zero).
+#[derive(Clone, Debug, Default)]
+pub struct Transitions<const N: usize, const D: usize> {
+    /// Rotation across each facet.
+    pub rot: Vec<[Rot<D>; N]>,
+    /// Integer translation across each facet.
+    pub trans: Vec<[[i64; D]; N]>,
+}
+
+/// What the derivation measured.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TransitionReport {
+    /// Largest residual of a translation from its nearest integer vector.
+    pub max_residual: f64,
+    /// Simplex and facet of the largest residual.
+    pub worst_facet: Option<(usize, usize)>,
+    /// Interior facet pairs whose translation was snapped (with `round`).
+    pub snapped: usize,
+    /// Zero-length facets whose rotation was ambiguous.
+    pub ambiguous_facets: usize,
+    /// Interior facet pairs with a non-identity rotation.
+    pub non_identity: usize,
+}
+
+impl<const N: usize, const D: usize> Transitions<N, D> {
+    /// Derives the transitions; fails when a residual exceeds the tolerance
+    /// (unless `round`), naming the worst facet and its residual.
+    pub fn derive(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        opts: &TransitionOptions,
+    ) -> Result<(Self, TransitionReport), InputError> {
+        crate::transition_derive::derive(map, topo, opts)
+    }
+
+    /// Maps a point of `s`'s chart into the chart of the neighbour across `f`.
+    #[inline]
+    pub fn apply(&self, s: usize, f: usize, p: &[f64; D]) -> [f64; D] {
+        let mut q = self.rot[s][f].apply(p);
+        for (k, qk) in q.iter_mut().enumerate() {
+            *qk += self.trans[s][f][k] as f64;
+        }
+        q
+    }
+}
