@@ -1,3 +1,23 @@
-//! Independent validity checkers for quad and hex meshes
+//! # dualex-check — independent validity checkers for quad and hex meshes
+//!
+//! Input: plain slices (vertex count, cells as vertex indices); no dependency
+//! on the other dualex crates, so a bug there cannot hide here.
+//! Output: a report of counts (faces, edges, boundary, components, Euler
+//! characteristic, valences) and of defects (degenerate cells, non-manifold
+//! edges/faces/vertices, inconsistent orientation), with `is_valid()` and
+//! `errors()`.
+//!
+//! - [`quad`]: [`check_quad_mesh`] → [`QuadReport`];
+//! - [`hex`]: [`check_hex_mesh`] → [`HexReport`] (its boundary surface is
+//!   checked as a quad mesh).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+
+pub mod hex;
+pub mod quad;
+#[cfg(test)]
+mod test_meshes;
+mod union_find;
+
+pub use hex::{check_hex_mesh, HexReport};
+pub use quad::{check_quad_mesh, QuadReport};

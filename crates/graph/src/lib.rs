@@ -1,3 +1,43 @@
-//! The dimension-generic node graph: opposite relation, untangling (OP1/OP2), gluing
+//! # dualex-graph — the dimension-generic node graph
+//!
+//! Step 4–6 of the pipeline, shared by quad (D = 2) and hex (D = 3)
+//! extraction (DESIGN §3.4, §4): nodes (future quads/hexes) with 2·D sides,
+//! the opposite relation with a chart rotation per glued pair, and the
+//! operations that act on it, topology only.
+//!
+//! - [`ids`]: [`Node`], [`Side`] (`side = node·2D + dir`);
+//! - [`graph`]: [`NodeGraph`], storage, `link`/`unlink`, queries;
+//! - [`check`]: invariants ([`GraphError`]), label-rule violations;
+//! - [`ops`]: OP2, OP1, pleat removal ([`OpError`] = not applicable);
+//! - [`untangle`]: the pleat worklist ([`UntangleStats`]);
+//! - [`glue`]: union–find over corners into cells ([`Glued`]), boundary
+//!   and components counted on the graph;
+//! - [`fan`]: vertex fans (2D), read from the graph;
+//! - [`fair`]: index fairing by saddle lifts (2D, [`FairingStats`]);
+//! - [`testgrid`]: regular, folded and singular-disk graphs for tests.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+
+pub mod check;
+pub mod collapse;
+pub mod fair;
+pub mod fan;
+pub mod glue;
+pub mod graph;
+pub mod ids;
+pub mod ops;
+mod rng;
+pub mod testgrid;
+mod uf;
+pub mod untangle;
+
+#[cfg(test)]
+mod tests;
+
+pub use check::GraphError;
+pub use fair::{FairingStats, LiftUndo};
+pub use glue::{Glued, NO_VERTEX};
+pub use graph::NodeGraph;
+pub use ids::{Node, Side};
+pub use ops::{Op2Outcome, OpError, PleatRemoval};
+pub use untangle::UntangleStats;

@@ -1,3 +1,158 @@
-//! Readers and writers: OBJ, PLY, .hexex in; OBJ, PLY, VTK, MEDIT out
+//! # dualex-io — readers and writers
+//!
+//! The first and last steps of the pipeline: read a map, write a mesh.
+//!
+//! | data | read | write |
+//! |---|---|---|
+//! | triangle map ([`TriMap`]) | `.obj` (`f v/vt`), `.ply` (face `texcoord`) | `.obj`, `.ply` (binary LE) |
+//! | tet map ([`TetMap`]) | `.hexex` | `.hexex` |
+//! | polygon mesh ([`PolyMesh`]) | `.obj`, `.ply` | — |
+//! | quad mesh ([`QuadMesh`]) | (as a polygon mesh) | `.obj`, `.ply` (binary LE), `.vtk` |
+//! | hex mesh ([`HexMesh`]) | — | `.mesh` (MEDIT), `.vtk` |
+//!
+//! Readers: `parse_*` take bytes (for fuzzers and embedded data), `read_*`
+//! take a path, choose the format by extension and attach the file name to
+//! the [`InputError`]. Every error is one line naming the line / record;
+//! no count read from a file is trusted before it is checked against the
+//! bytes left. Map readers end with [`dualex_map::SimplexMap::validate`].
+//!
+//! Writers: by extension; the data is checked first, then written to a
+//! temporary file renamed over the target ([`output`]), so a failure never
+//! leaves a half-written file. Errors are [`OutputError`]s. The `write_*`
+//! modules also write to any `std::io::Write`.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+
+mod hexex;
+mod obj;
+mod ply;
+mod ply_header;
+mod ply_out;
+mod scan;
+
+pub mod output;
+pub mod write_cells;
+pub mod write_map;
+
+#[cfg(test)]
+mod data_tests;
+#[cfg(test)]
+mod fuzz_tests;
+#[cfg(test)]
+mod roundtrip_tests;
+
+pub use hexex::parse_hexex;
+pub use obj::{parse_obj, parse_polygon_obj};
+pub use output::{write_text, OutputError, OutputErrorKind};
+pub use ply::{parse_ply, parse_polygon_ply};
+pub use ply_header::PlyFormat;
+
+use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
+use output::{extension, write_atomic};
+use std::path::Path;
+
+/// A polygon mesh (e.g. a reference quad mesh): positions and faces of 3 or
+/// more vertex indices (0-based, in range).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PolyMesh {
+    /// Vertex positions.
+    pub positions: Vec<[f64; 3]>,
+    /// Faces as vertex indices, in file order.
+    pub faces: Vec<Vec<u32>>,
+}
+
+/// Reads the whole file; the error names it.
+fn read_bytes(path: &Path) -> Result<Vec<u8>, InputError> {
+    std::fs::read(path).map_err(|e| {
+        InputError::new(format!("cannot read: {e}")).in_file(path.display().to_string())
+    })
+}
+
+/// The lower-case extension if it is one of `allowed`, else an error naming them.
+fn input_extension(path: &Path, allowed: &[&str]) -> Result<String, InputError> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    if allowed.contains(&ext.as_str()) {
+        return Ok(ext);
+    }
+    let list: Vec<String> = allowed.iter().map(|e| format!(".{e}")).collect();
+    Err(InputError::new(format!(
+        "unsupported input format `.{ext}`; use {}",
+        list.join(", ")
+    ))
+    .in_file(path.display().to_string()))
+}
+
+/// Reads a triangle map from `.obj` or `.ply`.
+pub fn read_tri_map(path: &Path) -> Result<TriMap, InputError> {
+    let parse = match input_extension(path, &["obj", "ply"])?.as_str() {
+        "obj" => parse_obj,
+        _ => parse_ply,
+    };
+    parse(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+}
+
+/// Reads a tet map from `.hexex`.
+pub fn read_tet_map(path: &Path) -> Result<TetMap, InputError> {
+    input_extension(path, &["hexex"])?;
+    parse_hexex(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+}
+
+/// Reads a polygon mesh from `.obj`.
+pub fn read_polygon_obj(path: &Path) -> Result<PolyMesh, InputError> {
+    parse_polygon_obj(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+}
+
+/// Reads a polygon mesh from `.obj` or `.ply`.
+pub fn read_polygon_mesh(path: &Path) -> Result<PolyMesh, InputError> {
+    let parse = match input_extension(path, &["obj", "ply"])?.as_str() {
+        "obj" => parse_polygon_obj,
+        _ => parse_polygon_ply,
+    };
+    parse(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+}
+
+fn invalid(path: &Path, message: String) -> OutputError {
+    OutputError::new(path, OutputErrorKind::InvalidData(message))
+}
+
+/// Writes a quad mesh as `.obj`, `.ply` (binary little endian) or `.vtk`.
+pub fn write_quad_mesh(path: &Path, mesh: &QuadMesh) -> Result<(), OutputError> {
+    let ext = extension(path, &["obj", "ply", "vtk"])?;
+    write_cells::check_cells(mesh).map_err(|m| invalid(path, m))?;
+    write_atomic(path, |w| match ext.as_str() {
+        "obj" => write_cells::quad_obj(w, mesh),
+        "ply" => write_cells::quad_ply(w, mesh, PlyFormat::BinaryLittleEndian),
+        _ => write_cells::quad_vtk(w, mesh),
+    })
+}
+
+/// Writes a hex mesh as `.mesh` (MEDIT) or `.vtk`.
+pub fn write_hex_mesh(path: &Path, mesh: &HexMesh) -> Result<(), OutputError> {
+    let ext = extension(path, &["mesh", "vtk"])?;
+    write_cells::check_cells(mesh).map_err(|m| invalid(path, m))?;
+    write_atomic(path, |w| match ext.as_str() {
+        "mesh" => write_cells::hex_medit(w, mesh),
+        _ => write_cells::hex_vtk(w, mesh),
+    })
+}
+
+/// Writes a triangle map as `.obj` or `.ply` (binary little endian).
+pub fn write_tri_map(path: &Path, map: &TriMap) -> Result<(), OutputError> {
+    let ext = extension(path, &["obj", "ply"])?;
+    map.validate().map_err(|e| invalid(path, e.to_string()))?;
+    write_atomic(path, |w| match ext.as_str() {
+        "obj" => write_map::tri_map_obj(w, map),
+        _ => write_map::tri_map_ply(w, map, PlyFormat::BinaryLittleEndian),
+    })
+}
+
+/// Writes a tet map as `.hexex`.
+pub fn write_tet_map(path: &Path, map: &TetMap) -> Result<(), OutputError> {
+    extension(path, &["hexex"])?;
+    map.validate().map_err(|e| invalid(path, e.to_string()))?;
+    write_atomic(path, |w| write_map::tet_map_hexex(w, map))
+}

@@ -9,25 +9,40 @@
 //! - [`topology`]: facet adjacency, boundary, manifoldness, orientation;
 //! - [`transition`]: per-facet rotation and integer translation;
 //! - [`star`]: vertex stars with rotations; singular vertices;
+//! - [`holonomy`]: rotation around a vertex (2D) or an edge (3D);
 //! - [`singularity`]: singular vertices (2D) and edges (3D), their indices;
-//! - [`weld`]: welding of cut meshes (vertices duplicated along seams).
+//! - [`weld`]: welding of cut meshes (vertices duplicated along seams);
+//! - [`report`]: `inspect`, all of the above in one report.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod cells;
+mod components;
 pub mod error;
+pub mod holonomy;
 pub mod mesh;
+pub mod report;
+// rotation.rs is owned elsewhere; its index loops read clearer than iterators
+#[allow(clippy::needless_range_loop)]
 pub mod rotation;
+pub mod singularity;
 pub mod star;
 mod star_build;
 pub mod topology;
 mod topology_build;
 pub mod transition;
 mod transition_derive;
+pub mod weld;
+
+#[cfg(test)]
+mod data_tests;
+#[cfg(test)]
+mod test_maps;
 
 pub use cells::{CellMesh, HexMesh, QuadMesh};
 pub use error::InputError;
 pub use mesh::{SimplexMap, TetMap, TriMap};
+pub use report::{inspect, InspectOptions, MapReport};
 pub use rotation::{Rot, Rot2, Rot3};
 pub use star::{StarEntry, Stars};
 pub use topology::{Topology, NONE};

@@ -125,3 +125,48 @@ pub fn det_of<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> f64 {
         _ => f64::NAN,
     }
 }
+
+impl TetMap {
+    /// Refuses a 3D map that is not a map of this volume: when tets whose map
+    /// is reverted (its orientation opposite to the geometry's) or degenerate
+    /// make up at least half of the mesh's geometric volume, the charts are
+    /// reflected or collapsed as a whole (e.g. HexEx's
+    /// `minimal_invalid_charts`), not folded locally, and no extraction can
+    /// make sense of them. Folds over less than half the volume are the
+    /// messy maps that extraction repairs.
+    pub fn check_not_reflected(&self) -> Result<(), InputError> {
+        let geo = |s: usize| {
+            let p: [[f64; 3]; 4] = self.simplices[s].map(|v| self.positions[v as usize]);
+            det_of::<4, 3>(&p)
+        };
+        let total: f64 = (0..self.len()).map(geo).sum();
+        let sign = if total < 0.0 { -1.0 } else { 1.0 };
+        let (mut bad, mut all, mut worst) = (0.0, 0.0, None);
+        // "degenerate": |det| below 1e-12 of the cube of the longest edge
+        let scale = |p: &[[f64; 3]; 4]| {
+            let mut l = 0.0f64;
+            for i in 0..4 {
+                for j in 0..i {
+                    l = l.max((0..3).map(|k| (p[i][k] - p[j][k]).powi(2)).sum::<f64>());
+                }
+            }
+            l.sqrt().powi(3) * 1e-12
+        };
+        for s in 0..self.len() {
+            let g = (geo(s) * sign).max(0.0);
+            all += g;
+            let m = self.map_det(s) * sign;
+            if m <= scale(&self.coords[s]) {
+                bad += g;
+                worst.get_or_insert(s);
+            }
+        }
+        match worst {
+            Some(s) if all > 0.0 && bad >= 0.5 * all => Err(InputError::new(format!(
+                "tet {s}: reverted or degenerate tets make up {:.0}% of the volume: the charts are reflected or collapsed, not a map of this volume",
+                100.0 * bad / all
+            ))),
+            _ => Ok(()),
+        }
+    }
+}

@@ -1,8 +1,312 @@
-//! Construction of [`crate::Topology`] (to be written).
-use crate::{InputError, SimplexMap, Topology};
+//! Construction of [`Topology`]: facet adjacency by sorting facet keys.
+//!
+//! Input: a validated [`SimplexMap`] (indices in range, no repeated vertex in
+//! a simplex). Output: [`Topology`] with `adj`, `adj_facet`, `nbr_corner`,
+//! `boundary_facets`, or the first [`InputError`] among, in this order:
+//! 1. a facet shared by more than two simplices (non-manifold facet);
+//! 2. two neighbours with opposite orientations across their facet;
+//! 3. a non-manifold vertex: the simplices around it are not connected
+//!    through the facets that contain it (2D: more than one fan).
+//!
+//! Key of a facet: its sorted vertex ids (the unused last slot holds
+//! `u32::MAX`), sorted together with the half-facet id `s·N + f`.
+
+use crate::mesh::simplex_word;
+use crate::topology::{Topology, NONE};
+use crate::{InputError, SimplexMap};
+
+/// Word for a facet of a simplex with `N` corners, for messages.
+pub(crate) fn facet_word(n: usize) -> &'static str {
+    if n == 3 {
+        "edge"
+    } else {
+        "face"
+    }
+}
+
+/// Sorted vertex ids of facet `f` of `simplex` (last slot `u32::MAX`).
+pub(crate) fn facet_key<const N: usize>(simplex: &[u32; N], f: usize) -> [u32; N] {
+    let mut key = [u32::MAX; N];
+    for i in 0..N - 1 {
+        key[i] = simplex[(f + 1 + i) % N];
+    }
+    key[..N - 1].sort_unstable();
+    key
+}
+
+/// All half-facets `(key, s·N + f)` sorted by key.
+pub(crate) fn sorted_facets<const N: usize>(simplices: &[[u32; N]]) -> Vec<([u32; N], u32)> {
+    let mut keys: Vec<([u32; N], u32)> = Vec::with_capacity(simplices.len() * N);
+    for (s, simplex) in simplices.iter().enumerate() {
+        for f in 0..N {
+            keys.push((facet_key(simplex, f), (s * N + f) as u32));
+        }
+    }
+    keys.sort_unstable();
+    keys
+}
+
+fn key_text<const N: usize>(key: &[u32; N]) -> String {
+    let parts: Vec<String> = key[..N - 1].iter().map(|v| v.to_string()).collect();
+    parts.join("-")
+}
 
 pub(crate) fn build<const N: usize, const D: usize>(
-    _map: &SimplexMap<N, D>,
+    map: &SimplexMap<N, D>,
 ) -> Result<Topology<N>, InputError> {
-    Err(InputError::new("topology: not implemented yet"))
+    let ns = map.simplices.len();
+    let mut topo = Topology {
+        adj: vec![[NONE; N]; ns],
+        adj_facet: vec![[0u8; N]; ns],
+        nbr_corner: vec![[[0u8; N]; N]; ns],
+        boundary_facets: 0,
+    };
+    let keys = sorted_facets(&map.simplices);
+    let mut i = 0;
+    while i < keys.len() {
+        let mut j = i + 1;
+        while j < keys.len() && keys[j].0 == keys[i].0 {
+            j += 1;
+        }
+        match j - i {
+            1 => topo.boundary_facets += 1,
+            2 => glue(map, &mut topo, keys[i].1 as usize, keys[i + 1].1 as usize)?,
+            n => {
+                let mut owners: Vec<usize> = keys[i..j].iter().map(|k| k.1 as usize / N).collect();
+                owners.sort_unstable();
+                let list: Vec<String> = owners.iter().map(|s| s.to_string()).collect();
+                return Err(InputError::new(format!(
+                    "{} {} is shared by {n} {}s ({}): non-manifold",
+                    facet_word(N),
+                    key_text(&keys[i].0),
+                    simplex_word(N),
+                    list.join(", ")
+                )));
+            }
+        }
+        i = j;
+    }
+    check_vertices(map, &topo)?;
+    Ok(topo)
+}
+
+/// Links half-facets `h1 = s·N + f` and `h2 = n·N + g` (same key); checks
+/// that the two simplices are consistently oriented.
+fn glue<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &mut Topology<N>,
+    h1: usize,
+    h2: usize,
+) -> Result<(), InputError> {
+    let (s, f) = (h1 / N, h1 % N);
+    let (n, g) = (h2 / N, h2 % N);
+    let (vs, vn) = (&map.simplices[s], &map.simplices[n]);
+    let mut corner_sn = [0u8; N];
+    let mut corner_ns = [0u8; N];
+    corner_sn[f] = g as u8;
+    corner_ns[g] = f as u8;
+    for c in (0..N).filter(|&c| c != f) {
+        let Some(cn) = vn.iter().position(|&v| v == vs[c]) else {
+            panic!(
+                "bug: facet key matched but vertex {} is not in simplex {n}",
+                vs[c]
+            );
+        };
+        corner_sn[c] = cn as u8;
+        corner_ns[cn] = c as u8;
+    }
+    // consistent orientation <=> putting s's apex in place of n's apex gives
+    // an odd permutation of s's corners (the two lie on opposite sides)
+    if permutation_parity(&corner_ns) == 0 {
+        let a = s.min(n);
+        let b = s.max(n);
+        let mut key = [0u32; N];
+        key[..N - 1].copy_from_slice(&facet_key(vs, f)[..N - 1]);
+        return Err(InputError::new(format!(
+            "{w}s {a} and {b} have opposite orientations across {} {}",
+            facet_word(N),
+            key_text(&key),
+            w = simplex_word(N)
+        )));
+    }
+    topo.adj[s][f] = n as u32;
+    topo.adj[n][g] = s as u32;
+    topo.adj_facet[s][f] = g as u8;
+    topo.adj_facet[n][g] = f as u8;
+    topo.nbr_corner[s][f] = corner_sn;
+    topo.nbr_corner[n][g] = corner_ns;
+    Ok(())
+}
+
+/// Parity (0 even, 1 odd) of a permutation of `0..N`.
+fn permutation_parity<const N: usize>(p: &[u8; N]) -> u32 {
+    let mut inv = 0;
+    for i in 0..N {
+        for j in i + 1..N {
+            if p[i] > p[j] {
+                inv += 1;
+            }
+        }
+    }
+    inv % 2
+}
+
+/// The corners around each vertex, as CSR: `(offsets, (simplex, corner))`.
+pub(crate) fn vertex_corners<const N: usize>(
+    simplices: &[[u32; N]],
+    vertex_count: usize,
+) -> (Vec<u32>, Vec<(u32, u8)>) {
+    let mut offsets = vec![0u32; vertex_count + 1];
+    for simplex in simplices {
+        for &v in simplex {
+            offsets[v as usize + 1] += 1;
+        }
+    }
+    for v in 0..vertex_count {
+        offsets[v + 1] += offsets[v];
+    }
+    let mut fill: Vec<u32> = offsets[..vertex_count].to_vec();
+    let mut corners = vec![(0u32, 0u8); offsets[vertex_count] as usize];
+    for (s, simplex) in simplices.iter().enumerate() {
+        for (c, &v) in simplex.iter().enumerate() {
+            let slot = &mut fill[v as usize];
+            corners[*slot as usize] = (s as u32, c as u8);
+            *slot += 1;
+        }
+    }
+    (offsets, corners)
+}
+
+/// Checks that the simplices around each vertex are connected through the
+/// facets that contain the vertex.
+fn check_vertices<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+) -> Result<(), InputError> {
+    let (offsets, corners) = vertex_corners(&map.simplices, map.positions.len());
+    let mut stamp = vec![u32::MAX; map.simplices.len()];
+    let mut stack: Vec<(usize, usize)> = Vec::new();
+    for v in 0..map.positions.len() {
+        let star = &corners[offsets[v] as usize..offsets[v + 1] as usize];
+        let Some(&(s0, c0)) = star.first() else {
+            continue;
+        };
+        stamp[s0 as usize] = v as u32;
+        stack.push((s0 as usize, c0 as usize));
+        let mut reached = 1;
+        while let Some((s, c)) = stack.pop() {
+            for f in (0..N).filter(|&f| f != c) {
+                let Some((n, _)) = topo.neighbour(s, f) else {
+                    continue;
+                };
+                if stamp[n] != v as u32 {
+                    stamp[n] = v as u32;
+                    reached += 1;
+                    stack.push((n, topo.nbr_corner[s][f][c] as usize));
+                }
+            }
+        }
+        if reached != star.len() {
+            let parts = if N == 3 {
+                "its triangles form more than one fan"
+            } else {
+                "its tets are not connected through the faces around it"
+            };
+            return Err(InputError::new(format!(
+                "vertex {v} is non-manifold: {parts}"
+            )));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::TriMap;
+
+    fn tri(simplices: Vec<[u32; 3]>, nv: usize) -> TriMap {
+        TriMap {
+            positions: vec![[0.0; 3]; nv],
+            coords: vec![[[0.0; 2]; 3]; simplices.len()],
+            simplices,
+        }
+    }
+
+    #[test]
+    fn two_triangles() {
+        let m = tri(vec![[0, 1, 2], [2, 1, 3]], 4);
+        let t = Topology::build(&m).expect("valid");
+        assert_eq!(t.boundary_facets, 4);
+        // edge 1-2 is facet 0 of triangle 0 and facet 2 of triangle 1
+        assert_eq!(t.neighbour(0, 0), Some((1, 2)));
+        assert_eq!(t.neighbour(1, 2), Some((0, 0)));
+        assert_eq!(t.nbr_corner[0][0], [2, 1, 0]);
+        assert_eq!(t.neighbour(0, 1), None);
+    }
+
+    #[test]
+    fn tets_share_face() {
+        let m = crate::TetMap {
+            positions: vec![[0.0; 3]; 5],
+            simplices: vec![[0, 1, 2, 3], [1, 2, 3, 4]],
+            coords: vec![[[0.0; 3]; 4]; 2],
+        };
+        // (1,2,3,4) vs (0,1,2,3): s's apex 0 in place of 4 gives (1,2,3,0): odd
+        let t = Topology::build(&m).expect("valid");
+        assert_eq!(t.neighbour(0, 0), Some((1, 3)));
+        assert_eq!(t.nbr_corner[0][0], [3, 0, 1, 2]);
+        assert_eq!(t.boundary_facets, 6);
+        let bad = crate::TetMap {
+            simplices: vec![[0, 1, 2, 3], [2, 1, 3, 4]],
+            ..m
+        };
+        let e = Topology::build(&bad).expect_err("misoriented");
+        assert_eq!(
+            e.to_string(),
+            "tets 0 and 1 have opposite orientations across face 1-2-3"
+        );
+    }
+
+    #[test]
+    fn errors() {
+        let e = Topology::build(&tri(vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]], 5)).expect_err("nm");
+        assert_eq!(
+            e.to_string(),
+            "edge 0-1 is shared by 3 triangles (0, 1, 2): non-manifold"
+        );
+        let e = Topology::build(&tri(vec![[0, 1, 2], [1, 2, 3]], 4)).expect_err("orient");
+        assert_eq!(
+            e.to_string(),
+            "triangles 0 and 1 have opposite orientations across edge 1-2"
+        );
+        // bow tie: two fans at vertex 0
+        let e = Topology::build(&tri(vec![[0, 1, 2], [0, 3, 4]], 5)).expect_err("bow tie");
+        assert_eq!(
+            e.to_string(),
+            "vertex 0 is non-manifold: its triangles form more than one fan"
+        );
+    }
+
+    #[test]
+    fn tets_touching_at_a_vertex() {
+        let m = crate::TetMap {
+            positions: vec![[0.0; 3]; 7],
+            simplices: vec![[0, 1, 2, 3], [0, 4, 5, 6]],
+            coords: vec![[[0.0; 3]; 4]; 2],
+        };
+        let e = Topology::build(&m).expect_err("pinched");
+        assert_eq!(
+            e.to_string(),
+            "vertex 0 is non-manifold: its tets are not connected through the faces around it"
+        );
+    }
+
+    #[test]
+    fn parity() {
+        assert_eq!(permutation_parity(&[0u8, 1, 2]), 0);
+        assert_eq!(permutation_parity(&[1u8, 0, 2]), 1);
+        assert_eq!(permutation_parity(&[1u8, 2, 0]), 0);
+        assert_eq!(permutation_parity(&[3u8, 0, 1, 2]), 1);
+    }
 }

@@ -18,8 +18,9 @@ use crate::{topology::Topology, InputError, Rot, SimplexMap};
 /// Options of transition derivation.
 #[derive(Clone, Copy, Debug)]
 pub struct TransitionOptions {
-    /// Largest accepted residual of the translations, relative to the local
-    /// coordinate magnitude's float spacing floor; see [`TransitionOptions::tolerance_at`].
+    /// Largest accepted residual of the translations at small coordinates;
+    /// it grows with the float spacing of large ones, see
+    /// [`TransitionOptions::tolerance_at`].
     pub tolerance: f64,
     /// Snap non-integer translations instead of failing (`--round-transitions`).
     pub round: bool,
@@ -31,6 +32,15 @@ impl Default for TransitionOptions {
             tolerance: 1e-3,
             round: false,
         }
+    }
+}
+
+impl TransitionOptions {
+    /// Accepted residual where coordinates reach `magnitude` in absolute
+    /// value: `tolerance + 64·ulp(magnitude)` (a map translated by 2^40 has
+    /// float spacing 2^-12 there).
+    pub fn tolerance_at(&self, magnitude: f64) -> f64 {
+        self.tolerance + 64.0 * crate::transition_derive::ulp(magnitude)
     }
 }
 

@@ -1,10 +1,443 @@
-//! Derivation of [`crate::Transitions`] (to be written).
-use crate::{InputError, SimplexMap, Topology, TransitionOptions, TransitionReport, Transitions};
+//! Derivation of [`Transitions`] from the per-corner map coordinates.
+//!
+//! Input: a validated map and its [`Topology`]. Output: the transitions of
+//! every interior facet (both directions, invariant of [`crate::transition`])
+//! and a [`TransitionReport`], or an [`InputError`] naming the facet.
+//!
+//! Per interior facet, with `a_i` / `b_i` the facet's corners in the charts of
+//! `s` and of its neighbour `n` (matched through `nbr_corner`):
+//! 1. **Fit**: for each grid rotation `R`, the mismatch
+//!    `max_i |R(a_i − a_0) − (b_i − b_0)|∞`. The best mismatch must be within
+//!    the fit tolerance (the accepted residual below; with `round`, at least
+//!    1/4), else the charts differ by a reflection or a non-grid rotation.
+//! 2. **Candidates**: the rotations whose mismatch is within `tol` of the
+//!    best. More than one only when the facet's edge vectors do not determine
+//!    `R` (zero-length edge in 2D, collapsed or collinear face in 3D).
+//! 3. `T(R) = mean_i (b_i − R a_i)`; **residual** `= max |T − round(T)|`.
+//!    Among several candidates keep those with an integral `T`; if several
+//!    remain the facet is **ambiguous**, resolved by [`fix_ambiguous`].
+//!
+//! **Tolerance** (accepted residual) of a facet:
+//! `opts.tolerance + 64·ulp(max |coordinate| of the facet's corners in both
+//! charts)`, so that a map translated by 2^40 still derives while a residual
+//! of 0.3 fails. A residual above it is an error naming the worst facet,
+//! unless `opts.round`, which snaps `T` and counts the facet in `snapped`.
+
+use crate::holonomy::ridge_rotation;
+use crate::mesh::simplex_word;
+use crate::topology_build::facet_word;
+use crate::{
+    InputError, Rot, SimplexMap, Topology, TransitionOptions, TransitionReport, Transitions,
+};
+
+/// A facet whose rotation is not determined by its edge vectors.
+struct Ambiguous<const D: usize> {
+    s: usize,
+    f: usize,
+    /// Rotations with an integral translation, and that translation.
+    cands: Vec<(Rot<D>, [i64; D])>,
+}
+
+/// The chosen transition of one facet and what it measured.
+struct Fit<const D: usize> {
+    rot: Rot<D>,
+    trans: [f64; D],
+    residual: f64,
+    tol: f64,
+    ambiguous: Option<Vec<(Rot<D>, [i64; D])>>,
+}
+
+/// Distance from `x` to the next larger float (`x ≥ 0`).
+pub(crate) fn ulp(x: f64) -> f64 {
+    let x = x.abs();
+    if !x.is_finite() {
+        return f64::INFINITY;
+    }
+    f64::from_bits(x.to_bits() + 1) - x
+}
+
+/// A number for messages: rounded to 6 decimals, always with a point.
+pub(crate) fn num(x: f64) -> String {
+    let s = format!("{}", (x * 1e6).round() / 1e6);
+    if s.contains('.') || s.contains('e') || !x.is_finite() {
+        s
+    } else {
+        format!("{s}.0")
+    }
+}
+
+fn residual_of<const D: usize>(t: &[f64; D]) -> f64 {
+    t.iter().map(|x| (x - x.round()).abs()).fold(0.0, f64::max)
+}
+
+fn rounded<const D: usize>(t: &[f64; D]) -> [i64; D] {
+    t.map(|x| x.round() as i64)
+}
 
 pub(crate) fn derive<const N: usize, const D: usize>(
-    _map: &SimplexMap<N, D>,
-    _topo: &Topology<N>,
-    _opts: &TransitionOptions,
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    opts: &TransitionOptions,
 ) -> Result<(Transitions<N, D>, TransitionReport), InputError> {
-    Err(InputError::new("transitions: not implemented yet"))
+    let ns = map.len();
+    let mut tr = Transitions {
+        rot: vec![[Rot::<D>::IDENTITY; N]; ns],
+        trans: vec![[[0i64; D]; N]; ns],
+    };
+    let mut rep = TransitionReport::default();
+    let all = Rot::<D>::all();
+    let mut ambiguous = Vec::new();
+    let mut failed: Option<(f64, f64, usize, usize)> = None;
+    for s in 0..ns {
+        for f in 0..N {
+            let Some((n, g)) = topo.neighbour(s, f) else {
+                continue;
+            };
+            if (n, g) < (s, f) {
+                continue;
+            }
+            let fit = fit_facet(map, topo, s, f, &all, opts)?;
+            if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
+                rep.max_residual = rep.max_residual.max(fit.residual);
+                rep.worst_facet = Some((s, f));
+            }
+            if fit.residual > fit.tol {
+                if opts.round {
+                    rep.snapped += 1;
+                } else if failed.is_none_or(|w| fit.residual > w.0) {
+                    failed = Some((fit.residual, fit.tol, s, f));
+                }
+            }
+            set(topo, &mut tr, s, f, fit.rot, rounded(&fit.trans));
+            if let Some(cands) = fit.ambiguous {
+                ambiguous.push(Ambiguous { s, f, cands });
+            }
+        }
+    }
+    if let Some((res, tol, s, f)) = failed {
+        let n = topo.adj[s][f];
+        return Err(InputError::new(format!(
+            "{w} {s} {fw} {f}: the transition to {w} {n} is not integral (residual {} > tolerance {}); \
+             rounding it (--round-transitions) would snap it",
+            num(res),
+            num(tol),
+            w = simplex_word(N),
+            fw = facet_word(N),
+        )));
+    }
+    rep.ambiguous_facets = ambiguous.len();
+    fix_ambiguous(topo, &mut tr, &ambiguous, 3);
+    rep.non_identity = (0..ns)
+        .flat_map(|s| (0..N).map(move |f| (s, f)))
+        .filter(|&(s, f)| topo.neighbour(s, f).is_some_and(|nf| nf > (s, f)))
+        .filter(|&(s, f)| !tr.rot[s][f].is_identity())
+        .count();
+    Ok((tr, rep))
+}
+
+/// Stores the transition across facet `f` of `s` and its inverse.
+fn set<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    tr: &mut Transitions<N, D>,
+    s: usize,
+    f: usize,
+    rot: Rot<D>,
+    t: [i64; D],
+) {
+    let Some((n, g)) = topo.neighbour(s, f) else {
+        panic!("bug: transition on boundary facet {f} of simplex {s}");
+    };
+    let inv = rot.inverse();
+    tr.rot[s][f] = rot;
+    tr.trans[s][f] = t;
+    tr.rot[n][g] = inv;
+    tr.trans[n][g] = inv.apply_i(&t).map(|x| -x);
+}
+
+/// Fits the rotation and translation of one interior facet.
+fn fit_facet<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    s: usize,
+    f: usize,
+    all: &[Rot<D>],
+    opts: &TransitionOptions,
+) -> Result<Fit<D>, InputError> {
+    let n = topo.adj[s][f] as usize;
+    let m = N - 1;
+    let a: Vec<[f64; D]> = (1..N).map(|i| map.coords[s][(f + i) % N]).collect();
+    let b: Vec<[f64; D]> = (1..N)
+        .map(|i| map.coords[n][topo.nbr_corner[s][f][(f + i) % N] as usize])
+        .collect();
+    let scale = a
+        .iter()
+        .chain(&b)
+        .flatten()
+        .fold(0.0f64, |acc, x| acc.max(x.abs()));
+    let tol = opts.tolerance_at(scale);
+    let mismatch = |r: &Rot<D>| {
+        let mut worst = 0.0f64;
+        for i in 1..m {
+            let ea: [f64; D] = std::array::from_fn(|k| a[i][k] - a[0][k]);
+            let ra = r.apply(&ea);
+            for k in 0..D {
+                worst = worst.max((ra[k] - (b[i][k] - b[0][k])).abs());
+            }
+        }
+        worst
+    };
+    let translation = |r: &Rot<D>| -> [f64; D] {
+        let mut t = [0.0; D];
+        for i in 0..m {
+            let ra = r.apply(&a[i]);
+            for k in 0..D {
+                t[k] += (b[i][k] - ra[k]) / m as f64;
+            }
+        }
+        t
+    };
+    let mis: Vec<f64> = all.iter().map(mismatch).collect();
+    let best = mis.iter().copied().fold(f64::INFINITY, f64::min);
+    let fit_tol = if opts.round { tol.max(0.25) } else { tol };
+    if best > fit_tol {
+        return Err(InputError::new(format!(
+            "{w} {s} {fw} {f}: the charts of {w}s {s} and {n} differ by a reflection or a \
+             non-grid rotation (mismatch {})",
+            num(best),
+            w = simplex_word(N),
+            fw = facet_word(N),
+        )));
+    }
+    let cands: Vec<(Rot<D>, [f64; D])> = all
+        .iter()
+        .zip(&mis)
+        .filter(|(_, &e)| e <= best + tol)
+        .map(|(r, _)| (*r, translation(r)))
+        .collect();
+    let integral: Vec<&(Rot<D>, [f64; D])> = cands
+        .iter()
+        .filter(|(_, t)| residual_of(t) <= tol)
+        .collect();
+    let chosen = match (cands.len(), integral.first()) {
+        (1, _) | (_, None) => {
+            // determined by the fit, or no integral choice: best fit, then
+            // smallest residual
+            let key = |c: &&(Rot<D>, [f64; D])| mismatch(&c.0) + residual_of(&c.1);
+            let Some(c) = cands.iter().min_by(|x, y| key(x).total_cmp(&key(y))) else {
+                panic!("bug: no rotation candidate on facet {f} of simplex {s}");
+            };
+            *c
+        }
+        (_, Some(c)) => **c,
+    };
+    let ambiguous = (cands.len() > 1 && integral.len() > 1)
+        .then(|| integral.iter().map(|(r, t)| (*r, rounded(t))).collect());
+    Ok(Fit {
+        rot: chosen.0,
+        trans: chosen.1,
+        residual: residual_of(&chosen.1),
+        tol,
+        ambiguous,
+    })
+}
+
+/// Chooses, for each ambiguous facet, the candidate that minimises the number
+/// of singular ridges through it (2D: its endpoints; 3D: its edges), a few
+/// passes until nothing changes.
+fn fix_ambiguous<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    tr: &mut Transitions<N, D>,
+    ambiguous: &[Ambiguous<D>],
+    passes: usize,
+) {
+    for _ in 0..passes {
+        let mut changed = 0;
+        for amb in ambiguous {
+            let current = tr.rot[amb.s][amb.f];
+            let mut best: Option<(usize, usize)> = None;
+            for (i, (r, t)) in amb.cands.iter().enumerate() {
+                set(topo, tr, amb.s, amb.f, *r, *t);
+                let score = singular_ridges(topo, tr, amb.s, amb.f);
+                if best.is_none_or(|b| score < b.0) {
+                    best = Some((score, i));
+                }
+            }
+            let Some((_, i)) = best else { continue };
+            let (r, t) = amb.cands[i];
+            set(topo, tr, amb.s, amb.f, r, t);
+            if r != current {
+                changed += 1;
+            }
+        }
+        if changed == 0 {
+            break;
+        }
+    }
+}
+
+/// Number of interior ridges of facet `f` of `s` with a non-identity holonomy.
+fn singular_ridges<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    tr: &Transitions<N, D>,
+    s: usize,
+    f: usize,
+) -> usize {
+    let corners: Vec<usize> = (1..N).map(|i| (f + i) % N).collect();
+    let singular =
+        |ridge: &[usize]| ridge_rotation(topo, tr, s, ridge).is_some_and(|r| !r.is_identity());
+    if N == 3 {
+        corners.iter().filter(|&&c| singular(&[c])).count()
+    } else {
+        let mut count = 0;
+        for i in 0..corners.len() {
+            for j in i + 1..corners.len() {
+                count += usize::from(singular(&[corners[i], corners[j]]));
+            }
+        }
+        count
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_maps::{grid, rechart, tet_cube};
+    use crate::Stars;
+
+    /// Derives and checks every interior transition against the known
+    /// per-simplex re-charting: `rot = R_s⁻¹ then R_n`, `T = t_n − rot·t_s`.
+    fn check_rechart<const N: usize, const D: usize>(
+        map: &mut SimplexMap<N, D>,
+        seed: u64,
+        offset: f64,
+    ) {
+        let charts = rechart(map, seed);
+        for p in map.coords.iter_mut().flatten().flatten() {
+            *p += offset;
+        }
+        let topo = Topology::build(map).expect("topology");
+        let opts = TransitionOptions::default();
+        let (tr, rep) = derive(map, &topo, &opts).expect("transitions");
+        assert_eq!(rep.max_residual, 0.0);
+        assert_eq!(rep.snapped, 0);
+        let mut seen = std::collections::BTreeSet::new();
+        for s in 0..map.len() {
+            for f in 0..N {
+                let Some((n, _)) = topo.neighbour(s, f) else {
+                    continue;
+                };
+                let (rs, ts) = charts[s];
+                let (rn, tn) = charts[n];
+                let rot = rs.inverse().then(&rn);
+                // the offset o is added in both charts: T gains o − rot·o
+                let o = [offset; D];
+                let ro = rot.apply(&o);
+                let rts = rot.apply_i(&ts);
+                let t: [i64; D] = std::array::from_fn(|k| tn[k] - rts[k] + (o[k] - ro[k]) as i64);
+                assert_eq!(tr.rot[s][f], rot, "simplex {s} facet {f}");
+                assert_eq!(tr.trans[s][f], t, "simplex {s} facet {f}");
+                seen.insert(rot);
+            }
+        }
+        assert_eq!(seen.len(), Rot::<D>::all().len(), "every rotation occurs");
+        let stars = Stars::build(map, &topo, &tr);
+        assert!(stars.singular.iter().all(|&x| !x), "no singular vertex");
+    }
+
+    #[test]
+    fn all_rotations_2d() {
+        for seed in 1..4 {
+            check_rechart(&mut grid(6), seed, 0.0);
+        }
+    }
+
+    #[test]
+    fn all_rotations_3d() {
+        check_rechart(&mut tet_cube(3), 7, 0.0);
+    }
+
+    #[test]
+    fn far_translation_still_derives() {
+        let big = (1u64 << 40) as f64;
+        check_rechart(&mut grid(6), 3, big);
+        check_rechart(&mut tet_cube(3), 5, big);
+    }
+
+    #[test]
+    fn residual_fails_or_snaps() {
+        let mut m = grid(4);
+        rechart(&mut m, 2);
+        // an interior triangle (its 3 edges are interior)
+        let s = 2 * (4 + 1);
+        for p in m.coords[s].iter_mut() {
+            p[0] += 0.3;
+        }
+        let topo = Topology::build(&m).expect("topology");
+        let e = derive(&m, &topo, &TransitionOptions::default()).expect_err("residual 0.3");
+        assert!(
+            e.message
+                .contains("is not integral (residual 0.3 > tolerance 0.001"),
+            "{e}"
+        );
+        assert!(e.message.starts_with("triangle "), "{e}");
+        let opts = TransitionOptions {
+            round: true,
+            ..Default::default()
+        };
+        let (_, rep) = derive(&m, &topo, &opts).expect("rounded");
+        assert_eq!(rep.snapped, 3);
+        assert!((rep.max_residual - 0.3).abs() < 1e-12);
+    }
+
+    #[test]
+    fn reflection_is_an_error() {
+        let m = SimplexMap::<3, 2> {
+            positions: vec![[0.0; 3]; 4],
+            simplices: vec![[0, 1, 2], [2, 1, 3]],
+            // triangle 1: vertices 1, 2 swapped in u and v (a mirror image)
+            coords: vec![
+                [[0.0, 0.0], [2.0, 0.0], [0.0, 1.0]],
+                [[1.0, 0.0], [0.0, 2.0], [2.0, 1.0]],
+            ],
+        };
+        let topo = Topology::build(&m).expect("topology");
+        let e = derive(&m, &topo, &TransitionOptions::default()).expect_err("reflection");
+        assert_eq!(
+            e.to_string(),
+            "triangle 0 edge 0: the charts of triangles 0 and 1 differ by a reflection or a \
+             non-grid rotation (mismatch 1.0)"
+        );
+    }
+
+    #[test]
+    fn collapsed_edge_is_resolved() {
+        // collapse interior edge (6, 12) of a 4×4 grid onto the grid point of
+        // vertex 6, then re-chart: the edge's rotation is ambiguous
+        let mut m = grid(4);
+        let target = [1.0, 1.0];
+        for (s, simplex) in m.simplices.iter().enumerate() {
+            for (c, &v) in simplex.iter().enumerate() {
+                if v == 12 {
+                    m.coords[s][c] = target;
+                }
+            }
+        }
+        rechart(&mut m, 11);
+        let topo = Topology::build(&m).expect("topology");
+        let (tr, rep) = derive(&m, &topo, &TransitionOptions::default()).expect("derive");
+        assert_eq!(rep.ambiguous_facets, 1);
+        let stars = Stars::build(&m, &topo, &tr);
+        let singular: Vec<usize> = (0..stars.singular.len())
+            .filter(|&v| stars.singular[v])
+            .collect();
+        assert_eq!(singular, Vec::<usize>::new());
+    }
+
+    #[test]
+    fn tolerance_scales() {
+        assert_eq!(ulp(1.0), f64::EPSILON);
+        assert_eq!(ulp((1u64 << 40) as f64), 2f64.powi(-12));
+        assert_eq!(num(2.0), "2.0");
+        assert_eq!(num(0.3), "0.3");
+    }
 }

@@ -1,0 +1,317 @@
+//! Checks of an all-hex volume mesh.
+//!
+//! Input: the number of vertices, the hexes as 8 vertex indices in VTK order
+//! (bottom face 0-1-2-3 counter-clockwise seen from the top, then 4-5-6-7
+//! with `i + 4` above `i`), and optionally the vertex positions.
+//! Output: a [`HexReport`].
+//!
+//! ```text
+//!        7 --- 6        faces, outward:  0-3-2-1 (bottom)  4-5-6-7 (top)
+//!       /|    /|                         0-1-5-4  1-2-6-5  2-3-7-6  3-0-4-7
+//!      4 --- 5 |
+//!      | 3 --|-2        corner (x,y,z) bits ↔ VTK index: [0,1,3,2][x+2y] + 4z
+//!      |/    |/
+//!      0 --- 1
+//! ```
+//! Conventions:
+//! - cells with an index out of range or a repeated vertex (or two equal
+//!   faces) are reported and ignored; all counts are over the good cells;
+//! - a face (a set of 4 vertices) is *boundary* with 1 cell, *non-manifold*
+//!   with more than 2, *misoriented* when its 2 cells do not traverse it in
+//!   opposite directions (same direction, or a different cycle);
+//! - with positions, a cell is *inverted* when the Jacobian determinant at
+//!   one of its 8 corners is `<= 0`;
+//! - *interior edges* are edges on no boundary face; their valence is the
+//!   number of cells around them;
+//! - the boundary faces, oriented outwards, are checked as a quad mesh
+//!   ([`HexReport::boundary`]): its components, Euler characteristic and
+//!   non-manifold edges/vertices are those of the boundary surface;
+//! - the volume Euler characteristic is `V − E + F − C` over good cells.
+
+use crate::quad::{check_quad_mesh, QuadReport};
+use crate::union_find::UnionFind;
+use std::collections::{BTreeMap, HashMap};
+
+/// The 6 faces of a hex, oriented outwards for a positive hex.
+pub const HEX_FACES: [[usize; 4]; 6] = [
+    [0, 3, 2, 1],
+    [4, 5, 6, 7],
+    [0, 1, 5, 4],
+    [1, 2, 6, 5],
+    [2, 3, 7, 6],
+    [3, 0, 4, 7],
+];
+
+/// The 12 edges of a hex.
+pub const HEX_EDGES: [[usize; 2]; 12] = [
+    [0, 1],
+    [1, 2],
+    [2, 3],
+    [3, 0],
+    [4, 5],
+    [5, 6],
+    [6, 7],
+    [7, 4],
+    [0, 4],
+    [1, 5],
+    [2, 6],
+    [3, 7],
+];
+
+/// What [`check_hex_mesh`] found; see the module docs for definitions.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct HexReport {
+    /// Number of vertices given.
+    pub n_vertices: usize,
+    /// Number of cells given.
+    pub cells: usize,
+    /// Vertices used by good cells.
+    pub vertices_used: usize,
+    /// Distinct faces of the good cells.
+    pub faces: usize,
+    /// Faces with exactly one cell.
+    pub boundary_faces: usize,
+    /// Distinct edges of the good cells.
+    pub edges: usize,
+    /// Connected components of the good cells (through shared vertices).
+    pub components: usize,
+    /// `V − E + F − C` over good cells.
+    pub euler: i64,
+    /// Valence (cells around) → number of interior edges with it.
+    pub interior_edge_valence: BTreeMap<u32, usize>,
+    /// Cells referring to a vertex `>= n_vertices`.
+    pub out_of_range_cells: Vec<usize>,
+    /// Cells with a repeated vertex or two equal faces.
+    pub degenerate_cells: Vec<usize>,
+    /// Faces (sorted vertices) with more than 2 cells.
+    pub non_manifold_faces: Vec<[u32; 4]>,
+    /// Faces (sorted vertices) whose 2 cells do not traverse them oppositely.
+    pub misoriented_faces: Vec<[u32; 4]>,
+    /// Cells with a corner Jacobian `<= 0`; `None` without positions.
+    pub inverted_cells: Option<Vec<usize>>,
+    /// Positions were given but fewer than `n_vertices`.
+    pub missing_positions: bool,
+    /// The boundary surface (faces oriented outwards) as a quad mesh.
+    pub boundary: QuadReport,
+}
+
+/// Checks a hex mesh; never panics, whatever the input.
+pub fn check_hex_mesh(
+    n_vertices: usize,
+    hexes: &[[u32; 8]],
+    positions: Option<&[[f64; 3]]>,
+) -> HexReport {
+    let mut r = HexReport {
+        n_vertices,
+        cells: hexes.len(),
+        ..HexReport::default()
+    };
+    let good = classify_cells(n_vertices, hexes, &mut r);
+    let faces = face_uses(&good);
+    r.faces = faces.len();
+    let mut boundary_quads = Vec::new();
+    for (key, uses) in &faces {
+        match uses.as_slice() {
+            [one] => boundary_quads.push(*one),
+            [a, b] if !opposite(a, b) => r.misoriented_faces.push(*key),
+            [_, _] => {}
+            _ => r.non_manifold_faces.push(*key),
+        }
+    }
+    r.misoriented_faces.sort_unstable();
+    r.non_manifold_faces.sort_unstable();
+    boundary_quads.sort_unstable();
+    r.boundary_faces = boundary_quads.len();
+    r.boundary = check_quad_mesh(n_vertices, &boundary_quads);
+    edge_stats(&good, &boundary_quads, &mut r);
+    let mut used = vec![false; n_vertices];
+    let mut uf = UnionFind::new(n_vertices);
+    for h in &good {
+        for &v in h {
+            used[v as usize] = true;
+            uf.union(h[0] as usize, v as usize);
+        }
+    }
+    r.vertices_used = used.iter().filter(|&&u| u).count();
+    r.components = uf.count_sets((0..n_vertices).filter(|&v| used[v]));
+    r.euler = r.vertices_used as i64 - r.edges as i64 + r.faces as i64 - good.len() as i64;
+    if let Some(p) = positions {
+        r.missing_positions = p.len() < n_vertices;
+        r.inverted_cells = Some(inverted_cells(hexes, p, &r));
+    }
+    r
+}
+
+/// Sorts cells into out of range, degenerate and good (returned).
+fn classify_cells(n: usize, hexes: &[[u32; 8]], r: &mut HexReport) -> Vec<[u32; 8]> {
+    let mut good = Vec::with_capacity(hexes.len());
+    for (c, h) in hexes.iter().enumerate() {
+        if h.iter().any(|&v| v as usize >= n) {
+            r.out_of_range_cells.push(c);
+            continue;
+        }
+        let repeated = (0..8).any(|i| h[..i].contains(&h[i]));
+        let mut keys: Vec<[u32; 4]> = HEX_FACES.iter().map(|f| face_key(h, f)).collect();
+        keys.sort_unstable();
+        keys.dedup();
+        if repeated || keys.len() < 6 {
+            r.degenerate_cells.push(c);
+        } else {
+            good.push(*h);
+        }
+    }
+    good
+}
+
+/// The sorted vertices of face `f` of hex `h`.
+fn face_key(h: &[u32; 8], f: &[usize; 4]) -> [u32; 4] {
+    let mut k = f.map(|i| h[i]);
+    k.sort_unstable();
+    k
+}
+
+/// Outward vertex cycles of every face, grouped by vertex set.
+fn face_uses(cells: &[[u32; 8]]) -> HashMap<[u32; 4], Vec<[u32; 4]>> {
+    let mut faces: HashMap<[u32; 4], Vec<[u32; 4]>> = HashMap::new();
+    for h in cells {
+        for f in &HEX_FACES {
+            faces
+                .entry(face_key(h, f))
+                .or_default()
+                .push(f.map(|i| h[i]));
+        }
+    }
+    faces
+}
+
+/// Whether cycle `b` is cycle `a` traversed backwards.
+fn opposite(a: &[u32; 4], b: &[u32; 4]) -> bool {
+    (0..4).any(|s| (0..4).all(|i| a[i] == b[(s + 4 - i) % 4]))
+}
+
+/// Edge count and the valence histogram of interior edges.
+fn edge_stats(cells: &[[u32; 8]], boundary: &[[u32; 4]], r: &mut HexReport) {
+    let key = |a: u32, b: u32| (a.min(b), a.max(b));
+    let mut valence: HashMap<(u32, u32), u32> = HashMap::new();
+    for h in cells {
+        for e in &HEX_EDGES {
+            *valence.entry(key(h[e[0]], h[e[1]])).or_insert(0) += 1;
+        }
+    }
+    let mut on_boundary = std::collections::HashSet::new();
+    for q in boundary {
+        for i in 0..4 {
+            on_boundary.insert(key(q[i], q[(i + 1) % 4]));
+        }
+    }
+    r.edges = valence.len();
+    for (e, &n) in &valence {
+        if !on_boundary.contains(e) {
+            *r.interior_edge_valence.entry(n).or_insert(0) += 1;
+        }
+    }
+}
+
+/// VTK index of the corner with coordinate bits `(x, y, z)`.
+fn vtk(x: usize, y: usize, z: usize) -> usize {
+    [0, 1, 3, 2][x + 2 * y] + 4 * z
+}
+
+/// Good cells (not out of range, not degenerate) with a corner Jacobian
+/// `<= 0`, or whose positions are missing.
+fn inverted_cells(hexes: &[[u32; 8]], p: &[[f64; 3]], r: &HexReport) -> Vec<usize> {
+    let skip = |c: usize| r.out_of_range_cells.contains(&c) || r.degenerate_cells.contains(&c);
+    let mut out = Vec::new();
+    for (c, h) in hexes.iter().enumerate() {
+        if skip(c) {
+            continue;
+        }
+        let pos: Option<Vec<[f64; 3]>> = h.iter().map(|&v| p.get(v as usize).copied()).collect();
+        let ok = pos.is_some_and(|pos| min_corner_jacobian(&pos) > 0.0);
+        if !ok {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Smallest determinant of the three edge vectors at a corner, each edge
+/// pointing towards growing `x`, `y`, `z` of the reference cube.
+fn min_corner_jacobian(pos: &[[f64; 3]]) -> f64 {
+    let mut min = f64::INFINITY;
+    for z in 0..2 {
+        for y in 0..2 {
+            for x in 0..2 {
+                let p = pos[vtk(x, y, z)];
+                let e = |q: usize, s: usize| -> [f64; 3] {
+                    let sign = if s == 0 { 1.0 } else { -1.0 };
+                    std::array::from_fn(|k| sign * (pos[q][k] - p[k]))
+                };
+                let ex = e(vtk(1 - x, y, z), x);
+                let ey = e(vtk(x, 1 - y, z), y);
+                let ez = e(vtk(x, y, 1 - z), z);
+                let det = ex[0] * (ey[1] * ez[2] - ey[2] * ez[1])
+                    - ex[1] * (ey[0] * ez[2] - ey[2] * ez[0])
+                    + ex[2] * (ey[0] * ez[1] - ey[1] * ez[0]);
+                min = min.min(det);
+            }
+        }
+    }
+    min
+}
+
+impl HexReport {
+    /// No out-of-range, degenerate or inverted cell, manifold and
+    /// consistently oriented faces, a manifold oriented boundary surface.
+    pub fn is_valid(&self) -> bool {
+        self.errors().is_empty()
+    }
+
+    /// One line per kind of defect (empty when valid).
+    pub fn errors(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        let mut push = |n: usize, what: &str, first: Option<String>| {
+            if n > 0 {
+                out.push(format!("{n} {what} (first: {})", first.unwrap_or_default()));
+            }
+        };
+        let cell = |c: Option<&usize>| c.map(|c| format!("cell {c}"));
+        let face = |f: Option<&[u32; 4]>| f.map(|f| format!("face {f:?}"));
+        push(
+            self.out_of_range_cells.len(),
+            "cells with a vertex index out of range",
+            cell(self.out_of_range_cells.first()),
+        );
+        push(
+            self.degenerate_cells.len(),
+            "degenerate cells",
+            cell(self.degenerate_cells.first()),
+        );
+        push(
+            self.non_manifold_faces.len(),
+            "non-manifold faces (more than 2 cells)",
+            face(self.non_manifold_faces.first()),
+        );
+        push(
+            self.misoriented_faces.len(),
+            "inconsistently oriented faces",
+            face(self.misoriented_faces.first()),
+        );
+        let inverted = self.inverted_cells.as_deref().unwrap_or(&[]);
+        push(
+            inverted.len(),
+            "inverted cells (corner Jacobian <= 0)",
+            cell(inverted.first()),
+        );
+        if self.missing_positions {
+            out.push("fewer positions than vertices".to_string());
+        }
+        for e in self.boundary.errors() {
+            out.push(format!("boundary surface: {e}"));
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests;

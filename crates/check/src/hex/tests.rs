@@ -1,0 +1,139 @@
+use super::*;
+
+/// An `nx × ny × nz` block of unit hexes with positions.
+fn block(nx: u32, ny: u32, nz: u32) -> (Vec<[f64; 3]>, Vec<[u32; 8]>) {
+    let id = |i: u32, j: u32, k: u32| (k * (ny + 1) + j) * (nx + 1) + i;
+    let mut p = Vec::new();
+    for k in 0..=nz {
+        for j in 0..=ny {
+            for i in 0..=nx {
+                p.push([i, j, k].map(f64::from));
+            }
+        }
+    }
+    let mut h = Vec::new();
+    for k in 0..nz {
+        for j in 0..ny {
+            for i in 0..nx {
+                let c = |x: u32, y: u32, z: u32| id(i + x, j + y, k + z);
+                h.push([
+                    c(0, 0, 0),
+                    c(1, 0, 0),
+                    c(1, 1, 0),
+                    c(0, 1, 0),
+                    c(0, 0, 1),
+                    c(1, 0, 1),
+                    c(1, 1, 1),
+                    c(0, 1, 1),
+                ]);
+            }
+        }
+    }
+    (p, h)
+}
+
+fn hist(pairs: &[(u32, usize)]) -> BTreeMap<u32, usize> {
+    pairs.iter().copied().collect()
+}
+
+#[test]
+fn block_counts() {
+    let (p, h) = block(2, 2, 2);
+    let r = check_hex_mesh(p.len(), &h, Some(&p));
+    assert!(r.is_valid(), "{:?}", r.errors());
+    assert_eq!(
+        (r.cells, r.vertices_used, r.edges, r.faces),
+        (8, 27, 54, 36)
+    );
+    assert_eq!((r.boundary_faces, r.components, r.euler), (24, 1, 1));
+    assert_eq!(r.interior_edge_valence, hist(&[(4, 6)]));
+    assert_eq!((r.boundary.euler, r.boundary.components), (2, 1));
+    assert_eq!(r.boundary.interior_valence, hist(&[(3, 8), (4, 18)]));
+    assert_eq!(r.inverted_cells, Some(vec![]));
+}
+
+#[test]
+fn without_positions_orientation_is_unknown() {
+    let (p, h) = block(1, 1, 1);
+    let r = check_hex_mesh(p.len(), &h, None);
+    assert!(r.is_valid());
+    assert_eq!(r.inverted_cells, None);
+    assert!(r.interior_edge_valence.is_empty());
+}
+
+#[test]
+fn flipped_hex_is_inverted_and_misoriented() {
+    let (p, mut h) = block(3, 1, 1);
+    let c = h[1];
+    h[1] = [c[4], c[5], c[6], c[7], c[0], c[1], c[2], c[3]];
+    let r = check_hex_mesh(p.len(), &h, Some(&p));
+    assert_eq!(r.inverted_cells, Some(vec![1]));
+    assert_eq!(r.misoriented_faces.len(), 2);
+    assert!(!r.is_valid());
+}
+
+#[test]
+fn missing_hex_is_a_cavity() {
+    let (p, mut h) = block(3, 3, 3);
+    h.remove(13); // the centre
+    let r = check_hex_mesh(p.len(), &h, Some(&p));
+    assert!(r.is_valid(), "a cavity is a valid mesh: {:?}", r.errors());
+    assert_eq!((r.boundary.components, r.boundary.euler), (2, 4));
+    assert_eq!(r.boundary_faces, 54 + 6);
+    // V − E + F − C of a ball with a cavity: 1 + 1
+    assert_eq!(r.euler, 2);
+}
+
+#[test]
+fn third_hex_on_a_face_is_non_manifold() {
+    let (mut p, mut h) = block(1, 1, 2);
+    // a third hex on the middle face 4-5-6-7, below it, with new vertices
+    let n = p.len() as u32;
+    p.extend([
+        [0.0, 0.0, 0.5],
+        [1.0, 0.0, 0.5],
+        [1.0, 1.0, 0.5],
+        [0.0, 1.0, 0.5],
+    ]);
+    h.push([n, n + 1, n + 2, n + 3, 4, 5, 6, 7]);
+    let r = check_hex_mesh(p.len(), &h, Some(&p));
+    assert_eq!(r.non_manifold_faces, vec![[4, 5, 6, 7]]);
+    assert!(!r.is_valid());
+}
+
+#[test]
+fn hexes_sharing_only_a_vertex_or_an_edge() {
+    let (p, h) = block(2, 2, 1);
+    // cells 0 and 3 share the edge of vertices 4 and 13 only
+    let r = check_hex_mesh(p.len(), &[h[0], h[3]], Some(&p));
+    assert_eq!(r.boundary.non_manifold_edges, vec![[4, 13]]);
+    assert!(!r.is_valid());
+    let (p, h) = block(2, 2, 2);
+    // cells 0 and 7 share vertex 13 (the centre) only
+    let r = check_hex_mesh(p.len(), &[h[0], h[7]], Some(&p));
+    assert_eq!(r.boundary.non_manifold_vertices, vec![13]);
+    assert!(r.boundary.non_manifold_edges.is_empty());
+    assert!(!r.is_valid());
+}
+
+#[test]
+fn degenerate_and_out_of_range_cells() {
+    let (p, mut h) = block(1, 1, 1);
+    let mut d = h[0];
+    d[7] = d[6];
+    h.push(d);
+    h.push([0, 1, 2, 3, 4, 5, 6, 100]);
+    let r = check_hex_mesh(p.len(), &h, Some(&p));
+    assert_eq!(r.degenerate_cells, vec![1]);
+    assert_eq!(r.out_of_range_cells, vec![2]);
+    assert_eq!(r.inverted_cells, Some(vec![]));
+    assert_eq!(r.errors().len(), 2);
+}
+
+#[test]
+fn missing_positions_are_reported() {
+    let (p, h) = block(1, 1, 1);
+    let r = check_hex_mesh(p.len(), &h, Some(&p[..4]));
+    assert!(r.missing_positions);
+    assert_eq!(r.inverted_cells, Some(vec![0]));
+}

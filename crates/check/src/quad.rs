@@ -1,0 +1,267 @@
+//! Checks of an all-quad surface mesh.
+//!
+//! Input: the number of vertices and the quads as 4 vertex indices,
+//! counter-clockwise seen from the front. Output: a [`QuadReport`].
+//!
+//! Conventions:
+//! - a face with an index `>= n_vertices` is *out of range*, a face with a
+//!   repeated vertex is *degenerate*; both are reported and then ignored, so
+//!   every count below is over the remaining ("good") faces;
+//! - *used* vertices are those of good faces; Euler characteristic is
+//!   `V_used − E + F_good`;
+//! - an edge is *boundary* with 1 face, *non-manifold* with more than 2, and
+//!   *misoriented* when its 2 faces traverse it in the same direction;
+//! - a vertex is *non-manifold* when the faces around it do not form a single
+//!   fan (faces are linked when they share an edge at the vertex): a bowtie;
+//! - boundary loops are the connected components of the graph of boundary
+//!   edges (exact on a manifold mesh);
+//! - a vertex is *boundary* when it lies on a boundary edge; valences
+//!   (number of distinct edges at a vertex) are histogrammed separately for
+//!   interior and boundary vertices.
+
+use crate::union_find::UnionFind;
+use std::collections::{BTreeMap, HashMap};
+
+/// What [`check_quad_mesh`] found; see the module docs for definitions.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct QuadReport {
+    /// Number of vertices given.
+    pub n_vertices: usize,
+    /// Number of faces given.
+    pub faces: usize,
+    /// Vertices used by good faces.
+    pub vertices_used: usize,
+    /// Vertices used by no good face.
+    pub unused_vertices: usize,
+    /// Distinct edges.
+    pub edges: usize,
+    /// Edges with exactly one face.
+    pub boundary_edges: usize,
+    /// Connected components of the boundary edges.
+    pub boundary_loops: usize,
+    /// Connected components of the good faces (through shared vertices).
+    pub components: usize,
+    /// `V_used − E + F_good`.
+    pub euler: i64,
+    /// Valence → number of interior vertices with it.
+    pub interior_valence: BTreeMap<u32, usize>,
+    /// Valence → number of boundary vertices with it.
+    pub boundary_valence: BTreeMap<u32, usize>,
+    /// Faces referring to a vertex `>= n_vertices`.
+    pub out_of_range_faces: Vec<usize>,
+    /// Faces with a repeated vertex.
+    pub degenerate_faces: Vec<usize>,
+    /// Edges (sorted vertex pair) with more than 2 faces.
+    pub non_manifold_edges: Vec<[u32; 2]>,
+    /// Vertices whose faces form more than one fan.
+    pub non_manifold_vertices: Vec<u32>,
+    /// Edges (sorted vertex pair) traversed twice in the same direction.
+    pub misoriented_edges: Vec<[u32; 2]>,
+}
+
+/// Uses of an undirected edge `(lo, hi)`: faces going `lo → hi` and back.
+#[derive(Clone, Copy, Default)]
+struct EdgeUse {
+    forward: u32,
+    backward: u32,
+}
+
+impl EdgeUse {
+    fn total(&self) -> u32 {
+        self.forward + self.backward
+    }
+}
+
+/// Checks a quad mesh; never panics, whatever the input.
+pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
+    let mut r = QuadReport {
+        n_vertices,
+        faces: quads.len(),
+        ..QuadReport::default()
+    };
+    let good = classify_faces(n_vertices, quads, &mut r);
+    let edges = edge_uses(&good);
+    r.edges = edges.len();
+    let mut on_boundary = vec![false; n_vertices];
+    let mut valence = vec![0u32; n_vertices];
+    let mut boundary_uf = UnionFind::new(n_vertices);
+    for (&(a, b), u) in &edges {
+        valence[a as usize] += 1;
+        valence[b as usize] += 1;
+        match u.total() {
+            1 => {
+                r.boundary_edges += 1;
+                on_boundary[a as usize] = true;
+                on_boundary[b as usize] = true;
+                boundary_uf.union(a as usize, b as usize);
+            }
+            2 if u.forward != 1 => r.misoriented_edges.push([a, b]),
+            2 => {}
+            _ => r.non_manifold_edges.push([a, b]),
+        }
+    }
+    r.misoriented_edges.sort_unstable();
+    r.non_manifold_edges.sort_unstable();
+    let mut used = vec![false; n_vertices];
+    for q in &good {
+        for &v in q {
+            used[v as usize] = true;
+        }
+    }
+    for v in (0..n_vertices).filter(|&v| used[v]) {
+        let hist = if on_boundary[v] {
+            &mut r.boundary_valence
+        } else {
+            &mut r.interior_valence
+        };
+        *hist.entry(valence[v]).or_insert(0) += 1;
+    }
+    r.vertices_used = used.iter().filter(|&&u| u).count();
+    r.unused_vertices = n_vertices - r.vertices_used;
+    r.boundary_loops = boundary_uf.count_sets((0..n_vertices).filter(|&v| on_boundary[v]));
+    r.components = components(n_vertices, &good, &used);
+    r.euler = r.vertices_used as i64 - r.edges as i64 + good.len() as i64;
+    r.non_manifold_vertices = non_manifold_vertices(&good);
+    r
+}
+
+/// Sorts faces into out of range, degenerate and good (returned).
+fn classify_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32; 4]> {
+    let mut good = Vec::with_capacity(quads.len());
+    for (f, q) in quads.iter().enumerate() {
+        if q.iter().any(|&v| v as usize >= n) {
+            r.out_of_range_faces.push(f);
+        } else if (0..4).any(|i| q[..i].contains(&q[i])) {
+            r.degenerate_faces.push(f);
+        } else {
+            good.push(*q);
+        }
+    }
+    good
+}
+
+/// Directed uses of every undirected edge of the faces.
+fn edge_uses(faces: &[[u32; 4]]) -> HashMap<(u32, u32), EdgeUse> {
+    let mut edges: HashMap<(u32, u32), EdgeUse> = HashMap::new();
+    for q in faces {
+        for i in 0..4 {
+            let (a, b) = (q[i], q[(i + 1) % 4]);
+            let e = edges.entry((a.min(b), a.max(b))).or_default();
+            if a < b {
+                e.forward += 1;
+            } else {
+                e.backward += 1;
+            }
+        }
+    }
+    edges
+}
+
+/// Connected components of the faces through shared vertices.
+fn components(n: usize, faces: &[[u32; 4]], used: &[bool]) -> usize {
+    let mut uf = UnionFind::new(n);
+    for q in faces {
+        for i in 1..4 {
+            uf.union(q[0] as usize, q[i] as usize);
+        }
+    }
+    uf.count_sets((0..n).filter(|&v| used[v]))
+}
+
+/// Vertices whose incident faces form more than one fan.
+fn non_manifold_vertices(faces: &[[u32; 4]]) -> Vec<u32> {
+    // (vertex, previous vertex, next vertex) for every corner of every face
+    let mut corners: Vec<(u32, u32, u32)> = Vec::with_capacity(4 * faces.len());
+    for q in faces {
+        for i in 0..4 {
+            corners.push((q[i], q[(i + 3) % 4], q[(i + 1) % 4]));
+        }
+    }
+    corners.sort_unstable();
+    let mut out = Vec::new();
+    for group in corners.chunk_by(|a, b| a.0 == b.0) {
+        if fans(group) > 1 {
+            out.push(group[0].0);
+        }
+    }
+    out
+}
+
+/// Number of fans among the corners at one vertex (linked by a shared edge).
+fn fans(group: &[(u32, u32, u32)]) -> usize {
+    let mut uf = UnionFind::new(group.len());
+    let mut first_with: HashMap<u32, usize> = HashMap::new();
+    for (i, &(_, prev, next)) in group.iter().enumerate() {
+        for w in [prev, next] {
+            match first_with.get(&w) {
+                Some(&j) => {
+                    uf.union(i, j);
+                }
+                None => {
+                    first_with.insert(w, i);
+                }
+            }
+        }
+    }
+    uf.count_sets(0..group.len())
+}
+
+impl QuadReport {
+    /// No out-of-range or degenerate face, manifold edges and vertices,
+    /// consistent orientation.
+    pub fn is_valid(&self) -> bool {
+        self.errors().is_empty()
+    }
+
+    /// One line per kind of defect (empty when valid).
+    pub fn errors(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        let mut push = |n: usize, what: &str, first: String| {
+            if n > 0 {
+                out.push(format!("{n} {what} (first: {first})"));
+            }
+        };
+        let first = |v: Option<String>| v.unwrap_or_default();
+        push(
+            self.out_of_range_faces.len(),
+            "faces with a vertex index out of range",
+            first(self.out_of_range_faces.first().map(|f| format!("face {f}"))),
+        );
+        push(
+            self.degenerate_faces.len(),
+            "degenerate faces (repeated vertex)",
+            first(self.degenerate_faces.first().map(|f| format!("face {f}"))),
+        );
+        push(
+            self.non_manifold_edges.len(),
+            "non-manifold edges (more than 2 faces)",
+            first(
+                self.non_manifold_edges
+                    .first()
+                    .map(|e| format!("edge {e:?}")),
+            ),
+        );
+        push(
+            self.non_manifold_vertices.len(),
+            "non-manifold vertices (more than one fan)",
+            first(
+                self.non_manifold_vertices
+                    .first()
+                    .map(|v| format!("vertex {v}")),
+            ),
+        );
+        push(
+            self.misoriented_edges.len(),
+            "inconsistently oriented edges",
+            first(
+                self.misoriented_edges
+                    .first()
+                    .map(|e| format!("edge {e:?}")),
+            ),
+        );
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,99 @@
+use super::*;
+use crate::test_meshes::{cube, grid, torus};
+
+fn hist(pairs: &[(u32, usize)]) -> BTreeMap<u32, usize> {
+    pairs.iter().copied().collect()
+}
+
+#[test]
+fn grid_counts() {
+    let (n, q) = grid(3, 4);
+    let r = check_quad_mesh(n, &q);
+    assert!(r.is_valid(), "{:?}", r.errors());
+    assert_eq!((r.faces, r.vertices_used, r.unused_vertices), (12, 20, 0));
+    assert_eq!((r.edges, r.boundary_edges, r.boundary_loops), (31, 14, 1));
+    assert_eq!((r.components, r.euler), (1, 1));
+    assert_eq!(r.interior_valence, hist(&[(4, 6)]));
+    assert_eq!(r.boundary_valence, hist(&[(2, 4), (3, 10)]));
+}
+
+#[test]
+fn torus_counts() {
+    let (n, q) = torus(5, 3);
+    let r = check_quad_mesh(n, &q);
+    assert!(r.is_valid(), "{:?}", r.errors());
+    assert_eq!((r.faces, r.vertices_used, r.edges), (15, 15, 30));
+    assert_eq!((r.boundary_edges, r.boundary_loops, r.euler), (0, 0, 0));
+    assert_eq!(r.interior_valence, hist(&[(4, 15)]));
+    assert!(r.boundary_valence.is_empty());
+}
+
+#[test]
+fn cube_counts() {
+    let (p, q) = cube(3);
+    let r = check_quad_mesh(p.len(), &q);
+    assert!(r.is_valid(), "{:?}", r.errors());
+    assert_eq!((r.faces, r.vertices_used, r.edges), (54, 56, 108));
+    assert_eq!((r.euler, r.components, r.boundary_loops), (2, 1, 0));
+    assert_eq!(r.interior_valence, hist(&[(3, 8), (4, 48)]));
+}
+
+#[test]
+fn flipped_quad_is_misoriented() {
+    let (n, mut q) = grid(3, 3);
+    q[4].reverse(); // the centre quad
+    let r = check_quad_mesh(n, &q);
+    assert_eq!(r.misoriented_edges.len(), 4);
+    assert!(!r.is_valid());
+    assert_eq!(r.errors().len(), 1);
+}
+
+#[test]
+fn hole_adds_a_boundary_loop() {
+    let (n, mut q) = grid(3, 3);
+    q.remove(4);
+    let r = check_quad_mesh(n, &q);
+    assert!(r.is_valid(), "a hole is a valid mesh: {:?}", r.errors());
+    assert_eq!((r.boundary_loops, r.euler, r.boundary_edges), (2, 0, 16));
+    assert!(r.interior_valence.is_empty());
+}
+
+#[test]
+fn third_face_on_an_edge_is_non_manifold() {
+    let (n, mut q) = grid(2, 1);
+    // a fin on the edge 1-4 (the middle edge), using a new vertex pair
+    q.push([1, 4, n as u32, n as u32 + 1]);
+    let r = check_quad_mesh(n + 2, &q);
+    assert_eq!(r.non_manifold_edges, vec![[1, 4]]);
+    assert!(!r.is_valid());
+}
+
+#[test]
+fn bowtie_vertex_is_non_manifold() {
+    // two quads touching at vertex 2 only
+    let q = [[0, 1, 2, 3], [2, 4, 5, 6]];
+    let r = check_quad_mesh(7, &q);
+    assert_eq!(r.non_manifold_vertices, vec![2]);
+    assert_eq!((r.components, r.boundary_loops), (1, 1));
+    assert!(!r.is_valid());
+}
+
+#[test]
+fn degenerate_and_out_of_range_faces() {
+    let (n, mut q) = grid(2, 2);
+    q.push([0, 1, 1, 4]);
+    q.push([0, 1, 99, 4]);
+    let r = check_quad_mesh(n, &q);
+    assert_eq!(r.degenerate_faces, vec![4]);
+    assert_eq!(r.out_of_range_faces, vec![5]);
+    assert_eq!(r.errors().len(), 2);
+    // the good faces are still counted
+    assert_eq!((r.euler, r.boundary_loops), (1, 1));
+}
+
+#[test]
+fn empty_and_unused() {
+    let r = check_quad_mesh(3, &[]);
+    assert!(r.is_valid());
+    assert_eq!((r.unused_vertices, r.components, r.euler), (3, 0, 0));
+}

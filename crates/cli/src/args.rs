@@ -1,0 +1,104 @@
+//! Command-line parsing (hand-written: four subcommands and a few flags do
+//! not justify a parser dependency; every error is one line).
+
+use std::path::PathBuf;
+
+/// Global usage text.
+pub const USAGE: &str = "\
+dualex — quad meshes from messy grid-preserving maps
+
+usage:
+  dualex quad    [INPUT] -o OUTPUT [--stats STATS.json] [--no-fairing] [options]
+  dualex hex     INPUT.hexex -o OUTPUT [--stats STATS.json] [options]
+  dualex inspect INPUT [--json] [options]
+  dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`)
+
+INPUT:   triangle mesh with per-corner map: .obj (f v/vt) or .ply (face texcoord);
+         tet mesh with 3D map: .hexex
+OUTPUT:  quads: .obj .ply .vtk; hexes: .mesh (MEDIT) .vtk
+options:
+  --no-weld             keep coincident boundary vertices of cut meshes apart
+  --round-transitions   snap non-integer transition translations (reports how far)
+  --seed N              seed of the sanitization perturbations (default 1)
+  -v, --verbose         per-stage counts and timings on stderr
+  -q, --quiet           print nothing but errors
+  -h, --help            this text";
+
+/// Parsed command line.
+#[derive(Debug, Default)]
+pub struct Args {
+    /// Subcommand.
+    pub command: String,
+    /// Positional argument (input file or generator name).
+    pub input: Option<PathBuf>,
+    /// `-o`.
+    pub output: Option<PathBuf>,
+    /// `--stats`.
+    pub stats: Option<PathBuf>,
+    /// `--json`.
+    pub json: bool,
+    /// `--no-fairing`.
+    pub no_fairing: bool,
+    /// `--no-weld`.
+    pub no_weld: bool,
+    /// `--round-transitions`.
+    pub round: bool,
+    /// `--seed`.
+    pub seed: u64,
+    /// `--list`.
+    pub list: bool,
+    /// `-v`.
+    pub verbose: bool,
+    /// `-q`.
+    pub quiet: bool,
+}
+
+/// Parses `argv[1..]`.
+pub fn parse(argv: &[String]) -> Result<Args, String> {
+    let mut a = Args {
+        seed: 1,
+        ..Default::default()
+    };
+    let mut it = argv.iter();
+    let Some(cmd) = it.next() else {
+        return Err("missing subcommand (quad, hex, inspect, generate); see --help".into());
+    };
+    if cmd == "-h" || cmd == "--help" {
+        a.command = "help".into();
+        return Ok(a);
+    }
+    a.command = cmd.clone();
+    while let Some(x) = it.next() {
+        let mut value = |name: &str| {
+            it.next()
+                .cloned()
+                .ok_or_else(|| format!("option {name} needs a value"))
+        };
+        match x.as_str() {
+            "-o" | "--output" => a.output = Some(value(x)?.into()),
+            "--stats" => a.stats = Some(value(x)?.into()),
+            "--seed" => {
+                let v = value(x)?;
+                a.seed = v
+                    .parse()
+                    .map_err(|_| format!("--seed: not an integer: {v}"))?;
+            }
+            "--json" => a.json = true,
+            "--no-fairing" => a.no_fairing = true,
+            "--no-weld" => a.no_weld = true,
+            "--round-transitions" => a.round = true,
+            "--list" => a.list = true,
+            "-v" | "--verbose" => a.verbose = true,
+            "-q" | "--quiet" => a.quiet = true,
+            "-h" | "--help" => a.command = "help".into(),
+            s if s.starts_with('-') && s.len() > 1 => return Err(format!("unknown option {s}")),
+            s => {
+                if a.input.is_some() {
+                    return Err(format!("unexpected argument {s}"));
+                }
+                a.input = Some(s.into());
+            }
+        }
+    }
+    Ok(a)
+}

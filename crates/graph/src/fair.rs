@@ -1,0 +1,305 @@
+//! Index fairing (2D, DESIGN §4, paper appendix "Index Fairing").
+//!
+//! Input: an untangled 2D graph. Output: the same graph after saddle lifts
+//! that merge each interior vertex of valence 1 (index ¾), then valence 2
+//! (index ½), with the nearest interior vertex of valence ≥ 7 (index ≤ −¾)
+//! at most `max_path` edges away, and [`FairingStats`].
+//!
+//! The lift: at an interior vertex v of valence n ≥ 7 with fan
+//! X_0 … X_{n-1} (see [`crate::fan`]), crossings i and j = i ± 4 lie on the
+//! same iso with the same value in the chart carried around v (360° apart).
+//! OP2 reconnects them: a = X_i.out ↔ c = X_{j+1}.in, with ρ_ac the
+//! rotations composed along the fan from X_i to X_{j+1}; the former
+//! partners b = X_{i+1}.in ↔ e = X_j.out.
+//! ```text
+//!   before: v has n corners; w_i, w_j the far ends of crossings i, j
+//!   after:  v splits into 4 corners (X_{i+1}..X_j) and n−4 (X_{j+1}..X_i);
+//!           w_i and w_j merge: valence(w) = valence(w_i) + valence(w_j)
+//! ```
+//! So the index ≤ −¾ moves from v to w, one edge along the path; the last
+//! lift merges it with the target (valence 1 + 4 → 5, i.e. ¾ − 1 = −¼).
+//! Every lift is kept only if it brings the pair one edge closer (else it
+//! is undone by the inverse OP2), and a path that stalls is undone whole.
+
+use crate::fan::corner_sides;
+use crate::glue::Glued;
+use crate::graph::NodeGraph;
+use crate::ids::{axis, Node, Side};
+use crate::ops::OpError;
+use dualex_map::{Rot, Rot2};
+use serde_json::{json, Value};
+use std::collections::VecDeque;
+
+/// What index fairing did.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct FairingStats {
+    /// Interior vertices of valence 1 before fairing.
+    pub valence1_before: usize,
+    /// Interior vertices of valence 2 before fairing.
+    pub valence2_before: usize,
+    /// Singularities merged (paths completed).
+    pub merged: usize,
+    /// Saddle lifts kept.
+    pub lifts: usize,
+    /// Saddle lifts tried and undone.
+    pub undone: usize,
+    /// Candidates given up (no lift made progress).
+    pub abandoned: usize,
+    /// Interior vertices of valence 1 after fairing.
+    pub valence1_after: usize,
+    /// Interior vertices of valence 2 after fairing.
+    pub valence2_after: usize,
+}
+
+impl FairingStats {
+    /// The stats as a JSON object.
+    pub fn to_json(&self) -> Value {
+        json!({
+            "valence1_before": self.valence1_before,
+            "valence2_before": self.valence2_before,
+            "merged": self.merged,
+            "saddle_lifts": self.lifts,
+            "undone": self.undone,
+            "abandoned": self.abandoned,
+            "valence1_after": self.valence1_after,
+            "valence2_after": self.valence2_after,
+        })
+    }
+}
+
+/// How to undo a saddle lift: OP2 of `a` and `b` with `rho_ab`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LiftUndo {
+    a: Side,
+    b: Side,
+    rho_ab: Rot2,
+}
+
+/// Mesh vertices of a glued 2D graph: corners, interior flag, adjacency.
+struct Vertices {
+    glued: Glued<2>,
+    first: Vec<(Node, usize)>,
+    corners: Vec<usize>,
+    interior: Vec<bool>,
+    adj: Vec<Vec<u32>>,
+}
+
+impl Vertices {
+    fn new(g: &NodeGraph<2>) -> Self {
+        let glued = g.glue();
+        let nv = glued.n_vertices;
+        let mut first = vec![(Node(0), 0); nv];
+        let (mut corners, mut interior) = (vec![0usize; nv], vec![true; nv]);
+        for n in &glued.nodes {
+            for c in 0..4 {
+                let v = glued.vertex(*n, c) as usize;
+                if corners[v] == 0 {
+                    first[v] = (*n, c);
+                }
+                corners[v] += 1;
+                let (du, dv) = corner_sides(c);
+                if [du, dv]
+                    .iter()
+                    .any(|&d| g.opposite(g.side(*n, d)).is_none())
+                {
+                    interior[v] = false;
+                }
+            }
+        }
+        let mut adj = vec![Vec::new(); nv];
+        for (a, b) in glued.edges() {
+            adj[a as usize].push(b);
+            adj[b as usize].push(a);
+        }
+        Vertices {
+            glued,
+            first,
+            corners,
+            interior,
+            adj,
+        }
+    }
+
+    fn valence(&self, v: usize) -> Option<usize> {
+        self.interior[v].then_some(self.corners[v])
+    }
+
+    fn count(&self, valence: usize) -> usize {
+        (0..self.corners.len())
+            .filter(|&v| self.valence(v) == Some(valence))
+            .count()
+    }
+
+    /// Shortest path p → … → s through interior vertices to the nearest
+    /// interior vertex of valence ≥ 7, at most `max` edges.
+    fn path(&self, p: usize, max: usize) -> Option<Vec<usize>> {
+        let mut parent = vec![usize::MAX; self.adj.len()];
+        let mut queue = VecDeque::from([(p, 0usize)]);
+        parent[p] = p;
+        while let Some((v, d)) = queue.pop_front() {
+            if v != p && self.valence(v).is_some_and(|k| k >= 7) {
+                let mut path = vec![v];
+                while let Some(&last) = path.last().filter(|&&x| x != p) {
+                    path.push(parent[last]);
+                }
+                path.reverse();
+                return Some(path);
+            }
+            if d == max {
+                continue;
+            }
+            for &w in &self.adj[v] {
+                let w = w as usize;
+                if parent[w] == usize::MAX && self.interior[w] {
+                    parent[w] = v;
+                    queue.push_back((w, d + 1));
+                }
+            }
+        }
+        None
+    }
+}
+
+impl NodeGraph<2> {
+    /// Saddle lift at the vertex of corner `code` of `x`, reconnecting
+    /// crossings `i` and `j` of its fan (see the module docs).
+    pub fn lift(&mut self, x: Node, code: usize, i: usize, j: usize) -> Result<LiftUndo, OpError> {
+        let fan = self.fan(x, code).ok_or(OpError::BadLift(x))?;
+        let n = fan.len();
+        if i >= n || j >= n || i == j {
+            return Err(OpError::BadLift(x));
+        }
+        let a = self.side(fan[i].node, fan[i].out_dir);
+        let next = &fan[(j + 1) % n];
+        let c = self.side(next.node, next.in_dir);
+        let mut rho = Rot::IDENTITY;
+        let mut k = i;
+        loop {
+            rho = rho.then(&fan[k].rot);
+            if k == j {
+                break;
+            }
+            k = (k + 1) % n;
+        }
+        let b = self.opposite(a).ok_or(OpError::BadLift(x))?;
+        let rho_ab = self.rot[a.idx()];
+        self.op2(a, c, rho)?;
+        Ok(LiftUndo { a, b, rho_ab })
+    }
+
+    /// Undoes a lift (the inverse OP2); the graph must not have changed
+    /// since around those sides.
+    pub fn undo_lift(&mut self, u: LiftUndo) -> Result<(), OpError> {
+        self.op2(u.a, u.b, u.rho_ab).map(|_| ())
+    }
+
+    /// Index fairing with paths of at most `max_path` edges.
+    pub fn fair(&mut self, max_path: usize) -> FairingStats {
+        let v = Vertices::new(self);
+        let mut st = FairingStats {
+            valence1_before: v.count(1),
+            valence2_before: v.count(2),
+            ..Default::default()
+        };
+        for target in [1, 2] {
+            let mut given_up: Vec<(Node, usize)> = Vec::new();
+            let bound = 2 * Vertices::new(self).count(target) + 1;
+            for _ in 0..bound {
+                let v = Vertices::new(self);
+                let skip: Vec<u32> = given_up
+                    .iter()
+                    .map(|&(n, c)| v.glued.vertex(n, c))
+                    .collect();
+                let best = (0..v.corners.len())
+                    .filter(|&p| v.valence(p) == Some(target) && !skip.contains(&(p as u32)))
+                    .filter_map(|p| v.path(p, max_path).map(|path| (path.len(), p)))
+                    .min();
+                let Some((len, p)) = best else { break };
+                if self.move_along(v.first[p], len - 1, max_path, target, &mut st) {
+                    st.merged += 1;
+                } else {
+                    given_up.push(v.first[p]);
+                    st.abandoned += 1;
+                }
+            }
+        }
+        let v = Vertices::new(self);
+        st.valence1_after = v.count(1);
+        st.valence2_after = v.count(2);
+        st
+    }
+
+    /// Moves the singularity at distance `dist` from the vertex of corner
+    /// `pc` onto it, one lift per edge; undoes everything on a stall.
+    fn move_along(
+        &mut self,
+        pc: (Node, usize),
+        dist: usize,
+        max_path: usize,
+        target: usize,
+        st: &mut FairingStats,
+    ) -> bool {
+        let mut done = Vec::new();
+        for left in (1..=dist).rev() {
+            match self.lift_towards(pc, left, max_path, target, st) {
+                Some(u) => done.push(u),
+                None => {
+                    for u in done.into_iter().rev() {
+                        if let Err(e) = self.undo_lift(u) {
+                            panic!("bug: undoing a saddle lift failed: {e}");
+                        }
+                        st.undone += 1;
+                    }
+                    return false;
+                }
+            }
+        }
+        st.lifts += done.len();
+        true
+    }
+
+    /// One lift bringing the nearest valence ≥ 7 vertex from distance
+    /// `dist` to `dist − 1` of the vertex of `pc` (merging when 1).
+    fn lift_towards(
+        &mut self,
+        pc: (Node, usize),
+        dist: usize,
+        max_path: usize,
+        target: usize,
+        st: &mut FairingStats,
+    ) -> Option<LiftUndo> {
+        let v = Vertices::new(self);
+        let p = v.glued.vertex(pc.0, pc.1) as usize;
+        let path = v.path(p, max_path).filter(|path| path.len() == dist + 1)?;
+        let (s, next) = (path[dist], path[dist - 1] as u32);
+        let (sx, scode) = v.first[s];
+        let fan = self.fan(sx, scode).filter(|f| f.len() == v.corners[s])?;
+        let n = fan.len();
+        for (i, step) in fan.iter().enumerate() {
+            let far = step.code() ^ (1 << axis(step.in_dir));
+            if v.glued.vertex(step.node, far) != next {
+                continue;
+            }
+            for j in [(i + 4) % n, (i + n - 4) % n] {
+                let Ok(u) = self.lift(sx, scode, i, j) else {
+                    continue;
+                };
+                let after = Vertices::new(self);
+                let np = after.glued.vertex(pc.0, pc.1) as usize;
+                let ok = if dist == 1 {
+                    after.valence(np).is_some_and(|k| k > target)
+                } else {
+                    after.path(np, max_path).is_some_and(|p| p.len() == dist)
+                };
+                if ok {
+                    return Some(u);
+                }
+                if let Err(e) = self.undo_lift(u) {
+                    panic!("bug: undoing a saddle lift failed: {e}");
+                }
+                st.undone += 1;
+            }
+        }
+        None
+    }
+}

@@ -1,0 +1,272 @@
+//! Gluing: from the node graph to a mesh (DESIGN §3.4).
+//!
+//! Input: a [`NodeGraph`]. Output: [`Glued`], the vertex of every corner of
+//! every alive node (union–find over corners), the cells in output order,
+//! and counts read from the **graph**: unmatched sides, boundary components
+//! (2D: boundary loops, 3D: boundary surfaces) and connected components.
+//!
+//! Corners are numbered by bits, bit i set ⇔ the corner is on the + side
+//! of axis i:
+//! ```text
+//!   D = 2:  2 ── 3      D = 3: bottom (w = 0) as D = 2, top = bottom + 4
+//!           │    │  v
+//!           0 ── 1  └ u
+//! ```
+//! Rule: for a pair X.s ↔ Y.t with ρ, the corner of X between s and p
+//! (p ⊥ s) is the corner of Y between t and ρ(p).
+//!
+//! Output order: quads counter-clockwise, corner codes [00, 01, 11, 10];
+//! hexes in VTK order [000, 001, 011, 010, 100, 101, 111, 110] (bit0 = u).
+//! A reverted node emits the mirrored order (quad reversed from its first
+//! corner, hex with its two w-faces swapped), so that a consistently
+//! oriented graph gives consistently oriented cells.
+
+use crate::graph::NodeGraph;
+use crate::ids::{axis, positive, Node, Side};
+use crate::uf::UnionFind;
+use dualex_map::Rot;
+
+/// Marker for the corners of dead nodes in [`Glued::vertex_of`].
+pub const NO_VERTEX: u32 = u32::MAX;
+
+/// The mesh combinatorics obtained by gluing the alive nodes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Glued<const D: usize> {
+    /// Per node corner (`node·2^D + code`): its vertex, [`NO_VERTEX`] for
+    /// dead nodes.
+    pub vertex_of: Vec<u32>,
+    /// Number of vertices (ids `0..n_vertices`, by first corner).
+    pub n_vertices: usize,
+    /// Alive nodes, one cell each, in output order (node id order).
+    pub nodes: Vec<Node>,
+    /// Unmatched sides of alive nodes (boundary edges / faces).
+    pub unmatched_sides: usize,
+    /// Boundary components, from the graph: loops (D = 2), surfaces (D = 3).
+    pub boundary_loops: usize,
+    /// Connected components of alive nodes.
+    pub components: usize,
+    /// Pairs whose corners could not be matched (they break the label rule
+    /// so badly that ρ(s) and t are on different axes); not glued.
+    pub corner_mismatches: usize,
+    /// Per cell: 2^D vertex ids in output order.
+    cells: Vec<u32>,
+}
+
+/// Output position k ↦ corner code (see the module docs).
+fn cell_code<const D: usize>(k: usize, reverted: bool) -> usize {
+    let code = (k & !3) | ((k & 3) ^ ((k & 3) >> 1));
+    match (reverted, D) {
+        (false, _) => code,
+        (true, 2) => ((code & 1) << 1) | ((code >> 1) & 1),
+        (true, _) => code ^ (1 << (D - 1)),
+    }
+}
+
+/// The corner code of node(t) glued to corner `code` of node(s), for the
+/// pair s ↔ t with rotation `rho`; `code` must lie on side s. `None` when
+/// the pair is too broken to match corners.
+pub(crate) fn corner_across<const D: usize>(
+    s_dir: usize,
+    t_dir: usize,
+    rho: &Rot<D>,
+    code: usize,
+) -> Option<usize> {
+    let mut used = 1usize << axis(t_dir);
+    let mut out = if positive(t_dir) { used } else { 0 };
+    for a in (0..D).filter(|&a| a != axis(s_dir)) {
+        let p = 2 * a + usize::from(code >> a & 1 == 0);
+        let q = rho.apply_dir(p);
+        if used & (1 << axis(q)) != 0 {
+            return None;
+        }
+        used |= 1 << axis(q);
+        if positive(q) {
+            out |= 1 << axis(q);
+        }
+    }
+    Some(out)
+}
+
+/// Corner codes of a node lying on side `dir`.
+pub(crate) fn corners_on<const D: usize>(dir: usize) -> impl Iterator<Item = usize> {
+    let bit = 1usize << axis(dir);
+    (0..1usize << D).filter(move |c| (c & bit != 0) == positive(dir))
+}
+
+impl<const D: usize> NodeGraph<D> {
+    /// Glues the alive nodes into a mesh (see the module docs).
+    pub fn glue(&self) -> Glued<D> {
+        let k = 1usize << D;
+        let mut uf = UnionFind::new(self.n_nodes() * k);
+        let mut corner_mismatches = 0;
+        for s in (0..self.n_sides() as u32).map(Side) {
+            let Some(t) = self.opposite(s) else { continue };
+            if t < s || !self.is_alive(self.node_of(s)) {
+                continue;
+            }
+            let (x, y) = (self.node_of(s).idx(), self.node_of(t).idx());
+            let (sd, td, rho) = (self.dir_of(s), self.dir_of(t), self.rot[s.idx()]);
+            let pairs: Option<Vec<(usize, usize)>> = corners_on::<D>(sd)
+                .map(|c| corner_across(sd, td, &rho, c).map(|ct| (c, ct)))
+                .collect();
+            match pairs {
+                Some(pairs) => pairs
+                    .iter()
+                    .for_each(|&(c, ct)| uf.union(x * k + c, y * k + ct)),
+                None => corner_mismatches += 1,
+            }
+        }
+        let mut vertex_of = vec![NO_VERTEX; self.n_nodes() * k];
+        let mut id_of_root = vec![NO_VERTEX; self.n_nodes() * k];
+        let mut n_vertices = 0u32;
+        let nodes: Vec<Node> = self.alive_nodes().collect();
+        for n in &nodes {
+            for c in 0..k {
+                let i = n.idx() * k + c;
+                let r = uf.find(i);
+                if id_of_root[r] == NO_VERTEX {
+                    id_of_root[r] = n_vertices;
+                    n_vertices += 1;
+                }
+                vertex_of[i] = id_of_root[r];
+            }
+        }
+        let cells = nodes
+            .iter()
+            .flat_map(|n| {
+                let rev = self.is_reverted(*n);
+                let vertex_of = &vertex_of;
+                (0..k).map(move |j| vertex_of[n.idx() * k + cell_code::<D>(j, rev)])
+            })
+            .collect();
+        Glued {
+            vertex_of,
+            n_vertices: n_vertices as usize,
+            unmatched_sides: self.unmatched_sides(),
+            boundary_loops: self.boundary_components(),
+            components: self.components(),
+            corner_mismatches,
+            nodes,
+            cells,
+        }
+    }
+
+    /// Connected components of alive nodes (through glued pairs).
+    pub fn components(&self) -> usize {
+        let mut uf = UnionFind::new(self.n_nodes());
+        for s in (0..self.n_sides() as u32).map(Side) {
+            if let Some(t) = self.opposite(s) {
+                uf.union(self.node_of(s).idx(), self.node_of(t).idx());
+            }
+        }
+        let mut roots: Vec<usize> = self.alive_nodes().map(|n| uf.find(n.idx())).collect();
+        roots.sort_unstable();
+        roots.dedup();
+        roots.len()
+    }
+
+    /// Boundary components counted on unmatched sides of alive nodes: two
+    /// unmatched sides are adjacent when the fan of nodes around their
+    /// common corner (2D) / edge (3D) leads from one to the other.
+    pub fn boundary_components(&self) -> usize {
+        let free: Vec<Side> = (0..self.n_sides() as u32)
+            .map(Side)
+            .filter(|&s| self.opposite(s).is_none() && self.is_alive(self.node_of(s)))
+            .collect();
+        let mut uf = UnionFind::new(self.n_sides());
+        for &s in &free {
+            let sd = self.dir_of(s);
+            for p in (0..2 * D).filter(|&p| axis(p) != axis(sd)) {
+                if let Some(u) = self.fan_walk(self.node_of(s), sd, p) {
+                    uf.union(s.idx(), u.idx());
+                }
+            }
+        }
+        let mut roots: Vec<usize> = free.iter().map(|s| uf.find(s.idx())).collect();
+        roots.sort_unstable();
+        roots.dedup();
+        roots.len()
+    }
+
+    /// Turns around the corner/edge between sides `sin` and `sout` of `x`,
+    /// leaving through `sout`, until an unmatched side is reached.
+    fn fan_walk(&self, x: Node, sin: usize, sout: usize) -> Option<Side> {
+        let (mut x, mut sin, mut sout) = (x, sin, sout);
+        for _ in 0..=self.n_sides() {
+            let s = self.side(x, sout);
+            let Some(t) = self.opposite(s) else {
+                return Some(s);
+            };
+            let rho = self.rot[s.idx()];
+            (x, sin, sout) = (self.node_of(t), self.dir_of(t), rho.apply_dir(sin));
+            if axis(sin) == axis(sout) {
+                return None;
+            }
+        }
+        None
+    }
+}
+
+impl<const D: usize> Glued<D> {
+    /// Number of cells.
+    pub fn n_cells(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// The vertices of cell `i` in output order (`None` out of range).
+    pub fn cell(&self, i: usize) -> Option<&[u32]> {
+        let k = 1 << D;
+        self.cells.get(i * k..(i + 1) * k)
+    }
+
+    /// The vertex of corner `code` of `node` ([`NO_VERTEX`] if dead or out
+    /// of range).
+    pub fn vertex(&self, node: Node, code: usize) -> u32 {
+        let k = 1usize << D;
+        if code >= k {
+            return NO_VERTEX;
+        }
+        self.vertex_of
+            .get(node.idx() * k + code)
+            .copied()
+            .unwrap_or(NO_VERTEX)
+    }
+
+    /// Unique mesh edges (sorted vertex pairs, sorted), from the corners of
+    /// each cell that differ in one bit.
+    pub fn edges(&self) -> Vec<(u32, u32)> {
+        let k = 1usize << D;
+        let mut out = Vec::with_capacity(self.nodes.len() * D * k / 2);
+        for n in &self.nodes {
+            for c in 0..k {
+                for bit in (0..D).map(|a| 1usize << a).filter(|b| c & b == 0) {
+                    let (p, q) = (self.vertex(*n, c), self.vertex(*n, c | bit));
+                    out.push((p.min(q), p.max(q)));
+                }
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+}
+
+impl Glued<2> {
+    /// The quads, counter-clockwise, with their nodes.
+    pub fn cells(&self) -> impl Iterator<Item = (Node, [u32; 4])> + '_ {
+        self.nodes
+            .iter()
+            .zip(self.cells.chunks_exact(4))
+            .map(|(n, c)| (*n, [c[0], c[1], c[2], c[3]]))
+    }
+}
+
+impl Glued<3> {
+    /// The hexes, in VTK order, with their nodes.
+    pub fn cells(&self) -> impl Iterator<Item = (Node, [u32; 8])> + '_ {
+        self.nodes
+            .iter()
+            .zip(self.cells.chunks_exact(8))
+            .map(|(n, c)| (*n, std::array::from_fn(|i| c[i])))
+    }
+}

@@ -1,0 +1,7 @@
+//! Crate-level tests: generic over D, run for D = 2 and D = 3.
+
+mod fair_tests;
+mod glue_tests;
+mod ops_tests;
+mod support;
+mod untangle_tests;

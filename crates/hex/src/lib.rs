@@ -1,0 +1,164 @@
+//! # dualex-hex — hex extraction from messy 3D maps
+//!
+//! The driver [`extract`] reads as the pipeline's numbered steps, one
+//! module each:
+//! 1. [`local`]: local shifted coordinates (integer offset per tet);
+//! 2. [`sanitize`]: snap to exact GP, move vertices off the dual isos
+//!    ([`near`] says what "on" means, [`clusters`] what moves together);
+//! 3. [`nodes`]: integer points inside tets, reverted flags;
+//! 4. [`trace`]: walk every side along its iso-line to the opposite side;
+//! 5. untangling (pleat removal, `dualex_graph`);
+//! 6. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
+//!    diagonal tracing.
+//!
+//! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`].
+//! Walks that leave the mesh leave their side unmatched: free boundaries
+//! become boundary faces of the hex mesh.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod clusters;
+pub mod geometry;
+pub mod local;
+pub mod near;
+pub mod nodes;
+mod rng;
+pub mod sanitize;
+pub mod simplex;
+pub mod stats;
+pub mod trace;
+
+use dualex_graph::{NodeGraph, Side};
+use dualex_map::singularity::{edge_singularities, quality};
+use dualex_map::{HexMesh, InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
+pub use stats::HexStats;
+use std::time::Instant;
+
+/// Options of [`extract`].
+#[derive(Clone, Debug)]
+pub struct HexOptions {
+    /// Transition derivation options.
+    pub transitions: TransitionOptions,
+    /// Seed of the sanitization perturbations.
+    pub seed: u64,
+}
+
+impl Default for HexOptions {
+    fn default() -> Self {
+        HexOptions {
+            transitions: TransitionOptions::default(),
+            seed: 1,
+        }
+    }
+}
+
+/// Extracts the hex mesh of `map`.
+pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), InputError> {
+    let mut st = HexStats::default();
+    let mut clock = Instant::now();
+    let mut lap = |st: &mut HexStats, name: &str| {
+        let ms = clock.elapsed().as_secs_f64() * 1e3;
+        st.time_ms.push((name.to_string(), ms));
+        clock = Instant::now();
+    };
+    map.validate()?;
+    map.check_not_reflected()?;
+    st.input_tets = map.len();
+    let topo = Topology::build(map)?;
+    let (trans, trep) = Transitions::derive(map, &topo, &opts.transitions)?;
+    st.max_transition_residual = trep.max_residual;
+    st.snapped_transitions = trep.snapped;
+    let stars = Stars::build(map, &topo, &trans);
+    st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
+    st.singular_edges = edge_singularities(map, &topo, &trans).len();
+    (st.reverted_tets, st.degenerate_tets) = quality(map);
+    lap(&mut st, "map");
+    // 1–2
+    let mut local = local::LocalMap::new(map, &topo, &trans);
+    st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    lap(&mut st, "sanitize");
+    // 3
+    let nodes = nodes::Nodes::find(&local);
+    st.nodes = nodes.len();
+    st.reverted_nodes = nodes.reverted.iter().filter(|&&r| r).count();
+    lap(&mut st, "nodes");
+    // 4
+    let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
+    st.trace = trep;
+    let mut graph = NodeGraph::<3>::new(nodes.reverted.clone());
+    link_mutual(&mut graph, &ends, &mut st);
+    st.label_violations = graph.label_violations();
+    lap(&mut st, "trace");
+    // 5
+    st.untangle = Some(graph.untangle());
+    lap(&mut st, "untangle");
+    // 6
+    let glued = graph.glue();
+    let mesh = place_vertices(map, &local, &topo, &nodes, &glued);
+    st.finish_output(&graph, &glued, &mesh);
+    lap(&mut st, "glue_geometry");
+    Ok((mesh, st))
+}
+
+/// Links the sides whose walks reached each other.
+fn link_mutual(graph: &mut NodeGraph<3>, ends: &[trace::End], st: &mut HexStats) {
+    for (a, end) in ends.iter().enumerate() {
+        let trace::End::Node { side: b, rho } = *end else {
+            continue;
+        };
+        let b = b as usize;
+        if b < a {
+            continue;
+        }
+        match ends.get(b) {
+            Some(trace::End::Node { side, rho: back }) if *side as usize == a => {
+                if *back != rho.inverse() {
+                    st.rotation_mismatches += 1;
+                }
+                if b == a || graph.link(Side(a as u32), Side(b as u32), rho).is_err() {
+                    st.non_mutual += 1;
+                }
+            }
+            _ => st.non_mutual += 1,
+        }
+    }
+}
+
+/// Positions of the glued vertices by diagonal tracing (corner code bits:
+/// bit0 u, bit1 v, bit2 w, set = + side).
+fn place_vertices(
+    map: &TetMap,
+    local: &local::LocalMap,
+    topo: &Topology<4>,
+    nodes: &nodes::Nodes,
+    glued: &dualex_graph::Glued<3>,
+) -> HexMesh {
+    let mut best: Vec<Option<geometry::Candidate>> = vec![None; glued.n_vertices];
+    for (node, _) in glued.cells() {
+        for code in 0..8 {
+            let v = glued.vertex(node, code) as usize;
+            let Some(slot) = best.get_mut(v) else {
+                panic!("bug: corner {code} of node {} has no vertex", node.idx())
+            };
+            if slot.is_some_and(|b| b.dist == 0.0) {
+                continue;
+            }
+            let sgn = [0, 1, 2].map(|a| if code >> a & 1 == 1 { 1.0 } else { -1.0 });
+            let c = geometry::diagonal(map, local, topo, nodes, node.idx(), sgn);
+            if slot.is_none_or(|b| c.dist < b.dist) {
+                *slot = Some(c);
+            }
+        }
+    }
+    HexMesh {
+        positions: best.iter().map(|b| b.map_or([0.0; 3], |c| c.pos)).collect(),
+        cells: glued.cells().map(|(_, h)| h).collect(),
+    }
+}
+
+#[cfg(test)]
+mod data_tests;
+#[cfg(test)]
+mod testblock;
+#[cfg(test)]
+mod tests;

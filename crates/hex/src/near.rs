@@ -1,0 +1,215 @@
+//! Closeness predicates of sanitization: what counts as a vertex, an edge
+//! or a face lying "on" the dual grid of the local shifted map.
+//!
+//! - a **vertex** is on an iso-surface when one coordinate is within
+//!   [`EPS`] of an integer;
+//! - an **edge** is on an iso-line when, for some pair of axes, its
+//!   projection onto that pair's plane passes within [`EPS`] of an integer
+//!   point (the iso-line `{x_b, x_c ∈ ℤ}` seen end-on);
+//! - a **face** is on a grid point when an integer point is within [`EPS`]
+//!   of the triangle's plane and projects inside the triangle.
+//!
+//! Coordinates are local (see [`crate::local`]), so `EPS` is absolute.
+//! [`bad_vertices`] turns these into the vertices to move; a grid point at
+//! (or next to) an endpoint is that endpoint's problem only, so a vertex
+//! that cannot move (singular) does not keep its neighbours moving.
+
+use crate::simplex::face_corners;
+use dualex_map::TetMap;
+
+/// Distance below which a value counts as "on" an iso.
+pub const EPS: f64 = 1e-9;
+
+/// Whether `x` is within [`EPS`] of an integer.
+#[inline]
+pub fn near_int(x: f64) -> bool {
+    (x - x.round()).abs() < EPS
+}
+
+fn dist2d(a: &[f64; 2], b: &[f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let l2 = d[0] * d[0] + d[1] * d[1];
+    let t = if l2 == 0.0 {
+        0.0
+    } else {
+        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
+    };
+    dist2d(&[a[0] + t * d[0], a[1] + t * d[1]], p)
+}
+
+/// An integer point within [`EPS`] of the 2D segment `a`–`b`, if any.
+pub fn grid_point_near_segment(a: &[f64; 2], b: &[f64; 2]) -> Option<[f64; 2]> {
+    for axis in 0..2 {
+        let o = 1 - axis;
+        let (lo, hi) = (a[axis].min(b[axis]), a[axis].max(b[axis]));
+        let len = b[axis] - a[axis];
+        let mut i = (lo - EPS).ceil();
+        while i <= hi + EPS {
+            let t = if len == 0.0 {
+                0.0
+            } else {
+                ((i - a[axis]) / len).clamp(0.0, 1.0)
+            };
+            let mut g = [0.0; 2];
+            g[axis] = i;
+            g[o] = (a[o] + t * (b[o] - a[o])).round();
+            if point_segment_dist(&g, a, b) < EPS {
+                return Some(g);
+            }
+            i += 1.0;
+        }
+    }
+    None
+}
+
+/// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
+/// at `a`, at `b` (within [`EPS`] in the projection), or at neither.
+pub fn segment_near_iso_line(a: &[f64; 3], b: &[f64; 3]) -> Option<(bool, bool)> {
+    for [i, j] in [[0, 1], [0, 2], [1, 2]] {
+        let (pa, pb) = ([a[i], a[j]], [b[i], b[j]]);
+        if let Some(g) = grid_point_near_segment(&pa, &pb) {
+            return Some((dist2d(&g, &pa) < EPS, dist2d(&g, &pb) < EPS));
+        }
+    }
+    None
+}
+
+fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn cross(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Whether an integer point lies within [`EPS`] of triangle `t`'s plane and
+/// strictly inside it, farther than [`EPS`] from its edges (grid points
+/// near an edge are the edge's problem). Zero-area triangles: `false`.
+pub fn triangle_near_grid_point(t: &[[f64; 3]; 3]) -> bool {
+    let n = cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]));
+    let len = dot(&n, &n).sqrt();
+    if len == 0.0 || !len.is_finite() {
+        return false;
+    }
+    // iterate the plane of the two axes other than the dominant normal one
+    let z = (0..3).fold(0, |m, k| if n[k].abs() > n[m].abs() { k } else { m });
+    let (x, y) = ((z + 1) % 3, (z + 2) % 3);
+    let lo = |k: usize| t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min).ceil() as i64;
+    let hi = |k: usize| {
+        t.iter()
+            .map(|p| p[k])
+            .fold(f64::NEG_INFINITY, f64::max)
+            .floor() as i64
+    };
+    for gx in lo(x)..=hi(x) {
+        for gy in lo(y)..=hi(y) {
+            let mut g = [0.0; 3];
+            g[x] = gx as f64;
+            g[y] = gy as f64;
+            g[z] = t[0][z] - (n[x] * (g[x] - t[0][x]) + n[y] * (g[y] - t[0][y])) / n[z];
+            g[z] = g[z].round();
+            if dot(&sub(&g, &t[0]), &n).abs() / len >= EPS {
+                continue;
+            }
+            let inside = (0..3).all(|i| {
+                let (a, b) = (t[(i + 1) % 3], t[(i + 2) % 3]);
+                let c = cross(&sub(&a, &g), &sub(&b, &g));
+                let e = sub(&b, &a);
+                // signed distance of g to edge a–b, in the plane
+                dot(&c, &n) / (len * dot(&e, &e).sqrt()) > EPS
+            });
+            if inside {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Vertices on an iso-surface, endpoints of edges on an iso-line (not at
+/// the grid point's own endpoint), and corners of faces on a grid point.
+pub fn bad_vertices(map: &TetMap, coords: &[[[f64; 3]; 4]]) -> Vec<u32> {
+    let mut bad = vec![false; map.positions.len()];
+    for (s, tet) in map.simplices.iter().enumerate() {
+        let c = &coords[s];
+        for k in 0..4 {
+            if c[k].iter().any(|&x| near_int(x)) {
+                bad[tet[k] as usize] = true;
+            }
+            for l in k + 1..4 {
+                if let Some((at_k, at_l)) = segment_near_iso_line(&c[k], &c[l]) {
+                    bad[tet[k] as usize] |= at_k || !at_l;
+                    bad[tet[l] as usize] |= at_l || !at_k;
+                }
+            }
+        }
+        for f in 0..4 {
+            let fc = face_corners(f);
+            if triangle_near_grid_point(&fc.map(|i| c[i])) {
+                fc.iter().for_each(|&i| bad[tet[i] as usize] = true);
+            }
+        }
+    }
+    (0..bad.len() as u32).filter(|&v| bad[v as usize]).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn segment_through_iso_line_is_detected_for_each_axis_pair() {
+        // moving along a diagonal through (1, 1, z) for every pair
+        for k in 0..3 {
+            let mut a = [0.3; 3];
+            let mut b = [1.7; 3];
+            a[k] = 0.2;
+            b[k] = 0.4; // the third coordinate is free
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            a[i] = 0.5;
+            a[j] = 0.5;
+            b[i] = 1.5;
+            b[j] = 1.5;
+            assert_eq!(
+                segment_near_iso_line(&a, &b),
+                Some((false, false)),
+                "pair {k}"
+            );
+        }
+        assert_eq!(
+            segment_near_iso_line(&[0.5, 0.6, 0.3], &[1.5, 1.7, 0.4]),
+            None
+        );
+        // the grid point at an endpoint
+        assert_eq!(
+            segment_near_iso_line(&[1.0, 2.0, 0.3], &[1.5, 1.7, 0.4]),
+            Some((true, false))
+        );
+    }
+
+    #[test]
+    fn face_on_grid_point_is_detected_only_inside() {
+        let t = [[0.2, 0.3, 1.0], [2.2, 0.4, 1.0], [0.5, 2.1, 1.0]];
+        assert!(triangle_near_grid_point(&t)); // (1, 1, 1)
+        let lifted = t.map(|p| [p[0], p[1], 1.1]);
+        assert!(!triangle_near_grid_point(&lifted));
+        // tilted plane through (1,1,1)
+        let tilt = [[0.0, 0.0, 0.8], [2.5, 0.0, 1.3], [0.0, 2.5, 0.8]];
+        assert!(triangle_near_grid_point(&tilt));
+        // grid point on an edge: not the face's problem
+        let edge = [[0.0, 1.0, 1.0], [2.0, 1.0, 1.0], [1.0, 1.8, 1.0]];
+        assert!(!triangle_near_grid_point(&edge));
+    }
+}

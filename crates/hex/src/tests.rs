@@ -1,0 +1,135 @@
+//! End-to-end tests of the hex pipeline on blocks built here.
+use super::*;
+use crate::testblock::{assert_block, block, even, identity, rechart};
+use dualex_map::Rot3;
+
+fn lines(lo: f64) -> [testblock::Lines; 3] {
+    [
+        even(lo, lo + 3.0, 5),
+        even(lo, lo + 4.0, 7),
+        even(lo, lo + 2.0, 3),
+    ]
+}
+
+#[test]
+fn block_gives_3x4x2() {
+    let m = block(&lines(0.2), identity);
+    let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
+    assert_block(&mesh, &st, [3, 4, 2], "block", true);
+    assert_eq!(st.reverted_tets, 0);
+    assert_eq!(st.nodes, 24);
+    // the + corner of every hex is inside the box: at an integer point
+    let at_int = mesh
+        .positions
+        .iter()
+        .filter(|p| p.iter().all(|x| (x - x.round()).abs() < 1e-9))
+        .count();
+    assert_eq!(at_int, 3 * 4 * 2);
+    assert_eq!(mesh.positions.len(), 4 * 5 * 3);
+}
+
+#[test]
+fn block_far_from_origin() {
+    let off = (1u64 << 40) as f64;
+    let m = block(&lines(0.2), |_, x, _| x.map(|v| v + off));
+    let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
+    assert_block(&mesh, &st, [3, 4, 2], "2^40", true);
+}
+
+#[test]
+fn block_on_half_integers_is_sanitized() {
+    // interior grid lines at every half-integer: vertices on dual isos,
+    // diagonals and faces through dual grid points
+    let l = |hi: f64| {
+        let mut v = vec![0.2];
+        v.extend((1..(2.0 * hi) as usize).map(|i| i as f64 * 0.5));
+        v.push(hi + 0.2);
+        v
+    };
+    let m = block(&[l(3.0), l(4.0), l(2.0)], identity);
+    let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
+    assert!(st.sanitize.perturbed_vertices > 0, "{}", st.to_json());
+    assert_eq!(st.sanitize.unresolved, 0);
+    assert_block(&mesh, &st, [3, 4, 2], "half-integers", true);
+}
+
+#[test]
+fn block_with_a_rotated_half_for_every_rotation() {
+    for r in Rot3::all() {
+        let t = [3, -2, 5];
+        let m = block(
+            &lines(0.2),
+            |_, x, c| if c[0] > 1.7 { rechart(&r, t, x) } else { x },
+        );
+        let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
+        assert_block(&mesh, &st, [3, 4, 2], &format!("{r:?}"), true);
+    }
+}
+
+#[test]
+fn noisy_block_untangles_to_the_block() {
+    // 0.25-cells, each vertex's map value moved by up to 0.5 (consistently in
+    // all its tets): some tets and nodes revert
+    let l = [even(0.2, 3.2, 12), even(0.2, 4.2, 16), even(0.2, 2.2, 8)];
+    let noise = |x: [f64; 3]| {
+        let key = x.map(|v| (v * 1000.0).round() as i64);
+        let mut r = crate::rng::SplitMix::new((key[0] * 1_000_003 + key[1] * 1009 + key[2]) as u64);
+        let interior = x
+            .iter()
+            .zip([3.2, 4.2, 2.2])
+            .all(|(&v, hi)| v > 0.21 && v < hi - 0.01);
+        let d = r.direction();
+        let a = if interior { 0.5 * r.unit() } else { 0.0 };
+        [0, 1, 2].map(|k| x[k] + a * d[k])
+    };
+    let m = block(&l, |_, x, _| noise(x));
+    let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
+    assert!(st.reverted_tets > 0, "{}", st.to_json());
+    assert!(st.reverted_nodes > 0, "{}", st.to_json());
+    let u = st.untangle.clone().unwrap_or_default();
+    assert_eq!(
+        2 * u.pleats_removed,
+        st.reverted_nodes * 2,
+        "{}",
+        st.to_json()
+    );
+    assert_eq!(u.reverted_left, 0);
+    let inverted = assert_block(&mesh, &st, [3, 4, 2], "noisy", false);
+    eprintln!("noisy block: {inverted} inverted hexes; {}", st.to_json());
+}
+
+#[test]
+fn coarse_block_with_many_nodes_per_tet() {
+    // one cube, 6 tets, 27 nodes: walks meet nodes of their own tet
+    let l = [even(0.2, 3.2, 1), even(0.2, 3.2, 1), even(0.2, 3.2, 1)];
+    let m = block(&l, identity);
+    let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
+    assert_eq!(st.nodes, 27);
+    assert_block(&mesh, &st, [3, 3, 3], "coarse", true);
+}
+
+#[test]
+fn noisy_block_is_the_same_for_every_seed() {
+    let l = [even(0.2, 3.2, 12), even(0.2, 4.2, 16), even(0.2, 2.2, 8)];
+    let m = block(&l, |_, x, _| {
+        // one displacement per vertex (keyed by its position): consistent charts
+        let key = x.map(|v| (v * 1000.0).round() as i64);
+        let mut r = crate::rng::SplitMix::new((key[0] * 7919 + key[1] * 104_729 + key[2]) as u64);
+        let inside = x
+            .iter()
+            .zip([3.2, 4.2, 2.2])
+            .all(|(&v, hi)| v > 0.21 && v < hi - 0.01);
+        let a = if inside { 0.45 * r.unit() } else { 0.0 };
+        let d = r.direction();
+        [0, 1, 2].map(|k| x[k] + a * d[k])
+    });
+    for seed in 1..=4 {
+        let opts = HexOptions {
+            seed,
+            ..HexOptions::default()
+        };
+        let (mesh, st) = extract(&m, &opts).expect("extract");
+        assert!(st.reverted_nodes > 0, "seed {seed}: {}", st.to_json());
+        assert_block(&mesh, &st, [3, 4, 2], &format!("seed {seed}"), false);
+    }
+}

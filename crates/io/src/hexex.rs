@@ -1,0 +1,249 @@
+//! HexEx `.hexex` input: a tet mesh with a 3D map.
+//!
+//! Input, a whitespace-insensitive token stream:
+//! ```text
+//!   n_v
+//!   x y z                      × n_v
+//!   n_t
+//!   a b c d  u v w ×4          × n_t   (a..d: 0-based vertex indices)
+//! ```
+//! Numbers may be short decimals or scientific notation. Output: a
+//! [`TetMap`]. Errors name the line of the offending token (or the last line
+//! when the file ends early) and the vertex / tet, counted from 0. Counts are
+//! checked against the bytes left before anything is allocated.
+
+use crate::scan::{as_text, fits, parse_finite, quote, Tokens};
+use dualex_map::{InputError, TetMap};
+
+/// Parses a `.hexex` tet map (see the module docs).
+pub fn parse_hexex(bytes: &[u8]) -> Result<TetMap, InputError> {
+    let text = as_text(bytes, "hexex")?;
+    let mut t = Tokens::new(text, 1);
+    let nv = read_count(&mut t, ["vertex", "vertices"], 3)?;
+    let mut positions = Vec::with_capacity(nv);
+    for i in 0..nv {
+        let mut p = [0.0; 3];
+        read_numbers(&mut t, &mut p, || format!("vertex {i}"), "coordinates")?;
+        positions.push(p);
+    }
+    let nt = read_count(&mut t, ["tet", "tets"], 16)?;
+    let mut map = TetMap {
+        positions,
+        simplices: Vec::with_capacity(nt),
+        coords: Vec::with_capacity(nt),
+    };
+    for s in 0..nt {
+        let tet = read_tet_indices(&mut t, s, nv)?;
+        let mut uvw = [0.0; 12];
+        read_numbers(&mut t, &mut uvw, || format!("tet {s}"), "map coordinates")?;
+        map.simplices.push(tet);
+        map.coords.push(std::array::from_fn(|c| {
+            [uvw[3 * c], uvw[3 * c + 1], uvw[3 * c + 2]]
+        }));
+    }
+    if let Some((tok, line)) = t.next_token() {
+        return Err(InputError::at_line(
+            line,
+            format!(
+                "unexpected {} after the last tet (the file declares {nt} tets)",
+                quote(tok)
+            ),
+        ));
+    }
+    if map.simplices.is_empty() {
+        return Err(InputError::at_line(
+            t.last_line(),
+            "no tets (the tet count is 0)",
+        ));
+    }
+    map.validate()?;
+    Ok(map)
+}
+
+/// Reads a count of items of `tokens_per_item` tokens and checks that they
+/// can fit in the bytes left (each token takes at least 2 bytes).
+fn read_count(
+    t: &mut Tokens<'_>,
+    [what, whats]: [&str; 2],
+    tokens_per_item: u64,
+) -> Result<usize, InputError> {
+    let (tok, line) = t.next_token().ok_or_else(|| {
+        InputError::at_line(t.last_line(), format!("file ends before the {what} count"))
+    })?;
+    let n: u64 = tok.parse().map_err(|_| {
+        InputError::at_line(
+            line,
+            format!("{what} count {} is not a non-negative integer", quote(tok)),
+        )
+    })?;
+    if !fits(n, 2 * tokens_per_item, t.remaining(), 1) {
+        return Err(InputError::at_line(
+            line,
+            format!(
+                "the file declares {n} {whats}, but only {} bytes follow (each {what} needs {tokens_per_item} numbers): truncated file or wrong count",
+                t.remaining()
+            ),
+        ));
+    }
+    usize::try_from(n)
+        .map_err(|_| InputError::at_line(line, format!("{what} count {n} is too large")))
+}
+
+/// Fills `out` with finite numbers; `owner` names the vertex / tet.
+fn read_numbers(
+    t: &mut Tokens<'_>,
+    out: &mut [f64],
+    owner: impl Fn() -> String,
+    what: &str,
+) -> Result<(), InputError> {
+    for k in 0..out.len() {
+        let Some((tok, line)) = t.next_token() else {
+            return Err(InputError::at_line(
+                t.last_line(),
+                format!(
+                    "file ends in {}: expected {} {what}, found {k}",
+                    owner(),
+                    out.len()
+                ),
+            ));
+        };
+        let x = parse_finite(tok, "value")
+            .map_err(|m| InputError::at_line(line, format!("{}: {m}", owner())))?;
+        if let Some(slot) = out.get_mut(k) {
+            *slot = x;
+        }
+    }
+    Ok(())
+}
+
+/// Reads the 4 vertex indices of tet `s`.
+fn read_tet_indices(t: &mut Tokens<'_>, s: usize, nv: usize) -> Result<[u32; 4], InputError> {
+    let mut tet = [0u32; 4];
+    for (c, slot) in tet.iter_mut().enumerate() {
+        let Some((tok, line)) = t.next_token() else {
+            return Err(InputError::at_line(
+                t.last_line(),
+                format!("file ends in tet {s}: expected 4 vertex indices, found {c}"),
+            ));
+        };
+        let at = |m: String| InputError::at_line(line, format!("tet {s}: corner {c}: {m}"));
+        let Ok(i) = tok.parse::<u64>() else {
+            let hint = if tok.parse::<f64>().is_ok() {
+                " (a number is missing or extra earlier in the file, or a count is wrong)"
+            } else {
+                ""
+            };
+            return Err(at(format!(
+                "vertex index {} is not a non-negative integer{hint}",
+                quote(tok)
+            )));
+        };
+        if i >= nv as u64 {
+            return Err(at(format!(
+                "vertex index {i} is out of range (the file has {nv} vertices)"
+            )));
+        }
+        *slot = i as u32;
+    }
+    Ok(tet)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TET: &str = "4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1\n0 1 2 3 0 0 0 1e0 0 0 0 .5 0 0 0 2.5E-1\n";
+
+    fn err(text: &str) -> String {
+        parse_hexex(text.as_bytes()).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn reads_one_tet() {
+        let m = parse_hexex(TET.as_bytes()).unwrap();
+        assert_eq!(m.positions.len(), 4);
+        assert_eq!(m.simplices, vec![[0, 1, 2, 3]]);
+        assert_eq!(
+            m.coords[0],
+            [
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [0.0, 0.5, 0.0],
+                [0.0, 0.0, 0.25]
+            ]
+        );
+        // whitespace-insensitive: all on one line, tabs, CRLF
+        let flat = TET.replace('\n', "\t\r\n ").replace("\r\n", " ");
+        assert_eq!(parse_hexex(flat.as_bytes()).unwrap(), m);
+    }
+
+    #[test]
+    fn truncations_name_the_element() {
+        let cut = "4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1\n0 1 2 3 0.0 0.0 0.0 1.0 0.0 0.0 0.0 1.0 0.0\n";
+        assert_eq!(
+            err(cut),
+            "line 7: file ends in tet 0: expected 12 map coordinates, found 9"
+        );
+        let e = err("4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1\n0 1\n");
+        assert_eq!(e, "line 6: the file declares 1 tets, but only 5 bytes follow (each tet needs 16 numbers): truncated file or wrong count");
+        assert_eq!(
+            err("4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"),
+            "line 5: file ends before the tet count"
+        );
+        assert_eq!(
+            err("2\n0.0 0.0 0.0 1.0 0.0\n"),
+            "line 2: file ends in vertex 1: expected 3 coordinates, found 2"
+        );
+        assert_eq!(err(""), "line 1: file ends before the vertex count");
+    }
+
+    #[test]
+    fn bad_tokens_name_their_line() {
+        let e = err(&TET.replace("0 1 2 3", "0 1 2.0 3"));
+        assert!(e.starts_with("line 7: tet 0: corner 2: vertex index `2.0` is not a non-negative integer (a number"), "{e}");
+        assert_eq!(
+            err(&TET.replace("0 1 2 3", "0 1 7 3")),
+            "line 7: tet 0: corner 2: vertex index 7 is out of range (the file has 4 vertices)"
+        );
+        assert_eq!(
+            err(&TET.replace("1 0 0\n", "1 x 0\n")),
+            "line 3: vertex 1: value `x` is not a number"
+        );
+        assert_eq!(
+            err(&TET.replace("2.5E-1", "nan")),
+            "line 7: tet 0: value is not finite (`nan`)"
+        );
+        assert_eq!(
+            err(&format!("{TET}\n7\n")),
+            "line 9: unexpected `7` after the last tet (the file declares 1 tets)"
+        );
+        assert_eq!(
+            err(&TET.replace("\n1\n", "\n-1\n")),
+            "line 6: tet count `-1` is not a non-negative integer"
+        );
+        assert_eq!(
+            err("4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0\n"),
+            "line 6: no tets (the tet count is 0)"
+        );
+        assert_eq!(
+            err(&TET.replace("0 1 2 3", "0 1 1 3")),
+            "tet 0: vertex 1 appears twice"
+        );
+    }
+
+    #[test]
+    fn absurd_counts_fail_before_allocating() {
+        let e = err("100000000000000\n0 0 0\n");
+        assert_eq!(e, "line 1: the file declares 100000000000000 vertices, but only 7 bytes follow (each vertex needs 3 numbers): truncated file or wrong count");
+        let e = err("18446744073709551615\n");
+        assert!(
+            e.starts_with("line 1: the file declares 18446744073709551615 vertices"),
+            "{e}"
+        );
+        let e = err(&TET.replace("\n1\n", "\n99999999999\n"));
+        assert!(
+            e.starts_with("line 6: the file declares 99999999999 tets, but only"),
+            "{e}"
+        );
+    }
+}

@@ -1,0 +1,432 @@
+//! PLY input (ascii, binary little and big endian): triangle maps and
+//! polygon meshes.
+//!
+//! Input: a `vertex` element with scalar `x`, `y`, `z` (any PLY type) and a
+//! `face` element with a `vertex_indices` (or `vertex_index`) list; for a
+//! triangle map also a per-face `texcoord` list of 6 values
+//! `u0 v0 u1 v1 u2 v2`. Other elements and properties (lists included) are
+//! skipped. Output: a [`TriMap`] or a [`PolyMesh`].
+//!
+//! Guard: before reading an element (or a list), its claimed size is checked
+//! against the bytes left, so a header claiming 10^14 vertices fails at once
+//! and no allocation ever exceeds the file size. Errors name the header line,
+//! or the body position (`line L` in ascii, `byte B` in binary) and the
+//! record (`face 12`, counted from 0).
+
+use crate::ply_header::{parse_header, Element, Kind, PlyFormat, Scalar};
+use crate::scan::{fits, quote, Tokens};
+use crate::PolyMesh;
+use dualex_map::{InputError, TriMap};
+
+/// Where values come from: ascii tokens or binary bytes.
+enum Body<'a> {
+    Ascii(Tokens<'a>),
+    Binary {
+        bytes: &'a [u8],
+        pos: usize,
+        big: bool,
+        base: usize,
+    },
+}
+
+impl Body<'_> {
+    /// The position for messages.
+    fn here(&self) -> String {
+        match self {
+            Body::Ascii(t) => format!("line {}", t.last_line()),
+            Body::Binary { pos, base, .. } => format!("byte {}", base + pos),
+        }
+    }
+
+    fn remaining(&self) -> usize {
+        match self {
+            Body::Ascii(t) => t.remaining(),
+            Body::Binary { bytes, pos, .. } => bytes.len().saturating_sub(*pos),
+        }
+    }
+
+    /// Whether `count` items of `size` binary bytes fit in what is left.
+    fn fits(&self, count: u64, binary_size: u64, ascii_tokens: u64) -> bool {
+        match self {
+            Body::Ascii(_) => fits(count, 2 * ascii_tokens, self.remaining(), 1),
+            Body::Binary { .. } => fits(count, binary_size, self.remaining(), 0),
+        }
+    }
+
+    /// Reads one scalar of type `ty`.
+    fn scalar(&mut self, ty: Scalar) -> Result<f64, String> {
+        match self {
+            Body::Ascii(t) => {
+                let (tok, _) = t.next_token().ok_or("file ends early (truncated file?)")?;
+                if ty.is_int() {
+                    tok.parse::<i64>()
+                        .map(|i| i as f64)
+                        .map_err(|_| format!("{} is not an integer", quote(tok)))
+                } else {
+                    tok.parse::<f64>()
+                        .map_err(|_| format!("{} is not a number", quote(tok)))
+                }
+            }
+            Body::Binary {
+                bytes, pos, big, ..
+            } => {
+                let raw = bytes
+                    .get(*pos..*pos + ty.size())
+                    .ok_or("file ends early (truncated file?)")?;
+                *pos += ty.size();
+                Ok(decode(ty, raw, *big))
+            }
+        }
+    }
+
+    /// Reads a list length (a non-negative integer that fits in the bytes
+    /// left for items of type `item`).
+    fn list_len(&mut self, count: Scalar, item: Scalar, name: &str) -> Result<usize, String> {
+        let n = self.scalar(count)?;
+        if n < 0.0 || n.fract() != 0.0 {
+            return Err(format!(
+                "list `{name}` length {n} is not a non-negative integer"
+            ));
+        }
+        if !self.fits(n as u64, item.size() as u64, 1) {
+            return Err(format!(
+                "list `{name}` claims {n} items but the file ends before (truncated file?)"
+            ));
+        }
+        Ok(n as usize)
+    }
+}
+
+/// Decodes a binary scalar; `raw` has exactly `ty.size()` bytes.
+fn decode(ty: Scalar, raw: &[u8], big: bool) -> f64 {
+    fn arr<const K: usize>(raw: &[u8], big: bool) -> [u8; K] {
+        let mut a = [0u8; K];
+        a.copy_from_slice(raw.get(..K).unwrap_or(&[0; K][..]));
+        if big {
+            a.reverse();
+        }
+        a
+    }
+    match ty {
+        Scalar::I8 => i8::from_le_bytes(arr(raw, big)) as f64,
+        Scalar::U8 => u8::from_le_bytes(arr(raw, big)) as f64,
+        Scalar::I16 => i16::from_le_bytes(arr(raw, big)) as f64,
+        Scalar::U16 => u16::from_le_bytes(arr(raw, big)) as f64,
+        Scalar::I32 => i32::from_le_bytes(arr(raw, big)) as f64,
+        Scalar::U32 => u32::from_le_bytes(arr(raw, big)) as f64,
+        Scalar::F32 => f32::from_le_bytes(arr(raw, big)) as f64,
+        Scalar::F64 => f64::from_le_bytes(arr(raw, big)),
+    }
+}
+
+/// One face record: its vertex indices and its texcoord values (if any).
+struct FaceRecord<'b> {
+    index: usize,
+    vertices: &'b [u32],
+    texcoord: Option<&'b [f64]>,
+}
+
+/// What the body gave: positions and, per face, a callback result.
+struct Parsed {
+    positions: Vec<[f64; 3]>,
+    saw_vertices: bool,
+    saw_faces: bool,
+}
+
+/// Parses a PLY triangle map (see the module docs).
+pub fn parse_ply(bytes: &[u8]) -> Result<TriMap, InputError> {
+    let mut simplices = Vec::new();
+    let mut coords = Vec::new();
+    let parsed = parse_body(bytes, true, |f| {
+        let [a, b, c] = f.vertices else {
+            return Err(format!(
+                "face {} has {} vertices; only triangles are supported (triangulate the mesh first)",
+                f.index,
+                f.vertices.len()
+            ));
+        };
+        let uv = f.texcoord.unwrap_or_default();
+        let [u0, v0, u1, v1, u2, v2] = uv else {
+            return Err(format!(
+                "face {}: texcoord list has {} values; expected 6 (u0 v0 u1 v1 u2 v2)",
+                f.index,
+                uv.len()
+            ));
+        };
+        if uv.iter().any(|x| !x.is_finite()) {
+            return Err(format!("face {}: texcoord is not finite", f.index));
+        }
+        simplices.push([*a, *b, *c]);
+        coords.push([[*u0, *v0], [*u1, *v1], [*u2, *v2]]);
+        Ok(())
+    })?;
+    if simplices.is_empty() {
+        return Err(InputError::new(
+            "no triangles (the `face` element is empty)",
+        ));
+    }
+    let map = TriMap {
+        positions: parsed.positions,
+        simplices,
+        coords,
+    };
+    map.validate()?;
+    Ok(map)
+}
+
+/// Parses a PLY polygon mesh: positions and faces of 3 or more vertices.
+pub fn parse_polygon_ply(bytes: &[u8]) -> Result<PolyMesh, InputError> {
+    let mut faces = Vec::new();
+    let parsed = parse_body(bytes, false, |f| {
+        if f.vertices.len() < 3 {
+            return Err(format!(
+                "face {} has {} vertices; a face needs at least 3",
+                f.index,
+                f.vertices.len()
+            ));
+        }
+        faces.push(f.vertices.to_vec());
+        Ok(())
+    })?;
+    let nv = parsed.positions.len();
+    for (i, face) in faces.iter().enumerate() {
+        if let Some(v) = face.iter().find(|&&v| v as usize >= nv) {
+            return Err(InputError::new(format!(
+                "face {i} refers to vertex {v}, but there are {nv} vertices"
+            )));
+        }
+    }
+    Ok(PolyMesh {
+        positions: parsed.positions,
+        faces,
+    })
+}
+
+/// Reads header and body; `on_face` receives each face record.
+fn parse_body(
+    bytes: &[u8],
+    want_texcoord: bool,
+    mut on_face: impl FnMut(FaceRecord<'_>) -> Result<(), String>,
+) -> Result<Parsed, InputError> {
+    let header = parse_header(bytes)?;
+    let rest = bytes.get(header.body..).unwrap_or_default();
+    let mut body = match header.format {
+        PlyFormat::Ascii => {
+            let text = crate::scan::as_text(bytes, "PLY")?;
+            Body::Ascii(Tokens::new(
+                text.get(header.body..).unwrap_or_default(),
+                header.body_line,
+            ))
+        }
+        f => Body::Binary {
+            bytes: rest,
+            pos: 0,
+            big: f == PlyFormat::BinaryBigEndian,
+            base: header.body,
+        },
+    };
+    let mut parsed = Parsed {
+        positions: Vec::new(),
+        saw_vertices: false,
+        saw_faces: false,
+    };
+    for el in &header.elements {
+        check_fits(&body, el)?;
+        match el.name.as_str() {
+            "vertex" if !parsed.saw_vertices => {
+                parsed.positions = read_vertices(&mut body, el)?;
+                parsed.saw_vertices = true;
+            }
+            "face" if !parsed.saw_faces => {
+                read_faces(&mut body, el, want_texcoord, &mut on_face)?;
+                parsed.saw_faces = true;
+            }
+            _ => skip_element(&mut body, el)?,
+        }
+    }
+    if !parsed.saw_vertices || !parsed.saw_faces {
+        let missing = if parsed.saw_vertices {
+            "face"
+        } else {
+            "vertex"
+        };
+        return Err(InputError::new(format!(
+            "PLY file has no `{missing}` element"
+        )));
+    }
+    Ok(parsed)
+}
+
+/// Fails fast when an element's claimed count cannot fit in the bytes left.
+fn check_fits(body: &Body<'_>, el: &Element) -> Result<(), InputError> {
+    let n_props = el.props.len() as u64;
+    if el.count == 0 || n_props == 0 || body.fits(el.count, el.min_binary_size(), n_props) {
+        return Ok(());
+    }
+    Err(InputError::at_line(
+        el.line,
+        format!(
+            "element `{}` claims {} records, but only {} bytes follow (truncated or corrupt file)",
+            el.name,
+            el.count,
+            body.remaining()
+        ),
+    ))
+}
+
+/// An error at the current body position, about record `i` of `el`.
+fn at(body: &Body<'_>, el: &Element, i: u64, message: String) -> InputError {
+    let mut e = InputError::new(format!("{} {i}: {message}", el.name));
+    e.location = Some(body.here());
+    e
+}
+
+fn read_vertices(body: &mut Body<'_>, el: &Element) -> Result<Vec<[f64; 3]>, InputError> {
+    let mut slots = [usize::MAX; 3];
+    for (k, name) in ["x", "y", "z"].iter().enumerate() {
+        let p = el
+            .find(&[name])
+            .filter(|&p| matches!(el.props[p].kind, Kind::Scalar(_)));
+        slots[k] = p.ok_or_else(|| {
+            InputError::at_line(
+                el.line,
+                format!("element `vertex` has no scalar property `{name}`"),
+            )
+        })?;
+    }
+    // `check_fits` bounded `count` by the file size: this allocation is safe.
+    let mut positions = Vec::with_capacity(el.count as usize);
+    for i in 0..el.count {
+        let mut p = [0.0; 3];
+        for (j, prop) in el.props.iter().enumerate() {
+            match prop.kind {
+                Kind::Scalar(ty) => {
+                    let x = body.scalar(ty).map_err(|m| at(body, el, i, m))?;
+                    if let Some(k) = slots.iter().position(|&s| s == j) {
+                        if !x.is_finite() {
+                            return Err(at(body, el, i, "coordinate is not finite".into()));
+                        }
+                        p[k] = x;
+                    }
+                }
+                Kind::List { count, item } => {
+                    skip_list(body, count, item, &prop.name).map_err(|m| at(body, el, i, m))?
+                }
+            }
+        }
+        positions.push(p);
+    }
+    Ok(positions)
+}
+
+fn read_faces(
+    body: &mut Body<'_>,
+    el: &Element,
+    want_texcoord: bool,
+    on_face: &mut impl FnMut(FaceRecord<'_>) -> Result<(), String>,
+) -> Result<(), InputError> {
+    let list = |names: &[&str]| {
+        el.find(names)
+            .filter(|&p| matches!(el.props[p].kind, Kind::List { .. }))
+    };
+    let vi = list(&["vertex_indices", "vertex_index"]).ok_or_else(|| {
+        InputError::at_line(
+            el.line,
+            "element `face` has no `vertex_indices` list property",
+        )
+    })?;
+    let tc = list(&["texcoord"]);
+    if want_texcoord && tc.is_none() {
+        return Err(InputError::at_line(
+            el.line,
+            "element `face` has no `texcoord` list property (per-corner u0 v0 u1 v1 u2 v2)",
+        ));
+    }
+    let (mut verts, mut uvs) = (Vec::new(), Vec::new());
+    for i in 0..el.count {
+        for (j, prop) in el.props.iter().enumerate() {
+            let r = match prop.kind {
+                Kind::Scalar(ty) => body.scalar(ty).map(|_| ()),
+                Kind::List { count, item } if j == vi => {
+                    read_indices(body, count, item, &mut verts)
+                }
+                Kind::List { count, item } if Some(j) == tc => {
+                    read_list(body, count, item, &mut uvs)
+                }
+                Kind::List { count, item } => skip_list(body, count, item, &prop.name),
+            };
+            r.map_err(|m| at(body, el, i, m))?;
+        }
+        let record = FaceRecord {
+            index: i as usize,
+            vertices: &verts,
+            texcoord: tc.map(|_| uvs.as_slice()),
+        };
+        on_face(record).map_err(|m| {
+            let mut e = InputError::new(m);
+            e.location = Some(body.here());
+            e
+        })?;
+    }
+    Ok(())
+}
+
+fn read_list(
+    body: &mut Body<'_>,
+    count: Scalar,
+    item: Scalar,
+    out: &mut Vec<f64>,
+) -> Result<(), String> {
+    out.clear();
+    let n = body.list_len(count, item, "texcoord")?;
+    for _ in 0..n {
+        out.push(body.scalar(item)?);
+    }
+    Ok(())
+}
+
+fn read_indices(
+    body: &mut Body<'_>,
+    count: Scalar,
+    item: Scalar,
+    out: &mut Vec<u32>,
+) -> Result<(), String> {
+    out.clear();
+    let n = body.list_len(count, item, "vertex_indices")?;
+    for _ in 0..n {
+        let x = body.scalar(item)?;
+        if !(0.0..=u32::MAX as f64).contains(&x) || x.fract() != 0.0 {
+            return Err(format!("vertex index {x} is not a valid index"));
+        }
+        out.push(x as u32);
+    }
+    Ok(())
+}
+
+fn skip_list(body: &mut Body<'_>, count: Scalar, item: Scalar, name: &str) -> Result<(), String> {
+    let n = body.list_len(count, item, name)?;
+    for _ in 0..n {
+        body.scalar(item)?;
+    }
+    Ok(())
+}
+
+fn skip_element(body: &mut Body<'_>, el: &Element) -> Result<(), InputError> {
+    if el.props.is_empty() {
+        return Ok(());
+    }
+    for i in 0..el.count {
+        for prop in &el.props {
+            let r = match prop.kind {
+                Kind::Scalar(ty) => body.scalar(ty).map(|_| ()),
+                Kind::List { count, item } => skip_list(body, count, item, &prop.name),
+            };
+            r.map_err(|m| at(body, el, i, m))?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+#[path = "ply_tests.rs"]
+mod tests;

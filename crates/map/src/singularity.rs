@@ -1,0 +1,345 @@
+//! Singularities and simplex quality.
+//!
+//! Input: a validated map, its topology and transitions. Output:
+//! - 2D: [`vertex_singularities`], interior vertices whose ring rotation is
+//!   not the identity, or whose index from the angle sum is non-zero on a
+//!   fold-free ring. The ring rotation `k` (counter-clockwise quarter turns,
+//!   walk of [`crate::holonomy`]) gives the index modulo 1: `index ≡ k/4`
+//!   (cube corner: `k = 1`, index 1/4, quad valence `4 − 4·index = 3`). The
+//!   integer part comes from the signed angle sum,
+//!   `index = (2π − Σ angles) / 2π` rounded to quarters, **only** when the
+//!   one-ring has no reverted or degenerate triangle and agrees with `k`;
+//!   otherwise the index is unknown (`index_quarters == None`) and the vertex
+//!   is reported only if `k ≠ 0`.
+//! - 3D: [`edge_singularities`], interior edges whose rotation around them
+//!   is not the identity, labelled by [`EdgeAngle`]: `+90°` is the analogue
+//!   of index +1/4 (three right-angled tets around the edge).
+//! - [`quality`]: reverted (`det < 0`) and degenerate simplices.
+//!
+//! Degenerate: `|det| ≤ max(1e-12·L^D, 8·ulp(c)·L^(D−1))`, with `L` the
+//! longest map edge of the simplex and `c` its largest |coordinate| (the
+//! second term is the float noise of the edge vectors of far-off maps).
+
+use crate::holonomy::ridge_rotation;
+use crate::mesh::det_of;
+use crate::topology_build::vertex_corners;
+use crate::transition_derive::ulp;
+use crate::{Rot3, SimplexMap, TetMap, Topology, Transitions, TriMap};
+
+/// A singular interior vertex of a triangle mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VertexSingularity {
+    /// The vertex.
+    pub vertex: u32,
+    /// Ring rotation in counter-clockwise quarter turns, in `0..4`.
+    pub turns: i64,
+    /// The index in quarters (`index = q/4`), when the ring is fold-free.
+    pub index_quarters: Option<i64>,
+}
+
+/// Rotation angle around a singular edge, signed about the edge direction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum EdgeAngle {
+    /// +90° (like index +1/4, valence 3).
+    Plus90,
+    /// −90° (like index −1/4, valence 5).
+    Minus90,
+    /// 180°.
+    Half,
+    /// A 90° rotation whose axis is not along the edge in the map.
+    OffAxis90,
+    /// A 120° rotation (about a cube diagonal: not an edge rotation).
+    Third,
+}
+
+impl EdgeAngle {
+    /// Label used in reports.
+    pub fn label(&self) -> &'static str {
+        match self {
+            EdgeAngle::Plus90 => "90",
+            EdgeAngle::Minus90 => "-90",
+            EdgeAngle::Half => "180",
+            EdgeAngle::OffAxis90 => "90_off_axis",
+            EdgeAngle::Third => "120",
+        }
+    }
+}
+
+/// A singular interior edge of a tet mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EdgeSingularity {
+    /// The edge's vertices, in the walk's direction.
+    pub edge: [u32; 2],
+    /// Rotation around the edge, in the chart of its first tet.
+    pub rot: Rot3,
+    /// Its angle class.
+    pub angle: EdgeAngle,
+}
+
+/// Whether simplex `p` is degenerate (see the module docs).
+pub fn is_degenerate<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> bool {
+    let mut len = 0.0f64;
+    let mut scale = 0.0f64;
+    for i in 0..N {
+        scale = p[i].iter().fold(scale, |acc, x| acc.max(x.abs()));
+        for j in i + 1..N {
+            let d2: f64 = (0..D).map(|k| (p[j][k] - p[i][k]).powi(2)).sum();
+            len = len.max(d2.sqrt());
+        }
+    }
+    let tol = (1e-12 * len.powi(D as i32)).max(8.0 * ulp(scale) * len.powi(D as i32 - 1));
+    det_of::<N, D>(p).abs() <= tol
+}
+
+/// `(reverted, degenerate)` simplex counts: `det < 0`, and [`is_degenerate`].
+pub fn quality<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> (usize, usize) {
+    let reverted = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
+    let degenerate = map.coords.iter().filter(|p| is_degenerate(p)).count();
+    (reverted, degenerate)
+}
+
+/// Signed angle of the map image of triangle `p` at corner `c`.
+fn corner_angle(p: &[[f64; 2]; 3], c: usize) -> f64 {
+    let (o, a, b) = (p[c], p[(c + 1) % 3], p[(c + 2) % 3]);
+    let e1 = [a[0] - o[0], a[1] - o[1]];
+    let e2 = [b[0] - o[0], b[1] - o[1]];
+    (e1[0] * e2[1] - e1[1] * e2[0]).atan2(e1[0] * e2[0] + e1[1] * e2[1])
+}
+
+/// Singular interior vertices of a triangle mesh (see the module docs).
+pub fn vertex_singularities(
+    map: &TriMap,
+    topo: &Topology<3>,
+    trans: &Transitions<3, 2>,
+) -> Vec<VertexSingularity> {
+    let (offsets, corners) = vertex_corners(&map.simplices, map.positions.len());
+    let mut out = Vec::new();
+    for v in 0..map.positions.len() {
+        let ring = &corners[offsets[v] as usize..offsets[v + 1] as usize];
+        let Some(&(s0, c0)) = ring.first() else {
+            continue;
+        };
+        let Some(rot) = ridge_rotation(topo, trans, s0 as usize, &[c0 as usize]) else {
+            continue; // boundary vertex
+        };
+        let turns = rot.turns();
+        let fold_free = ring.iter().all(|&(s, _)| {
+            let p = &map.coords[s as usize];
+            det_of::<3, 2>(p) > 0.0 && !is_degenerate(p)
+        });
+        let angles: f64 = ring
+            .iter()
+            .map(|&(s, c)| corner_angle(&map.coords[s as usize], c as usize))
+            .sum();
+        let tau = std::f64::consts::TAU;
+        let q = (4.0 * (tau - angles) / tau).round() as i64;
+        let index_quarters = (fold_free && q.rem_euclid(4) == turns).then_some(q);
+        if turns != 0 || index_quarters.is_some_and(|q| q != 0) {
+            out.push(VertexSingularity {
+                vertex: v as u32,
+                turns,
+                index_quarters,
+            });
+        }
+    }
+    out
+}
+
+/// Angle class of a rotation `r` around an edge with map direction `dir`.
+pub fn edge_angle(r: &Rot3, dir: &[f64; 3]) -> Option<EdgeAngle> {
+    let img = r.images();
+    let mut trace = 0;
+    let mut axis = None;
+    for (i, &d) in img.iter().enumerate() {
+        if (d >> 1) as usize == i {
+            trace += if d & 1 == 0 { 1 } else { -1 };
+            if d & 1 == 0 {
+                axis = Some(i);
+            }
+        }
+    }
+    match (trace, axis) {
+        (3, _) => None,
+        (-1, _) => Some(EdgeAngle::Half),
+        (1, Some(a)) => {
+            // +90° about +a maps e_{a+1} to e_{a+2}
+            let positive = img[(a + 1) % 3] == (2 * ((a + 2) % 3)) as u8;
+            let along: f64 = dir[a];
+            let off: f64 = (0..3)
+                .filter(|&k| k != a)
+                .map(|k| dir[k].abs())
+                .fold(0.0, f64::max);
+            if along == 0.0 || off > along.abs() {
+                Some(EdgeAngle::OffAxis90)
+            } else if positive == (along > 0.0) {
+                Some(EdgeAngle::Plus90)
+            } else {
+                Some(EdgeAngle::Minus90)
+            }
+        }
+        _ => Some(EdgeAngle::Third),
+    }
+}
+
+/// Singular interior edges of a tet mesh (see the module docs).
+pub fn edge_singularities(
+    map: &TetMap,
+    topo: &Topology<4>,
+    trans: &Transitions<4, 3>,
+) -> Vec<EdgeSingularity> {
+    let mut edges: Vec<([u32; 2], u32, u8, u8)> = Vec::with_capacity(map.len() * 6);
+    for (s, t) in map.simplices.iter().enumerate() {
+        for i in 0..4u8 {
+            for j in i + 1..4u8 {
+                let (a, b) = (t[i as usize], t[j as usize]);
+                edges.push(([a.min(b), a.max(b)], s as u32, i, j));
+            }
+        }
+    }
+    edges.sort_unstable();
+    edges.dedup_by_key(|e| e.0);
+    let mut out = Vec::new();
+    for (_, s, i, j) in edges {
+        let (s, i, j) = (s as usize, i as usize, j as usize);
+        let Some(rot) = ridge_rotation(topo, trans, s, &[i, j]) else {
+            continue;
+        };
+        let p = &map.coords[s];
+        let dir: [f64; 3] = std::array::from_fn(|k| p[j][k] - p[i][k]);
+        if let Some(angle) = edge_angle(&rot, &dir) {
+            let t = &map.simplices[s];
+            out.push(EdgeSingularity {
+                edge: [t[i], t[j]],
+                rot,
+                angle,
+            });
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_maps::{cone, cube_surface, edge_fan, flat_torus, grid, rechart};
+    use crate::{Stars, TransitionOptions};
+
+    fn derive<const N: usize, const D: usize>(
+        m: &SimplexMap<N, D>,
+    ) -> (Topology<N>, Transitions<N, D>) {
+        let topo = Topology::build(m).expect("topology");
+        let (tr, _) = Transitions::derive(m, &topo, &TransitionOptions::default()).expect("derive");
+        (topo, tr)
+    }
+
+    fn sing(m: &TriMap) -> Vec<VertexSingularity> {
+        let (topo, tr) = derive(m);
+        vertex_singularities(m, &topo, &tr)
+    }
+
+    #[test]
+    fn cones_have_known_index() {
+        // k right angles around the centre: index (4 − k)/4, turns ≡ 4 − k
+        for k in [2u32, 3, 5, 6, 7] {
+            let mut s = sing(&cone(k));
+            if k == 2 {
+                // two triangles closing into a sphere: Gauss–Bonnet, Σ = 2
+                let total: i64 = s.iter().filter_map(|v| v.index_quarters).sum();
+                assert_eq!(total, 8);
+            }
+            s.retain(|v| v.vertex == 0);
+            let q = 4 - k as i64;
+            assert_eq!(
+                s,
+                vec![VertexSingularity {
+                    vertex: 0,
+                    turns: q.rem_euclid(4),
+                    index_quarters: Some(q)
+                }],
+                "cone of {k} right angles"
+            );
+        }
+        assert!(sing(&cone(4)).is_empty());
+        // 8 right angles: rotation identity but index −1 (a saddle)
+        let s = sing(&cone(8));
+        assert_eq!(s.len(), 1);
+        assert_eq!((s[0].turns, s[0].index_quarters), (0, Some(-4)));
+    }
+
+    #[test]
+    fn folded_cone_has_unknown_integer_part() {
+        let mut m = cone(3);
+        // fold triangle 1 over: its centre angle becomes −90°; angle sum
+        // 90°, rotation −90° + 90° − 90° ≡ 3 quarter turns
+        m.coords[1] = [[0.0, 0.0], [1.0, 0.0], [0.0, -1.0]];
+        let s = sing(&m);
+        assert_eq!(s.len(), 1);
+        assert_eq!((s[0].turns, s[0].index_quarters), (3, None));
+        let (reverted, degenerate) = quality(&m);
+        assert_eq!((reverted, degenerate), (1, 0));
+    }
+
+    #[test]
+    fn cube_has_eight_quarter_cones() {
+        let m = cube_surface(2);
+        let (topo, tr) = derive(&m);
+        assert_eq!(topo.boundary_facets, 0);
+        let s = vertex_singularities(&m, &topo, &tr);
+        assert_eq!(s.len(), 8);
+        for v in &s {
+            assert_eq!((v.turns, v.index_quarters), (1, Some(1)));
+            let p = m.positions[v.vertex as usize];
+            assert!(p.iter().all(|&x| x == 0.0 || x == 2.0), "corner {p:?}");
+        }
+        let stars = Stars::build(&m, &topo, &tr);
+        assert_eq!(stars.singular.iter().filter(|&&x| x).count(), 8);
+        assert!(stars.boundary.iter().all(|&b| !b));
+        // the same after re-charting every triangle
+        let mut m2 = m.clone();
+        rechart(&mut m2, 5);
+        assert_eq!(sing(&m2), s);
+    }
+
+    #[test]
+    fn torus_and_grid_have_none() {
+        let t = flat_torus(4);
+        let (topo, tr) = derive(&t);
+        assert_eq!((topo.boundary_facets, topo.components()), (0, 1));
+        assert!(vertex_singularities(&t, &topo, &tr).is_empty());
+        assert!(sing(&grid(3)).is_empty());
+    }
+
+    #[test]
+    fn singular_edges_by_angle() {
+        let labels = |k: u32| -> Vec<EdgeAngle> {
+            let m = edge_fan(k);
+            let (topo, tr) = derive(&m);
+            edge_singularities(&m, &topo, &tr)
+                .iter()
+                .map(|e| e.angle)
+                .collect()
+        };
+        assert_eq!(labels(3), vec![EdgeAngle::Plus90]);
+        assert_eq!(labels(4), vec![]);
+        assert_eq!(labels(5), vec![EdgeAngle::Minus90]);
+        assert_eq!(labels(6), vec![EdgeAngle::Half]);
+        let m = edge_fan(3);
+        let (topo, tr) = derive(&m);
+        let e = edge_singularities(&m, &topo, &tr);
+        assert_eq!(e[0].edge, [0, 1]);
+        let stars = Stars::build(&m, &topo, &tr);
+        assert_eq!(stars.singular, vec![true, true, false, false, false]);
+    }
+
+    #[test]
+    fn degenerate_scales_with_coordinates() {
+        let flat = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
+        assert!(is_degenerate::<3, 2>(&flat));
+        assert!(is_degenerate::<3, 2>(&[[3.0, 3.0]; 3]));
+        let ok = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        assert!(!is_degenerate::<3, 2>(&ok));
+        let big = (1u64 << 40) as f64;
+        let far = ok.map(|p| [p[0] + big, p[1] + big]);
+        assert!(!is_degenerate::<3, 2>(&far));
+    }
+}

@@ -1,0 +1,79 @@
+//! Step 3: nodes — the integer points of the local shifted map strictly
+//! inside each triangle (DESIGN §3.2).
+//!
+//! Input: the sanitized [`LocalMap`] (no integer point within `eps` of an
+//! edge). Output: [`Nodes`]: per node its triangle, integer coordinates in
+//! that triangle's local chart, barycentric coordinates, reverted flag
+//! (`det < 0`); and per triangle the list of its nodes (CSR).
+//! Zero-area triangles hold no node.
+
+use crate::local::LocalMap;
+
+/// The nodes of the dual segmentation.
+#[derive(Clone, Debug, Default)]
+pub struct Nodes {
+    /// Triangle holding each node.
+    pub tri: Vec<u32>,
+    /// Integer coordinates in the triangle's local chart.
+    pub ij: Vec<[i64; 2]>,
+    /// Barycentric coordinates in the triangle.
+    pub bary: Vec<[f64; 3]>,
+    /// Whether the node lies in a reverted triangle.
+    pub reverted: Vec<bool>,
+    /// CSR offsets of the nodes of each triangle (nodes are sorted by triangle).
+    pub tri_offsets: Vec<u32>,
+}
+
+impl Nodes {
+    /// Finds the nodes of every triangle.
+    pub fn find(local: &LocalMap) -> Self {
+        let mut n = Nodes::default();
+        n.tri_offsets.push(0);
+        for (s, p) in local.coords.iter().enumerate() {
+            let det = local.det(s);
+            if det != 0.0 && det.is_finite() {
+                Self::in_triangle(&mut n, s, p, det);
+            }
+            n.tri_offsets.push(n.tri.len() as u32);
+        }
+        n
+    }
+
+    fn in_triangle(n: &mut Nodes, s: usize, p: &[[f64; 2]; 3], det: f64) {
+        let lo = |k: usize| p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
+        let hi = |k: usize| p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
+        let (i0, i1) = (lo(0).ceil() as i64, hi(0).floor() as i64);
+        let (j0, j1) = (lo(1).ceil() as i64, hi(1).floor() as i64);
+        for i in i0..=i1 {
+            for j in j0..=j1 {
+                let q = [i as f64, j as f64];
+                let w: [f64; 3] = std::array::from_fn(|c| {
+                    let a = p[(c + 1) % 3];
+                    let b = p[(c + 2) % 3];
+                    (a[0] - q[0]) * (b[1] - q[1]) - (a[1] - q[1]) * (b[0] - q[0])
+                });
+                if w.iter().all(|&x| x * det > 0.0) {
+                    n.tri.push(s as u32);
+                    n.ij.push([i, j]);
+                    n.bary.push(w.map(|x| x / det));
+                    n.reverted.push(det < 0.0);
+                }
+            }
+        }
+    }
+
+    /// Number of nodes.
+    pub fn len(&self) -> usize {
+        self.tri.len()
+    }
+
+    /// Whether there is no node.
+    pub fn is_empty(&self) -> bool {
+        self.tri.is_empty()
+    }
+
+    /// The nodes of triangle `s`.
+    pub fn of_tri(&self, s: usize) -> std::ops::Range<usize> {
+        self.tri_offsets[s] as usize..self.tri_offsets[s + 1] as usize
+    }
+}

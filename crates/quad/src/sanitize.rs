@@ -1,0 +1,474 @@
+//! Step 2: sanitization of the local shifted map (paper appendix,
+//! "Sanitization"; DESIGN §3.1).
+//!
+//! Input: [`LocalMap`], vertex [`Stars`]. Output: the same map with
+//! - every non-singular vertex's corners **snapped** to one exactly-GP value
+//!   (the reference corner carried through the star's rotations plus the
+//!   nearest integer translation), so sign tests agree between charts;
+//! - every vertex, edge and node at least `eps` away from the dual isos:
+//!   no corner coordinate within `eps` of an integer, no edge within `eps`
+//!   of an integer point. Offending vertices are moved by one small vector
+//!   in their reference chart, carried to every corner through the star's
+//!   rotations (translations untouched: no transition changes). Vertices
+//!   joined by zero-length map edges (collapsed regions) move as one cluster.
+//!
+//! Singular vertices cannot move; those left on an iso are reported in
+//! [`SanitizeReport::singular_on_iso`] (the tracer handles walks that reach
+//! them by leaving the side unmatched; the count is part of the stats).
+//!
+//! Coordinates are local (see [`crate::local`]), so `eps` is absolute.
+
+use crate::local::LocalMap;
+use crate::rng::SplitMix;
+use dualex_map::{Rot2, Stars, Topology, Transitions, TriMap};
+
+/// Distance below which a value counts as "on" an iso.
+pub const EPS: f64 = 1e-9;
+/// Initial perturbation amplitude (map units).
+pub const AMPLITUDE: f64 = 1e-5;
+/// Perturbation rounds before giving up on a vertex.
+const ROUNDS: usize = 40;
+
+/// What sanitization did.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SanitizeReport {
+    /// Vertices whose corners were snapped to one GP value.
+    pub snapped_vertices: usize,
+    /// Largest distance a snap moved a corner.
+    pub max_snap: f64,
+    /// Distinct vertices perturbed.
+    pub perturbed_vertices: usize,
+    /// Collapsed clusters (more than one vertex) found.
+    pub clusters: usize,
+    /// Clusters that could not be moved consistently (contain a singularity).
+    pub stuck_clusters: usize,
+    /// Rounds used.
+    pub rounds: usize,
+    /// Singular (90°) vertices moved off an iso with a holonomy-compatible vector.
+    pub singular_moved: usize,
+    /// Singular vertices left on an iso, by kind: `"90_node"`, `"180_iso"`,
+    /// `"edge"` (only an edge through a grid point), ….
+    pub singular_kinds: std::collections::BTreeMap<String, usize>,
+    /// Singular vertices left on an iso (cannot be perturbed).
+    pub singular_on_iso: Vec<u32>,
+    /// Non-singular vertices still on an iso after all rounds (0 expected).
+    pub unresolved: usize,
+}
+
+/// Sanitizes `local` in place.
+pub fn sanitize(
+    map: &TriMap,
+    topo: &Topology<3>,
+    stars: &Stars<2>,
+    local: &mut LocalMap,
+    seed: u64,
+) -> SanitizeReport {
+    let mut rep = SanitizeReport::default();
+    snap(stars, local, &mut rep);
+    let clusters = Clusters::build(map, stars, local);
+    rep.clusters = clusters.count_nontrivial();
+    let mut rng = SplitMix::new(seed);
+    let mut moved = vec![false; map.positions.len()];
+    let mut amp = AMPLITUDE;
+    for round in 0..ROUNDS {
+        let bad = bad_vertices(map, local);
+        let movable: Vec<u32> = bad
+            .iter()
+            .copied()
+            .filter(|&v| !stars.singular[v as usize])
+            .collect();
+        rep.rounds = round;
+        if movable.is_empty() {
+            rep.singular_on_iso = bad;
+            break;
+        }
+        let mut done_root = std::collections::HashSet::new();
+        for v in movable {
+            let root = clusters.root(v);
+            if !done_root.insert(root) {
+                continue;
+            }
+            let a = rng.angle();
+            let delta = [amp * a.cos(), amp * a.sin()];
+            match clusters.members_rot(root) {
+                Some(members) => {
+                    for (w, r) in members {
+                        moved[w as usize] = true;
+                        move_vertex(stars, local, w as usize, &r.apply(&delta));
+                    }
+                }
+                None => rep.stuck_clusters += 1,
+            }
+        }
+        if round % 8 == 7 {
+            amp *= 2.0;
+        }
+        if round + 1 == ROUNDS {
+            let bad = bad_vertices(map, local);
+            rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
+            rep.singular_on_iso = bad
+                .into_iter()
+                .filter(|&v| stars.singular[v as usize])
+                .collect();
+        }
+    }
+    rep.singular_moved = move_singular_off_isos(map, topo, stars, local, &mut rep.singular_on_iso);
+    rep.singular_kinds = classify(topo, stars, local, &rep.singular_on_iso);
+    rep.perturbed_vertices = moved.iter().filter(|&&m| m).count();
+    rep
+}
+
+/// Holonomy of a singular vertex: the rotation (reference chart → itself)
+/// met when the star's two walks close up; `None` if consistent.
+fn holonomy(
+    topo: &Topology<3>,
+    stars: &Stars<2>,
+    trans: &Transitions<3, 2>,
+    v: usize,
+) -> Option<Rot2> {
+    let star = stars.of(v);
+    for e in star {
+        let s = e.simplex as usize;
+        for f in (0..3).filter(|&f| f != e.corner as usize) {
+            let Some((n, _)) = topo.neighbour(s, f) else {
+                continue;
+            };
+            let expected = e.rot.then(&trans.rot[s][f]);
+            if let Some(o) = star.iter().find(|o| o.simplex as usize == n) {
+                if o.rot != expected {
+                    return Some(expected.then(&o.rot.inverse()));
+                }
+            }
+        }
+    }
+    None
+}
+
+/// A singular vertex on exactly one iso family can still be moved off it
+/// when its holonomy `H` keeps the sign of that coordinate for some
+/// diagonal `δ` (90° singularities): the corners on both sides of the
+/// star's closing edge then agree on which side of the iso the vertex
+/// lies; they differ only in the other coordinate, by `|Hδ − δ| ≤ 2·amp`,
+/// which no iso comes near (checked). 180° singularities on an iso, and
+/// singular vertices on a node, cannot be moved this way: they stay in
+/// `left` and are reported. Returns the number of vertices moved.
+fn move_singular_off_isos(
+    map: &TriMap,
+    topo: &Topology<3>,
+    stars: &Stars<2>,
+    local: &mut LocalMap,
+    left: &mut Vec<u32>,
+) -> usize {
+    let mut moved = 0;
+    let trans = local.trans.clone();
+    left.retain(|&v| {
+        let v = v as usize;
+        let Some(first) = stars.of(v).first() else {
+            return true;
+        };
+        let x = local.coords[first.simplex as usize][first.corner as usize];
+        let on: Vec<usize> = (0..2).filter(|&k| near_int(x[k])).collect();
+        let [a] = on[..] else { return true };
+        let margin = (x[1 - a] - x[1 - a].round()).abs();
+        if margin < 8.0 * AMPLITUDE {
+            return true;
+        }
+        let Some(h) = holonomy(topo, stars, &trans, v) else {
+            return true;
+        };
+        for (su, sv) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+            let d = [su * AMPLITUDE, sv * AMPLITUDE];
+            if (h.apply(&d)[a] > 0.0) == (d[a] > 0.0) {
+                move_vertex(stars, local, v, &d);
+                moved += 1;
+                let still = vertex_is_bad(map, local, stars, v);
+                return still;
+            }
+        }
+        true
+    });
+    moved
+}
+
+/// Kinds of the singular vertices left on isos (see [`SanitizeReport`]).
+fn classify(
+    topo: &Topology<3>,
+    stars: &Stars<2>,
+    local: &LocalMap,
+    left: &[u32],
+) -> std::collections::BTreeMap<String, usize> {
+    let mut out = std::collections::BTreeMap::new();
+    for &v in left {
+        let v = v as usize;
+        let Some(first) = stars.of(v).first() else {
+            continue;
+        };
+        let x = local.coords[first.simplex as usize][first.corner as usize];
+        let on = (0..2).filter(|&k| near_int(x[k])).count();
+        let turns = holonomy(topo, stars, &local.trans, v).map_or(0, |h| h.turns());
+        let angle = [0, 90, 180, 90][turns as usize];
+        let place = ["edge", "iso", "node"][on];
+        *out.entry(format!("{angle}_{place}")).or_insert(0) += 1;
+    }
+    out
+}
+
+/// Whether vertex `v` is on an iso or on an edge through a grid point.
+fn vertex_is_bad(map: &TriMap, local: &LocalMap, stars: &Stars<2>, v: usize) -> bool {
+    stars.of(v).iter().any(|e| {
+        let s = e.simplex as usize;
+        let c = e.corner as usize;
+        let p = &local.coords[s];
+        let _ = map;
+        near_int(p[c][0])
+            || near_int(p[c][1])
+            || edge_near_grid_point(&p[c], &p[(c + 1) % 3])
+            || edge_near_grid_point(&p[c], &p[(c + 2) % 3])
+    })
+}
+
+/// Snaps every non-singular vertex's corners to one GP value.
+fn snap(stars: &Stars<2>, local: &mut LocalMap, rep: &mut SanitizeReport) {
+    for v in 0..stars.singular.len() {
+        if stars.singular[v] {
+            continue;
+        }
+        let star = stars.of(v);
+        let Some(first) = star.first() else { continue };
+        let x_ref = local.coords[first.simplex as usize][first.corner as usize];
+        for e in star {
+            let y = e.rot.apply(&x_ref);
+            let x = &mut local.coords[e.simplex as usize][e.corner as usize];
+            for k in 0..2 {
+                let snapped = y[k] + (x[k] - y[k]).round();
+                rep.max_snap = rep.max_snap.max((snapped - x[k]).abs());
+                x[k] = snapped;
+            }
+        }
+        rep.snapped_vertices += 1;
+    }
+}
+
+/// Adds `delta` (in `v`'s reference chart) to every corner of `v`.
+fn move_vertex(stars: &Stars<2>, local: &mut LocalMap, v: usize, delta: &[f64; 2]) {
+    for e in stars.of(v) {
+        let d = e.rot.apply(delta);
+        let x = &mut local.coords[e.simplex as usize][e.corner as usize];
+        x[0] += d[0];
+        x[1] += d[1];
+    }
+}
+
+/// Whether `x` is within [`EPS`] of an integer.
+#[inline]
+fn near_int(x: f64) -> bool {
+    (x - x.round()).abs() < EPS
+}
+
+/// Whether segment `a`–`b` passes within [`EPS`] of an integer point.
+pub fn edge_near_grid_point(a: &[f64; 2], b: &[f64; 2]) -> bool {
+    grid_point_near_edge(a, b).is_some()
+}
+
+/// An integer point within [`EPS`] of segment `a`–`b`, if any.
+pub fn grid_point_near_edge(a: &[f64; 2], b: &[f64; 2]) -> Option<[f64; 2]> {
+    for axis in 0..2 {
+        let o = 1 - axis;
+        let (lo, hi) = if a[axis] <= b[axis] {
+            (a[axis], b[axis])
+        } else {
+            (b[axis], a[axis])
+        };
+        let len = b[axis] - a[axis];
+        let mut i = (lo - EPS).ceil();
+        while i <= hi + EPS {
+            let t = if len == 0.0 {
+                0.0
+            } else {
+                ((i - a[axis]) / len).clamp(0.0, 1.0)
+            };
+            let other = a[o] + t * (b[o] - a[o]);
+            let mut g = [0.0; 2];
+            g[axis] = i;
+            g[o] = other.round();
+            if point_segment_dist(&g, a, b) < EPS {
+                return Some(g);
+            }
+            i += 1.0;
+        }
+    }
+    None
+}
+
+fn dist2(a: &[f64; 2], b: &[f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let l2 = d[0] * d[0] + d[1] * d[1];
+    let t = if l2 == 0.0 {
+        0.0
+    } else {
+        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
+    };
+    let q = [a[0] + t * d[0] - p[0], a[1] + t * d[1] - p[1]];
+    (q[0] * q[0] + q[1] * q[1]).sqrt()
+}
+
+/// Vertices on an iso, or endpoints of an edge through a grid point.
+fn bad_vertices(map: &TriMap, local: &LocalMap) -> Vec<u32> {
+    let mut bad = vec![false; map.positions.len()];
+    for (s, tri) in map.simplices.iter().enumerate() {
+        let c = &local.coords[s];
+        for k in 0..3 {
+            if near_int(c[k][0]) || near_int(c[k][1]) {
+                bad[tri[k] as usize] = true;
+            }
+            let l = (k + 1) % 3;
+            if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
+                // a grid point at an endpoint is that endpoint's problem only
+                let (at_k, at_l) = (dist2(&g, &c[k]) < EPS, dist2(&g, &c[l]) < EPS);
+                bad[tri[k] as usize] |= at_k || !at_l;
+                bad[tri[l] as usize] |= at_l || !at_k;
+            }
+        }
+    }
+    (0..bad.len() as u32).filter(|&v| bad[v as usize]).collect()
+}
+
+/// Collapsed clusters: vertices joined by zero-length map edges.
+struct Clusters {
+    parent: Vec<u32>,
+    /// Per vertex: rotation from its cluster root's reference chart to its
+    /// own reference chart; `None` when the cluster is inconsistent.
+    rot_from_root: Vec<Option<Rot2>>,
+    members: std::collections::HashMap<u32, Vec<u32>>,
+}
+
+impl Clusters {
+    fn build(map: &TriMap, stars: &Stars<2>, local: &LocalMap) -> Self {
+        let nv = map.positions.len();
+        let mut parent: Vec<u32> = (0..nv as u32).collect();
+        // rotation from vertex's reference chart to simplex s's chart
+        let star_rot = |v: u32, s: usize| {
+            stars
+                .of(v as usize)
+                .iter()
+                .find(|e| e.simplex as usize == s)
+                .map(|e| e.rot)
+        };
+        let mut edges = Vec::new();
+        for (s, tri) in map.simplices.iter().enumerate() {
+            for k in 0..3 {
+                let l = (k + 1) % 3;
+                if local.coords[s][k] == local.coords[s][l] {
+                    edges.push((tri[k], tri[l], s));
+                    union(&mut parent, tri[k], tri[l]);
+                }
+            }
+        }
+        let mut members: std::collections::HashMap<u32, Vec<u32>> = Default::default();
+        for v in 0..nv as u32 {
+            let r = find(&mut parent, v);
+            members.entry(r).or_default().push(v);
+        }
+        members.retain(|_, m| m.len() > 1);
+        // BFS rotations inside each cluster
+        let mut rot_from_root: Vec<Option<Rot2>> = vec![Some(Rot2::IDENTITY); nv];
+        let mut adj: std::collections::HashMap<u32, Vec<(u32, Rot2)>> = Default::default();
+        for &(a, b, s) in &edges {
+            if let (Some(ra), Some(rb)) = (star_rot(a, s), star_rot(b, s)) {
+                // a_ref → s → b_ref
+                let ab = ra.then(&rb.inverse());
+                adj.entry(a).or_default().push((b, ab));
+                adj.entry(b).or_default().push((a, ab.inverse()));
+            }
+        }
+        for (&root, m) in &members {
+            let mut seen: std::collections::HashMap<u32, Rot2> = Default::default();
+            seen.insert(root, Rot2::IDENTITY);
+            let mut stack = vec![root];
+            let mut ok = m.iter().all(|&v| !stars.singular[v as usize]);
+            while let Some(a) = stack.pop() {
+                let ra = seen[&a];
+                for &(b, ab) in adj.get(&a).map(|x| x.as_slice()).unwrap_or(&[]) {
+                    let rb = ra.then(&ab);
+                    match seen.get(&b) {
+                        Some(old) if *old != rb => ok = false,
+                        Some(_) => {}
+                        None => {
+                            seen.insert(b, rb);
+                            stack.push(b);
+                        }
+                    }
+                }
+            }
+            ok &= seen.len() == m.len();
+            for &v in m {
+                rot_from_root[v as usize] = if ok { seen.get(&v).copied() } else { None };
+            }
+        }
+        Clusters {
+            parent,
+            rot_from_root,
+            members,
+        }
+    }
+
+    fn count_nontrivial(&self) -> usize {
+        self.members.len()
+    }
+
+    fn root(&self, v: u32) -> u32 {
+        let mut x = v;
+        while self.parent[x as usize] != x {
+            x = self.parent[x as usize];
+        }
+        x
+    }
+
+    /// Members of the cluster with their rotation from the root's chart;
+    /// `None` if the cluster cannot move consistently.
+    fn members_rot(&self, root: u32) -> Option<Vec<(u32, Rot2)>> {
+        match self.members.get(&root) {
+            None => Some(vec![(root, Rot2::IDENTITY)]),
+            Some(m) => m
+                .iter()
+                .map(|&v| self.rot_from_root[v as usize].map(|r| (v, r)))
+                .collect(),
+        }
+    }
+}
+
+fn find(p: &mut [u32], mut x: u32) -> u32 {
+    while p[x as usize] != x {
+        p[x as usize] = p[p[x as usize] as usize];
+        x = p[x as usize];
+    }
+    x
+}
+
+fn union(p: &mut [u32], a: u32, b: u32) {
+    let (ra, rb) = (find(p, a), find(p, b));
+    if ra != rb {
+        p[ra as usize] = rb;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn edge_through_grid_point_is_detected() {
+        assert!(edge_near_grid_point(&[0.5, 0.5], &[1.5, 1.5]));
+        assert!(!edge_near_grid_point(&[0.5, 0.6], &[1.5, 1.7]));
+        assert!(edge_near_grid_point(&[2.0, 0.3], &[2.0, 0.3]) == false);
+        assert!(edge_near_grid_point(&[3.0, -1.5], &[3.0, 1.5]));
+        // vertical edge crossing a grid point
+        assert!(edge_near_grid_point(&[-2.0, 0.5], &[-2.0, 3.5]));
+        // a point edge exactly on a grid point
+        assert!(edge_near_grid_point(&[4.0, 4.0], &[4.0, 4.0]));
+    }
+}

@@ -1,0 +1,180 @@
+//! Counts at each stage of quad extraction and the output summary
+//! (DESIGN §7), serialised as one JSON object.
+
+use crate::sanitize::SanitizeReport;
+use crate::trace::TraceReport;
+use dualex_map::QuadMesh;
+use serde_json::{json, Map, Value};
+use std::collections::BTreeMap;
+
+/// Everything measured by one extraction.
+#[derive(Clone, Debug, Default)]
+pub struct QuadStats {
+    /// Input triangles.
+    pub input_triangles: usize,
+    /// Triangles with det < 0.
+    pub reverted_triangles: usize,
+    /// Largest residual of a transition translation.
+    pub max_transition_residual: f64,
+    /// Transitions snapped by `--round-transitions`.
+    pub snapped_transitions: usize,
+    /// Vertices whose star rotations are inconsistent.
+    pub singular_vertices: usize,
+    /// Singularities by index (fraction string → count), when known.
+    pub singularities: BTreeMap<String, usize>,
+    /// Edges joining two singular vertices through a grid point, split.
+    pub split_edges: usize,
+    /// Sanitization report.
+    pub sanitize: SanitizeReport,
+    /// Nodes found.
+    pub nodes: usize,
+    /// Nodes in reverted triangles.
+    pub reverted_nodes: usize,
+    /// Walk outcomes.
+    pub trace: TraceReport,
+    /// Walks whose target did not walk back to them.
+    pub non_mutual: usize,
+    /// Mutual pairs whose rotations disagree (0 expected).
+    pub rotation_mismatches: usize,
+    /// Pairs breaking the pleat label rule after tracing (0 expected).
+    pub label_violations: usize,
+    /// Untangling counts.
+    pub untangle: Option<dualex_graph::UntangleStats>,
+    /// Index fairing counts.
+    pub fairing: Option<serde_json::Value>,
+    /// Folded quads (valence-1 vertices) collapsed after fairing.
+    pub folded_corners_collapsed: usize,
+    /// Output: quads.
+    pub quads: usize,
+    /// Output: vertices.
+    pub vertices: usize,
+    /// Output: unmatched sides in the final graph (boundary edges).
+    pub unmatched_sides: usize,
+    /// Output: boundary loops, counted in the graph.
+    pub boundary_loops: usize,
+    /// Output: connected components.
+    pub components: usize,
+    /// Output: interior vertex valences.
+    pub valence_interior: BTreeMap<usize, usize>,
+    /// Output: boundary vertex valences.
+    pub valence_boundary: BTreeMap<usize, usize>,
+    /// Output: Euler characteristic V − E + F.
+    pub euler: i64,
+    /// Wall time per stage in milliseconds.
+    pub time_ms: Vec<(String, f64)>,
+}
+
+impl QuadStats {
+    /// Fills the output counts from the final graph and mesh.
+    pub fn finish_output(
+        &mut self,
+        graph: &dualex_graph::NodeGraph<2>,
+        glued: &dualex_graph::Glued<2>,
+        mesh: &QuadMesh,
+    ) {
+        self.quads = mesh.cells.len();
+        self.vertices = mesh.positions.len();
+        self.unmatched_sides = graph.unmatched_sides();
+        self.boundary_loops = glued.boundary_loops;
+        self.components = glued.components;
+        let (vi, vb, e) = valences(mesh);
+        self.valence_interior = vi;
+        self.valence_boundary = vb;
+        self.euler = mesh.positions.len() as i64 - e as i64 + mesh.cells.len() as i64;
+    }
+
+    /// The stats as one JSON object.
+    pub fn to_json(&self) -> Value {
+        let hist = |h: &BTreeMap<usize, usize>| {
+            Value::Object(
+                h.iter()
+                    .map(|(k, v)| (k.to_string(), json!(v)))
+                    .collect::<Map<_, _>>(),
+            )
+        };
+        let times: Map<String, Value> = self
+            .time_ms
+            .iter()
+            .map(|(k, v)| (k.clone(), json!(v)))
+            .collect();
+        let s = &self.sanitize;
+        json!({
+            "input": {
+                "triangles": self.input_triangles,
+                "reverted_triangles": self.reverted_triangles,
+                "max_transition_residual": self.max_transition_residual,
+                "snapped_transitions": self.snapped_transitions,
+                "singular_vertices": self.singular_vertices,
+                "singularities": self.singularities,
+            },
+            "sanitize": {
+                "split_edges": self.split_edges,
+                "snapped_vertices": s.snapped_vertices,
+                "max_snap": s.max_snap,
+                "perturbed_vertices": s.perturbed_vertices,
+                "clusters": s.clusters,
+                "stuck_clusters": s.stuck_clusters,
+                "rounds": s.rounds,
+                "singular_moved": s.singular_moved,
+                "singular_on_iso": s.singular_on_iso.len(),
+                "singular_on_iso_kinds": s.singular_kinds,
+                "unresolved": s.unresolved,
+            },
+            "nodes": self.nodes,
+            "reverted_nodes": self.reverted_nodes,
+            "trace": {
+                "to_node": self.trace.to_node,
+                "to_boundary": self.trace.to_boundary,
+                "inconsistent": self.trace.inconsistent,
+                "loops": self.trace.loops,
+                "max_steps": self.trace.max_steps,
+                "non_mutual": self.non_mutual,
+                "rotation_mismatches": self.rotation_mismatches,
+                "label_violations": self.label_violations,
+            },
+            "untangle": self.untangle.as_ref().map(|u| u.to_json()),
+            "fairing": self.fairing,
+            "folded_corners_collapsed": self.folded_corners_collapsed,
+            "output": {
+                "quads": self.quads,
+                "vertices": self.vertices,
+                "unmatched_sides": self.unmatched_sides,
+                "boundary_loops": self.boundary_loops,
+                "components": self.components,
+                "euler": self.euler,
+                "valence_interior": hist(&self.valence_interior),
+                "valence_boundary": hist(&self.valence_boundary),
+                "holes": 0,
+            },
+            "time_ms": times,
+        })
+    }
+}
+
+/// Interior and boundary valence histograms and the edge count.
+pub fn valences(mesh: &QuadMesh) -> (BTreeMap<usize, usize>, BTreeMap<usize, usize>, usize) {
+    let mut edges: std::collections::HashMap<(u32, u32), usize> = Default::default();
+    for q in &mesh.cells {
+        for k in 0..4 {
+            let (a, b) = (q[k], q[(k + 1) % 4]);
+            *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+        }
+    }
+    let n = mesh.positions.len();
+    let mut deg = vec![0usize; n];
+    let mut on_boundary = vec![false; n];
+    for (&(a, b), &c) in &edges {
+        deg[a as usize] += 1;
+        deg[b as usize] += 1;
+        if c == 1 {
+            on_boundary[a as usize] = true;
+            on_boundary[b as usize] = true;
+        }
+    }
+    let (mut vi, mut vb) = (BTreeMap::new(), BTreeMap::new());
+    for v in 0..n {
+        let h = if on_boundary[v] { &mut vb } else { &mut vi };
+        *h.entry(deg[v]).or_insert(0) += 1;
+    }
+    (vi, vb, edges.len())
+}
