@@ -167,7 +167,7 @@ fn hexex_broken_files() {
     let good = "4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1\n0 1 2 3 0 0 0 1 0 0 0 1 0 0 0 1\n";
     fails(
         "truncated.hexex",
-        good[..good.len() - 8].as_bytes(),
+        &good.as_bytes()[..good.len() - 8],
         &["tets"],
     );
     fails("absurd.hexex", b"99999999999999\n0 0 0\n", &[]);

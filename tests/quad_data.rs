@@ -194,6 +194,21 @@ fn directional_cut_meshes_give_valid_meshes() {
             st["output"]["boundary_loops"], expect_loops,
             "{name}: graph boundary"
         );
+        if name == "horsers-param-full-seamless" {
+            // its singularities sit at half-integers (on dual nodes): 3-sided
+            // faces, made quads by one subdivision step, and reported
+            assert!(st["repair"]["triangles"].as_u64().unwrap_or(0) > 0, "{st}");
+            assert_eq!(st["repair"]["subdivided"], true);
+            assert!(
+                st["sanitize"]["singular_on_iso_kinds"]["90_node"]
+                    .as_u64()
+                    .unwrap_or(0)
+                    > 0,
+                "{st}"
+            );
+        } else {
+            assert_eq!(st["repair"]["subdivided"], false, "{name}: {st}");
+        }
         if name == "spherer-param" {
             // a clean GP map of a sphere: 8 valence-3 vertices, the rest 4
             assert_eq!(rep.interior_valence.get(&3), Some(&8), "{name}");

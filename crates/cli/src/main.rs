@@ -91,6 +91,12 @@ fn quad(args: &Args) -> Result<(), String> {
         dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name).to_string())?;
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
     write_stats(args, &stats.to_json())?;
+    if stats.repair_triangles > 0 && !args.quiet {
+        eprintln!(
+            "dualex: warning: {} singular vertices sit exactly on dual nodes (not a SoG map); their 3-sided faces were made quads by one step of subdivision",
+            stats.repair_triangles
+        );
+    }
     if !args.quiet {
         println!(
             "{}: {} quads, {} vertices, {} boundary loops, {} components -> {}",

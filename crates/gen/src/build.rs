@@ -12,7 +12,13 @@
 
 use dualex_map::TriMap;
 
-/// How each grid cell is split into two triangles.
+/// How each grid cell `(i, j)` of a regular grid is split into two
+/// counter-clockwise triangles:
+/// ```text
+///   d ---- c     Fixed (and even cells of Alternating): a-b-c, a-c-d
+///   |      |     odd cells (i + j odd) of Alternating:  a-b-d, b-c-d
+///   a ---- b     (a = (i,j), b = (i+1,j), c = (i+1,j+1), d = (i,j+1))
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Diagonal {
     /// Every cell along `(i,j)–(i+1,j+1)`.

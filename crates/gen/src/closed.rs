@@ -170,39 +170,11 @@ pub fn torus(
 ) -> (TriMap, Expected) {
     let (ru, rv) = (res_u.max(3), res_v.max(3));
     let id = |i: usize, j: usize| ((j % rv) * ru + (i % ru)) as u32;
-    let mut map = TriMap::default();
-    for j in 0..rv {
-        for i in 0..ru {
-            let (a, b) = (
-                std::f64::consts::TAU * i as f64 / ru as f64,
-                std::f64::consts::TAU * j as f64 / rv as f64,
-            );
-            let r = 1.0 + 0.4 * b.cos();
-            map.positions
-                .push([r * a.cos(), r * a.sin(), 0.4 * b.sin()]);
-        }
-    }
-    let mut rng = SplitMix64::new(match perturb {
-        Perturb::Noise { seed, .. } => seed,
-        _ => 0,
-    });
-    let delta: Vec<[f64; 2]> = (0..ru * rv)
-        .map(|_| match perturb {
-            Perturb::Noise { amplitude, .. } => rng.vec2(amplitude),
-            _ => [0.0; 2],
-        })
-        .collect();
-    let base: Vec<[f64; 2]> = (0..ru * rv)
-        .map(|v| {
-            let p = [(v % ru) as f64 / ru as f64, (v / ru) as f64 / rv as f64];
-            let q = match perturb {
-                Perturb::Fold { strength } => fold(p, [0.5, 0.5], 0.3, strength),
-                _ => p,
-            };
-            let d = delta[v];
-            snap([f64::from(n) * q[0] + d[0], f64::from(m) * q[1] + d[1]])
-        })
-        .collect();
+    let mut map = TriMap {
+        positions: torus_positions(ru, rv),
+        ..TriMap::default()
+    };
+    let base = torus_values(n, m, ru, rv, perturb);
     // unwrapped: the vertex's value plus whole periods
     let value = |i: usize, j: usize| -> [f64; 2] {
         let b = base[id(i, j) as usize];
@@ -233,6 +205,39 @@ pub fn torus(
     }
     let quads = (n * m) as usize;
     (map, Expected::closed(quads, &[(4, quads)], 0))
+}
+
+/// Positions of the `ru × rv` torus vertices (radii 1 and 0.4).
+fn torus_positions(ru: usize, rv: usize) -> Vec<[f64; 3]> {
+    let mut positions = Vec::with_capacity(ru * rv);
+    for j in 0..rv {
+        for i in 0..ru {
+            let a = std::f64::consts::TAU * i as f64 / ru as f64;
+            let b = std::f64::consts::TAU * j as f64 / rv as f64;
+            let r = 1.0 + 0.4 * b.cos();
+            positions.push([r * a.cos(), r * a.sin(), 0.4 * b.sin()]);
+        }
+    }
+    positions
+}
+
+/// The perturbed map value of each torus vertex in the fundamental domain.
+fn torus_values(n: u32, m: u32, ru: usize, rv: usize, perturb: Perturb) -> Vec<[f64; 2]> {
+    let mut rng = SplitMix64::new(match perturb {
+        Perturb::Noise { seed, .. } => seed,
+        _ => 0,
+    });
+    (0..ru * rv)
+        .map(|v| {
+            let p = [(v % ru) as f64 / ru as f64, (v / ru) as f64 / rv as f64];
+            let (q, d) = match perturb {
+                Perturb::Fold { strength } => (fold(p, [0.5, 0.5], 0.3, strength), [0.0; 2]),
+                Perturb::Noise { amplitude, .. } => (p, rng.vec2(amplitude)),
+                Perturb::None => (p, [0.0; 2]),
+            };
+            snap([f64::from(n) * q[0] + d[0], f64::from(m) * q[1] + d[1]])
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -73,22 +73,7 @@ pub(crate) fn disk_map(
             (1 + (k - 1) * sectors + j % sectors) as u32
         }
     };
-    let eps = 0.3 / rings as f64;
-    let mut positions = vec![if split { [-eps, 0.0, 0.0] } else { [0.0; 3] }];
-    let mut base = vec![[0.0; 2]];
-    for k in 1..=rings {
-        let r = k as f64 / rings as f64;
-        let rho = scale * radial(r, knots).powf(alpha);
-        for j in 0..sectors {
-            let th = TAU * j as f64 / sectors as f64;
-            positions.push([r * th.cos(), r * th.sin(), 0.0]);
-            base.push([rho * (alpha * th).cos(), rho * (alpha * th).sin()]);
-        }
-    }
-    if split {
-        positions.push([eps, 0.0, 0.0]);
-        base.push([0.0; 2]);
-    }
+    let (positions, base) = disk_vertices(alpha, knots, rings, sectors, scale, split);
     let seam = Rot2::quarter_turns(i64::from(quarters));
     let corner = |k: usize, j: usize| -> [f64; 2] {
         let w = base[id(k, j) as usize];
@@ -120,6 +105,35 @@ pub(crate) fn disk_map(
         add([(0, top), (1, bottom), (0, 0)]);
     }
     map
+}
+
+/// Positions and map values (`θ ∈ [0, 2π)`) of the vertices of
+/// [`disk_map`], in index order.
+fn disk_vertices(
+    alpha: f64,
+    knots: &[(f64, f64)],
+    rings: usize,
+    sectors: usize,
+    scale: f64,
+    split: bool,
+) -> (Vec<[f64; 3]>, Vec<[f64; 2]>) {
+    let eps = 0.3 / rings as f64;
+    let mut positions = vec![if split { [-eps, 0.0, 0.0] } else { [0.0; 3] }];
+    let mut base = vec![[0.0; 2]];
+    for k in 1..=rings {
+        let r = k as f64 / rings as f64;
+        let rho = scale * radial(r, knots).powf(alpha);
+        for j in 0..sectors {
+            let th = TAU * j as f64 / sectors as f64;
+            positions.push([r * th.cos(), r * th.sin(), 0.0]);
+            base.push([rho * (alpha * th).cos(), rho * (alpha * th).sin()]);
+        }
+    }
+    if split {
+        positions.push([eps, 0.0, 0.0]);
+        base.push([0.0; 2]);
+    }
+    (positions, base)
 }
 
 /// Invalid quantization: the disk of [`singular_disk`] (not reverted) with

@@ -38,10 +38,10 @@ fn lerp3(a: &[f64; 3], b: &[f64; 3], t: f64) -> [f64; 3] {
 
 fn bary_point(map: &TriMap, s: usize, w: &[f64; 3]) -> [f64; 3] {
     let mut p = [0.0; 3];
-    for c in 0..3 {
-        let x = map.positions[map.simplices[s][c] as usize];
-        for k in 0..3 {
-            p[k] += w[c] * x[k];
+    for (wc, &v) in w.iter().zip(&map.simplices[s]) {
+        let x = map.positions[v as usize];
+        for (pk, xk) in p.iter_mut().zip(x) {
+            *pk += wc * xk;
         }
     }
     p

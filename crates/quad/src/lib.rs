@@ -19,13 +19,14 @@ mod fairing;
 pub mod geometry;
 pub mod local;
 pub mod nodes;
+pub mod repair;
 mod rng;
 pub mod sanitize;
 pub mod split;
 pub mod stats;
 pub mod trace;
 
-use dualex_graph::{NodeGraph, Side};
+use dualex_graph::{Node, NodeGraph, Side};
 use dualex_map::{InputError, QuadMesh, Stars, Topology, TransitionOptions, Transitions, TriMap};
 pub use stats::QuadStats;
 use std::time::Instant;
@@ -111,9 +112,30 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     st.folded_corners_collapsed = graph.collapse_folded_corners();
     lap(&mut st, "fairing");
     // 7
-    let glued = graph.glue();
-    let mesh = place_vertices(map, &local, &topo, &nodes, &glued);
+    let mut glued = graph.glue();
+    st.zipped_sides = zip_two_side_holes(&mut graph, &glued);
+    if st.zipped_sides > 0 {
+        glued = graph.glue();
+    }
+    let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
     st.finish_output(&graph, &glued, &mesh);
+    // 8
+    let holes = hole_edges(&graph, &glued, &ends, topo.boundary_facets == 0);
+    let (fill, open) = repair::hole_polygons(&holes);
+    st.holes_left_open = open;
+    if let Some((sub, dropped)) = repair::subdivide_if_odd(&mesh, &fill) {
+        st.repair_triangles = repair::odd_cells(&mesh);
+        st.holes_filled = fill.len();
+        st.repair_dropped = dropped;
+        // the collapsed sides of the triangles were unmatched sides whose
+        // two corners are one vertex, and the filled holes' sides are glued
+        // to the new faces: neither is boundary
+        let collapsed = collapsed_unmatched_sides(&graph, &glued);
+        st.unmatched_sides -= (collapsed + holes.len()).min(st.unmatched_sides);
+        st.boundary_loops -= (collapsed + fill.len()).min(st.boundary_loops);
+        mesh = sub;
+        st.finish_mesh(&mesh);
+    }
     lap(&mut st, "glue_geometry");
     Ok((mesh, st))
 }
@@ -144,6 +166,113 @@ fn link_mutual(graph: &mut NodeGraph<2>, ends: &[trace::End], st: &mut QuadStats
             _ => st.non_mutual += 1,
         }
     }
+}
+
+/// The two corners (vertex ids) of side `d` of `node`, in the order of the
+/// perpendicular axis (− then +).
+fn side_corners(glued: &dualex_graph::Glued<2>, node: Node, d: usize) -> [u32; 2] {
+    let (axis, bit) = (d >> 1, usize::from(d & 1 == 0));
+    let other = 1 - axis;
+    let code = |o: usize| (bit << axis) | (o << other);
+    [glued.vertex(node, code(0)), glued.vertex(node, code(1))]
+}
+
+/// Holes of exactly two unmatched sides whose endpoints the gluing already
+/// identified (union–find would close them silently, DESIGN §3.4): glue the
+/// two sides to each other explicitly, with the rotation that maps one
+/// side's corners onto the other's. Returns the number of pairs glued.
+fn zip_two_side_holes(graph: &mut NodeGraph<2>, glued: &dualex_graph::Glued<2>) -> usize {
+    let mut by_ends: std::collections::HashMap<(u32, u32), Vec<Side>> = Default::default();
+    for (node, _) in glued.cells() {
+        for d in 0..4 {
+            let s = graph.side(node, d);
+            if graph.opposite(s).is_none() {
+                let [a, b] = side_corners(glued, node, d);
+                if a != b {
+                    by_ends.entry((a.min(b), a.max(b))).or_default().push(s);
+                }
+            }
+        }
+    }
+    let mut zipped = 0;
+    for sides in by_ends.values() {
+        let [s, t] = sides[..] else { continue };
+        let (x, y) = (graph.node_of(s), graph.node_of(t));
+        let (ds, dt) = (graph.dir_of(s), graph.dir_of(t));
+        // the rotation ρ with the label rule's image of s and matching corners
+        let found = dualex_map::Rot2::all().into_iter().find(|r| {
+            let want = if graph.is_reverted(x) == graph.is_reverted(y) {
+                ds ^ 1
+            } else {
+                ds
+            };
+            if r.apply_dir(want) != dt {
+                return false;
+            }
+            // corner of X between s and p ↔ corner of Y between t and ρ(p)
+            let p = 2 * (1 - (ds >> 1)); // + direction of the other axis
+            let [_, xp] = side_corners(glued, x, ds);
+            let q = r.apply_dir(p);
+            let [yq0, yq1] = side_corners(glued, y, dt);
+            xp == if q & 1 == 0 { yq1 } else { yq0 }
+        });
+        if let Some(r) = found {
+            if graph.link(s, t, r).is_ok() {
+                zipped += 1;
+            }
+        }
+    }
+    zipped
+}
+
+/// Unmatched sides that are holes, not boundary, as directed edges in
+/// their cells' order: all of them on a closed input; otherwise those whose
+/// walk did not end on the input's boundary.
+fn hole_edges(
+    graph: &NodeGraph<2>,
+    glued: &dualex_graph::Glued<2>,
+    ends: &[trace::End],
+    closed: bool,
+) -> Vec<(u32, u32)> {
+    let mut out = Vec::new();
+    for (node, cell) in glued.cells() {
+        for d in 0..4 {
+            let s = graph.side(node, d);
+            if graph.opposite(s).is_some() {
+                continue;
+            }
+            if !closed && matches!(ends.get(s.0 as usize), Some(trace::End::Boundary)) {
+                continue;
+            }
+            let [a, b] = side_corners(glued, node, d);
+            if a == b {
+                continue;
+            }
+            // orient as the cell traverses it
+            let k = (0..4).find(|&k| cell[k] == a && cell[(k + 1) % 4] == b);
+            out.push(if k.is_some() { (a, b) } else { (b, a) });
+        }
+    }
+    out
+}
+
+/// Unmatched sides whose two corners are the same vertex (a loop of one
+/// side: the collapsed edge of a triangle, see [`repair`]).
+fn collapsed_unmatched_sides(graph: &NodeGraph<2>, glued: &dualex_graph::Glued<2>) -> usize {
+    let mut n = 0;
+    for (node, _) in glued.cells() {
+        for d in 0..4 {
+            if graph.opposite(graph.side(node, d)).is_some() {
+                continue;
+            }
+            let (axis, bit) = (d >> 1, if d & 1 == 0 { 1 } else { 0 });
+            let codes: Vec<usize> = (0..4).filter(|c| (c >> axis) & 1 == bit).collect();
+            if glued.vertex(node, codes[0]) == glued.vertex(node, codes[1]) {
+                n += 1;
+            }
+        }
+    }
+    n
 }
 
 /// Positions of the glued vertices by diagonal tracing.

@@ -464,7 +464,7 @@ mod tests {
     fn edge_through_grid_point_is_detected() {
         assert!(edge_near_grid_point(&[0.5, 0.5], &[1.5, 1.5]));
         assert!(!edge_near_grid_point(&[0.5, 0.6], &[1.5, 1.7]));
-        assert!(edge_near_grid_point(&[2.0, 0.3], &[2.0, 0.3]) == false);
+        assert!(!edge_near_grid_point(&[2.0, 0.3], &[2.0, 0.3]));
         assert!(edge_near_grid_point(&[3.0, -1.5], &[3.0, 1.5]));
         // vertical edge crossing a grid point
         assert!(edge_near_grid_point(&[-2.0, 0.5], &[-2.0, 3.5]));

@@ -73,9 +73,9 @@ pub fn split_edges(map: &TriMap, topo: &Topology<3>, edges: &[(usize, usize)]) -
     }
     out.simplices.clear();
     out.coords.clear();
-    for s in 0..map.len() {
+    for (s, cut_s) in cut.iter().enumerate() {
         let (tri, uv) = (map.simplices[s], map.coords[s]);
-        let Some((f, m)) = cut[s] else {
+        let Some((f, m)) = *cut_s else {
             out.simplices.push(tri);
             out.coords.push(uv);
             continue;

@@ -44,6 +44,16 @@ pub struct QuadStats {
     pub fairing: Option<serde_json::Value>,
     /// Folded quads (valence-1 vertices) collapsed after fairing.
     pub folded_corners_collapsed: usize,
+    /// Holes of two unmatched sides with identified ends, glued explicitly.
+    pub zipped_sides: usize,
+    /// Holes (unmatched sides not on the input boundary) closed by a face.
+    pub holes_filled: usize,
+    /// Holes that could not be closed (a cycle through a vertex twice).
+    pub holes_left_open: usize,
+    /// Triangles (90° singularities on a node) that forced a subdivision.
+    pub repair_triangles: usize,
+    /// Cells of fewer than 3 distinct corners dropped by the subdivision.
+    pub repair_dropped: usize,
     /// Output: quads.
     pub quads: usize,
     /// Output: vertices.
@@ -72,11 +82,16 @@ impl QuadStats {
         glued: &dualex_graph::Glued<2>,
         mesh: &QuadMesh,
     ) {
-        self.quads = mesh.cells.len();
-        self.vertices = mesh.positions.len();
         self.unmatched_sides = graph.unmatched_sides();
         self.boundary_loops = glued.boundary_loops;
         self.components = glued.components;
+        self.finish_mesh(mesh);
+    }
+
+    /// Fills the counts read from the output mesh itself.
+    pub fn finish_mesh(&mut self, mesh: &QuadMesh) {
+        self.quads = mesh.cells.len();
+        self.vertices = mesh.positions.len();
         let (vi, vb, e) = valences(mesh);
         self.valence_interior = vi;
         self.valence_boundary = vb;
@@ -135,6 +150,14 @@ impl QuadStats {
             "untangle": self.untangle.as_ref().map(|u| u.to_json()),
             "fairing": self.fairing,
             "folded_corners_collapsed": self.folded_corners_collapsed,
+            "repair": {
+                "zipped_sides": self.zipped_sides,
+                "holes_filled": self.holes_filled,
+                "holes_left_open": self.holes_left_open,
+                "triangles": self.repair_triangles,
+                "subdivided": self.repair_triangles > 0,
+                "dropped_cells": self.repair_dropped,
+            },
             "output": {
                 "quads": self.quads,
                 "vertices": self.vertices,
@@ -144,7 +167,7 @@ impl QuadStats {
                 "euler": self.euler,
                 "valence_interior": hist(&self.valence_interior),
                 "valence_boundary": hist(&self.valence_boundary),
-                "holes": 0,
+                "holes": self.holes_left_open,
             },
             "time_ms": times,
         })

@@ -63,3 +63,83 @@ fn square_far_from_origin() {
         assert_eq!(mesh.cells.len(), 49, "offset {off}: {}", st.to_json());
     }
 }
+
+fn check_valid(mesh: &QuadMesh, what: &str) -> dualex_check::QuadReport {
+    let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    assert!(rep.is_valid(), "{what}: {:?}", rep.errors());
+    rep
+}
+
+#[test]
+fn edges_between_singular_vertices_through_grid_points_are_split() {
+    // one segment per cube edge: each face diagonal joins two singular
+    // corners and passes exactly through grid points of the shifted map
+    let (m, _) =
+        dualex_gen::cube_surface(3, 1, dualex_gen::Perturb::None, dualex_gen::Diagonal::Fixed);
+    let (mesh, st) = extract(&m, &QuadOptions::default()).expect("extract");
+    assert!(st.split_edges > 0, "{}", st.to_json());
+    let rep = check_valid(&mesh, "cube res 1");
+    assert_eq!(mesh.cells.len(), 54, "{}", st.to_json());
+    assert_eq!(rep.interior_valence.get(&3), Some(&8));
+    assert_eq!(rep.euler, 2);
+}
+
+/// The map of `name` translated by (½, ½) in every chart: still exactly GP
+/// (`h − R·h` is integral), and its singularity now sits on a dual node.
+fn on_node(name: &str) -> TriMap {
+    let (mut m, _) = dualex_gen::by_name(name, 1).expect("generator");
+    for c in m.coords.iter_mut().flatten() {
+        c[0] += 0.5;
+        c[1] += 0.5;
+    }
+    m
+}
+
+#[test]
+fn singularity_of_90_degrees_on_a_node_gives_a_valid_mesh() {
+    for name in ["disk_p1", "disk_m1", "cube"] {
+        let m = on_node(name);
+        let (mesh, st) = extract(&m, &QuadOptions::default()).expect("extract");
+        let rep = check_valid(&mesh, name);
+        let closed = name == "cube";
+        assert_eq!(
+            rep.boundary_loops,
+            usize::from(!closed),
+            "{name}: {}",
+            st.to_json()
+        );
+        assert_eq!(
+            st.boundary_loops,
+            usize::from(!closed),
+            "{name}: graph boundary"
+        );
+        assert_eq!(rep.components, 1);
+        assert_eq!(rep.euler, if closed { 2 } else { 1 }, "{name}");
+        eprintln!("{name} on a node: {}", st.to_json());
+    }
+}
+
+#[test]
+fn singularity_on_an_iso_but_not_a_node() {
+    // translated by (½, 0): the centre lies on a dual iso-line only
+    for name in ["disk_p1", "disk_m2"] {
+        let (mut m, _) = dualex_gen::by_name(name, 1).expect("generator");
+        let rot_ok = m.coords.iter().flatten().all(|c| c[0].is_finite());
+        assert!(rot_ok);
+        for c in m.coords.iter_mut().flatten() {
+            c[0] += 0.5;
+        }
+        // a 90° seam maps (½, 0) to a non-integer translation: only the
+        // 180° disk stays GP under this shift
+        match extract(&m, &QuadOptions::default()) {
+            Ok((mesh, st)) => {
+                check_valid(&mesh, name);
+                eprintln!("{name} on an iso: {}", st.to_json());
+            }
+            Err(e) => assert!(
+                name == "disk_p1" && e.to_string().contains("residual"),
+                "{name}: {e}"
+            ),
+        }
+    }
+}

@@ -1,0 +1,198 @@
+//! Step 8: the last resort for configurations no quad can represent.
+//!
+//! A 90° singularity sitting exactly on a node of the dual grid (a non-SoG
+//! map: `../shared/data/directional/horsers-param-full-seamless.obj` has
+//! 25) is a *triangle* of the quad mesh: one side of a node walks into the
+//! singular vertex and finds no partner, and its two corners are the same
+//! vertex. No perturbation can move such a vertex (its charts disagree
+//! around it) and no local gluing of quads can close a 3-sided face (the
+//! sides around it are odd in number). What is left is to make the mesh
+//! all-quad by one step of linear subdivision — each quad into 4, each
+//! triangle into 3 quads (face centroid, edge midpoints) — which keeps the
+//! surface, the singularities and the topology, and is reported.
+//!
+//! Input: the glued cells and positions. Output: `None` when every cell has
+//! four distinct corners in cyclic order (nothing to do), else the
+//! subdivided all-quad mesh.
+
+use dualex_map::QuadMesh;
+use std::collections::HashMap;
+
+/// The cell without consecutive repeated corners (cyclically).
+fn polygon(cell: &[u32; 4]) -> Vec<u32> {
+    let mut p: Vec<u32> = Vec::with_capacity(4);
+    for &v in cell {
+        if p.last() != Some(&v) {
+            p.push(v);
+        }
+    }
+    while p.len() > 1 && p.first() == p.last() {
+        p.pop();
+    }
+    p
+}
+
+/// Number of cells that are not proper quads (see the module docs).
+pub fn odd_cells(mesh: &QuadMesh) -> usize {
+    mesh.cells.iter().filter(|c| polygon(c).len() != 4).count()
+}
+
+/// Subdivides every cell once when some cell is a triangle or `extra`
+/// (hole-filling polygons) is not empty (module docs); cells of fewer than
+/// 3 distinct corners are dropped and counted.
+pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<(QuadMesh, usize)> {
+    if odd_cells(mesh) == 0 && extra.iter().all(|p| p.len() == 4) {
+        if extra.is_empty() {
+            return None;
+        }
+        let mut out = mesh.clone();
+        out.cells
+            .extend(extra.iter().map(|p| [p[0], p[1], p[2], p[3]]));
+        return Some((out, 0));
+    }
+    let polygons = mesh.cells.iter().map(polygon).chain(extra.iter().cloned());
+    let mut out = QuadMesh {
+        positions: mesh.positions.clone(),
+        cells: Vec::with_capacity(4 * mesh.cells.len()),
+    };
+    let mut edge_point: HashMap<(u32, u32), u32> = HashMap::new();
+    let mut dropped = 0;
+    for p in polygons {
+        if p.len() < 3 {
+            dropped += 1;
+            continue;
+        }
+        let k = p.len();
+        let mut centre = [0.0; 3];
+        for &v in &p {
+            for (c, x) in centre.iter_mut().zip(out.positions[v as usize]) {
+                *c += x / k as f64;
+            }
+        }
+        let f = out.positions.len() as u32;
+        out.positions.push(centre);
+        let mut mid = |a: u32, b: u32, pos: &mut Vec<[f64; 3]>| {
+            *edge_point.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                let (pa, pb) = (pos[a as usize], pos[b as usize]);
+                pos.push(std::array::from_fn(|i| 0.5 * (pa[i] + pb[i])));
+                (pos.len() - 1) as u32
+            })
+        };
+        for i in 0..k {
+            let (prev, v, next) = (p[(i + k - 1) % k], p[i], p[(i + 1) % k]);
+            let e_next = mid(v, next, &mut out.positions);
+            let e_prev = mid(prev, v, &mut out.positions);
+            out.cells.push([v, e_next, f, e_prev]);
+        }
+    }
+    Some((out, dropped))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_triangle_and_a_quad_become_seven_quads() {
+        // quad 0-1-2-3 and triangle 1-4-2 (written as a quad with a repeated corner)
+        let mesh = QuadMesh {
+            positions: vec![
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [1.0, 1.0, 0.0],
+                [0.0, 1.0, 0.0],
+                [2.0, 0.5, 0.0],
+            ],
+            cells: vec![[0, 1, 2, 3], [1, 4, 4, 2]],
+        };
+        assert_eq!(odd_cells(&mesh), 1);
+        let (out, dropped) = subdivide_if_odd(&mesh, &[]).expect("subdivided");
+        assert_eq!(dropped, 0);
+        assert_eq!(out.cells.len(), 7);
+        // V = 5 + 2 face points + 6 edge points (the shared edge once)
+        assert_eq!(out.positions.len(), 13);
+        for c in &out.cells {
+            assert_eq!(polygon(c).len(), 4, "{c:?}");
+        }
+    }
+
+    #[test]
+    fn proper_quads_are_left_alone() {
+        let mesh = QuadMesh {
+            positions: vec![[0.0; 3]; 4],
+            cells: vec![[0, 1, 2, 3]],
+        };
+        assert!(subdivide_if_odd(&mesh, &[]).is_none());
+    }
+}
+
+/// The holes of the glued mesh: cycles of unmatched cell edges, as polygons
+/// oriented to close them (opposite to the cells' traversal). `edges` are
+/// the unmatched edges as traversed by their cells. A cycle that passes a
+/// vertex twice is not returned (it is left open and reported).
+pub fn hole_polygons(edges: &[(u32, u32)]) -> (Vec<Vec<u32>>, usize) {
+    let mut next: HashMap<u32, Vec<u32>> = HashMap::new();
+    for &(a, b) in edges {
+        next.entry(b).or_default().push(a); // reversed: b → a
+    }
+    let mut used: HashMap<(u32, u32), bool> = HashMap::new();
+    let (mut out, mut skipped) = (Vec::new(), 0);
+    for &(a, b) in edges {
+        if used.contains_key(&(b, a)) {
+            continue;
+        }
+        let mut poly = vec![b];
+        let mut cur = b;
+        let mut ok = true;
+        loop {
+            let cands = next.get(&cur).map(|v| v.as_slice()).unwrap_or(&[]);
+            let [nx] = cands[..] else {
+                ok = false;
+                break;
+            };
+            used.insert((cur, nx), true);
+            if nx == b {
+                break;
+            }
+            if poly.contains(&nx) || poly.len() > edges.len() {
+                ok = false;
+                break;
+            }
+            poly.push(nx);
+            cur = nx;
+        }
+        if ok {
+            out.push(poly);
+        } else {
+            skipped += 1;
+        }
+    }
+    (out, skipped)
+}
+
+#[cfg(test)]
+mod hole_tests {
+    use super::*;
+
+    #[test]
+    fn a_triangular_hole_is_closed_against_its_cells() {
+        // cells traverse 0→1, 1→2, 2→0: the hole face goes 0→2→1... reversed
+        let (polys, open) = hole_polygons(&[(0, 1), (1, 2), (2, 0)]);
+        assert_eq!(open, 0);
+        assert_eq!(polys.len(), 1);
+        let p = &polys[0];
+        assert_eq!(p.len(), 3);
+        // every cell edge a→b appears as b→a in the polygon
+        for (a, b) in [(0u32, 1u32), (1, 2), (2, 0)] {
+            let i = p.iter().position(|&v| v == b).expect("vertex");
+            assert_eq!(p[(i + 1) % 3], a, "{p:?}");
+        }
+    }
+
+    #[test]
+    fn a_figure_eight_is_left_open() {
+        let (polys, open) = hole_polygons(&[(0, 1), (1, 2), (2, 0), (0, 3), (3, 4), (4, 0)]);
+        assert!(polys.is_empty());
+        assert!(open > 0);
+    }
+}
