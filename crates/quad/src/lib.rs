@@ -227,7 +227,7 @@ fn zip_two_side_holes(graph: &mut NodeGraph<2>, glued: &dualex_graph::Glued<2>) 
 
 /// Unmatched sides that are holes, not boundary, as directed edges in
 /// their cells' order: all of them on a closed input; otherwise those whose
-/// walk did not end on the input's boundary.
+/// walk got lost at a singular vertex.
 fn hole_edges(
     graph: &NodeGraph<2>,
     glued: &dualex_graph::Glued<2>,
@@ -241,7 +241,14 @@ fn hole_edges(
             if graph.opposite(s).is_some() {
                 continue;
             }
-            if !closed && matches!(ends.get(s.0 as usize), Some(trace::End::Boundary)) {
+            // on an input with boundary, only the walks that got lost at a
+            // singular vertex leave holes; the others are boundary (reached
+            // directly, or handed over by a reconnection during untangling)
+            let lost = matches!(
+                ends.get(s.0 as usize),
+                Some(trace::End::Inconsistent | trace::End::Loop)
+            );
+            if !closed && !lost {
                 continue;
             }
             let [a, b] = side_corners(glued, node, d);
