@@ -11,7 +11,8 @@ usage:
   dualex quad    [INPUT] -o OUTPUT [--stats STATS.json] [--no-fairing] [options]
   dualex hex     INPUT.hexex -o OUTPUT [--stats STATS.json] [options]
   dualex inspect INPUT [--json] [options]
-  dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`)
+  dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`;
+                                                2D maps → .obj/.ply, 3D maps → .hexex)
 
 INPUT:   triangle mesh with per-corner map: .obj (f v/vt) or .ply (face texcoord);
          tet mesh with 3D map: .hexex

@@ -185,7 +185,10 @@ fn inspect(args: &Args) -> Result<(), String> {
 
 fn generate(args: &Args) -> Result<(), String> {
     if args.list {
-        for n in dualex_gen::names() {
+        for n in dualex_gen::names()
+            .into_iter()
+            .chain(dualex_gen::names_3d())
+        {
             println!("{n}");
         }
         return Ok(());
@@ -196,11 +199,18 @@ fn generate(args: &Args) -> Result<(), String> {
         .ok_or("generate: missing NAME (see --list)")?;
     let name = name.display().to_string();
     let out = args.output.as_ref().ok_or("generate: missing -o OUTPUT")?;
-    let (map, _) = dualex_gen::by_name(&name, args.seed)
+    if let Some((map, _)) = dualex_gen::by_name(&name, args.seed) {
+        dualex_io::write_tri_map(out, &map).map_err(|e| e.to_string())?;
+        if !args.quiet {
+            println!("{name}: {} triangles -> {}", map.len(), out.display());
+        }
+        return Ok(());
+    }
+    let (map, _) = dualex_gen::by_name_3d(&name, args.seed)
         .ok_or_else(|| format!("generate: unknown map {name:?} (see --list)"))?;
-    dualex_io::write_tri_map(out, &map).map_err(|e| e.to_string())?;
+    dualex_io::write_tet_map(out, &map).map_err(|e| e.to_string())?;
     if !args.quiet {
-        println!("{name}: {} triangles -> {}", map.len(), out.display());
+        println!("{name}: {} tets -> {}", map.len(), out.display());
     }
     Ok(())
 }

@@ -1,0 +1,158 @@
+//! `dualex-bench`: scale benchmark of quad and hex extraction.
+//!
+//! `cargo run --release -p dualex-bench -- [--long] [--json] [CASE…]`
+//!
+//! Every case (see [`cases`]) runs in its own child process (this binary
+//! with `--child CASE`), so that its peak memory is its own: the child
+//! reads its `VmHWM` (peak resident set, whole process including the input
+//! map) from `/proc/self/status`. The parent prints a Markdown table: per
+//! case the input size, the time of every extraction stage (from the
+//! extraction stats), the whole extraction, throughput, peak memory per
+//! simplex, output cells and an output hash. Default sizes go up to ~300k
+//! triangles / ~400k tets; `--long` adds ~1M and ~2M. Without CASE
+//! arguments the generated cases run, then the shared data in
+//! `../shared/data` when it exists.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod cases;
+mod table;
+
+use serde_json::Value;
+use std::path::Path;
+use std::process::{Command, ExitCode};
+
+const USAGE: &str = "usage: dualex-bench [--long] [--json] [CASE...]\n\
+  CASE: KIND:SIZE (square, square_noise, torus, torus_fold: grid resolution;\n\
+  block, block_noise: cells per side) or file:PATH (.obj / .hexex)";
+
+fn main() -> ExitCode {
+    let argv: Vec<String> = std::env::args().skip(1).collect();
+    if let [flag, case] = &argv[..] {
+        if flag == "--child" {
+            return child(case);
+        }
+    }
+    let (mut long, mut json, mut named) = (false, false, Vec::new());
+    for a in &argv {
+        match a.as_str() {
+            "--long" => long = true,
+            "--json" => json = true,
+            "-h" | "--help" => {
+                println!("{USAGE}");
+                return ExitCode::SUCCESS;
+            }
+            s if s.starts_with('-') => {
+                eprintln!("dualex-bench: unknown option {s:?}\n{USAGE}");
+                return ExitCode::from(2);
+            }
+            s => named.push(s.to_string()),
+        }
+    }
+    let list = if named.is_empty() {
+        default_cases(long)
+    } else {
+        named
+    };
+    parent(&list, json)
+}
+
+/// Runs one case in this process and prints its record as one JSON line.
+fn child(case: &str) -> ExitCode {
+    match cases::run(case) {
+        Ok(r) => {
+            println!("{r}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("dualex-bench: {e}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+/// The generated cases (4 sizes each, ≥ 100× apart), then the shared data.
+fn default_cases(long: bool) -> Vec<String> {
+    let mut sizes: Vec<(&str, Vec<usize>)> = vec![
+        ("square", vec![30, 80, 200, 380]),
+        ("square_noise", vec![30, 80, 200, 380]),
+        ("torus", vec![45, 110, 280, 540]),
+        ("torus_fold", vec![45, 110, 280, 540]),
+        ("block", vec![6, 14, 26, 40]),
+        ("block_noise", vec![6, 14, 26, 40]),
+    ];
+    if long {
+        for (kind, s) in &mut sizes {
+            s.extend(match *kind {
+                "square" | "square_noise" => [710, 1000],
+                "torus" | "torus_fold" => [1000, 1420],
+                _ => [56, 70],
+            });
+        }
+    }
+    let mut out: Vec<String> = sizes
+        .iter()
+        .flat_map(|(k, s)| s.iter().map(move |n| format!("{k}:{n}")))
+        .collect();
+    let data = Path::new("../shared/data");
+    for f in [
+        "qex/fandisk_param.obj",
+        "qex/duck_miq_4_param.obj",
+        "directional/dragon-param-full-seamless.obj",
+        "hexex/hand_q.hexex",
+        "hexex/rockerarm_q.hexex",
+        "hexex/fancy_ring.hexex",
+    ] {
+        let p = data.join(f);
+        if p.exists() {
+            out.push(format!("file:{}", p.display()));
+        }
+    }
+    out
+}
+
+/// Runs every case in a child process and prints the table.
+fn parent(list: &[String], json: bool) -> ExitCode {
+    let exe = match std::env::current_exe() {
+        Ok(e) => e,
+        Err(e) => {
+            eprintln!("dualex-bench: cannot find own executable: {e}");
+            return ExitCode::from(1);
+        }
+    };
+    let mut records: Vec<Value> = Vec::new();
+    let mut failed = false;
+    for case in list {
+        let out = Command::new(&exe).args(["--child", case]).output();
+        let rec = match out {
+            Ok(o) if o.status.success() => serde_json::from_slice::<Value>(&o.stdout).ok(),
+            Ok(o) => {
+                eprintln!("{case}: {}", String::from_utf8_lossy(&o.stderr).trim());
+                None
+            }
+            Err(e) => {
+                eprintln!("{case}: cannot run: {e}");
+                None
+            }
+        };
+        match rec {
+            Some(r) => {
+                if json {
+                    println!("{r}");
+                } else {
+                    eprintln!("{}", table::progress(&r));
+                }
+                records.push(r);
+            }
+            None => failed = true,
+        }
+    }
+    if !json {
+        println!("{}", table::markdown(&records));
+    }
+    if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}

@@ -1,0 +1,39 @@
+//! # dualex-render — results a person can look at
+//!
+//! Input: an output [`QuadMesh`](dualex_map::QuadMesh) /
+//! [`HexMesh`](dualex_map::HexMesh), or an input
+//! [`TriMap`](dualex_map::TriMap). Output: a PNG file or an HTML page.
+//!
+//! - [`quad_png`]: the quad mesh, vertices coloured by valence
+//!   ([`valence`]); planar meshes seen from above, surfaces in a fixed
+//!   orthographic view with Lambert shading (painter's algorithm);
+//! - [`map_png`]: a triangle map drawn in the `(u, v)` plane, reverted
+//!   triangles purple, the integer grid faint, singular vertices marked;
+//! - [`view_html`] / [`view_html_hex`]: a self-contained page (own WebGL
+//!   viewer, no network) to orbit and zoom the mesh.
+//!
+//! Valence colours, shared by all outputs ([`valence::ValenceClass`]):
+//! valence 3 blue `#1f66d1`, 4 dark grey `#4d4d4d`, 5 red `#d62728`,
+//! any other green `#2ca02c`. Boundary vertices are not classified.
+//!
+//! Invariant: a PNG is written to a temporary file beside the target and
+//! renamed over it, so the target is either the old file or the whole new
+//! one. Bad input (index out of range, non-finite coordinate, nothing to
+//! draw) is an `Err(String)`, never a panic.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod canvas;
+mod map_png;
+mod project;
+mod quad_png;
+pub mod valence;
+mod view;
+
+#[cfg(test)]
+mod test_png;
+
+pub use map_png::{map_png, map_png_marked, MapMark};
+pub use quad_png::quad_png;
+pub use valence::{valence_classes, ValenceClass};
+pub use view::{hex_boundary, view_html, view_html_hex};
