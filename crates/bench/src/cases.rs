@@ -1,7 +1,9 @@
 //! The benchmark cases and how one of them runs (in a child process).
 //!
-//! A case is named `KIND:SIZE` (generated map, see [`KINDS_2D`] and
-//! [`KINDS_3D`]) or `file:PATH` (a `.obj` triangle map or `.hexex` tet
+//! A case is named `KIND:SIZE` (a generated map: `square`, `square_noise`
+//! of `2·r²` triangles, `torus`, `torus_fold` of `r²` triangles, `r` the
+//! grid resolution; `block`, `block_noise` of `6·n³` tets; about 8
+//! triangles per quad, 48 tets per hex) or `file:PATH` (a `.obj` triangle map or `.hexex` tet
 //! map). [`run`] builds the input, extracts, and returns one [`Record`]:
 //! input size, per-stage times from the extraction stats, output size and
 //! hash (to check that optimisations keep the output byte-identical), and
@@ -13,12 +15,6 @@ use dualex_map::{InputError, TetMap, TriMap};
 use serde_json::{json, Value};
 use std::path::Path;
 use std::time::Instant;
-
-/// Generated triangle-map kinds; SIZE is the grid resolution `r`
-/// (about `2·r²` triangles, one quad per `8` triangles).
-pub const KINDS_2D: [&str; 4] = ["square", "square_noise", "torus", "torus_fold"];
-/// Generated tet-map kinds; SIZE is `n` (`6·n³` tets, one hex per `8·6` tets).
-pub const KINDS_3D: [&str; 2] = ["block", "block_noise"];
 
 /// The input of one case.
 pub enum Input {
@@ -129,16 +125,28 @@ pub fn run(name: &str) -> Result<Value, String> {
     let input_ms = t0.elapsed().as_secs_f64() * 1e3;
     let hwm_input = peak_rss_kib();
     let t1 = Instant::now();
-    let (dim, simplices, cells, hash, stages) = match &input {
+    let (dim, simplices, cells, hash, stats) = match &input {
         Input::Tri(map) => {
             let (mesh, st) = dualex_quad::extract(map, &dualex_quad::QuadOptions::default())
                 .map_err(|e| e.to_string())?;
-            (2, map.len(), mesh.cells.len(), mesh_hash(&mesh), st.time_ms)
+            (
+                2,
+                map.len(),
+                mesh.cells.len(),
+                mesh_hash(&mesh),
+                st.to_json(),
+            )
         }
         Input::Tet(map) => {
             let (mesh, st) = dualex_hex::extract(map, &dualex_hex::HexOptions::default())
                 .map_err(|e| e.to_string())?;
-            (3, map.len(), mesh.cells.len(), mesh_hash(&mesh), st.time_ms)
+            (
+                3,
+                map.len(),
+                mesh.cells.len(),
+                mesh_hash(&mesh),
+                st.to_json(),
+            )
         }
     };
     let extract_ms = t1.elapsed().as_secs_f64() * 1e3;
@@ -148,7 +156,7 @@ pub fn run(name: &str) -> Result<Value, String> {
         "simplices": simplices,
         "input_ms": input_ms,
         "extract_ms": extract_ms,
-        "stages": stages,
+        "stats": stats,
         "cells": cells,
         "hash": format!("{hash:016x}"),
         "hwm_input_kib": hwm_input,
@@ -189,8 +197,9 @@ mod tests {
     fn a_small_case_runs_and_reports_its_counts() {
         let r = run("square:8").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(r["simplices"], 128);
-        // [0.2, 4.2]² holds the integers 1..=4: a 3 × 3 grid of quads
-        assert_eq!(r["cells"], 9);
+        // [0.2, 4.2]² holds the grid points 1..=4 squared, one (dual) quad each
+        assert_eq!(r["cells"], 16);
+        assert_eq!(r["stats"]["nodes"], 16);
         assert!(r["hwm_kib"].as_u64().unwrap_or(0) >= r["hwm_input_kib"].as_u64().unwrap_or(1));
     }
 

@@ -13,13 +13,9 @@ const STAGES: [&str; 7] = [
     "glue_geometry",
 ];
 
-/// Time of stage `name` in record `r`, in ms (the stats list `[name, ms]` pairs).
+/// Time of stage `name` in record `r`, in ms (`stats.time_ms.NAME`).
 fn stage_ms(r: &Value, name: &str) -> Option<f64> {
-    r["stages"]
-        .as_array()?
-        .iter()
-        .find(|p| p[0] == name)
-        .and_then(|p| p[1].as_f64())
+    r["stats"]["time_ms"][name].as_f64()
 }
 
 fn num(r: &Value, key: &str) -> f64 {
@@ -83,7 +79,7 @@ mod tests {
     fn a_row_shows_throughput_and_bytes_per_simplex() {
         let r = json!({
             "case": "file:/a/b/x.obj", "simplices": 2000, "input_ms": 1.0,
-            "extract_ms": 4.0, "stages": [["map", 1.0], ["nodes", 3.0]],
+            "extract_ms": 4.0, "stats": {"time_ms": {"map": 1.0, "nodes": 3.0}},
             "cells": 10, "hash": "ab", "hwm_kib": 4000,
         });
         let t = markdown(&[r]);

@@ -8,9 +8,14 @@ pub const USAGE: &str = "\
 dualex — quad meshes from messy grid-preserving maps
 
 usage:
-  dualex quad    [INPUT] -o OUTPUT [--stats STATS.json] [--no-fairing] [options]
+  dualex quad    [INPUT] -o OUTPUT [--stats STATS.json] [--png QUADS.png] [--no-fairing] [options]
   dualex hex     INPUT.hexex -o OUTPUT [--stats STATS.json] [options]
-  dualex inspect INPUT [--json] [options]
+  dualex inspect INPUT [--json] [--png MAP.png] [options]
+  dualex view    MESH -o PAGE.html                (MESH: quads .obj/.ply, hexes .mesh)
+  dualex extrude INPUT -o OUT.hexex [--layers L] [--thickness T] [--quality] [--fallback]
+                        (prisms over every triangle, tetrahedralized by TetGen
+                        found at run time (`tetgen`, or $DUALEX_TETGEN);
+                        T default: 0.5 × the mean edge length)
   dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`;
                                                 2D maps → .obj/.ply, 3D maps → .hexex)
 
@@ -20,6 +25,9 @@ OUTPUT:  quads: .obj .ply .vtk; hexes: .mesh (MEDIT) .vtk
 options:
   --no-weld             keep coincident boundary vertices of cut meshes apart
   --round-transitions   snap non-integer transition translations (reports how far)
+  --png FILE            quad: picture of the mesh colored by valence (3 blue, 4 grey,
+                        5 red, other green); inspect: the map in the plane, reverted
+                        triangles purple, singularities marked
   --seed N              seed of the sanitization perturbations (default 1)
   -v, --verbose         per-stage counts and timings on stderr
   -q, --quiet           print nothing but errors
@@ -46,8 +54,18 @@ pub struct Args {
     pub round: bool,
     /// `--seed`.
     pub seed: u64,
+    /// `--png`.
+    pub png: Option<PathBuf>,
     /// `--list`.
     pub list: bool,
+    /// `--layers` (extrude).
+    pub layers: Option<usize>,
+    /// `--thickness` (extrude).
+    pub thickness: Option<f64>,
+    /// `--quality` (extrude).
+    pub quality: bool,
+    /// `--fallback` (extrude).
+    pub fallback: bool,
     /// `-v`.
     pub verbose: bool,
     /// `-q`.
@@ -78,6 +96,7 @@ pub fn parse(argv: &[String]) -> Result<Args, String> {
         match x.as_str() {
             "-o" | "--output" => a.output = Some(value(x)?.into()),
             "--stats" => a.stats = Some(value(x)?.into()),
+            "--png" => a.png = Some(value(x)?.into()),
             "--seed" => {
                 let v = value(x)?;
                 a.seed = v
@@ -89,6 +108,22 @@ pub fn parse(argv: &[String]) -> Result<Args, String> {
             "--no-weld" => a.no_weld = true,
             "--round-transitions" => a.round = true,
             "--list" => a.list = true,
+            "--layers" => {
+                let v = value(x)?;
+                a.layers = Some(
+                    v.parse()
+                        .map_err(|_| format!("--layers: not a count: {v}"))?,
+                );
+            }
+            "--thickness" => {
+                let v = value(x)?;
+                a.thickness = Some(
+                    v.parse()
+                        .map_err(|_| format!("--thickness: not a number: {v}"))?,
+                );
+            }
+            "--quality" => a.quality = true,
+            "--fallback" => a.fallback = true,
             "-v" | "--verbose" => a.verbose = true,
             "-q" | "--quiet" => a.quiet = true,
             "-h" | "--help" => a.command = "help".into(),

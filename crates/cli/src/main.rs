@@ -13,6 +13,9 @@ use std::process::ExitCode;
 /// `dualex generate cube_folded_noise -o data/embedded.obj`.
 const EMBEDDED: &[u8] = include_bytes!("../../../data/embedded.obj");
 
+/// Side of the PNG pictures, in pixels.
+const PNG_SIZE: u32 = 1000;
+
 fn main() -> ExitCode {
     let argv: Vec<String> = std::env::args().skip(1).collect();
     let args = match args::parse(&argv) {
@@ -29,8 +32,10 @@ fn main() -> ExitCode {
         }
         "quad" => quad(&args),
         "hex" => hex(&args),
+        "view" => view(&args),
         "inspect" => inspect(&args),
         "generate" => generate(&args),
+        "extrude" => extrude(&args),
         other => {
             eprintln!("dualex: unknown subcommand {other:?}; see --help");
             return ExitCode::from(2);
@@ -91,6 +96,10 @@ fn quad(args: &Args) -> Result<(), String> {
         dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name).to_string())?;
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
     write_stats(args, &stats.to_json())?;
+    if let Some(png) = &args.png {
+        dualex_render::quad_png(&mesh, png, PNG_SIZE)
+            .map_err(|e| format!("{}: {e}", png.display()))?;
+    }
     if stats.repair_triangles > 0 && !args.quiet {
         eprintln!(
             "dualex: warning: {} singular vertices sit exactly on dual nodes (not a SoG map); their 3-sided faces were made quads by one step of subdivision",
@@ -143,6 +152,49 @@ fn hex(args: &Args) -> Result<(), String> {
     Ok(())
 }
 
+fn view(args: &Args) -> Result<(), String> {
+    let input = args
+        .input
+        .as_ref()
+        .ok_or("view: missing MESH (.obj/.ply quads or .mesh hexes)")?;
+    let out = args.output.as_ref().ok_or("view: missing -o PAGE.html")?;
+    let name = input.display().to_string();
+    let title = input
+        .file_name()
+        .map_or(name.clone(), |f| f.to_string_lossy().to_string());
+    let ext = input
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    let page = if ext == "mesh" {
+        let mesh = dualex_io::read_hex_mesh(input).map_err(|e| e.to_string())?;
+        dualex_render::view_html_hex(&mesh, &title)
+    } else {
+        let poly = dualex_io::read_polygon_mesh(input).map_err(|e| e.to_string())?;
+        let mut mesh = dualex_map::QuadMesh {
+            positions: poly.positions,
+            cells: Vec::with_capacity(poly.faces.len()),
+        };
+        for (i, f) in poly.faces.iter().enumerate() {
+            let [a, b, c, d] = f[..] else {
+                return Err(format!(
+                    "{name}: face {i} has {} vertices; view shows quad meshes",
+                    f.len()
+                ));
+            };
+            mesh.cells.push([a, b, c, d]);
+        }
+        dualex_render::view_html(&mesh, &title)
+    }
+    .map_err(|e| format!("{name}: {e}"))?;
+    dualex_io::write_text(out, &page).map_err(|e| e.to_string())?;
+    if !args.quiet {
+        println!("view: {} -> {}", name, out.display());
+    }
+    Ok(())
+}
+
 fn write_stats(args: &Args, json: &serde_json::Value) -> Result<(), String> {
     let text = serde_json::to_string_pretty(json).map_err(|e| format!("bug: stats: {e}"))?;
     if let Some(s) = &args.stats {
@@ -167,11 +219,18 @@ fn inspect(args: &Args) -> Result<(), String> {
         round: args.round,
         ..Default::default()
     };
+    if args.png.is_some() && ext == "hexex" {
+        return Err("inspect --png: pictures of 3D maps are not supported; use a 2D map".into());
+    }
     let report = if ext == "hexex" {
         let m = dualex_io::read_tet_map(path).map_err(|e| e.to_string())?;
         dualex_map::report::inspect(&m, &opts)
     } else {
         let m = dualex_io::read_tri_map(path).map_err(|e| e.to_string())?;
+        if let Some(png) = &args.png {
+            dualex_render::map_png(&m, png, PNG_SIZE)
+                .map_err(|e| format!("{}: {e}", png.display()))?;
+        }
         dualex_map::report::inspect(&m, &opts)
     }
     .map_err(|e| e.in_file(name).to_string())?;
@@ -211,6 +270,46 @@ fn generate(args: &Args) -> Result<(), String> {
     dualex_io::write_tet_map(out, &map).map_err(|e| e.to_string())?;
     if !args.quiet {
         println!("{name}: {} tets -> {}", map.len(), out.display());
+    }
+    Ok(())
+}
+
+/// `dualex extrude`: a 2D map into a 3D one (prisms tetrahedralized by
+/// TetGen, run as an external program; see dualex-extrude).
+fn extrude(args: &Args) -> Result<(), String> {
+    let input = args.input.as_ref().ok_or("extrude: missing INPUT")?;
+    let out = args
+        .output
+        .as_ref()
+        .ok_or("extrude: missing -o OUT.hexex")?;
+    let name = input.display().to_string();
+    let map = read_2d(input, args)?;
+    let opts = dualex_extrude::ExtrudeOptions {
+        layers: args.layers.unwrap_or(1),
+        thickness: args.thickness,
+        quality: args.quality,
+        program: std::env::var_os("DUALEX_TETGEN").map_or("tetgen".into(), Into::into),
+        fallback: args.fallback,
+    };
+    let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|e| format!("{name}: {e}"))?;
+    dualex_io::write_tet_map(out, &tets).map_err(|e| e.to_string())?;
+    if !rep.tetgen && !args.quiet {
+        eprintln!("dualex: TetGen not found: used the built-in prism split (3 tets per prism)");
+    }
+    if !args.quiet {
+        println!(
+            "done: {} prisms -> {} tets ({}, {} Steiner points, {} flat, {} reverted), thickness {:.3e}, {:.0} ms ({:.0} ms tetrahedralizing) -> {}",
+            rep.prisms,
+            rep.tets,
+            if rep.tetgen { "TetGen" } else { "prism split" },
+            rep.steiner_points,
+            rep.flat_tets,
+            rep.reverted_tets,
+            rep.thickness,
+            rep.total_ms,
+            rep.tetrahedralize_ms,
+            out.display()
+        );
     }
     Ok(())
 }

@@ -26,7 +26,7 @@ pub mod glue;
 pub mod graph;
 pub mod ids;
 pub mod ops;
-mod rng;
+use dualex_map::rng;
 pub mod testgrid;
 mod uf;
 pub mod untangle;

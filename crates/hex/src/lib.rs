@@ -22,7 +22,7 @@ pub mod geometry;
 pub mod local;
 pub mod near;
 pub mod nodes;
-mod rng;
+use dualex_map::rng;
 pub mod sanitize;
 pub mod simplex;
 pub mod stats;
@@ -62,6 +62,7 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
         clock = Instant::now();
     };
     map.validate()?;
+    nodes::check_size(map)?;
     map.check_not_reflected()?;
     st.input_tets = map.len();
     let topo = Topology::build(map)?;

@@ -8,6 +8,7 @@
 
 use crate::local::LocalMap;
 use crate::simplex::{bary_weights, det};
+use dualex_map::{InputError, TetMap};
 
 /// The nodes of the dual segmentation.
 #[derive(Clone, Debug, Default)]
@@ -76,5 +77,76 @@ impl Nodes {
     /// The nodes of tet `s`.
     pub fn of_tet(&self, s: usize) -> std::ops::Range<usize> {
         self.tet_offsets[s] as usize..self.tet_offsets[s + 1] as usize
+    }
+}
+
+/// Most grid points the simplices' map images may span in total (the work
+/// of node finding and sanitization, and a bound on the node count);
+/// beyond it the map is refused up front instead of exhausting memory.
+pub const MAX_GRID_POINTS: f64 = (1u64 << 28) as f64;
+
+/// Estimates, before any allocation, how many grid points the map images
+/// span: per tet the product over the axes of (extent + 1), summed.
+/// Returns the estimate, or an [`InputError`] naming the largest tet
+/// when it exceeds [`MAX_GRID_POINTS`] (e.g. a tet spanning
+/// 10⁶ units on each axis). Call it right after `map.validate()`.
+pub fn check_size(map: &TetMap) -> Result<f64, InputError> {
+    let (mut total, mut largest) = (0.0f64, (0.0f64, 0usize));
+    for (s, p) in map.coords.iter().enumerate() {
+        let ext = |k: usize| {
+            let lo = p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
+            let hi = p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
+            hi - lo + 1.0
+        };
+        let n = ext(0) * ext(1) * ext(2);
+        total += n;
+        if n.is_nan() || n > largest.0 {
+            largest = (n, s);
+        }
+    }
+    if total <= MAX_GRID_POINTS {
+        return Ok(total);
+    }
+    let (n, s) = largest;
+    Err(InputError {
+        file: None,
+        location: Some(format!("tet {s}")),
+        message: format!(
+            "map too large: its image spans {n:.3e} grid points, the whole map {total:.3e} \
+             (limit {MAX_GRID_POINTS:.3e}); scale the map down"
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one_tet(p: [[f64; 3]; 4]) -> TetMap {
+        TetMap {
+            positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            simplices: vec![[0, 1, 2, 3]],
+            coords: vec![p],
+        }
+    }
+
+    const UNIT: [[f64; 3]; 4] = [[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
+    #[test]
+    fn the_estimate_is_the_boxes_grid_points() {
+        let m = one_tet([[0.5; 3], [3.5, 0.5, 0.5], [0.5, 2.5, 0.5], [0.5, 0.5, 1.5]]);
+        assert_eq!(check_size(&m), Ok(4.0 * 3.0 * 2.0));
+    }
+
+    #[test]
+    fn an_absurd_map_is_refused_naming_its_largest_tet() {
+        let mut m = one_tet(UNIT.map(|c| c.map(|x| x * 1e6)));
+        m.simplices.push([0, 1, 2, 3]);
+        m.coords.insert(0, UNIT);
+        let e = check_size(&m).err().unwrap_or_else(|| panic!("accepted"));
+        assert_eq!(e.location.as_deref(), Some("tet 1"));
+        assert!(e.to_string().starts_with("tet 1: map too large"), "{e}");
+        let e = crate::extract(&m, &Default::default()).err();
+        assert!(e.is_some_and(|e| e.message.starts_with("map too large")));
     }
 }

@@ -20,8 +20,9 @@
 
 use crate::clusters::Clusters;
 use crate::local::LocalMap;
-use crate::near::bad_vertices;
+use crate::near::{near_int, segment_near_iso_line, triangle_near_grid_point, EPS};
 use crate::rng::SplitMix;
+use crate::simplex::face_corners;
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
 use std::collections::HashSet;
 
@@ -80,18 +81,24 @@ pub fn sanitize(
         rng: SplitMix::new(seed),
         moved: vec![false; map.positions.len()],
         moved_singular: HashSet::new(),
+        touched: Vec::new(),
+        done_epoch: vec![0; map.positions.len()],
+        epoch: 0,
     };
     let mut amp = AMPLITUDE;
-    let mut bad = bad_vertices(map, &local.coords);
+    let mut scan = BadScan::new(map, &local.coords);
+    let mut bad = scan.list();
     for round in 0..ROUNDS {
         rep.rounds = round;
+        mv.touched.clear();
         if !mv.round(local, &bad, amp, &mut rep) {
             break;
         }
         if round % 8 == 7 {
             amp *= 2.0;
         }
-        bad = bad_vertices(map, &local.coords);
+        scan.update(map, stars, &local.coords, &mv.touched);
+        bad = scan.list();
     }
     rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
     rep.singular_on_iso = bad
@@ -112,6 +119,11 @@ struct Mover<'a> {
     rng: SplitMix,
     moved: Vec<bool>,
     moved_singular: HashSet<u32>,
+    /// Vertices moved in the current round.
+    touched: Vec<u32>,
+    /// Per cluster root: the last round (epoch) in which it moved.
+    done_epoch: Vec<u32>,
+    epoch: u32,
 }
 
 impl Mover<'_> {
@@ -127,24 +139,27 @@ impl Mover<'_> {
         let movable =
             |v: &&u32| !self.stars.singular[**v as usize] || self.free_axis[**v as usize].is_some();
         let todo: Vec<u32> = bad.iter().filter(movable).copied().collect();
-        let mut done_root = HashSet::new();
+        self.epoch += 1;
         for &v in &todo {
             if let Some(axis) = self.free_axis[v as usize] {
                 let mut d = [0.0; 3];
                 d[axis] = if self.rng.unit() < 0.5 { amp } else { -amp };
                 move_vertex(self.stars, local, v as usize, &d);
+                self.touched.push(v);
                 self.moved_singular.insert(v);
                 continue;
             }
             let root = self.clusters.root(v);
-            if !done_root.insert(root) {
+            if self.done_epoch[root as usize] == self.epoch {
                 continue;
             }
+            self.done_epoch[root as usize] = self.epoch;
             let delta = self.rng.direction().map(|x| x * amp);
             match self.clusters.members_rot(root) {
                 Some(members) => {
                     for (w, r) in members {
                         self.moved[w as usize] = true;
+                        self.touched.push(w);
                         move_vertex(self.stars, local, w as usize, &r.apply(&delta));
                     }
                 }
@@ -233,6 +248,178 @@ fn move_vertex(stars: &Stars<3>, local: &mut LocalMap, v: usize, delta: &[f64; 3
         let x = &mut local.coords[e.simplex as usize][e.corner as usize];
         for k in 0..3 {
             x[k] += d[k];
+        }
+    }
+}
+
+/// [`crate::near::bad_vertices`], kept up to date incrementally: after a
+/// round only the tets around the vertices whose tets moved are tested
+/// again (a tet's test depends on its own corners only, so the result is
+/// that of a full scan; a full scan every round made the rounds dominate).
+struct BadScan {
+    bad: Vec<bool>,
+    /// Vertex → incident tets (CSR).
+    inc_offsets: Vec<u32>,
+    inc: Vec<u32>,
+    v_stamp: Vec<u32>,
+    s_stamp: Vec<u32>,
+    epoch: u32,
+}
+
+impl BadScan {
+    fn new(map: &TetMap, coords: &[[[f64; 3]; 4]]) -> Self {
+        let nv = map.positions.len();
+        let mut inc_offsets = vec![0u32; nv + 1];
+        for &v in map.simplices.iter().flatten() {
+            inc_offsets[v as usize + 1] += 1;
+        }
+        for v in 0..nv {
+            inc_offsets[v + 1] += inc_offsets[v];
+        }
+        let mut fill = inc_offsets.clone();
+        let mut inc = vec![0u32; 4 * map.simplices.len()];
+        for (s, tet) in map.simplices.iter().enumerate() {
+            for &v in tet {
+                inc[fill[v as usize] as usize] = s as u32;
+                fill[v as usize] += 1;
+            }
+        }
+        let mut bad = vec![false; nv];
+        for (tet, c) in map.simplices.iter().zip(coords) {
+            mark_tet(tet, c, &mut bad);
+        }
+        BadScan {
+            bad,
+            inc_offsets,
+            inc,
+            v_stamp: vec![0; nv],
+            s_stamp: vec![0; map.simplices.len()],
+            epoch: 0,
+        }
+    }
+
+    /// The bad vertices, in increasing order.
+    fn list(&self) -> Vec<u32> {
+        (0..self.bad.len() as u32)
+            .filter(|&v| self.bad[v as usize])
+            .collect()
+    }
+
+    /// Re-tests after the vertices `moved` (corners in their stars) moved.
+    fn update(&mut self, map: &TetMap, stars: &Stars<3>, coords: &[[[f64; 3]; 4]], moved: &[u32]) {
+        self.epoch += 1;
+        let epoch = self.epoch;
+        // vertices of the changed tets: their status is recomputed
+        let mut redo = Vec::new();
+        for &v in moved {
+            for e in stars.of(v as usize) {
+                for &w in &map.simplices[e.simplex as usize] {
+                    if self.v_stamp[w as usize] != epoch {
+                        self.v_stamp[w as usize] = epoch;
+                        self.bad[w as usize] = false;
+                        redo.push(w);
+                    }
+                }
+            }
+        }
+        for &w in &redo {
+            for k in self.inc_offsets[w as usize]..self.inc_offsets[w as usize + 1] {
+                let s = self.inc[k as usize] as usize;
+                if self.s_stamp[s] != epoch {
+                    self.s_stamp[s] = epoch;
+                    mark_tet(&map.simplices[s], &coords[s], &mut self.bad);
+                }
+            }
+        }
+    }
+}
+
+/// Whether the box of `pts` (grown by `2·EPS`) holds an integer on `axis`:
+/// no iso-line or grid point within `EPS` of them otherwise.
+fn spans_integer(pts: &[&[f64; 3]], axis: usize) -> bool {
+    let lo = pts.iter().map(|p| p[axis]).fold(f64::INFINITY, f64::min);
+    let hi = pts
+        .iter()
+        .map(|p| p[axis])
+        .fold(f64::NEG_INFINITY, f64::max);
+    (lo - 2.0 * EPS).ceil() <= hi + 2.0 * EPS
+}
+
+/// Marks the vertices that tet `tet` (corners `c`) makes bad, with the
+/// tests of [`crate::near::bad_vertices`] (edges and faces whose box holds
+/// no integer on enough axes skipped: they cannot be near the grid).
+fn mark_tet(tet: &[u32; 4], c: &[[f64; 3]; 4], bad: &mut [bool]) {
+    for k in 0..4 {
+        if c[k].iter().any(|&x| near_int(x)) {
+            bad[tet[k] as usize] = true;
+        }
+        for l in k + 1..4 {
+            if (0..3)
+                .filter(|&a| spans_integer(&[&c[k], &c[l]], a))
+                .count()
+                < 2
+            {
+                continue;
+            }
+            if let Some((at_k, at_l)) = segment_near_iso_line(&c[k], &c[l]) {
+                bad[tet[k] as usize] |= at_k || !at_l;
+                bad[tet[l] as usize] |= at_l || !at_k;
+            }
+        }
+    }
+    for f in 0..4 {
+        let fc = face_corners(f);
+        let pts = fc.map(|i| &c[i]);
+        if (0..3).all(|a| spans_integer(&pts, a)) && triangle_near_grid_point(&fc.map(|i| c[i])) {
+            fc.iter().for_each(|&i| bad[tet[i] as usize] = true);
+        }
+    }
+}
+
+#[cfg(test)]
+mod scan_tests {
+    use super::*;
+    use crate::near::bad_vertices;
+
+    /// The incremental scan equals a full scan after arbitrary moves,
+    /// including moves onto isos, grid lines and grid points.
+    #[test]
+    fn incremental_scan_equals_full_scan() {
+        use crate::testblock::{block, even, identity};
+        // 0.2 + 0.7·4 = 3: a grid plane of vertices on isos
+        let map = block(
+            &[even(0.2, 3.7, 5), even(0.2, 3.7, 5), even(0.2, 3.7, 5)],
+            identity,
+        );
+        let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
+        let (trans, _) =
+            Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+        let stars = Stars::build(&map, &topo, &trans);
+        let mut local = LocalMap::new(&map, &topo, &trans);
+        let mut scan = BadScan::new(&map, &local.coords);
+        assert_eq!(scan.list(), bad_vertices(&map, &local.coords));
+        assert!(!scan.list().is_empty());
+        let mut rng = SplitMix::new(5);
+        let nv = map.positions.len();
+        for round in 0..20 {
+            let moved: Vec<u32> = (0..1 + round % 4)
+                .map(|_| (rng.unit() * nv as f64) as u32 % nv as u32)
+                .collect();
+            for &v in &moved {
+                let first = stars.of(v as usize)[0];
+                let x = local.coords[first.simplex as usize][first.corner as usize];
+                // alternately onto an integer coordinate, or a random step
+                let d = if round % 2 == 0 {
+                    [x[0].round() - x[0], 0.0, 0.0]
+                } else {
+                    rng.direction().map(|t| t * 0.4)
+                };
+                move_vertex(&stars, &mut local, v as usize, &d);
+            }
+            scan.update(&map, &stars, &local.coords, &moved);
+            let full = bad_vertices(&map, &local.coords);
+            assert!(!full.is_empty() || round % 2 == 1);
+            assert_eq!(scan.list(), full, "round {round}");
         }
     }
 }

@@ -24,6 +24,7 @@
 #![warn(missing_docs)]
 
 mod hexex;
+mod medit;
 mod obj;
 mod ply;
 mod ply_header;
@@ -42,6 +43,7 @@ mod fuzz_tests;
 mod roundtrip_tests;
 
 pub use hexex::parse_hexex;
+pub use medit::parse_medit_hex;
 pub use obj::{parse_obj, parse_polygon_obj};
 pub use output::{write_text, OutputError, OutputErrorKind};
 pub use ply::{parse_ply, parse_polygon_ply};
@@ -99,6 +101,12 @@ pub fn read_tri_map(path: &Path) -> Result<TriMap, InputError> {
 pub fn read_tet_map(path: &Path) -> Result<TetMap, InputError> {
     input_extension(path, &["hexex"])?;
     parse_hexex(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+}
+
+/// Reads a hex mesh from a MEDIT `.mesh` (as written by `dualex hex`).
+pub fn read_hex_mesh(path: &Path) -> Result<HexMesh, InputError> {
+    input_extension(path, &["mesh"])?;
+    parse_medit_hex(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
 }
 
 /// Reads a polygon mesh from `.obj`.

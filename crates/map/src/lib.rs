@@ -20,9 +20,11 @@ pub mod cells;
 mod components;
 pub mod error;
 pub mod holonomy;
+pub mod local;
 pub mod mesh;
 pub mod report;
 // rotation.rs is owned elsewhere; its index loops read clearer than iterators
+pub mod rng;
 #[allow(clippy::needless_range_loop)]
 pub mod rotation;
 pub mod singularity;

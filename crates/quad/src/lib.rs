@@ -20,7 +20,7 @@ pub mod geometry;
 pub mod local;
 pub mod nodes;
 pub mod repair;
-mod rng;
+use dualex_map::rng;
 pub mod sanitize;
 pub mod split;
 pub mod stats;
@@ -62,6 +62,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         clock = Instant::now();
     };
     map.validate()?;
+    nodes::check_size(map)?;
     st.input_triangles = map.len();
     st.reverted_triangles = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
     let mut owned;

@@ -5,9 +5,11 @@
 //! edge). Output: [`Nodes`]: per node its triangle, integer coordinates in
 //! that triangle's local chart, barycentric coordinates, reverted flag
 //! (`det < 0`); and per triangle the list of its nodes (CSR).
-//! Zero-area triangles hold no node.
+//! Zero-area triangles hold no node. [`check_size`] refuses, before any
+//! allocation, maps whose images span absurdly many grid points.
 
 use crate::local::LocalMap;
+use dualex_map::{InputError, TriMap};
 
 /// The nodes of the dual segmentation.
 #[derive(Clone, Debug, Default)]
@@ -75,5 +77,80 @@ impl Nodes {
     /// The nodes of triangle `s`.
     pub fn of_tri(&self, s: usize) -> std::ops::Range<usize> {
         self.tri_offsets[s] as usize..self.tri_offsets[s + 1] as usize
+    }
+}
+
+/// Most grid points the simplices' map images may span in total (the work
+/// of node finding and sanitization, and a bound on the node count);
+/// beyond it the map is refused up front instead of exhausting memory.
+pub const MAX_GRID_POINTS: f64 = (1u64 << 28) as f64;
+
+/// Estimates, before any allocation, how many grid points the map images
+/// span: per triangle the product over the axes of (extent + 1), summed.
+/// Returns the estimate, or an [`InputError`] naming the largest triangle
+/// when it exceeds [`MAX_GRID_POINTS`] (e.g. a triangle spanning
+/// 10⁹ × 10⁹ units). Call it right after `map.validate()`.
+pub fn check_size(map: &TriMap) -> Result<f64, InputError> {
+    let (mut total, mut largest) = (0.0f64, (0.0f64, 0usize));
+    for (s, p) in map.coords.iter().enumerate() {
+        let ext = |k: usize| {
+            let lo = p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
+            let hi = p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
+            hi - lo + 1.0
+        };
+        let n = ext(0) * ext(1);
+        total += n;
+        if n.is_nan() || n > largest.0 {
+            largest = (n, s);
+        }
+    }
+    if total <= MAX_GRID_POINTS {
+        return Ok(total);
+    }
+    let (n, s) = largest;
+    Err(InputError {
+        file: None,
+        location: Some(format!("triangle {s}")),
+        message: format!(
+            "map too large: its image spans {n:.3e} grid points, the whole map {total:.3e} \
+             (limit {MAX_GRID_POINTS:.3e}); scale the map down"
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one_triangle(p: [[f64; 2]; 3]) -> TriMap {
+        TriMap {
+            positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            simplices: vec![[0, 1, 2]],
+            coords: vec![p],
+        }
+    }
+
+    #[test]
+    fn the_estimate_is_the_boxes_grid_points() {
+        let m = one_triangle([[0.5, 0.5], [3.5, 0.5], [0.5, 2.5]]);
+        assert_eq!(check_size(&m), Ok(4.0 * 3.0));
+    }
+
+    #[test]
+    fn an_absurd_map_is_refused_naming_its_largest_triangle() {
+        let mut m = one_triangle([[0.0, 0.0], [1e9, 0.0], [0.0, 1e9]]);
+        m.simplices.push([0, 1, 2]);
+        m.coords.insert(0, [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+        let e = check_size(&m).err().unwrap_or_else(|| panic!("accepted"));
+        assert_eq!(e.location.as_deref(), Some("triangle 1"));
+        assert!(
+            e.to_string().starts_with("triangle 1: map too large"),
+            "{e}"
+        );
+        // extract refuses it before any work
+        let e = crate::extract(&m, &Default::default()).err();
+        assert!(e.is_some_and(|e| e.message.starts_with("map too large")));
+        let nan = one_triangle([[0.0, 0.0], [f64::INFINITY, 0.0], [0.0, 1.0]]);
+        assert!(check_size(&nan).is_err());
     }
 }

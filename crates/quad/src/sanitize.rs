@@ -70,8 +70,12 @@ pub fn sanitize(
     let mut rng = SplitMix::new(seed);
     let mut moved = vec![false; map.positions.len()];
     let mut amp = AMPLITUDE;
+    let mut scan = BadScan::new(map, local);
+    let mut touched = Vec::new();
+    // the last round in which each cluster root moved
+    let mut done_round = vec![usize::MAX; map.positions.len()];
     for round in 0..ROUNDS {
-        let bad = bad_vertices(map, local);
+        let bad = scan.list();
         let movable: Vec<u32> = bad
             .iter()
             .copied()
@@ -82,18 +86,19 @@ pub fn sanitize(
             rep.singular_on_iso = bad;
             break;
         }
-        let mut done_root = std::collections::HashSet::new();
         for v in movable {
             let root = clusters.root(v);
-            if !done_root.insert(root) {
+            if done_round[root as usize] == round {
                 continue;
             }
+            done_round[root as usize] = round;
             let a = rng.angle();
             let delta = [amp * a.cos(), amp * a.sin()];
             match clusters.members_rot(root) {
                 Some(members) => {
                     for (w, r) in members {
                         moved[w as usize] = true;
+                        touched.push(w);
                         move_vertex(stars, local, w as usize, &r.apply(&delta));
                     }
                 }
@@ -103,8 +108,10 @@ pub fn sanitize(
         if round % 8 == 7 {
             amp *= 2.0;
         }
+        scan.update(map, stars, local, &touched);
+        touched.clear();
         if round + 1 == ROUNDS {
-            let bad = bad_vertices(map, local);
+            let bad = scan.list();
             rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
             rep.singular_on_iso = bad
                 .into_iter()
@@ -316,25 +323,111 @@ fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
     (q[0] * q[0] + q[1] * q[1]).sqrt()
 }
 
-/// Vertices on an iso, or endpoints of an edge through a grid point.
-fn bad_vertices(map: &TriMap, local: &LocalMap) -> Vec<u32> {
-    let mut bad = vec![false; map.positions.len()];
-    for (s, tri) in map.simplices.iter().enumerate() {
-        let c = &local.coords[s];
-        for k in 0..3 {
-            if near_int(c[k][0]) || near_int(c[k][1]) {
-                bad[tri[k] as usize] = true;
+/// The vertices on an iso, or endpoints of an edge through a grid point,
+/// kept up to date incrementally: after a round only the triangles around
+/// the vertices whose triangles moved are tested again (a triangle's test
+/// depends on its own corners only, so the result is that of a full scan).
+struct BadScan {
+    bad: Vec<bool>,
+    /// Vertex → incident triangles (CSR).
+    inc_offsets: Vec<u32>,
+    inc: Vec<u32>,
+    v_stamp: Vec<u32>,
+    s_stamp: Vec<u32>,
+    epoch: u32,
+}
+
+impl BadScan {
+    fn new(map: &TriMap, local: &LocalMap) -> Self {
+        let nv = map.positions.len();
+        let mut inc_offsets = vec![0u32; nv + 1];
+        for &v in map.simplices.iter().flatten() {
+            inc_offsets[v as usize + 1] += 1;
+        }
+        for v in 0..nv {
+            inc_offsets[v + 1] += inc_offsets[v];
+        }
+        let mut fill = inc_offsets.clone();
+        let mut inc = vec![0u32; 3 * map.simplices.len()];
+        for (s, tri) in map.simplices.iter().enumerate() {
+            for &v in tri {
+                inc[fill[v as usize] as usize] = s as u32;
+                fill[v as usize] += 1;
             }
-            let l = (k + 1) % 3;
-            if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
-                // a grid point at an endpoint is that endpoint's problem only
-                let (at_k, at_l) = (dist2(&g, &c[k]) < EPS, dist2(&g, &c[l]) < EPS);
-                bad[tri[k] as usize] |= at_k || !at_l;
-                bad[tri[l] as usize] |= at_l || !at_k;
+        }
+        let mut bad = vec![false; nv];
+        for (tri, c) in map.simplices.iter().zip(&local.coords) {
+            mark_tri(tri, c, &mut bad);
+        }
+        let (v_stamp, s_stamp) = (vec![0; nv], vec![0; map.simplices.len()]);
+        BadScan {
+            bad,
+            inc_offsets,
+            inc,
+            v_stamp,
+            s_stamp,
+            epoch: 0,
+        }
+    }
+
+    /// The bad vertices, in increasing order.
+    fn list(&self) -> Vec<u32> {
+        (0..self.bad.len() as u32)
+            .filter(|&v| self.bad[v as usize])
+            .collect()
+    }
+
+    /// Re-tests after the vertices `moved` (corners in their stars) moved.
+    fn update(&mut self, map: &TriMap, stars: &Stars<2>, local: &LocalMap, moved: &[u32]) {
+        self.epoch += 1;
+        let epoch = self.epoch;
+        let mut redo = Vec::new();
+        for &v in moved {
+            for e in stars.of(v as usize) {
+                for &w in &map.simplices[e.simplex as usize] {
+                    if self.v_stamp[w as usize] != epoch {
+                        self.v_stamp[w as usize] = epoch;
+                        self.bad[w as usize] = false;
+                        redo.push(w);
+                    }
+                }
+            }
+        }
+        for &w in &redo {
+            for k in self.inc_offsets[w as usize]..self.inc_offsets[w as usize + 1] {
+                let s = self.inc[k as usize] as usize;
+                if self.s_stamp[s] != epoch {
+                    self.s_stamp[s] = epoch;
+                    mark_tri(&map.simplices[s], &local.coords[s], &mut self.bad);
+                }
             }
         }
     }
-    (0..bad.len() as u32).filter(|&v| bad[v as usize]).collect()
+}
+
+/// Whether `[lo, hi]` of `a`, `b` on `axis`, grown by `2·EPS`, holds an integer.
+fn spans_integer(a: &[f64; 2], b: &[f64; 2], axis: usize) -> bool {
+    (a[axis].min(b[axis]) - 2.0 * EPS).ceil() <= a[axis].max(b[axis]) + 2.0 * EPS
+}
+
+/// Marks the vertices that triangle `tri` (corners `c`) makes bad.
+fn mark_tri(tri: &[u32; 3], c: &[[f64; 2]; 3], bad: &mut [bool]) {
+    for k in 0..3 {
+        if near_int(c[k][0]) || near_int(c[k][1]) {
+            bad[tri[k] as usize] = true;
+        }
+        let l = (k + 1) % 3;
+        // no grid point near the edge unless its box holds one
+        if !(spans_integer(&c[k], &c[l], 0) && spans_integer(&c[k], &c[l], 1)) {
+            continue;
+        }
+        if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
+            // a grid point at an endpoint is that endpoint's problem only
+            let (at_k, at_l) = (dist2(&g, &c[k]) < EPS, dist2(&g, &c[l]) < EPS);
+            bad[tri[k] as usize] |= at_k || !at_l;
+            bad[tri[l] as usize] |= at_l || !at_k;
+        }
+    }
 }
 
 /// Collapsed clusters: vertices joined by zero-length map edges.
@@ -368,12 +461,17 @@ impl Clusters {
                 }
             }
         }
+        // only clusters of more than one vertex are listed (no map entry
+        // and vector per vertex)
+        let roots: Vec<u32> = (0..nv as u32).map(|v| find(&mut parent, v)).collect();
+        let mut size = vec![0u32; nv];
+        roots.iter().for_each(|&r| size[r as usize] += 1);
         let mut members: std::collections::HashMap<u32, Vec<u32>> = Default::default();
-        for v in 0..nv as u32 {
-            let r = find(&mut parent, v);
-            members.entry(r).or_default().push(v);
+        for (v, &r) in roots.iter().enumerate() {
+            if size[r as usize] > 1 {
+                members.entry(r).or_default().push(v as u32);
+            }
         }
-        members.retain(|_, m| m.len() > 1);
         // BFS rotations inside each cluster
         let mut rot_from_root: Vec<Option<Rot2>> = vec![Some(Rot2::IDENTITY); nv];
         let mut adj: std::collections::HashMap<u32, Vec<(u32, Rot2)>> = Default::default();
@@ -459,6 +557,62 @@ fn union(p: &mut [u32], a: u32, b: u32) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The incremental scan equals a full scan (every triangle tested)
+    /// after moves onto isos, through grid points, and random steps.
+    #[test]
+    fn incremental_scan_equals_full_scan() {
+        use dualex_map::{Topology, Transitions};
+        let alt = dualex_gen::Diagonal::Alternating;
+        let (map, _) = dualex_gen::square_noise(12, 0.2, 6.2, 0.3, 4, alt);
+        let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
+        let (trans, _) =
+            Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+        let stars = Stars::build(&map, &topo, &trans);
+        let mut local = LocalMap::new(&map, &topo, &trans);
+        // a fresh scan tests every triangle
+        let full = |local: &LocalMap| BadScan::new(&map, local).list();
+        let mut scan = BadScan::new(&map, &local);
+        assert_eq!(scan.list(), full(&local));
+        let mut rng = SplitMix::new(9);
+        let nv = map.positions.len();
+        for round in 0..24 {
+            let v = ((rng.angle() / std::f64::consts::TAU).abs() * nv as f64) as usize % nv;
+            let e = stars.of(v)[0];
+            let x = local.coords[e.simplex as usize][e.corner as usize];
+            let d = match round % 3 {
+                0 => [x[0].round() - x[0], 0.0],
+                1 => [x[0].round() - x[0], x[1].round() - x[1]],
+                _ => [0.3 * rng.angle().cos(), 0.3 * rng.angle().sin()],
+            };
+            move_vertex(&stars, &mut local, v, &d);
+            scan.update(&map, &stars, &local, &[v as u32]);
+            let want = full(&local);
+            assert!(
+                round % 3 == 2 || want.contains(&(v as u32)),
+                "round {round}"
+            );
+            assert_eq!(scan.list(), want, "round {round}");
+        }
+    }
+
+    /// The box prefilter of [`mark_tri`] never hides a grid point.
+    #[test]
+    fn edges_whose_box_holds_no_grid_point_are_never_near_one() {
+        let mut rng = SplitMix::new(3);
+        let mut near = 0;
+        for k in 0..20000 {
+            let mut p = || 4.0 * rng.angle().sin();
+            let (a, b) = ([p(), p()], [p(), p()]);
+            // every other edge starts exactly on a grid point
+            let a = if k % 2 == 0 { a.map(f64::round) } else { a };
+            if grid_point_near_edge(&a, &b).is_some() {
+                near += 1;
+                assert!(spans_integer(&a, &b, 0) && spans_integer(&a, &b, 1));
+            }
+        }
+        assert!(near >= 10000);
+    }
 
     #[test]
     fn edge_through_grid_point_is_detected() {

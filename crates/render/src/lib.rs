@@ -31,6 +31,8 @@ pub mod valence;
 mod view;
 
 #[cfg(test)]
+mod gallery;
+#[cfg(test)]
 mod test_png;
 
 pub use map_png::{map_png, map_png_marked, MapMark};

@@ -1,0 +1,241 @@
+//! Charts of the extruded tets: every tet takes the chart of its prism's
+//! triangle plus `w`, so the 3D map is grid preserving by construction
+//! (transitions are the 2D ones, identity in `w`).
+//!
+//! Input: the [`Slab`] and a tet mesh over its points plus Steiner points,
+//! each tet labelled with its prism (`region = prism + 1`). Output: a
+//! [`TetMap`] whose tets have positive geometric volume. Tets of no prism
+//! (TetGen meshes the cavity enclosed by a closed surface's slab and gives
+//! it a fresh region number) are dropped; every prism must keep ≥ 3 tets. Slab points take
+//! the map of their (triangle corner, level); a Steiner point takes the
+//! prism's map *piecewise linear on the prism's 3-tet split* (the one of
+//! [`crate::split`], whose wall triangles are the PLC facets): on a wall or
+//! a level triangle both neighbouring prisms then interpolate on the same
+//! triangle, so their charts agree up to the 2D transition (a Newton
+//! inverse of the bilinear prism missed by 1e-3 on bent walls). A tet with
+//! a slab point that is not one of its prism's 6 points is an error:
+//! TetGen did not keep the walls.
+
+use crate::slab::{cross, Slab};
+use crate::split::prism_tets;
+use crate::tetgen::TetgenMesh;
+use crate::ExtrudeError;
+use dualex_map::TetMap;
+use std::collections::{HashMap, HashSet};
+
+/// Builds the tet map (see the module docs); also returns the number of
+/// Steiner points.
+pub fn tet_map(slab: &Slab, mesh: &TetgenMesh) -> Result<(TetMap, usize), ExtrudeError> {
+    let n_in = slab.points.len();
+    check_input_points(slab, &mesh.nodes)?;
+    check_faces(slab, mesh)?;
+    let mut out = TetMap {
+        positions: slab.points.clone(),
+        ..Default::default()
+    };
+    // Steiner points get new ids on first use (cavity points are dropped)
+    let mut new_id: HashMap<u32, u32> = HashMap::new();
+    let mut per_prism = vec![0usize; slab.prisms()];
+    for (k, (tet, &region)) in mesh.tets.iter().zip(&mesh.regions).enumerate() {
+        let prism = region as usize;
+        if prism == 0 || prism > slab.prisms() {
+            continue; // an enclosed cavity (inside a closed surface's slab)
+        }
+        per_prism[prism - 1] += 1;
+        let mut coords = [[0.0; 3]; 4];
+        let mut ids = *tet;
+        for (c, v) in coords.iter_mut().zip(&mut ids) {
+            let p = mesh.nodes[*v as usize];
+            *c = corner_map(slab, prism - 1, *v, &p).ok_or_else(|| {
+                ExtrudeError::Output(format!("tet {k}: node {v} is not in prism {}", prism - 1))
+            })?;
+            if *v as usize >= n_in {
+                *v = *new_id.entry(*v).or_insert_with(|| {
+                    out.positions.push(p);
+                    out.positions.len() as u32 - 1
+                });
+            }
+        }
+        if volume(&out.positions, &ids) < 0.0 {
+            ids.swap(0, 1);
+            coords.swap(0, 1);
+        }
+        out.simplices.push(ids);
+        out.coords.push(coords);
+    }
+    if let Some(p) = per_prism.iter().position(|&n| n < 3) {
+        return Err(ExtrudeError::Output(format!(
+            "prism {p} has {} tets (its region seed was lost)",
+            per_prism[p]
+        )));
+    }
+    let steiner = out.positions.len() - n_in;
+    Ok((out, steiner))
+}
+
+/// No face has more than 2 tets; without Steiner points (`-Y`), every tet
+/// face is also a PLC facet (a wall or a level triangle) or lies inside
+/// one prism (exactly 2 tets of that prism). With Steiner points the
+/// facets may be split and only the region labels tell the prisms.
+fn check_faces(slab: &Slab, mesh: &TetgenMesh) -> Result<(), ExtrudeError> {
+    let strict = mesh.nodes.len() == slab.points.len();
+    let key = |mut k: [u32; 3]| {
+        k.sort_unstable();
+        k
+    };
+    let plc: HashSet<[u32; 3]> = crate::plc::facets(slab).into_iter().map(key).collect();
+    let mut seen: HashMap<[u32; 3], (usize, u64)> = HashMap::new();
+    for (t, &r) in mesh.tets.iter().zip(&mesh.regions) {
+        for f in 0..4 {
+            let k = key(std::array::from_fn(|j| t[(f + 1 + j) % 4]));
+            let e = seen.entry(k).or_insert((0, r));
+            e.0 += 1;
+            if e.0 > 2 || (strict && e.1 != r && !plc.contains(&k)) {
+                return Err(ExtrudeError::Output(format!(
+                    "face {k:?} crosses a prism wall or is shared by 3 tets"
+                )));
+            }
+        }
+    }
+    match seen
+        .iter()
+        .find(|(k, (n, _))| strict && *n == 1 && !plc.contains(*k))
+    {
+        Some((k, _)) => Err(ExtrudeError::Output(format!(
+            "face {k:?} is a hole inside a prism"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// The input points must come back first and unmoved.
+fn check_input_points(slab: &Slab, nodes: &[[f64; 3]]) -> Result<(), ExtrudeError> {
+    let scale = slab
+        .points
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()))
+        .max(1e-300);
+    if nodes.len() < slab.points.len() {
+        return Err(ExtrudeError::Output(format!(
+            "{} nodes for {} input points",
+            nodes.len(),
+            slab.points.len()
+        )));
+    }
+    for (i, (a, b)) in slab.points.iter().zip(nodes).enumerate() {
+        if (0..3).any(|k| (a[k] - b[k]).abs() > 1e-9 * scale) {
+            return Err(ExtrudeError::Output(format!(
+                "input point {i} came back moved or renumbered (duplicate points?)"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Map value of node `v` (at `p`) in the chart of `prism`, `None` when a
+/// slab point is not one of the prism's points.
+fn corner_map(slab: &Slab, prism: usize, v: u32, p: &[f64; 3]) -> Option<[f64; 3]> {
+    if (v as usize) < slab.points.len() {
+        return slab_point_map(slab, prism, v);
+    }
+    let tets = prism_tets(slab, prism);
+    let bary = tets.map(|t| barycentric(t.map(|x| slab.points[x as usize]), *p));
+    let min = |b: &[f64; 4]| b.iter().fold(f64::INFINITY, |m, x| m.min(*x));
+    let best = (0..3).max_by(|&i, &j| min(&bary[i]).total_cmp(&min(&bary[j])))?;
+    let b = bary[best].map(|x| if x.is_finite() { x.max(0.0) } else { 0.0 });
+    let sum: f64 = b.iter().sum();
+    if sum <= 0.0 {
+        return None;
+    }
+    let mut out = [0.0; 3];
+    for (x, &bi) in tets[best].iter().zip(&b) {
+        let m = slab_point_map(slab, prism, *x)?;
+        for k in 0..3 {
+            out[k] += bi / sum * m[k];
+        }
+    }
+    Some(out)
+}
+
+/// Map value of slab point `v` in the chart of `prism`, `None` when it is
+/// not one of the prism's 6 points.
+fn slab_point_map(slab: &Slab, prism: usize, v: u32) -> Option<[f64; 3]> {
+    let (t, l) = slab.prism_of(prism);
+    let (level, vv) = (v as usize / slab.nv, v % slab.nv as u32);
+    let corner = slab.tris[t].iter().position(|&x| x == vv)?;
+    (level == l || level == l + 1).then(|| slab.corner_map(t, corner, level))
+}
+
+/// Barycentric coordinates of `p` in the tet `q` (NaN if it is flat).
+fn barycentric(q: [[f64; 3]; 4], p: [f64; 3]) -> [f64; 4] {
+    let e = |a: [f64; 3], b: [f64; 3]| -> [f64; 3] { std::array::from_fn(|k| a[k] - b[k]) };
+    let (e1, e2, e3, ep) = (e(q[1], q[0]), e(q[2], q[0]), e(q[3], q[0]), e(p, q[0]));
+    let det = dot(e1, cross(e2, e3));
+    let b1 = dot(ep, cross(e2, e3)) / det;
+    let b2 = dot(e1, cross(ep, e3)) / det;
+    let b3 = dot(e1, cross(e2, ep)) / det;
+    [1.0 - b1 - b2 - b3, b1, b2, b3]
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Six times the signed volume of a tet.
+pub fn volume(p: &[[f64; 3]], t: &[u32; 4]) -> f64 {
+    let q = t.map(|v| p[v as usize]);
+    let e = |i: usize| std::array::from_fn(|k| q[i][k] - q[0][k]);
+    dot(e(1), cross(e(2), e(3)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_map::TriMap;
+
+    fn bent_slab() -> Slab {
+        let m = TriMap {
+            positions: vec![[0., 0., 0.], [1., 0., 0.2], [0., 1., 0.]],
+            simplices: vec![[0, 1, 2]],
+            coords: vec![[[0., 0.], [3., 0.], [0., 3.]]],
+        };
+        Slab::new(&m, 2, Some(0.5)).expect("valid")
+    }
+
+    #[test]
+    fn wall_points_agree_between_neighbouring_prisms() {
+        // two triangles sharing the bent edge 1–2, one layer
+        let m = TriMap {
+            positions: vec![[0., 0., 0.], [1., 0., 0.2], [0., 1., 0.], [1., 1., 0.5]],
+            simplices: vec![[0, 1, 2], [1, 3, 2]],
+            coords: vec![
+                [[0., 0.], [3., 0.], [0., 3.]],
+                [[3., 0.], [3., 3.], [0., 3.]],
+            ],
+        };
+        let s = Slab::new(&m, 1, Some(0.5)).expect("valid");
+        let [w0, w1] = crate::plc::wall(&s, 1, 2, 0);
+        for (tri, b) in [(w0, [0.2, 0.3, 0.5]), (w1, [0.6, 0.1, 0.3])] {
+            let p: [f64; 3] =
+                std::array::from_fn(|k| (0..3).map(|i| b[i] * s.points[tri[i] as usize][k]).sum());
+            let (x, y) = (corner_map(&s, 0, 99, &p), corner_map(&s, 1, 99, &p));
+            let (x, y) = (x.expect("in 0"), y.expect("in 1"));
+            assert!((0..3).all(|k| (x[k] - y[k]).abs() < 1e-12), "{x:?} {y:?}");
+        }
+    }
+
+    #[test]
+    fn slab_and_steiner_corners_get_the_prism_chart() {
+        let s = bent_slab();
+        // prism 1 = layer 1: levels 1 and 2
+        let p = s.points[s.point(1, 2) as usize];
+        assert_eq!(corner_map(&s, 1, s.point(1, 2), &p), Some([3.0, 0.0, 2.0]));
+        assert_eq!(corner_map(&s, 1, s.point(1, 0), &p), None);
+        let pts = s.prism_points(1).map(|v| s.points[v as usize]);
+        let mid: [f64; 3] = std::array::from_fn(|k| pts.iter().map(|q| q[k] / 6.0).sum());
+        let m = corner_map(&s, 1, 99, &mid).expect("steiner");
+        assert!((m[2] - 1.5).abs() < 1e-12, "{m:?}");
+        assert!((m[0] + m[1] - 2.0).abs() < 0.1, "{m:?}");
+    }
+}

@@ -1,0 +1,104 @@
+//! Local, shifted coordinates: step 1 of both extractions.
+//!
+//! Input: a map, its topology and transitions. Output: [`LocalMap`], where
+//! each simplex's corners are expressed relative to an integer offset of
+//! that simplex (`global = local + offset`) and shifted by (½, …, ½): the
+//! integer points of the local coordinates are the dual grid (nodes), and
+//! local values stay small whatever the magnitude of the input (a map
+//! translated by 2^40 behaves like one at the origin: subtracting an integer
+//! offset from a float of the same magnitude is exact).
+//!
+//! Invariant: across each interior facet, `local(n) = rot · local(s) +
+//! trans` with an integer `trans` (the input transitions with offsets and
+//! shift folded in: `h − R·h` is integral for `h = (½, …, ½)` and every grid
+//! rotation), up to the map's own GP residual.
+
+use crate::{Rot, SimplexMap, Topology, Transitions};
+
+/// A map in local shifted coordinates.
+#[derive(Clone, Debug)]
+pub struct LocalMap<const N: usize, const D: usize> {
+    /// Local shifted map coordinates per corner.
+    pub coords: Vec<[[f64; D]; N]>,
+    /// Integer offset of each simplex (global shifted = local + offset).
+    pub offset: Vec<[i64; D]>,
+    /// Transitions between local charts.
+    pub trans: Transitions<N, D>,
+}
+
+/// `h − R·h` for `h = (½, …, ½)`: an integer vector.
+pub fn shift_defect<const D: usize>(r: &Rot<D>) -> [i64; D] {
+    let rh = r.apply(&[0.5; D]);
+    std::array::from_fn(|k| (0.5 - rh[k]) as i64)
+}
+
+impl<const N: usize, const D: usize> LocalMap<N, D> {
+    /// Builds local shifted coordinates and the matching transitions.
+    pub fn new(map: &SimplexMap<N, D>, topo: &Topology<N>, trans: &Transitions<N, D>) -> Self {
+        let offset: Vec<[i64; D]> = map
+            .coords
+            .iter()
+            .map(|c| c[0].map(|x| x.floor() as i64))
+            .collect();
+        let coords = map
+            .coords
+            .iter()
+            .zip(&offset)
+            .map(|(c, o)| c.map(|p| std::array::from_fn(|k| (p[k] - o[k] as f64) + 0.5)))
+            .collect();
+        let mut t = trans.clone();
+        for s in 0..map.len() {
+            for f in 0..N {
+                let Some((n, _)) = topo.neighbour(s, f) else {
+                    continue;
+                };
+                let r = trans.rot[s][f];
+                let ro = r.apply_i(&offset[s]);
+                let d = shift_defect(&r);
+                let tt = trans.trans[s][f];
+                t.trans[s][f] = std::array::from_fn(|k| ro[k] + tt[k] - offset[n][k] + d[k]);
+            }
+        }
+        LocalMap {
+            coords,
+            offset,
+            trans: t,
+        }
+    }
+
+    /// Maps a local point of simplex `s` into the local chart of its
+    /// neighbour across facet `f`.
+    #[inline]
+    pub fn across(&self, s: usize, f: usize, p: &[f64; D]) -> [f64; D] {
+        self.trans.apply(s, f, p)
+    }
+
+    /// Signed determinant of simplex `s`'s image (< 0: reverted).
+    #[inline]
+    pub fn det(&self, s: usize) -> f64 {
+        crate::mesh::det_of::<N, D>(&self.coords[s])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn integral<const D: usize>(n: usize) {
+        let all = Rot::<D>::all();
+        assert_eq!(all.len(), n);
+        for r in all {
+            let d = shift_defect(&r);
+            let rh = r.apply(&[0.5; D]);
+            for k in 0..D {
+                assert_eq!(d[k] as f64, 0.5 - rh[k], "{r:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn shift_defect_is_integral_for_every_rotation() {
+        integral::<2>(4);
+        integral::<3>(24);
+    }
+}

@@ -1,0 +1,203 @@
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use super::*;
+use crate::project::newell_normal;
+use crate::test_png::{colours, has_near, read_png, temp_path};
+use crate::valence::{cube_quads, V3_RGB};
+use crate::ValenceClass;
+
+/// An `n³` grid of unit hexes.
+pub(crate) fn hex_grid(n: u32) -> HexMesh {
+    let mut m = HexMesh::default();
+    let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
+    for k in 0..=n {
+        for j in 0..=n {
+            for i in 0..=n {
+                m.positions.push([i, j, k].map(f64::from));
+            }
+        }
+    }
+    for k in 0..n {
+        for j in 0..n {
+            for i in 0..n {
+                let b = [
+                    id(i, j, k),
+                    id(i + 1, j, k),
+                    id(i + 1, j + 1, k),
+                    id(i, j + 1, k),
+                ];
+                m.cells.push([
+                    b[0],
+                    b[1],
+                    b[2],
+                    b[3],
+                    b[0] + (n + 1) * (n + 1),
+                    b[1] + (n + 1) * (n + 1),
+                    b[2] + (n + 1) * (n + 1),
+                    b[3] + (n + 1) * (n + 1),
+                ]);
+            }
+        }
+    }
+    m
+}
+
+/// The JSON embedded in a page, parsed.
+fn embedded(html: &str) -> serde_json::Value {
+    let start = html.find("id=\"mesh\">").expect("no mesh script") + 10;
+    let end = start + html[start..].find("</script>").expect("unterminated");
+    serde_json::from_str(&html[start..end].replace("<\\/", "</")).expect("bad JSON")
+}
+
+#[test]
+fn hex_boundary_of_a_cube_grid_is_closed_and_outward() {
+    let b = hex_boundary(&hex_grid(2)).unwrap();
+    assert_eq!(b.cells.len(), 24);
+    assert_eq!(b.positions.len(), 26);
+    let classes = valence_classes(&b);
+    assert_eq!(
+        classes.iter().filter(|&&c| c == ValenceClass::V3).count(),
+        8
+    );
+    assert_eq!(
+        classes.iter().filter(|&&c| c == ValenceClass::V4).count(),
+        18
+    );
+    for q in &b.cells {
+        let p = q.map(|v| b.positions[v as usize]);
+        let n = newell_normal(&p);
+        let out: f64 = (0..3)
+            .map(|k| n[k] * (p.iter().map(|c| c[k]).sum::<f64>() / 4.0 - 1.0))
+            .sum();
+        assert!(out > 0.0, "face {q:?} points inwards");
+    }
+}
+
+#[test]
+fn hex_boundary_refuses_bad_ids() {
+    let mut m = hex_grid(1);
+    m.cells[0][7] = 8;
+    assert_eq!(
+        hex_boundary(&m),
+        Err("hex 0 refers to vertex 8, but there are 8 vertices".into())
+    );
+}
+
+#[test]
+fn page_is_self_contained_and_embeds_the_mesh() {
+    let mesh = cube_quads();
+    let html = view_html(&mesh, "cube </script><b>&").unwrap();
+    assert!(!html.contains("http://") && !html.contains("https://"));
+    assert!(!html.contains("<script src"));
+    assert!(html.contains("<title>cube &lt;/script&gt;&lt;b&gt;&amp;</title>"));
+    let json = embedded(&html);
+    assert_eq!(json["title"], "cube </script><b>&");
+    assert_eq!(json["positions"].as_array().map(Vec::len), Some(3 * 26));
+    assert_eq!(json["quads"].as_array().map(Vec::len), Some(4 * 24));
+    let valence = json["valence"].as_array().unwrap();
+    assert_eq!(valence.iter().filter(|v| v.as_i64() == Some(3)).count(), 8);
+    assert_eq!(valence.iter().filter(|v| v.as_i64() == Some(4)).count(), 18);
+    assert_eq!(json["positions"][0].as_f64(), Some(-1.0));
+}
+
+#[test]
+fn page_refuses_bad_mesh() {
+    let mut mesh = cube_quads();
+    mesh.positions[3][0] = f64::INFINITY;
+    assert!(view_html(&mesh, "x").is_err());
+}
+
+/// Runs `cmd` until it exits or `limit` passes (then kills it).
+fn run_with_limit(cmd: &mut Command, limit: Duration) -> bool {
+    let Ok(mut child) = cmd.stdout(Stdio::null()).stderr(Stdio::null()).spawn() else {
+        return false;
+    };
+    let start = Instant::now();
+    loop {
+        if let Ok(Some(status)) = child.try_wait() {
+            return status.success();
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            return false;
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+}
+
+/// Screenshot of `html` by headless Chromium, `None` when not installed.
+fn screenshot(html: &str, name: &str) -> Option<std::path::PathBuf> {
+    let found = Command::new("chromium").arg("--version").output().is_ok();
+    if !found {
+        eprintln!(
+            "NOTICE: chromium is not installed: skipping the headless rendering of the viewer"
+        );
+        return None;
+    }
+    let dir = temp_path(&format!("chromium-{name}"));
+    std::fs::create_dir_all(dir.join("profile")).unwrap();
+    let page = dir.join("page.html");
+    std::fs::write(&page, html).unwrap();
+    let shot = dir.join("out.png");
+    let ok = run_with_limit(
+        Command::new("chromium").args([
+            "--headless",
+            "--disable-gpu",
+            "--use-angle=swiftshader",
+            "--enable-unsafe-swiftshader",
+            "--no-sandbox",
+            "--disable-background-networking",
+            "--no-first-run",
+            "--disable-component-update",
+            "--disable-sync",
+            &format!("--user-data-dir={}", dir.join("profile").display()),
+            &format!("--screenshot={}", shot.display()),
+            "--window-size=800,600",
+            &page.display().to_string(),
+        ]),
+        Duration::from_secs(120),
+    );
+    assert!(ok, "chromium failed or timed out on {}", page.display());
+    Some(shot)
+}
+
+fn check_screenshot(shot: &Path) {
+    let pix = read_png(shot);
+    assert_eq!((pix.width(), pix.height()), (800, 600));
+    let cols = colours(&pix);
+    assert!(cols.len() >= 20, "blank screenshot: {} colours", cols.len());
+    assert!(
+        has_near(&pix, V3_RGB, 6),
+        "no valence-3 dot in the screenshot"
+    );
+    // shaded faces: several distinct greys covering a fair share of the picture
+    let grey: usize = cols
+        .iter()
+        .filter(|(c, _)| c[0] == c[1] && c[1] == c[2] && (60..235).contains(&c[0]))
+        .map(|(_, n)| n)
+        .sum();
+    assert!(grey > 800 * 600 / 20, "faces cover {grey} pixels only");
+}
+
+#[test]
+fn chromium_renders_the_quad_viewer() {
+    let html = view_html(&cube_quads(), "cube").unwrap();
+    if let Some(shot) = screenshot(&html, "quads") {
+        check_screenshot(&shot);
+        if std::env::var_os("DUALEX_KEEP_SCREENSHOT").is_none() {
+            let _ = std::fs::remove_dir_all(shot.parent().unwrap());
+        }
+    }
+}
+
+#[test]
+fn chromium_renders_the_hex_viewer() {
+    let html = view_html_hex(&hex_grid(3), "hexes").unwrap();
+    if let Some(shot) = screenshot(&html, "hexes") {
+        check_screenshot(&shot);
+        let _ = std::fs::remove_dir_all(shot.parent().unwrap());
+    }
+}

@@ -1,0 +1,254 @@
+// dualex mesh viewer: a small WebGL 1 viewer, no dependencies.
+// Reads the mesh from <script id="mesh" type="application/json">:
+//   { "title": str, "positions": [x,y,z, ...], "quads": [a,b,c,d, ...],
+//     "valence": [code per vertex: 3, 4, 5, 0 = other, -1 = not marked] }
+// Draws the quads flat-shaded (two-sided Lambert), their edges, and the
+// vertices as dots in their valence colour. Drag: orbit; wheel: zoom;
+// right drag or shift drag: pan; double click: reset; keys e / d: edges
+// (shown by default when at least 4 px long) / dots on or off.
+"use strict";
+(function () {
+  var COLOURS = { 3: [0x1f, 0x66, 0xd1], 4: [0x4d, 0x4d, 0x4d], 5: [0xd6, 0x27, 0x28], 0: [0x2c, 0xa0, 0x2c] };
+  var mesh = JSON.parse(document.getElementById("mesh").textContent);
+  var canvas = document.getElementById("view");
+  var status = document.getElementById("status");
+  var gl = canvas.getContext("webgl", { antialias: true, preserveDrawingBuffer: true }) ||
+    canvas.getContext("experimental-webgl", { preserveDrawingBuffer: true });
+  if (!gl) {
+    status.textContent = "WebGL is not available in this browser.";
+    return;
+  }
+
+  // ---- geometry: centre and radius of the bounding box --------------------
+  var P = mesh.positions, Q = mesh.quads, V = mesh.valence;
+  var lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  for (var i = 0; i < P.length; i += 3) {
+    for (var k = 0; k < 3; k++) {
+      lo[k] = Math.min(lo[k], P[i + k]);
+      hi[k] = Math.max(hi[k], P[i + k]);
+    }
+  }
+  var centre = [0, 1, 2].map(function (k) { return P.length ? 0.5 * (lo[k] + hi[k]) : 0; });
+  var radius = 0;
+  for (var k2 = 0; k2 < 3; k2++) radius += P.length ? Math.pow(hi[k2] - lo[k2], 2) : 0;
+  radius = Math.sqrt(radius) * 0.5 || 1;
+  function pos(v, k) { return (P[3 * v + k] - centre[k]) / radius; }
+
+  // faces: two triangles per quad, flat normal (Newell) per quad
+  var nq = Q.length / 4;
+  var faceData = new Float32Array(nq * 6 * 6);
+  var edgeData = new Float32Array(nq * 8 * 3);
+  var f = 0, e = 0, edgeSum = 0;
+  for (var q = 0; q < nq; q++) {
+    var c = [Q[4 * q], Q[4 * q + 1], Q[4 * q + 2], Q[4 * q + 3]];
+    var n = [0, 0, 0];
+    for (var j = 0; j < 4; j++) {
+      var a = c[j], b = c[(j + 1) % 4];
+      n[0] += (pos(a, 1) - pos(b, 1)) * (pos(a, 2) + pos(b, 2));
+      n[1] += (pos(a, 2) - pos(b, 2)) * (pos(a, 0) + pos(b, 0));
+      n[2] += (pos(a, 0) - pos(b, 0)) * (pos(a, 1) + pos(b, 1));
+    }
+    var tri = [c[0], c[1], c[2], c[0], c[2], c[3]];
+    for (var t = 0; t < 6; t++) {
+      for (var k3 = 0; k3 < 3; k3++) faceData[f++] = pos(tri[t], k3);
+      for (var k4 = 0; k4 < 3; k4++) faceData[f++] = n[k4];
+    }
+    for (var j2 = 0; j2 < 4; j2++) {
+      var ends = [c[j2], c[(j2 + 1) % 4]];
+      edgeSum += Math.sqrt([0, 1, 2].reduce(function (acc, k) {
+        return acc + Math.pow(pos(ends[0], k) - pos(ends[1], k), 2);
+      }, 0));
+      for (var m = 0; m < 2; m++) for (var k5 = 0; k5 < 3; k5++) edgeData[e++] = pos(ends[m], k5);
+    }
+  }
+  // dots: every marked vertex, regular ones first (drawn only when the
+  // quads are large enough on screen), irregular ones after (on top)
+  var regular = [], irregular = [], counts = { 3: 0, 4: 0, 5: 0, 0: 0 };
+  for (var v = 0; v < V.length; v++) {
+    var code = V[v];
+    if (!(code in COLOURS)) continue;
+    counts[code]++;
+    var col = COLOURS[code];
+    (code === 4 ? regular : irregular).push(pos(v, 0), pos(v, 1), pos(v, 2),
+      col[0] / 255, col[1] / 255, col[2] / 255, code === 4 ? 0.45 : 1);
+  }
+  var nRegular = regular.length / 7;
+  var dots = regular.concat(irregular);
+  var dotData = new Float32Array(dots);
+  // mean edge length (model units scaled to radius 1)
+  var meanEdge = nq ? edgeSum / (4 * nq) : 1;
+  // null: automatic (edges when at least 4 px long); true/false: forced
+  var showEdges = null, showDots = true;
+
+  // ---- shaders ---------------------------------------------------------------
+  var HEAD = "precision mediump float;\n" +
+    "uniform mat3 rot; uniform vec2 scale; uniform vec2 pan;\n" +
+    "vec4 place(vec3 p, float lift) {\n" +
+    "  vec3 q = rot * p;\n" +
+    "  return vec4(q.xy * scale + pan, -0.5 * q.z - lift, 1.0);\n}\n";
+  var FACE_VS = HEAD + "attribute vec3 p; attribute vec3 n; varying vec3 vn;\n" +
+    "void main() { vn = rot * n; gl_Position = place(p, 0.0); }\n";
+  var FACE_FS = "precision mediump float; varying vec3 vn;\n" +
+    "void main() {\n" +
+    "  vec3 l = normalize(vec3(-0.3, 0.45, 1.0));\n" +
+    "  float len = length(vn);\n" +
+    "  float d = len > 0.0 ? abs(dot(vn / len, l)) : 1.0;\n" +
+    "  gl_FragColor = vec4(vec3(0.863) * (0.35 + 0.65 * d), 1.0);\n}\n";
+  var LINE_VS = HEAD + "attribute vec3 p;\nvoid main() { gl_Position = place(p, 0.0005); }\n";
+  var LINE_FS = "precision mediump float;\nvoid main() { gl_FragColor = vec4(0.19, 0.19, 0.19, 1.0); }\n";
+  var DOT_VS = HEAD + "attribute vec3 p; attribute vec4 c; uniform float size; varying vec3 vc;\n" +
+    "void main() { vc = c.rgb; gl_PointSize = size * c.a; gl_Position = place(p, 0.004); }\n";
+  var DOT_FS = "precision mediump float; varying vec3 vc;\n" +
+    "void main() {\n" +
+    "  vec2 d = gl_PointCoord - vec2(0.5);\n" +
+    "  if (dot(d, d) > 0.25) discard;\n" +
+    "  gl_FragColor = vec4(vc, 1.0);\n}\n";
+
+  function shader(type, src) {
+    var s = gl.createShader(type);
+    gl.shaderSource(s, src);
+    gl.compileShader(s);
+    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s));
+    return s;
+  }
+  function program(vs, fs) {
+    var p = gl.createProgram();
+    gl.attachShader(p, shader(gl.VERTEX_SHADER, vs));
+    gl.attachShader(p, shader(gl.FRAGMENT_SHADER, fs));
+    gl.linkProgram(p);
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(p));
+    return p;
+  }
+  function buffer(data) {
+    var b = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, b);
+    gl.bufferData(gl.ARRAY_BUFFER, data, gl.STATIC_DRAW);
+    return b;
+  }
+  var faceProg = program(FACE_VS, FACE_FS);
+  var lineProg = program(LINE_VS, LINE_FS);
+  var dotProg = program(DOT_VS, DOT_FS);
+  var faceBuf = buffer(faceData), edgeBuf = buffer(edgeData), dotBuf = buffer(dotData);
+
+  // attribute `name` of `prog`: `size` floats at `offset` in a `stride`-float record
+  function attrib(prog, name, size, stride, offset) {
+    var loc = gl.getAttribLocation(prog, name);
+    if (loc < 0) return;
+    gl.enableVertexAttribArray(loc);
+    gl.vertexAttribPointer(loc, size, gl.FLOAT, false, stride * 4, offset * 4);
+  }
+  function disableAll() {
+    var max = gl.getParameter(gl.MAX_VERTEX_ATTRIBS);
+    for (var i = 0; i < max; i++) gl.disableVertexAttribArray(i);
+  }
+
+  // ---- camera ----------------------------------------------------------------
+  var cam = {};
+  function reset() { cam.yaw = -0.52; cam.pitch = 0.35; cam.zoom = 0.95; cam.pan = [0, 0]; }
+  reset();
+  function rotation() {
+    var cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
+    // R = Rx(pitch) * Ry(yaw), column-major for WebGL
+    return new Float32Array([cy, sp * sy, -cp * sy, 0, cp, sp, sy, -sp * cy, cp * cy]);
+  }
+  function uniforms(prog) {
+    var w = canvas.width, h = canvas.height, s = Math.min(w, h);
+    gl.uniformMatrix3fv(gl.getUniformLocation(prog, "rot"), false, rotation());
+    gl.uniform2f(gl.getUniformLocation(prog, "scale"), cam.zoom * s / w, cam.zoom * s / h);
+    gl.uniform2f(gl.getUniformLocation(prog, "pan"), cam.pan[0], cam.pan[1]);
+  }
+
+  function draw() {
+    var dpr = window.devicePixelRatio || 1;
+    var w = Math.max(1, Math.round(canvas.clientWidth * dpr)), h = Math.max(1, Math.round(canvas.clientHeight * dpr));
+    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
+    gl.viewport(0, 0, w, h);
+    gl.clearColor(1, 1, 1, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.enable(gl.POLYGON_OFFSET_FILL);
+    gl.polygonOffset(1, 1);
+
+    gl.useProgram(faceProg); uniforms(faceProg); disableAll();
+    gl.bindBuffer(gl.ARRAY_BUFFER, faceBuf);
+    attrib(faceProg, "p", 3, 6, 0); attrib(faceProg, "n", 3, 6, 3);
+    gl.drawArrays(gl.TRIANGLES, 0, faceData.length / 6);
+
+    var edgePx = meanEdge * cam.zoom * Math.min(w, h) / 2;
+    if (edgesShown()) {
+      gl.useProgram(lineProg); uniforms(lineProg); disableAll();
+      gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+      attrib(lineProg, "p", 3, 3, 0);
+      gl.drawArrays(gl.LINES, 0, edgeData.length / 3);
+    }
+    if (!showDots) return;
+    gl.useProgram(dotProg); uniforms(dotProg); disableAll();
+    gl.uniform1f(gl.getUniformLocation(dotProg, "size"), Math.max(7 * dpr, Math.min(14 * dpr, 0.6 * edgePx)));
+    gl.bindBuffer(gl.ARRAY_BUFFER, dotBuf);
+    attrib(dotProg, "p", 3, 7, 0); attrib(dotProg, "c", 4, 7, 3);
+    var first = edgePx >= 8 * dpr ? 0 : nRegular;
+    gl.drawArrays(gl.POINTS, first, dotData.length / 7 - first);
+  }
+  function edgesShown() {
+    var dpr = window.devicePixelRatio || 1;
+    var px = meanEdge * cam.zoom * Math.min(canvas.width, canvas.height) / 2;
+    return showEdges === null ? px >= 4 * dpr : showEdges;
+  }
+  var pending = false;
+  function redraw() {
+    if (pending) return;
+    pending = true;
+    window.requestAnimationFrame(function () { pending = false; draw(); });
+  }
+
+  // ---- mouse -----------------------------------------------------------------
+  var drag = null;
+  canvas.addEventListener("mousedown", function (ev) {
+    drag = { x: ev.clientX, y: ev.clientY, pan: ev.button === 2 || ev.shiftKey };
+    ev.preventDefault();
+  });
+  window.addEventListener("mouseup", function () { drag = null; });
+  window.addEventListener("mousemove", function (ev) {
+    if (!drag) return;
+    var dx = ev.clientX - drag.x, dy = ev.clientY - drag.y;
+    drag.x = ev.clientX; drag.y = ev.clientY;
+    if (drag.pan) {
+      cam.pan[0] += 2 * dx / (canvas.clientWidth || 1);
+      cam.pan[1] -= 2 * dy / (canvas.clientHeight || 1);
+    } else {
+      cam.yaw += dx * 0.01;
+      cam.pitch = Math.max(-1.57, Math.min(1.57, cam.pitch + dy * 0.01));
+    }
+    redraw();
+  });
+  canvas.addEventListener("wheel", function (ev) {
+    cam.zoom *= Math.exp(-ev.deltaY * 0.0015);
+    cam.zoom = Math.max(0.05, Math.min(200, cam.zoom));
+    ev.preventDefault();
+    redraw();
+  }, { passive: false });
+  canvas.addEventListener("dblclick", function () { reset(); redraw(); });
+  window.addEventListener("keydown", function (ev) {
+    if (ev.key === "e") showEdges = !edgesShown();
+    else if (ev.key === "d") showDots = !showDots;
+    else return;
+    redraw();
+  });
+  canvas.addEventListener("contextmenu", function (ev) { ev.preventDefault(); });
+  window.addEventListener("resize", redraw);
+
+  // ---- legend ------------------------------------------------------------------
+  var names = { 3: "valence 3", 4: "valence 4", 5: "valence 5", 0: "other" };
+  var legend = document.getElementById("legend");
+  [3, 4, 5, 0].forEach(function (code) {
+    var row = document.createElement("div");
+    var sw = document.createElement("span");
+    sw.className = "swatch";
+    sw.style.background = "rgb(" + COLOURS[code].join(",") + ")";
+    row.appendChild(sw);
+    row.appendChild(document.createTextNode(names[code] + ": " + counts[code]));
+    legend.appendChild(row);
+  });
+  status.textContent = nq + " quads, " + V.length + " vertices. Drag: orbit, wheel: zoom, shift/right drag: pan, double click: reset, e: edges, d: dots.";
+  draw();
+})();
