@@ -15,7 +15,8 @@ usage:
   dualex extrude INPUT -o OUT.hexex [--layers L] [--thickness T] [--quality] [--fallback]
                         (prisms over every triangle, tetrahedralized by TetGen
                         found at run time (`tetgen`, or $DUALEX_TETGEN);
-                        T default: 0.5 × the mean edge length)
+                        T default: 0.05 × the mean edge length on a surface,
+                        0.5 × on a planar map)
   dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`;
                                                 2D maps → .obj/.ply, 3D maps → .hexex)
 

@@ -3,6 +3,7 @@
 #![forbid(unsafe_code)]
 
 mod args;
+mod progress;
 
 use args::{Args, USAGE};
 use std::path::Path;
@@ -92,9 +93,13 @@ fn quad(args: &Args) -> Result<(), String> {
         },
         seed: args.seed,
     };
+    let progress = progress::Progress::new(map.len(), args.quiet);
+    progress.stage("extracting quads");
     let (mesh, stats) =
         dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name).to_string())?;
+    progress.stage("writing");
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
+    drop(progress);
     write_stats(args, &stats.to_json())?;
     if let Some(png) = &args.png {
         dualex_render::quad_png(&mesh, png, PNG_SIZE)
@@ -136,9 +141,13 @@ fn hex(args: &Args) -> Result<(), String> {
         },
         seed: args.seed,
     };
+    let progress = progress::Progress::new(map.len(), args.quiet);
+    progress.stage("extracting hexs");
     let (mesh, stats) =
         dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name).to_string())?;
+    progress.stage("writing");
     dualex_io::write_hex_mesh(out, &mesh).map_err(|e| e.to_string())?;
+    drop(progress);
     let json = stats.to_json();
     write_stats(args, &json)?;
     if !args.quiet {

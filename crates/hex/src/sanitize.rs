@@ -64,8 +64,8 @@ pub fn sanitize(
     seed: u64,
 ) -> SanitizeReport {
     let mut rep = SanitizeReport::default();
-    snap(stars, local, &mut rep);
-    let clusters = Clusters::build(map, stars, local);
+    (rep.snapped_vertices, rep.max_snap) = local.snap(stars);
+    let clusters = Clusters::build(map, stars, &local.coords);
     rep.clusters = clusters.count_nontrivial();
     let free_axis: Vec<Option<usize>> = (0..stars.singular.len())
         .map(|v| {
@@ -144,7 +144,7 @@ impl Mover<'_> {
             if let Some(axis) = self.free_axis[v as usize] {
                 let mut d = [0.0; 3];
                 d[axis] = if self.rng.unit() < 0.5 { amp } else { -amp };
-                move_vertex(self.stars, local, v as usize, &d);
+                local.move_vertex(self.stars, v as usize, &d);
                 self.touched.push(v);
                 self.moved_singular.insert(v);
                 continue;
@@ -160,7 +160,7 @@ impl Mover<'_> {
                     for (w, r) in members {
                         self.moved[w as usize] = true;
                         self.touched.push(w);
-                        move_vertex(self.stars, local, w as usize, &r.apply(&delta));
+                        local.move_vertex(self.stars, w as usize, &r.apply(&delta));
                     }
                 }
                 None => rep.stuck_clusters += 1,
@@ -219,38 +219,6 @@ fn singular_free_axis(
     }
 }
 
-/// Snaps every non-singular vertex's corners to one GP value.
-fn snap(stars: &Stars<3>, local: &mut LocalMap, rep: &mut SanitizeReport) {
-    for v in 0..stars.singular.len() {
-        if stars.singular[v] {
-            continue;
-        }
-        let star = stars.of(v);
-        let Some(first) = star.first() else { continue };
-        let x_ref = local.coords[first.simplex as usize][first.corner as usize];
-        for e in star {
-            let y = e.rot.apply(&x_ref);
-            let x = &mut local.coords[e.simplex as usize][e.corner as usize];
-            for k in 0..3 {
-                let snapped = y[k] + (x[k] - y[k]).round();
-                rep.max_snap = rep.max_snap.max((snapped - x[k]).abs());
-                x[k] = snapped;
-            }
-        }
-        rep.snapped_vertices += 1;
-    }
-}
-
-/// Adds `delta` (in `v`'s reference chart) to every corner of `v`.
-fn move_vertex(stars: &Stars<3>, local: &mut LocalMap, v: usize, delta: &[f64; 3]) {
-    for e in stars.of(v) {
-        let d = e.rot.apply(delta);
-        let x = &mut local.coords[e.simplex as usize][e.corner as usize];
-        for k in 0..3 {
-            x[k] += d[k];
-        }
-    }
-}
 
 /// [`crate::near::bad_vertices`], kept up to date incrementally: after a
 /// round only the tets around the vertices whose tets moved are tested
@@ -381,6 +349,34 @@ mod scan_tests {
     use super::*;
     use crate::near::bad_vertices;
 
+    /// The box prefilter of [`mark_tet`] never hides an iso-line or a grid
+    /// point: whenever the exact tests find one, the box spans integers.
+    #[test]
+    fn boxes_without_integers_are_never_near_the_grid() {
+        let mut rng = SplitMix::new(11);
+        let (mut edges, mut faces) = (0, 0);
+        for k in 0..20000 {
+            let mut p = || rng.direction().map(|x| 3.0 * x);
+            let mut t = [p(), p(), p()];
+            // a grid point on an edge, or inside the face
+            let g = t[0].map(f64::round);
+            t[0] = g;
+            if k % 2 == 1 {
+                t[0] = std::array::from_fn(|a| 3.0 * g[a] - t[1][a] - t[2][a]);
+            }
+            let count = |pts: &[&[f64; 3]]| (0..3).filter(|&a| spans_integer(pts, a)).count();
+            if segment_near_iso_line(&t[0], &t[1]).is_some() {
+                edges += 1;
+                assert!(count(&[&t[0], &t[1]]) >= 2);
+            }
+            if triangle_near_grid_point(&t) {
+                faces += 1;
+                assert_eq!(count(&[&t[0], &t[1], &t[2]]), 3);
+            }
+        }
+        assert!(edges >= 5000 && faces >= 1000, "{edges} {faces}");
+    }
+
     /// The incremental scan equals a full scan after arbitrary moves,
     /// including moves onto isos, grid lines and grid points.
     #[test]
@@ -414,7 +410,7 @@ mod scan_tests {
                 } else {
                     rng.direction().map(|t| t * 0.4)
                 };
-                move_vertex(&stars, &mut local, v as usize, &d);
+                local.move_vertex(&stars, v as usize, &d);
             }
             scan.update(&map, &stars, &local.coords, &moved);
             let full = bad_vertices(&map, &local.coords);

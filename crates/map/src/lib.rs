@@ -17,6 +17,7 @@
 #![warn(missing_docs)]
 
 pub mod cells;
+pub mod cluster;
 mod components;
 pub mod error;
 pub mod holonomy;

@@ -13,7 +13,7 @@
 //! shift folded in: `h − R·h` is integral for `h = (½, …, ½)` and every grid
 //! rotation), up to the map's own GP residual.
 
-use crate::{Rot, SimplexMap, Topology, Transitions};
+use crate::{Rot, SimplexMap, Stars, Topology, Transitions};
 
 /// A map in local shifted coordinates.
 #[derive(Clone, Debug)]
@@ -71,6 +71,45 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
     #[inline]
     pub fn across(&self, s: usize, f: usize, p: &[f64; D]) -> [f64; D] {
         self.trans.apply(s, f, p)
+    }
+
+    /// Snaps every non-singular vertex's corners to one exactly-GP value:
+    /// its reference corner carried through the star's rotations plus the
+    /// nearest integer translation, so that sign tests agree between its
+    /// charts. Returns the number of vertices snapped and the largest move.
+    pub fn snap(&mut self, stars: &Stars<D>) -> (usize, f64) {
+        let (mut count, mut max_move) = (0, 0.0f64);
+        for v in 0..stars.singular.len() {
+            if stars.singular[v] {
+                continue;
+            }
+            let star = stars.of(v);
+            let Some(first) = star.first() else { continue };
+            let x_ref = self.coords[first.simplex as usize][first.corner as usize];
+            for e in star {
+                let y = e.rot.apply(&x_ref);
+                let x = &mut self.coords[e.simplex as usize][e.corner as usize];
+                for (xk, yk) in x.iter_mut().zip(y) {
+                    let snapped = yk + (*xk - yk).round();
+                    max_move = max_move.max((snapped - *xk).abs());
+                    *xk = snapped;
+                }
+            }
+            count += 1;
+        }
+        (count, max_move)
+    }
+
+    /// Adds `delta` (given in `v`'s reference chart) to every corner of
+    /// `v`, rotated into each corner's chart: no transition changes.
+    pub fn move_vertex(&mut self, stars: &Stars<D>, v: usize, delta: &[f64; D]) {
+        for e in stars.of(v) {
+            let d = e.rot.apply(delta);
+            let x = &mut self.coords[e.simplex as usize][e.corner as usize];
+            for (xk, dk) in x.iter_mut().zip(d) {
+                *xk += dk;
+            }
+        }
     }
 
     /// Signed determinant of simplex `s`'s image (< 0: reverted).

@@ -27,6 +27,10 @@ pub struct SimplexMap<const N: usize, const D: usize> {
     pub coords: Vec<[[f64; D]; N]>,
 }
 
+/// Most grid points the simplices' map images may span in total; beyond
+/// it a map is refused up front (see [`SimplexMap::check_grid_size`]).
+pub const MAX_GRID_POINTS: f64 = (1u64 << 28) as f64;
+
 /// A triangle mesh with a 2D map (`u, v` per corner).
 pub type TriMap = SimplexMap<3, 2>;
 /// A tetrahedral mesh with a 3D map (`u, v, w` per corner).
@@ -105,6 +109,40 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
         std::array::from_fn(|i| (f + 1 + i) % N)
     }
 
+    /// Estimates, before any allocation, how many grid points the map
+    /// images span (per simplex the product over the axes of extent + 1,
+    /// summed): the work of node finding and sanitization, and a bound on
+    /// the node count. Returns it, or an error naming the largest simplex
+    /// when it exceeds [`MAX_GRID_POINTS`] (e.g. a triangle spanning
+    /// 10⁹ × 10⁹ map units): absurd maps are refused up front.
+    pub fn check_grid_size(&self) -> Result<f64, InputError> {
+        let (mut total, mut largest) = (0.0f64, (0.0f64, 0usize));
+        for (s, p) in self.coords.iter().enumerate() {
+            let mut n = 1.0;
+            for k in 0..D {
+                let lo = p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
+                let hi = p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
+                n *= hi - lo + 1.0;
+            }
+            total += n;
+            if n.is_nan() || n > largest.0 {
+                largest = (n, s);
+            }
+        }
+        if total <= MAX_GRID_POINTS {
+            return Ok(total);
+        }
+        let (n, s) = largest;
+        Err(InputError {
+            file: None,
+            location: Some(format!("{} {s}", simplex_word(N))),
+            message: format!(
+                "map too large: its image spans {n:.3e} grid points, the whole map {total:.3e} \
+                 (limit {MAX_GRID_POINTS:.3e}); scale the map down"
+            ),
+        })
+    }
+
     /// Signed volume of the map image of simplex `s` (area in 2D, 6× volume
     /// in 3D up to a positive factor): `< 0` means reverted.
     pub fn map_det(&self, s: usize) -> f64 {
@@ -127,13 +165,14 @@ pub fn det_of<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> f64 {
 }
 
 impl TetMap {
-    /// Refuses a 3D map that is not a map of this volume: when tets whose map
-    /// is reverted (its orientation opposite to the geometry's) or degenerate
-    /// make up at least half of the mesh's geometric volume, the charts are
-    /// reflected or collapsed as a whole (e.g. HexEx's
-    /// `minimal_invalid_charts`), not folded locally, and no extraction can
-    /// make sense of them. Folds over less than half the volume are the
-    /// messy maps that extraction repairs.
+    /// Refuses a 3D map whose charts are reflected: when tets whose map is
+    /// reverted (orientation opposite to the geometry's) or flat make up at
+    /// least half of the mesh's geometric volume, and some of them are
+    /// reverted (e.g. HexEx's `minimal_invalid_charts`), the map turns the
+    /// volume inside out as a whole rather than folding it locally. Folds
+    /// over less than half the volume, and collapsed maps (flat tets, none
+    /// reverted: the paper's collapsed stress test), are the messy maps that
+    /// extraction repairs.
     pub fn check_not_reflected(&self) -> Result<(), InputError> {
         let geo = |s: usize| {
             let p: [[f64; 3]; 4] = self.simplices[s].map(|v| self.positions[v as usize]);
@@ -141,7 +180,7 @@ impl TetMap {
         };
         let total: f64 = (0..self.len()).map(geo).sum();
         let sign = if total < 0.0 { -1.0 } else { 1.0 };
-        let (mut bad, mut all, mut worst) = (0.0, 0.0, None);
+        let (mut bad, mut all, mut worst, mut reverted) = (0.0, 0.0, None, 0.0);
         // "degenerate": |det| below 1e-12 of the cube of the longest edge
         let scale = |p: &[[f64; 3]; 4]| {
             let mut l = 0.0f64;
@@ -156,13 +195,17 @@ impl TetMap {
             let g = (geo(s) * sign).max(0.0);
             all += g;
             let m = self.map_det(s) * sign;
-            if m <= scale(&self.coords[s]) {
+            let tiny = scale(&self.coords[s]);
+            if m <= tiny {
                 bad += g;
-                worst.get_or_insert(s);
+                if m < -tiny {
+                    reverted += g;
+                    worst.get_or_insert(s);
+                }
             }
         }
         match worst {
-            Some(s) if all > 0.0 && bad >= 0.5 * all => Err(InputError::new(format!(
+            Some(s) if all > 0.0 && bad >= 0.5 * all && reverted > 0.0 => Err(InputError::new(format!(
                 "tet {s}: reverted or degenerate tets make up {:.0}% of the volume: the charts are reflected or collapsed, not a map of this volume",
                 100.0 * bad / all
             ))),

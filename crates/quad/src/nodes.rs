@@ -80,42 +80,13 @@ impl Nodes {
     }
 }
 
-/// Most grid points the simplices' map images may span in total (the work
-/// of node finding and sanitization, and a bound on the node count);
-/// beyond it the map is refused up front instead of exhausting memory.
-pub const MAX_GRID_POINTS: f64 = (1u64 << 28) as f64;
+pub use dualex_map::mesh::MAX_GRID_POINTS;
 
-/// Estimates, before any allocation, how many grid points the map images
-/// span: per triangle the product over the axes of (extent + 1), summed.
-/// Returns the estimate, or an [`InputError`] naming the largest triangle
-/// when it exceeds [`MAX_GRID_POINTS`] (e.g. a triangle spanning
-/// 10⁹ × 10⁹ units). Call it right after `map.validate()`.
+/// Refuses absurd maps before any allocation (see
+/// [`dualex_map::SimplexMap::check_grid_size`]); returns the number of grid
+/// points the map images span. Call it right after `map.validate()`.
 pub fn check_size(map: &TriMap) -> Result<f64, InputError> {
-    let (mut total, mut largest) = (0.0f64, (0.0f64, 0usize));
-    for (s, p) in map.coords.iter().enumerate() {
-        let ext = |k: usize| {
-            let lo = p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
-            let hi = p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
-            hi - lo + 1.0
-        };
-        let n = ext(0) * ext(1);
-        total += n;
-        if n.is_nan() || n > largest.0 {
-            largest = (n, s);
-        }
-    }
-    if total <= MAX_GRID_POINTS {
-        return Ok(total);
-    }
-    let (n, s) = largest;
-    Err(InputError {
-        file: None,
-        location: Some(format!("triangle {s}")),
-        message: format!(
-            "map too large: its image spans {n:.3e} grid points, the whole map {total:.3e} \
-             (limit {MAX_GRID_POINTS:.3e}); scale the map down"
-        ),
-    })
+    map.check_grid_size()
 }
 
 #[cfg(test)]

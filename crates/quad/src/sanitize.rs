@@ -22,6 +22,9 @@ use crate::local::LocalMap;
 use crate::rng::SplitMix;
 use dualex_map::{Rot2, Stars, Topology, Transitions, TriMap};
 
+/// The collapsed clusters of a triangle map (moved as one).
+type Clusters = dualex_map::cluster::Clusters<2>;
+
 /// Distance below which a value counts as "on" an iso.
 pub const EPS: f64 = 1e-9;
 /// Initial perturbation amplitude (map units).
@@ -64,8 +67,8 @@ pub fn sanitize(
     seed: u64,
 ) -> SanitizeReport {
     let mut rep = SanitizeReport::default();
-    snap(stars, local, &mut rep);
-    let clusters = Clusters::build(map, stars, local);
+    (rep.snapped_vertices, rep.max_snap) = local.snap(stars);
+    let clusters = Clusters::build(map, stars, &local.coords);
     rep.clusters = clusters.count_nontrivial();
     let mut rng = SplitMix::new(seed);
     let mut moved = vec![false; map.positions.len()];
@@ -99,7 +102,7 @@ pub fn sanitize(
                     for (w, r) in members {
                         moved[w as usize] = true;
                         touched.push(w);
-                        move_vertex(stars, local, w as usize, &r.apply(&delta));
+                        local.move_vertex(stars, w as usize, &r.apply(&delta));
                     }
                 }
                 None => rep.stuck_clusters += 1,
@@ -186,7 +189,7 @@ fn move_singular_off_isos(
         for (su, sv) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
             let d = [su * AMPLITUDE, sv * AMPLITUDE];
             if (h.apply(&d)[a] > 0.0) == (d[a] > 0.0) {
-                move_vertex(stars, local, v, &d);
+                local.move_vertex(stars, v, &d);
                 moved += 1;
                 let still = vertex_is_bad(map, local, stars, v);
                 return still;
@@ -234,37 +237,6 @@ fn vertex_is_bad(map: &TriMap, local: &LocalMap, stars: &Stars<2>, v: usize) -> 
     })
 }
 
-/// Snaps every non-singular vertex's corners to one GP value.
-fn snap(stars: &Stars<2>, local: &mut LocalMap, rep: &mut SanitizeReport) {
-    for v in 0..stars.singular.len() {
-        if stars.singular[v] {
-            continue;
-        }
-        let star = stars.of(v);
-        let Some(first) = star.first() else { continue };
-        let x_ref = local.coords[first.simplex as usize][first.corner as usize];
-        for e in star {
-            let y = e.rot.apply(&x_ref);
-            let x = &mut local.coords[e.simplex as usize][e.corner as usize];
-            for k in 0..2 {
-                let snapped = y[k] + (x[k] - y[k]).round();
-                rep.max_snap = rep.max_snap.max((snapped - x[k]).abs());
-                x[k] = snapped;
-            }
-        }
-        rep.snapped_vertices += 1;
-    }
-}
-
-/// Adds `delta` (in `v`'s reference chart) to every corner of `v`.
-fn move_vertex(stars: &Stars<2>, local: &mut LocalMap, v: usize, delta: &[f64; 2]) {
-    for e in stars.of(v) {
-        let d = e.rot.apply(delta);
-        let x = &mut local.coords[e.simplex as usize][e.corner as usize];
-        x[0] += d[0];
-        x[1] += d[1];
-    }
-}
 
 /// Whether `x` is within [`EPS`] of an integer.
 #[inline]
@@ -430,129 +402,6 @@ fn mark_tri(tri: &[u32; 3], c: &[[f64; 2]; 3], bad: &mut [bool]) {
     }
 }
 
-/// Collapsed clusters: vertices joined by zero-length map edges.
-struct Clusters {
-    parent: Vec<u32>,
-    /// Per vertex: rotation from its cluster root's reference chart to its
-    /// own reference chart; `None` when the cluster is inconsistent.
-    rot_from_root: Vec<Option<Rot2>>,
-    members: std::collections::HashMap<u32, Vec<u32>>,
-}
-
-impl Clusters {
-    fn build(map: &TriMap, stars: &Stars<2>, local: &LocalMap) -> Self {
-        let nv = map.positions.len();
-        let mut parent: Vec<u32> = (0..nv as u32).collect();
-        // rotation from vertex's reference chart to simplex s's chart
-        let star_rot = |v: u32, s: usize| {
-            stars
-                .of(v as usize)
-                .iter()
-                .find(|e| e.simplex as usize == s)
-                .map(|e| e.rot)
-        };
-        let mut edges = Vec::new();
-        for (s, tri) in map.simplices.iter().enumerate() {
-            for k in 0..3 {
-                let l = (k + 1) % 3;
-                if local.coords[s][k] == local.coords[s][l] {
-                    edges.push((tri[k], tri[l], s));
-                    union(&mut parent, tri[k], tri[l]);
-                }
-            }
-        }
-        // only clusters of more than one vertex are listed (no map entry
-        // and vector per vertex)
-        let roots: Vec<u32> = (0..nv as u32).map(|v| find(&mut parent, v)).collect();
-        let mut size = vec![0u32; nv];
-        roots.iter().for_each(|&r| size[r as usize] += 1);
-        let mut members: std::collections::HashMap<u32, Vec<u32>> = Default::default();
-        for (v, &r) in roots.iter().enumerate() {
-            if size[r as usize] > 1 {
-                members.entry(r).or_default().push(v as u32);
-            }
-        }
-        // BFS rotations inside each cluster
-        let mut rot_from_root: Vec<Option<Rot2>> = vec![Some(Rot2::IDENTITY); nv];
-        let mut adj: std::collections::HashMap<u32, Vec<(u32, Rot2)>> = Default::default();
-        for &(a, b, s) in &edges {
-            if let (Some(ra), Some(rb)) = (star_rot(a, s), star_rot(b, s)) {
-                // a_ref → s → b_ref
-                let ab = ra.then(&rb.inverse());
-                adj.entry(a).or_default().push((b, ab));
-                adj.entry(b).or_default().push((a, ab.inverse()));
-            }
-        }
-        for (&root, m) in &members {
-            let mut seen: std::collections::HashMap<u32, Rot2> = Default::default();
-            seen.insert(root, Rot2::IDENTITY);
-            let mut stack = vec![root];
-            let mut ok = m.iter().all(|&v| !stars.singular[v as usize]);
-            while let Some(a) = stack.pop() {
-                let ra = seen[&a];
-                for &(b, ab) in adj.get(&a).map(|x| x.as_slice()).unwrap_or(&[]) {
-                    let rb = ra.then(&ab);
-                    match seen.get(&b) {
-                        Some(old) if *old != rb => ok = false,
-                        Some(_) => {}
-                        None => {
-                            seen.insert(b, rb);
-                            stack.push(b);
-                        }
-                    }
-                }
-            }
-            ok &= seen.len() == m.len();
-            for &v in m {
-                rot_from_root[v as usize] = if ok { seen.get(&v).copied() } else { None };
-            }
-        }
-        Clusters {
-            parent,
-            rot_from_root,
-            members,
-        }
-    }
-
-    fn count_nontrivial(&self) -> usize {
-        self.members.len()
-    }
-
-    fn root(&self, v: u32) -> u32 {
-        let mut x = v;
-        while self.parent[x as usize] != x {
-            x = self.parent[x as usize];
-        }
-        x
-    }
-
-    /// Members of the cluster with their rotation from the root's chart;
-    /// `None` if the cluster cannot move consistently.
-    fn members_rot(&self, root: u32) -> Option<Vec<(u32, Rot2)>> {
-        match self.members.get(&root) {
-            None => Some(vec![(root, Rot2::IDENTITY)]),
-            Some(m) => m
-                .iter()
-                .map(|&v| self.rot_from_root[v as usize].map(|r| (v, r)))
-                .collect(),
-        }
-    }
-}
-
-fn find(p: &mut [u32], mut x: u32) -> u32 {
-    while p[x as usize] != x {
-        p[x as usize] = p[p[x as usize] as usize];
-        x = p[x as usize];
-    }
-    x
-}
-
-fn union(p: &mut [u32], a: u32, b: u32) {
-    let (ra, rb) = (find(p, a), find(p, b));
-    if ra != rb {
-        p[ra as usize] = rb;
-    }
-}
 
 #[cfg(test)]
 mod tests {
@@ -585,7 +434,7 @@ mod tests {
                 1 => [x[0].round() - x[0], x[1].round() - x[1]],
                 _ => [0.3 * rng.angle().cos(), 0.3 * rng.angle().sin()],
             };
-            move_vertex(&stars, &mut local, v, &d);
+            local.move_vertex(&stars, v, &d);
             scan.update(&map, &stars, &local, &[v as u32]);
             let want = full(&local);
             assert!(

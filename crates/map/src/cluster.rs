@@ -1,0 +1,154 @@
+//! Collapsed clusters: vertices joined by zero-length map edges, which
+//! sanitization moves as one (DESIGN §3.1).
+//!
+//! Input: map, stars, (local) coordinates per corner. Output: [`Clusters`]:
+//! per non-trivial cluster its members with the rotation from the root's
+//! reference chart to each member's reference chart (read through a simplex
+//! that holds both ends of a collapsed edge); a cluster is stuck (`None`)
+//! when it holds a singular vertex or its rotations disagree. Generic over
+//! the dimension: used by both extractions.
+
+use crate::{Rot, SimplexMap, Stars};
+use std::collections::HashMap;
+
+/// The collapsed clusters of a map.
+pub struct Clusters<const D: usize> {
+    parent: Vec<u32>,
+    /// Per vertex: rotation from its cluster root's reference chart to its
+    /// own reference chart; `None` when the cluster cannot move.
+    rot_from_root: Vec<Option<Rot<D>>>,
+    members: HashMap<u32, Vec<u32>>,
+}
+
+impl<const D: usize> Clusters<D> {
+    /// Finds the clusters.
+    pub fn build<const N: usize>(
+        map: &SimplexMap<N, D>,
+        stars: &Stars<D>,
+        coords: &[[[f64; D]; N]],
+    ) -> Self {
+        let nv = map.positions.len();
+        let mut parent: Vec<u32> = (0..nv as u32).collect();
+        let mut edges = Vec::new();
+        for (s, tet) in map.simplices.iter().enumerate() {
+            for k in 0..N {
+                for l in k + 1..N {
+                    if coords[s][k] == coords[s][l] {
+                        edges.push((tet[k], tet[l], s));
+                        union(&mut parent, tet[k], tet[l]);
+                    }
+                }
+            }
+        }
+        let mut members: HashMap<u32, Vec<u32>> = HashMap::new();
+        for v in 0..nv as u32 {
+            let r = find(&mut parent, v);
+            members.entry(r).or_default().push(v);
+        }
+        members.retain(|_, m| m.len() > 1);
+        let adj = rotation_edges(stars, &edges);
+        let mut rot_from_root: Vec<Option<Rot<D>>> = vec![Some(Rot::IDENTITY); nv];
+        for (&root, m) in &members {
+            let ok_singular = m.iter().all(|&v| !stars.singular[v as usize]);
+            let seen = spread(root, &adj);
+            let ok = ok_singular && seen.as_ref().is_some_and(|s| s.len() == m.len());
+            for &v in m {
+                rot_from_root[v as usize] = if ok {
+                    seen.as_ref().and_then(|s| s.get(&v).copied())
+                } else {
+                    None
+                };
+            }
+        }
+        Clusters {
+            parent,
+            rot_from_root,
+            members,
+        }
+    }
+
+    /// Number of clusters with more than one vertex.
+    pub fn count_nontrivial(&self) -> usize {
+        self.members.len()
+    }
+
+    /// The cluster root of `v`.
+    pub fn root(&self, v: u32) -> u32 {
+        let mut x = v;
+        while self.parent[x as usize] != x {
+            x = self.parent[x as usize];
+        }
+        x
+    }
+
+    /// Members of the cluster with their rotation from the root's chart;
+    /// `None` if the cluster cannot move consistently.
+    pub fn members_rot(&self, root: u32) -> Option<Vec<(u32, Rot<D>)>> {
+        match self.members.get(&root) {
+            None => Some(vec![(root, Rot::IDENTITY)]),
+            Some(m) => m
+                .iter()
+                .map(|&v| self.rot_from_root[v as usize].map(|r| (v, r)))
+                .collect(),
+        }
+    }
+}
+
+type Adjacency<const D: usize> = HashMap<u32, Vec<(u32, Rot<D>)>>;
+
+/// Collapsed edges as rotations between the endpoints' reference charts.
+fn rotation_edges<const D: usize>(stars: &Stars<D>, edges: &[(u32, u32, usize)]) -> Adjacency<D> {
+    let star_rot = |v: u32, s: usize| {
+        stars
+            .of(v as usize)
+            .iter()
+            .find(|e| e.simplex as usize == s)
+            .map(|e| e.rot)
+    };
+    let mut adj: Adjacency<D> = HashMap::new();
+    for &(a, b, s) in edges {
+        if let (Some(ra), Some(rb)) = (star_rot(a, s), star_rot(b, s)) {
+            let ab = ra.then(&rb.inverse()); // a_ref → s → b_ref
+            adj.entry(a).or_default().push((b, ab));
+            adj.entry(b).or_default().push((a, ab.inverse()));
+        }
+    }
+    adj
+}
+
+/// Rotations from `root` to every reachable vertex; `None` on disagreement.
+fn spread<const D: usize>(root: u32, adj: &Adjacency<D>) -> Option<HashMap<u32, Rot<D>>> {
+    let mut seen: HashMap<u32, Rot<D>> = HashMap::new();
+    seen.insert(root, Rot::IDENTITY);
+    let mut stack = vec![root];
+    while let Some(a) = stack.pop() {
+        let ra = seen[&a];
+        for &(b, ab) in adj.get(&a).map(|x| x.as_slice()).unwrap_or(&[]) {
+            let rb = ra.then(&ab);
+            match seen.get(&b) {
+                Some(old) if *old != rb => return None,
+                Some(_) => {}
+                None => {
+                    seen.insert(b, rb);
+                    stack.push(b);
+                }
+            }
+        }
+    }
+    Some(seen)
+}
+
+fn find(p: &mut [u32], mut x: u32) -> u32 {
+    while p[x as usize] != x {
+        p[x as usize] = p[p[x as usize] as usize];
+        x = p[x as usize];
+    }
+    x
+}
+
+fn union(p: &mut [u32], a: u32, b: u32) {
+    let (ra, rb) = (find(p, a), find(p, b));
+    if ra != rb {
+        p[ra as usize] = rb;
+    }
+}
