@@ -219,7 +219,6 @@ fn singular_free_axis(
     }
 }
 
-
 /// [`crate::near::bad_vertices`], kept up to date incrementally: after a
 /// round only the tets around the vertices whose tets moved are tested
 /// again (a tet's test depends on its own corners only, so the result is

@@ -237,7 +237,6 @@ fn vertex_is_bad(map: &TriMap, local: &LocalMap, stars: &Stars<2>, v: usize) -> 
     })
 }
 
-
 /// Whether `x` is within [`EPS`] of an integer.
 #[inline]
 fn near_int(x: f64) -> bool {
@@ -401,7 +400,6 @@ fn mark_tri(tri: &[u32; 3], c: &[[f64; 2]; 3], bad: &mut [bool]) {
         }
     }
 }
-
 
 #[cfg(test)]
 mod tests {
