@@ -29,7 +29,10 @@ pub struct Scratch(pub PathBuf);
 impl Scratch {
     /// A new, empty directory named after the test.
     pub fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("dualex-test-{}-{name}", std::process::id()));
+        // unique within the process too: tests run in parallel threads
+        static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let dir = std::env::temp_dir().join(format!("dualex-test-{}-{k}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).expect("create scratch dir");
         Scratch(dir)
