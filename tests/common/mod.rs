@@ -32,7 +32,8 @@ impl Scratch {
         // unique within the process too: tests run in parallel threads
         static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
         let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        let dir = std::env::temp_dir().join(format!("dualex-test-{}-{k}-{name}", std::process::id()));
+        let dir =
+            std::env::temp_dir().join(format!("dualex-test-{}-{k}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).expect("create scratch dir");
         Scratch(dir)

@@ -30,6 +30,7 @@ use dualex_map::rng;
 pub mod testgrid;
 mod uf;
 pub mod untangle;
+pub mod walk;
 
 #[cfg(test)]
 mod tests;

@@ -28,7 +28,7 @@ pub mod simplex;
 pub mod stats;
 pub mod trace;
 
-use dualex_graph::{NodeGraph, Side};
+use dualex_graph::NodeGraph;
 use dualex_map::singularity::{edge_singularities, quality};
 use dualex_map::{HexMesh, InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
 pub use stats::HexStats;
@@ -87,7 +87,8 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
     st.trace = trep;
     let mut graph = NodeGraph::<3>::new(nodes.reverted.clone());
-    link_mutual(&mut graph, &ends, &mut st);
+    let links = graph.link_mutual(&ends);
+    (st.non_mutual, st.rotation_mismatches) = (links.non_mutual, links.rotation_mismatches);
     st.label_violations = graph.label_violations();
     lap(&mut st, "trace");
     // 5
@@ -99,30 +100,6 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     st.finish_output(&graph, &glued, &mesh);
     lap(&mut st, "glue_geometry");
     Ok((mesh, st))
-}
-
-/// Links the sides whose walks reached each other.
-fn link_mutual(graph: &mut NodeGraph<3>, ends: &[trace::End], st: &mut HexStats) {
-    for (a, end) in ends.iter().enumerate() {
-        let trace::End::Node { side: b, rho } = *end else {
-            continue;
-        };
-        let b = b as usize;
-        if b < a {
-            continue;
-        }
-        match ends.get(b) {
-            Some(trace::End::Node { side, rho: back }) if *side as usize == a => {
-                if *back != rho.inverse() {
-                    st.rotation_mismatches += 1;
-                }
-                if b == a || graph.link(Side(a as u32), Side(b as u32), rho).is_err() {
-                    st.non_mutual += 1;
-                }
-            }
-            _ => st.non_mutual += 1,
-        }
-    }
 }
 
 /// Positions of the glued vertices by diagonal tracing (corner code bits:

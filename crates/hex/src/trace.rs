@@ -23,59 +23,16 @@ use crate::nodes::Nodes;
 use crate::simplex::{pierced, Pierce};
 use dualex_map::{Rot3, Topology};
 
-/// How a walk ended.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum End {
-    /// Reached the side `side` of a node; ρ maps the start chart to its chart.
-    Node {
-        /// The side reached.
-        side: u32,
-        /// Rotation from the start node's chart to the arrival node's chart.
-        rho: Rot3,
-    },
-    /// Left the mesh through a boundary face.
-    Boundary,
-    /// The iso did not cross a tet consistently (an iso through a vertex or
-    /// an edge that sanitization could not move: a singular vertex).
-    Inconsistent,
-    /// Closed iso loop without node.
-    Loop,
-}
-
-/// Counts of walk outcomes.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct TraceReport {
-    /// Walks that reached a node.
-    pub to_node: usize,
-    /// Walks that left the mesh.
-    pub to_boundary: usize,
-    /// Walks stopped by an inconsistent crossing.
-    pub inconsistent: usize,
-    /// Walks on iso loops without node.
-    pub loops: usize,
-    /// Longest walk, in tets.
-    pub max_steps: usize,
-}
+/// How a walk ended (the dimension-generic [`dualex_graph::walk::End`]).
+pub type End = dualex_graph::walk::End<3>;
+pub use dualex_graph::walk::TraceReport;
 
 /// Traces every side; returns the end of each walk.
 pub fn trace_all(local: &LocalMap, topo: &Topology<4>, nodes: &Nodes) -> (Vec<End>, TraceReport) {
-    let mut rep = TraceReport::default();
     let max_steps = 4 * local.coords.len() + 4;
-    let mut ends = Vec::with_capacity(6 * nodes.len());
-    for n in 0..nodes.len() {
-        for d in 0..6 {
-            let (end, steps) = trace(local, topo, nodes, n, d, max_steps);
-            rep.max_steps = rep.max_steps.max(steps);
-            match end {
-                End::Node { .. } => rep.to_node += 1,
-                End::Boundary => rep.to_boundary += 1,
-                End::Inconsistent => rep.inconsistent += 1,
-                End::Loop => rep.loops += 1,
-            }
-            ends.push(end);
-        }
-    }
-    (ends, rep)
+    dualex_graph::walk::walk_all(nodes.len(), |n, d| {
+        trace(local, topo, nodes, n, d, max_steps)
+    })
 }
 
 /// The line being walked, in one tet's chart.

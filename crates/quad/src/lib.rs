@@ -98,7 +98,8 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
     st.trace = trep;
     let mut graph = NodeGraph::<2>::new(nodes.reverted.clone());
-    link_mutual(&mut graph, &ends, &mut st);
+    let links = graph.link_mutual(&ends);
+    (st.non_mutual, st.rotation_mismatches) = (links.non_mutual, links.rotation_mismatches);
     st.label_violations = graph.label_violations();
     lap(&mut st, "trace");
     // 5
@@ -139,34 +140,6 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     }
     lap(&mut st, "glue_geometry");
     Ok((mesh, st))
-}
-
-/// Links the sides whose walks reached each other.
-fn link_mutual(graph: &mut NodeGraph<2>, ends: &[trace::End], st: &mut QuadStats) {
-    for (a, end) in ends.iter().enumerate() {
-        let trace::End::Node { side: b, rho } = *end else {
-            continue;
-        };
-        let b = b as usize;
-        if b < a {
-            continue;
-        }
-        match ends.get(b) {
-            Some(trace::End::Node { side, rho: back }) if *side as usize == a => {
-                if *back != rho.inverse() {
-                    st.rotation_mismatches += 1;
-                }
-                if b == a {
-                    st.non_mutual += 1;
-                    continue;
-                }
-                if graph.link(Side(a as u32), Side(b as u32), rho).is_err() {
-                    st.non_mutual += 1;
-                }
-            }
-            _ => st.non_mutual += 1,
-        }
-    }
 }
 
 /// The two corners (vertex ids) of side `d` of `node`, in the order of the

@@ -12,15 +12,18 @@
 //!   rotations (translations untouched: no transition changes). Vertices
 //!   joined by zero-length map edges (collapsed regions) move as one cluster.
 //!
-//! Singular vertices cannot move; those left on an iso are reported in
-//! [`SanitizeReport::singular_on_iso`] (the tracer handles walks that reach
-//! them by leaving the side unmatched; the count is part of the stats).
+//! Singular vertices cannot move (their charts disagree around them, so no
+//! single vector moves all their corners consistently); in an exactly GP map
+//! a 90° singularity sits on a grid point or on a node, a 180° one possibly
+//! on one iso. Those left on an iso are reported in
+//! [`SanitizeReport::singular_on_iso`] by kind; walks that reach them end
+//! unmatched and the repair step (`crate::repair`) closes what they leave.
 //!
 //! Coordinates are local (see [`crate::local`]), so `eps` is absolute.
 
 use crate::local::LocalMap;
 use crate::rng::SplitMix;
-use dualex_map::{Rot2, Stars, Topology, Transitions, TriMap};
+use dualex_map::{Stars, Topology, TriMap};
 
 /// The collapsed clusters of a triangle map (moved as one).
 type Clusters = dualex_map::cluster::Clusters<2>;
@@ -47,8 +50,6 @@ pub struct SanitizeReport {
     pub stuck_clusters: usize,
     /// Rounds used.
     pub rounds: usize,
-    /// Singular (90°) vertices moved off an iso with a holonomy-compatible vector.
-    pub singular_moved: usize,
     /// Singular vertices left on an iso, by kind: `"90_node"`, `"180_iso"`,
     /// `"edge"` (only an edge through a grid point), ….
     pub singular_kinds: std::collections::BTreeMap<String, usize>,
@@ -122,82 +123,9 @@ pub fn sanitize(
                 .collect();
         }
     }
-    rep.singular_moved = move_singular_off_isos(map, topo, stars, local, &mut rep.singular_on_iso);
     rep.singular_kinds = classify(topo, stars, local, &rep.singular_on_iso);
     rep.perturbed_vertices = moved.iter().filter(|&&m| m).count();
     rep
-}
-
-/// Holonomy of a singular vertex: the rotation (reference chart → itself)
-/// met when the star's two walks close up; `None` if consistent.
-fn holonomy(
-    topo: &Topology<3>,
-    stars: &Stars<2>,
-    trans: &Transitions<3, 2>,
-    v: usize,
-) -> Option<Rot2> {
-    let star = stars.of(v);
-    for e in star {
-        let s = e.simplex as usize;
-        for f in (0..3).filter(|&f| f != e.corner as usize) {
-            let Some((n, _)) = topo.neighbour(s, f) else {
-                continue;
-            };
-            let expected = e.rot.then(&trans.rot[s][f]);
-            if let Some(o) = star.iter().find(|o| o.simplex as usize == n) {
-                if o.rot != expected {
-                    return Some(expected.then(&o.rot.inverse()));
-                }
-            }
-        }
-    }
-    None
-}
-
-/// A singular vertex on exactly one iso family can still be moved off it
-/// when its holonomy `H` keeps the sign of that coordinate for some
-/// diagonal `δ` (90° singularities): the corners on both sides of the
-/// star's closing edge then agree on which side of the iso the vertex
-/// lies; they differ only in the other coordinate, by `|Hδ − δ| ≤ 2·amp`,
-/// which no iso comes near (checked). 180° singularities on an iso, and
-/// singular vertices on a node, cannot be moved this way: they stay in
-/// `left` and are reported. Returns the number of vertices moved.
-fn move_singular_off_isos(
-    map: &TriMap,
-    topo: &Topology<3>,
-    stars: &Stars<2>,
-    local: &mut LocalMap,
-    left: &mut Vec<u32>,
-) -> usize {
-    let mut moved = 0;
-    let trans = local.trans.clone();
-    left.retain(|&v| {
-        let v = v as usize;
-        let Some(first) = stars.of(v).first() else {
-            return true;
-        };
-        let x = local.coords[first.simplex as usize][first.corner as usize];
-        let on: Vec<usize> = (0..2).filter(|&k| near_int(x[k])).collect();
-        let [a] = on[..] else { return true };
-        let margin = (x[1 - a] - x[1 - a].round()).abs();
-        if margin < 8.0 * AMPLITUDE {
-            return true;
-        }
-        let Some(h) = holonomy(topo, stars, &trans, v) else {
-            return true;
-        };
-        for (su, sv) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
-            let d = [su * AMPLITUDE, sv * AMPLITUDE];
-            if (h.apply(&d)[a] > 0.0) == (d[a] > 0.0) {
-                local.move_vertex(stars, v, &d);
-                moved += 1;
-                let still = vertex_is_bad(map, local, stars, v);
-                return still;
-            }
-        }
-        true
-    });
-    moved
 }
 
 /// Kinds of the singular vertices left on isos (see [`SanitizeReport`]).
@@ -215,26 +143,18 @@ fn classify(
         };
         let x = local.coords[first.simplex as usize][first.corner as usize];
         let on = (0..2).filter(|&k| near_int(x[k])).count();
-        let turns = holonomy(topo, stars, &local.trans, v).map_or(0, |h| h.turns());
+        let turns = dualex_map::holonomy::ridge_rotation(
+            topo,
+            &local.trans,
+            first.simplex as usize,
+            &[first.corner as usize],
+        )
+        .map_or(0, |h| h.turns());
         let angle = [0, 90, 180, 90][turns as usize];
         let place = ["edge", "iso", "node"][on];
         *out.entry(format!("{angle}_{place}")).or_insert(0) += 1;
     }
     out
-}
-
-/// Whether vertex `v` is on an iso or on an edge through a grid point.
-fn vertex_is_bad(map: &TriMap, local: &LocalMap, stars: &Stars<2>, v: usize) -> bool {
-    stars.of(v).iter().any(|e| {
-        let s = e.simplex as usize;
-        let c = e.corner as usize;
-        let p = &local.coords[s];
-        let _ = map;
-        near_int(p[c][0])
-            || near_int(p[c][1])
-            || edge_near_grid_point(&p[c], &p[(c + 1) % 3])
-            || edge_near_grid_point(&p[c], &p[(c + 2) % 3])
-    })
 }
 
 /// Whether `x` is within [`EPS`] of an integer.

@@ -130,7 +130,6 @@ impl QuadStats {
                 "clusters": s.clusters,
                 "stuck_clusters": s.stuck_clusters,
                 "rounds": s.rounds,
-                "singular_moved": s.singular_moved,
                 "singular_on_iso": s.singular_on_iso.len(),
                 "singular_on_iso_kinds": s.singular_kinds,
                 "unresolved": s.unresolved,

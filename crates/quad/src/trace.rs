@@ -19,39 +19,9 @@ use crate::local::LocalMap;
 use crate::nodes::Nodes;
 use dualex_map::{Rot2, Topology};
 
-/// How a walk ended.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum End {
-    /// Reached the side `side` of a node; ρ maps the start chart to its chart.
-    Node {
-        /// The side reached.
-        side: u32,
-        /// Rotation from the start node's chart to the arrival node's chart.
-        rho: Rot2,
-    },
-    /// Left the mesh through a boundary edge.
-    Boundary,
-    /// The iso did not cross the arrival triangle consistently (a vertex on
-    /// the iso that sanitization could not move: a singular vertex).
-    Inconsistent,
-    /// Closed iso loop without node.
-    Loop,
-}
-
-/// Counts of walk outcomes.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct TraceReport {
-    /// Walks that reached a node.
-    pub to_node: usize,
-    /// Walks that left the mesh.
-    pub to_boundary: usize,
-    /// Walks stopped by an inconsistent crossing.
-    pub inconsistent: usize,
-    /// Walks on iso loops without node.
-    pub loops: usize,
-    /// Longest walk, in triangles.
-    pub max_steps: usize,
-}
+/// How a walk ended (the dimension-generic [`dualex_graph::walk::End`]).
+pub type End = dualex_graph::walk::End<2>;
+pub use dualex_graph::walk::TraceReport;
 
 /// An iso crossing of an edge: edge index and the moving coordinate there.
 fn crossings(p: &[[f64; 2]; 3], fixed_axis: usize, val: i64) -> ([(usize, f64); 2], usize) {
@@ -76,23 +46,10 @@ fn crossings(p: &[[f64; 2]; 3], fixed_axis: usize, val: i64) -> ([(usize, f64); 
 
 /// Traces every side; returns the end of each walk.
 pub fn trace_all(local: &LocalMap, topo: &Topology<3>, nodes: &Nodes) -> (Vec<End>, TraceReport) {
-    let mut rep = TraceReport::default();
     let max_steps = 3 * local.coords.len() + 3;
-    let mut ends = Vec::with_capacity(4 * nodes.len());
-    for n in 0..nodes.len() {
-        for d in 0..4 {
-            let (end, steps) = trace(local, topo, nodes, n, d, max_steps);
-            rep.max_steps = rep.max_steps.max(steps);
-            match end {
-                End::Node { .. } => rep.to_node += 1,
-                End::Boundary => rep.to_boundary += 1,
-                End::Inconsistent => rep.inconsistent += 1,
-                End::Loop => rep.loops += 1,
-            }
-            ends.push(end);
-        }
-    }
-    (ends, rep)
+    dualex_graph::walk::walk_all(nodes.len(), |n, d| {
+        trace(local, topo, nodes, n, d, max_steps)
+    })
 }
 
 /// Nearest node of triangle `s` on the iso `ij[fixed] == val`, strictly

@@ -1,0 +1,148 @@
+//! Walks along isos and the opposite relation they define (DESIGN §3.3),
+//! shared by both dimensions: how a walk from a side ended, the counts of
+//! all walks, and the gluing of sides whose walks reached each other.
+//!
+//! Input: one [`End`] per side (`side = node·2D + dir`), produced by the
+//! dimension's tracer. Output: pairs linked in the [`NodeGraph`] and a
+//! [`LinkReport`]. Invariant: a pair is linked only when both walks reached
+//! each other; the tracer's rule makes that symmetric, and any asymmetry is
+//! counted, not hidden.
+
+use crate::graph::NodeGraph;
+use crate::ids::Side;
+use dualex_map::Rot;
+
+/// How a walk from a side ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End<const D: usize> {
+    /// Reached the side `side` of a node; ρ maps the start chart to its chart.
+    Node {
+        /// The side reached.
+        side: u32,
+        /// Rotation from the start node's chart to the arrival node's chart.
+        rho: Rot<D>,
+    },
+    /// Left the mesh through a boundary facet.
+    Boundary,
+    /// The iso did not cross a simplex consistently (it passes through a
+    /// vertex or an edge that sanitization could not move: a singular one).
+    Inconsistent,
+    /// Closed iso loop without node.
+    Loop,
+}
+
+/// Counts of walk outcomes.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TraceReport {
+    /// Walks that reached a node.
+    pub to_node: usize,
+    /// Walks that left the mesh.
+    pub to_boundary: usize,
+    /// Walks stopped by an inconsistent crossing.
+    pub inconsistent: usize,
+    /// Walks on iso loops without node.
+    pub loops: usize,
+    /// Longest walk, in simplices.
+    pub max_steps: usize,
+}
+
+/// Walks every side of `n_nodes` nodes with `walk(node, dir) -> (end,
+/// steps)` and counts the outcomes; the ends are in side order.
+pub fn walk_all<const D: usize>(
+    n_nodes: usize,
+    mut walk: impl FnMut(usize, usize) -> (End<D>, usize),
+) -> (Vec<End<D>>, TraceReport) {
+    let mut rep = TraceReport::default();
+    let mut ends = Vec::with_capacity(2 * D * n_nodes);
+    for n in 0..n_nodes {
+        for d in 0..2 * D {
+            let (end, steps) = walk(n, d);
+            rep.max_steps = rep.max_steps.max(steps);
+            match end {
+                End::Node { .. } => rep.to_node += 1,
+                End::Boundary => rep.to_boundary += 1,
+                End::Inconsistent => rep.inconsistent += 1,
+                End::Loop => rep.loops += 1,
+            }
+            ends.push(end);
+        }
+    }
+    (ends, rep)
+}
+
+/// What linking the walks' ends found.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LinkReport {
+    /// Walks whose target did not walk back to them (or could not be linked).
+    pub non_mutual: usize,
+    /// Mutual pairs whose two rotations are not inverse (0 expected).
+    pub rotation_mismatches: usize,
+}
+
+impl<const D: usize> NodeGraph<D> {
+    /// Glues every pair of sides whose walks reached each other, with the
+    /// rotation of the first walk.
+    pub fn link_mutual(&mut self, ends: &[End<D>]) -> LinkReport {
+        let mut rep = LinkReport::default();
+        for (a, end) in ends.iter().enumerate() {
+            let End::Node { side: b, rho } = *end else {
+                continue;
+            };
+            let b = b as usize;
+            match ends.get(b) {
+                // a mutual pair is handled once, from its smaller side
+                Some(End::Node { side, .. }) if *side as usize == a && b < a => {}
+                Some(End::Node { side, rho: back }) if *side as usize == a => {
+                    if *back != rho.inverse() {
+                        rep.rotation_mismatches += 1;
+                    }
+                    if b == a || self.link(Side(a as u32), Side(b as u32), rho).is_err() {
+                        rep.non_mutual += 1;
+                    }
+                }
+                _ => rep.non_mutual += 1,
+            }
+        }
+        rep
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_map::Rot2;
+
+    #[test]
+    fn mutual_walks_are_linked_and_the_rest_counted() {
+        // two nodes side by side: 0.+u ↔ 1.-u; 1.+v walks to 0.-v, which walks elsewhere
+        let mut g = NodeGraph::<2>::new(vec![false, false]);
+        let id = Rot2::IDENTITY;
+        let mut ends = vec![End::Boundary; 8];
+        ends[0] = End::Node { side: 5, rho: id };
+        ends[5] = End::Node { side: 0, rho: id };
+        ends[6] = End::Node { side: 3, rho: id };
+        let rep = g.link_mutual(&ends);
+        assert_eq!(
+            rep,
+            LinkReport {
+                non_mutual: 1,
+                rotation_mismatches: 0
+            }
+        );
+        assert_eq!(g.opposite(Side(0)), Some(Side(5)));
+        g.check().expect("valid");
+    }
+
+    #[test]
+    fn outcomes_are_counted() {
+        let (ends, rep) = walk_all::<3>(2, |n, d| {
+            if d == 0 {
+                (End::Boundary, n + 1)
+            } else {
+                (End::Loop, 0)
+            }
+        });
+        assert_eq!(ends.len(), 12);
+        assert_eq!((rep.to_boundary, rep.loops, rep.max_steps), (2, 10, 2));
+    }
+}
