@@ -17,54 +17,7 @@
 use crate::simplex::face_corners;
 use dualex_map::TetMap;
 
-/// Distance below which a value counts as "on" an iso.
-pub const EPS: f64 = 1e-9;
-
-/// Whether `x` is within [`EPS`] of an integer.
-#[inline]
-pub fn near_int(x: f64) -> bool {
-    (x - x.round()).abs() < EPS
-}
-
-fn dist2d(a: &[f64; 2], b: &[f64; 2]) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
-}
-
-fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let l2 = d[0] * d[0] + d[1] * d[1];
-    let t = if l2 == 0.0 {
-        0.0
-    } else {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
-    };
-    dist2d(&[a[0] + t * d[0], a[1] + t * d[1]], p)
-}
-
-/// An integer point within [`EPS`] of the 2D segment `a`–`b`, if any.
-pub fn grid_point_near_segment(a: &[f64; 2], b: &[f64; 2]) -> Option<[f64; 2]> {
-    for axis in 0..2 {
-        let o = 1 - axis;
-        let (lo, hi) = (a[axis].min(b[axis]), a[axis].max(b[axis]));
-        let len = b[axis] - a[axis];
-        let mut i = (lo - EPS).ceil();
-        while i <= hi + EPS {
-            let t = if len == 0.0 {
-                0.0
-            } else {
-                ((i - a[axis]) / len).clamp(0.0, 1.0)
-            };
-            let mut g = [0.0; 2];
-            g[axis] = i;
-            g[o] = (a[o] + t * (b[o] - a[o])).round();
-            if point_segment_dist(&g, a, b) < EPS {
-                return Some(g);
-            }
-            i += 1.0;
-        }
-    }
-    None
-}
+pub use dualex_map::grid::{dist2d, grid_point_near_segment, near_int, EPS};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
 /// at `a`, at `b` (within [`EPS`] in the projection), or at neither.

@@ -20,6 +20,7 @@ pub mod cells;
 pub mod cluster;
 mod components;
 pub mod error;
+pub mod grid;
 pub mod holonomy;
 pub mod local;
 pub mod mesh;

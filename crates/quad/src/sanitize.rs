@@ -28,8 +28,7 @@ use dualex_map::{Stars, Topology, TriMap};
 /// The collapsed clusters of a triangle map (moved as one).
 type Clusters = dualex_map::cluster::Clusters<2>;
 
-/// Distance below which a value counts as "on" an iso.
-pub const EPS: f64 = 1e-9;
+pub use dualex_map::grid::EPS;
 /// Initial perturbation amplitude (map units).
 pub const AMPLITUDE: f64 = 1e-5;
 /// Perturbation rounds before giving up on a vertex.
@@ -157,62 +156,14 @@ fn classify(
     out
 }
 
-/// Whether `x` is within [`EPS`] of an integer.
-#[inline]
-fn near_int(x: f64) -> bool {
-    (x - x.round()).abs() < EPS
-}
-
 /// Whether segment `a`–`b` passes within [`EPS`] of an integer point.
 pub fn edge_near_grid_point(a: &[f64; 2], b: &[f64; 2]) -> bool {
     grid_point_near_edge(a, b).is_some()
 }
 
 /// An integer point within [`EPS`] of segment `a`–`b`, if any.
-pub fn grid_point_near_edge(a: &[f64; 2], b: &[f64; 2]) -> Option<[f64; 2]> {
-    for axis in 0..2 {
-        let o = 1 - axis;
-        let (lo, hi) = if a[axis] <= b[axis] {
-            (a[axis], b[axis])
-        } else {
-            (b[axis], a[axis])
-        };
-        let len = b[axis] - a[axis];
-        let mut i = (lo - EPS).ceil();
-        while i <= hi + EPS {
-            let t = if len == 0.0 {
-                0.0
-            } else {
-                ((i - a[axis]) / len).clamp(0.0, 1.0)
-            };
-            let other = a[o] + t * (b[o] - a[o]);
-            let mut g = [0.0; 2];
-            g[axis] = i;
-            g[o] = other.round();
-            if point_segment_dist(&g, a, b) < EPS {
-                return Some(g);
-            }
-            i += 1.0;
-        }
-    }
-    None
-}
-
-fn dist2(a: &[f64; 2], b: &[f64; 2]) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
-}
-
-fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let l2 = d[0] * d[0] + d[1] * d[1];
-    let t = if l2 == 0.0 {
-        0.0
-    } else {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
-    };
-    let q = [a[0] + t * d[0] - p[0], a[1] + t * d[1] - p[1]];
-    (q[0] * q[0] + q[1] * q[1]).sqrt()
-}
+pub use dualex_map::grid::grid_point_near_segment as grid_point_near_edge;
+use dualex_map::grid::{dist2d as dist2, near_int};
 
 /// The vertices on an iso, or endpoints of an edge through a grid point,
 /// kept up to date incrementally: after a round only the triangles around
