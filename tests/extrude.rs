@@ -17,10 +17,12 @@ use std::path::Path;
 
 /// Cases (map, layers, quality) where the 3D path differs from the 2D one.
 const KNOWN: &[&str] = &[
-    "duck_miq_4_param.obj L=1",
-    "duck_miq_8_param.obj L=1",
+    // 2D index fairing and the collapse of folded quads have no 3D
+    // counterpart: 1867 quads vs 1868 hexes, 5146 vs 5153
     "decimated-knight-param.obj L=1",
     "dragon-param-full-seamless.obj L=1",
+    // 2D subdivides the 3-sided faces of singularities on nodes (4788
+    // quads); 3D keeps the 1205 hexes
     "horsers-param-full-seamless.obj L=1",
 ];
 
@@ -180,7 +182,16 @@ fn compare(
     if quality {
         args.push("--quality");
     }
-    let out = dualex(&args);
+    let mut out = dualex(&args);
+    let tetgen_refused =
+        !out.status.success() && String::from_utf8_lossy(&out.stderr).contains("TetGen failed");
+    if tetgen_refused {
+        // TetGen aborts on some real surfaces (self-intersecting input
+        // triangles): the built-in split, reported, is what users get
+        args.push("--fallback");
+        out = dualex(&args);
+        eprintln!("TetGen refused {}: built-in prism split", input.display());
+    }
     if !out.status.success() {
         return Err(format!("extrude failed: {}", text(&out)));
     }

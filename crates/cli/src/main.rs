@@ -303,7 +303,10 @@ fn extrude(args: &Args) -> Result<(), String> {
     let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|e| format!("{name}: {e}"))?;
     dualex_io::write_tet_map(out, &tets).map_err(|e| e.to_string())?;
     if !rep.tetgen && !args.quiet {
-        eprintln!("dualex: TetGen not found: used the built-in prism split (3 tets per prism)");
+        eprintln!(
+            "dualex: used the built-in prism split (3 tets per prism): {}",
+            rep.fallback_reason.as_deref().unwrap_or("TetGen not used")
+        );
     }
     if !args.quiet {
         println!(

@@ -56,7 +56,7 @@ pub fn tet_map(slab: &Slab, mesh: &TetgenMesh) -> Result<(TetMap, usize), Extrud
                 });
             }
         }
-        if volume(&out.positions, &ids) < 0.0 {
+        if !mesh.oriented && volume(&out.positions, &ids) < 0.0 {
             ids.swap(0, 1);
             coords.swap(0, 1);
         }

@@ -64,6 +64,9 @@ impl Default for ExtrudeOptions {
 pub struct ExtrudeReport {
     /// `true`: TetGen made the tets; `false`: the built-in prism split.
     pub tetgen: bool,
+    /// Why the built-in split was used (`--fallback`): TetGen missing, or
+    /// TetGen refusing the slab (e.g. a self-intersecting input surface).
+    pub fallback_reason: Option<String>,
     /// Prisms (triangles × layers).
     pub prisms: usize,
     /// Tets written.
@@ -135,16 +138,23 @@ pub fn extrude(
     let start = Instant::now();
     let slab = Slab::new(map, opts.layers, opts.thickness)?;
     let t0 = Instant::now();
+    let mut fallback_reason = None;
     let (mesh, used_tetgen) = match tetgen::run(&opts.program, &plc::poly_text(&slab), opts.quality)
     {
         Ok(m) => (m, true),
-        Err(ExtrudeError::TetgenMissing(_)) if opts.fallback => (split::prism_split(&slab), false),
+        Err(e @ (ExtrudeError::TetgenMissing(_) | ExtrudeError::TetgenFailed(_)))
+            if opts.fallback =>
+        {
+            fallback_reason = Some(e.to_string());
+            (split::prism_split(&slab), false)
+        }
         Err(e) => return Err(e),
     };
     let tetrahedralize_ms = t0.elapsed().as_secs_f64() * 1e3;
     let (tets, steiner_points) = chart::tet_map(&slab, &mesh)?;
     let report = ExtrudeReport {
         tetgen: used_tetgen,
+        fallback_reason,
         prisms: slab.prisms(),
         tets: tets.len(),
         steiner_points,

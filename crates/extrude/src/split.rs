@@ -14,6 +14,7 @@ use crate::tetgen::TetgenMesh;
 pub fn prism_split(slab: &Slab) -> TetgenMesh {
     let mut out = TetgenMesh {
         nodes: slab.points.clone(),
+        oriented: true,
         ..Default::default()
     };
     for prism in 0..slab.prisms() {
@@ -32,11 +33,41 @@ pub fn prism_tets(slab: &Slab, prism: usize) -> [[u32; 4]; 3] {
     tri.sort_unstable();
     let [a, b, c] = tri;
     let at = |v: u32, up: usize| slab.point(v, l + up);
-    [
-        [at(a, 0), at(b, 0), at(c, 0), at(c, 1)],
-        [at(a, 0), at(b, 0), at(b, 1), at(c, 1)],
-        [at(a, 0), at(a, 1), at(b, 1), at(c, 1)],
-    ]
+    let corners = [
+        [(a, 0), (b, 0), (c, 0), (c, 1)],
+        [(a, 0), (b, 0), (b, 1), (c, 1)],
+        [(a, 0), (a, 1), (b, 1), (c, 1)],
+    ];
+    corners.map(|t| {
+        let mut ids = t.map(|(v, up)| at(v, up));
+        if canonical_volume(&slab.tris[t_index(slab, prism)], &t) < 0.0 {
+            ids.swap(0, 1);
+        }
+        ids
+    })
+}
+
+fn t_index(slab: &Slab, prism: usize) -> usize {
+    slab.prism_of(prism).0
+}
+
+/// Six times the volume of a tet of a prism in the prism's canonical
+/// embedding (its triangle's corners, in the triangle's order, at (0,0),
+/// (1,0), (0,1); the layer above at height 1): the orientation the tet
+/// inherits from its triangle, whatever the real geometry (a slab over a
+/// self-intersecting surface has locally inverted prisms, and orienting
+/// by real volume would make neighbouring tets disagree).
+fn canonical_volume(tri: &[u32; 3], tet: &[(u32, usize); 4]) -> f64 {
+    const BASE: [[f64; 2]; 3] = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+    let pos = |(v, up): (u32, usize)| {
+        let k = tri.iter().position(|&x| x == v).unwrap_or(0);
+        [BASE[k][0], BASE[k][1], up as f64]
+    };
+    let p = tet.map(pos);
+    let e = |i: usize| [p[i][0] - p[0][0], p[i][1] - p[0][1], p[i][2] - p[0][2]];
+    let (a, b, c) = (e(1), e(2), e(3));
+    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        + a[2] * (b[0] * c[1] - b[1] * c[0])
 }
 
 #[cfg(test)]

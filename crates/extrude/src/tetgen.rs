@@ -24,6 +24,9 @@ pub struct TetgenMesh {
     pub tets: Vec<[u32; 4]>,
     /// Region attribute per tet (`prism + 1`; 0 = no region).
     pub regions: Vec<u64>,
+    /// The tets are already consistently oriented combinatorially (the
+    /// built-in split); otherwise they are oriented by geometric volume.
+    pub oriented: bool,
 }
 
 /// A temporary directory removed on drop.
@@ -89,6 +92,7 @@ pub fn run(program: &Path, poly: &str, quality: bool) -> Result<TetgenMesh, Extr
         nodes,
         tets,
         regions,
+        oriented: false,
     })
 }
 
