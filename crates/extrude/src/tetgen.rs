@@ -54,11 +54,16 @@ impl Drop for TempDir {
 
 /// Runs `program` on `poly` (see the module docs).
 pub fn run(program: &Path, poly: &str, quality: bool) -> Result<TetgenMesh, ExtrudeError> {
+    run_poly(program, poly, if quality { "-pzQAq" } else { "-pYzQA" })
+}
+
+/// Runs TetGen with `flags` on the `.poly` text `poly` in a temporary
+/// directory and reads its `.node` / `.ele` output.
+pub fn run_poly(program: &Path, poly: &str, flags: &str) -> Result<TetgenMesh, ExtrudeError> {
     let dir = TempDir::new()?;
     let input = dir.0.join("slab.poly");
     std::fs::write(&input, poly)
         .map_err(|e| ExtrudeError::Io(format!("{}: {e}", input.display())))?;
-    let flags = if quality { "-pzQAq" } else { "-pYzQA" };
     let out = Command::new(program)
         .arg(flags)
         .arg("slab.poly")
