@@ -35,7 +35,7 @@ fn run(argv: &[String]) -> Result<String, String> {
             "--seed" => {
                 opts.seed = val()?
                     .parse()
-                    .map_err(|_| format!("--seed: not an integer"))?
+                    .map_err(|_| "--seed: not an integer".to_string())?
             }
             "--offset" => {
                 let v = val()?;
