@@ -196,3 +196,66 @@ fn random_messy_3d_maps_give_valid_meshes_or_clean_errors() {
     eprintln!("3D stress: {ok} valid meshes, {errors} clean errors");
     assert!(ok > 0);
 }
+
+/// The shared real maps (`../shared/data`, skipped with a notice when
+/// absent), with random noise of growing amplitude carried through their
+/// transitions: `DUALEX_STRESS_CASES / 20` cases (at least 6).
+#[test]
+fn random_noise_on_real_maps_gives_valid_meshes_or_clean_errors() {
+    let Some(root) = std::env::var_os("CARGO_MANIFEST_DIR")
+        .map(|d| std::path::PathBuf::from(d).join("../../../shared/data"))
+        .filter(|p| p.is_dir())
+    else {
+        eprintln!("NOTICE: ../shared/data is absent: skipping the real-map stress");
+        return;
+    };
+    let files = [
+        "qex/fandisk_param.obj",
+        "qex/duck_miq_8_param.obj",
+        "directional/spherer-param.obj",
+        "directional/decimated-knight-param.obj",
+        "directional/lilium-param.obj",
+    ];
+    let maps: Vec<_> = files
+        .iter()
+        .map(|f| {
+            let m = dualex_io::read_tri_map(&root.join(f)).expect("shared map");
+            (f, dualex_map::weld::weld(&m).0)
+        })
+        .collect();
+    let (first, n) = cases();
+    let n = (n / 20).max(6);
+    let mut ok = 0;
+    for seed in first..first + n {
+        let mut rng = Rng(seed ^ 0x5EED);
+        let (name, base) = &maps[rng.below(maps.len())];
+        let mut map = base.clone();
+        let amp = 0.6 * rng.unit();
+        let case = format!("seed {seed}: {name}, noise {amp:.3}");
+        if !perturb(&mut map, &mut rng, amp, false) {
+            continue;
+        }
+        let opts = dualex_quad::QuadOptions {
+            seed,
+            ..Default::default()
+        };
+        match std::panic::catch_unwind(|| dualex_quad::extract(&map, &opts)) {
+            Err(_) => panic!("{case}: panicked"),
+            Ok(Err(e)) => assert!(!e.to_string().contains('\n'), "{case}: {e}"),
+            Ok(Ok((mesh, st))) => {
+                let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+                assert!(
+                    rep.is_valid(),
+                    "{case}: invalid mesh {:?}; {}",
+                    rep.errors(),
+                    st.to_json()
+                );
+                assert_eq!(st.holes_left_open, 0, "{case}: {}", st.to_json());
+                assert_eq!(rep.components, 1, "{case}");
+                ok += 1;
+            }
+        }
+    }
+    eprintln!("real-map stress: {ok} valid meshes of {n} cases");
+    assert!(ok > 0);
+}
