@@ -201,9 +201,19 @@ impl NodeGraph<2> {
             valence2_before: v.count(2),
             ..Default::default()
         };
+        let mut changed = false;
         for target in [1, 2] {
+            // nothing to merge: skip the (whole-graph) vertex rebuilds
+            let count = if changed {
+                Vertices::new(self).count(target)
+            } else {
+                v.count(target)
+            };
+            if count == 0 {
+                continue;
+            }
             let mut given_up: Vec<(Node, usize)> = Vec::new();
-            let bound = 2 * Vertices::new(self).count(target) + 1;
+            let bound = 2 * count + 1;
             for _ in 0..bound {
                 let v = Vertices::new(self);
                 let skip: Vec<u32> = given_up
@@ -217,15 +227,22 @@ impl NodeGraph<2> {
                 let Some((len, p)) = best else { break };
                 if self.move_along(v.first[p], len - 1, max_path, target, &mut st) {
                     st.merged += 1;
+                    changed = true;
                 } else {
                     given_up.push(v.first[p]);
                     st.abandoned += 1;
                 }
             }
         }
-        let v = Vertices::new(self);
-        st.valence1_after = v.count(1);
-        st.valence2_after = v.count(2);
+        if changed {
+            let v = Vertices::new(self);
+            st.valence1_after = v.count(1);
+            st.valence2_after = v.count(2);
+        } else {
+            // failed paths are undone exactly: the graph is as before
+            st.valence1_after = st.valence1_before;
+            st.valence2_after = st.valence2_before;
+        }
         st
     }
 
