@@ -40,8 +40,12 @@ impl<const D: usize> Clusters<D> {
                 }
             }
         }
+        // only vertices on a collapsed edge can be in a non-trivial cluster
+        let mut on_edge: Vec<u32> = edges.iter().flat_map(|&(a, b, _)| [a, b]).collect();
+        on_edge.sort_unstable();
+        on_edge.dedup();
         let mut members: HashMap<u32, Vec<u32>> = HashMap::new();
-        for v in 0..nv as u32 {
+        for v in on_edge {
             let r = find(&mut parent, v);
             members.entry(r).or_default().push(v);
         }
