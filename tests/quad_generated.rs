@@ -142,7 +142,11 @@ fn output_is_deterministic() {
     // the same input and seed give byte-identical meshes and the same counts
     let dir = Scratch::new("determinism");
     let m = dir.arg("m.obj");
-    assert!(dualex(&["generate", "square_noise", "-o", &m, "--seed", "7"]).status.success());
+    assert!(
+        dualex(&["generate", "square_noise", "-o", &m, "--seed", "7"])
+            .status
+            .success()
+    );
     let mut outputs = Vec::new();
     for run in 0..2 {
         let q = dir.arg(&format!("q{run}.ply"));

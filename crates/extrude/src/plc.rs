@@ -77,13 +77,18 @@ pub fn poly_text(slab: &Slab) -> String {
     s
 }
 
-/// Mean of a prism's 6 points.
+/// A point strictly inside the prism's region: the centroid of the first
+/// tet of its split (the split's tets fill exactly the region bounded by
+/// the prism's facets). The mean of the 6 corners is not safe: on a thin,
+/// bent slab it can fall into a neighbouring prism, whose tets would then
+/// take this prism's chart.
 fn centroid(slab: &Slab, prism: usize) -> [f64; 3] {
+    let tet = crate::split::prism_tets(slab, prism)[0];
     let mut c = [0.0; 3];
-    for v in slab.prism_points(prism) {
+    for v in tet {
         let p = slab.points[v as usize];
         for k in 0..3 {
-            c[k] += p[k] / 6.0;
+            c[k] += p[k] / 4.0;
         }
     }
     c
