@@ -365,3 +365,29 @@ fn missing_tetgen_is_a_clear_error_or_the_reported_fallback() {
         text(&r)
     );
 }
+
+/// Where the 3D path cannot make a valid hex mesh (knight: no 3D fairing or
+/// repair), `dualex hex` says so in one line and writes nothing.
+#[test]
+fn an_invalid_hex_mesh_is_refused_not_written() {
+    let Some(root) = shared_data("directional") else {
+        return;
+    };
+    let dir = Scratch::new("extrude-invalid");
+    let input = root.join("decimated-knight-param.obj");
+    let out = dualex(&[
+        "extrude",
+        input.to_str().expect("utf-8"),
+        "-o",
+        &dir.arg("k.hexex"),
+        "--fallback",
+        "-q",
+    ]);
+    assert!(out.status.success(), "{}", text(&out));
+    let out = dualex(&["hex", &dir.arg("k.hexex"), "-o", &dir.arg("k.mesh")]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(err.contains("could not make a valid hex mesh"), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(!dir.path("k.mesh").exists());
+}

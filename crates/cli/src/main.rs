@@ -96,7 +96,14 @@ fn quad(args: &Args) -> Result<(), String> {
     let progress = progress::Progress::new(map.len(), args.quiet);
     progress.stage("extracting quads");
     let (mesh, stats) =
-        dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name).to_string())?;
+        dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    if !rep.is_valid() {
+        return Err(format!(
+            "{name}: could not make a valid quad mesh ({}); nothing written — please report this input",
+            rep.errors().join("; ")
+        ));
+    }
     progress.stage("writing");
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
     drop(progress);
@@ -144,7 +151,16 @@ fn hex(args: &Args) -> Result<(), String> {
     let progress = progress::Progress::new(map.len(), args.quiet);
     progress.stage("extracting hexs");
     let (mesh, stats) =
-        dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name).to_string())?;
+        dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    // combinatorial validity (hexes of a messy map may be geometrically
+    // inverted: vertices sit on noisy preimages)
+    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    if !rep.is_valid() {
+        return Err(format!(
+            "{name}: could not make a valid hex mesh ({}); nothing written",
+            rep.errors().join("; ")
+        ));
+    }
     progress.stage("writing");
     dualex_io::write_hex_mesh(out, &mesh).map_err(|e| e.to_string())?;
     drop(progress);
