@@ -156,3 +156,12 @@ fn output_is_deterministic() {
     }
     assert_eq!(outputs[0], outputs[1]);
 }
+
+#[test]
+fn fairing_can_be_turned_off() {
+    let (rep, st) = run_one("disk_m2_reverted", 1, &["--no-fairing"]);
+    assert!(st["fairing"].is_null(), "{st}");
+    assert_eq!(rep.faces, 180);
+    let (_, st) = run_one("disk_m2_reverted", 1, &[]);
+    assert!(st["fairing"].is_object(), "{st}");
+}
