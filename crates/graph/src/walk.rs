@@ -46,6 +46,23 @@ pub struct TraceReport {
     pub max_steps: usize,
 }
 
+impl TraceReport {
+    /// The `trace` object of the stats: walk outcomes, then what linking
+    /// found and the pairs breaking the label rule.
+    pub fn to_json(&self, links: &LinkReport, label_violations: usize) -> serde_json::Value {
+        serde_json::json!({
+            "to_node": self.to_node,
+            "to_boundary": self.to_boundary,
+            "inconsistent": self.inconsistent,
+            "loops": self.loops,
+            "max_steps": self.max_steps,
+            "non_mutual": links.non_mutual,
+            "rotation_mismatches": links.rotation_mismatches,
+            "label_violations": label_violations,
+        })
+    }
+}
+
 /// Walks every side of `n_nodes` nodes with `walk(node, dir) -> (end,
 /// steps)` and counts the outcomes; the ends are in side order.
 pub fn walk_all<const D: usize>(

@@ -31,29 +31,7 @@ pub const AMPLITUDE: f64 = 1e-5;
 /// Perturbation rounds before giving up on a vertex.
 const ROUNDS: usize = 40;
 
-/// What sanitization did.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct SanitizeReport {
-    /// Vertices whose corners were snapped to one GP value.
-    pub snapped_vertices: usize,
-    /// Largest distance a snap moved a corner.
-    pub max_snap: f64,
-    /// Distinct vertices perturbed.
-    pub perturbed_vertices: usize,
-    /// Collapsed clusters (more than one vertex) found.
-    pub clusters: usize,
-    /// Cluster moves refused (the cluster holds a singular vertex or its
-    /// rotations disagree).
-    pub stuck_clusters: usize,
-    /// Rounds used.
-    pub rounds: usize,
-    /// Singular vertices moved along their singular edge's axis.
-    pub singular_moved: usize,
-    /// Singular vertices left bad (cannot be perturbed).
-    pub singular_on_iso: Vec<u32>,
-    /// Non-singular vertices still bad after all rounds (0 expected).
-    pub unresolved: usize,
-}
+pub use dualex_map::sanitize_report::SanitizeReport;
 
 /// Sanitizes `local` in place.
 pub fn sanitize(

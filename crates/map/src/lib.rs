@@ -29,6 +29,7 @@ pub mod report;
 pub mod rng;
 #[allow(clippy::needless_range_loop)]
 pub mod rotation;
+pub mod sanitize_report;
 pub mod singularity;
 pub mod star;
 mod star_build;

@@ -98,8 +98,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
     st.trace = trep;
     let mut graph = NodeGraph::<2>::new(nodes.reverted.clone());
-    let links = graph.link_mutual(&ends);
-    (st.non_mutual, st.rotation_mismatches) = (links.non_mutual, links.rotation_mismatches);
+    st.links = graph.link_mutual(&ends);
     st.label_violations = graph.label_violations();
     lap(&mut st, "trace");
     // 5

@@ -3,8 +3,9 @@
 
 use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
+use dualex_map::sanitize_report::{histogram_json, times_json};
 use dualex_map::QuadMesh;
-use serde_json::{json, Map, Value};
+use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
 /// Everything measured by one extraction.
@@ -32,10 +33,8 @@ pub struct QuadStats {
     pub reverted_nodes: usize,
     /// Walk outcomes.
     pub trace: TraceReport,
-    /// Walks whose target did not walk back to them.
-    pub non_mutual: usize,
-    /// Mutual pairs whose rotations disagree (0 expected).
-    pub rotation_mismatches: usize,
+    /// What linking the walks found (non-mutual walks, rotation mismatches).
+    pub links: dualex_graph::walk::LinkReport,
     /// Pairs breaking the pleat label rule after tracing (0 expected).
     pub label_violations: usize,
     /// Untangling counts.
@@ -92,27 +91,22 @@ impl QuadStats {
     pub fn finish_mesh(&mut self, mesh: &QuadMesh) {
         self.quads = mesh.cells.len();
         self.vertices = mesh.positions.len();
-        let (vi, vb, e) = valences(mesh);
-        self.valence_interior = vi;
-        self.valence_boundary = vb;
-        self.euler = mesh.positions.len() as i64 - e as i64 + mesh.cells.len() as i64;
+        // the counts of the validity checker (one piece of code for both)
+        let c = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+        let hist = |h: &BTreeMap<u32, usize>| h.iter().map(|(&k, &v)| (k as usize, v)).collect();
+        self.valence_interior = hist(&c.interior_valence);
+        self.valence_boundary = hist(&c.boundary_valence);
+        self.euler = c.euler;
     }
 
     /// The stats as one JSON object.
     pub fn to_json(&self) -> Value {
-        let hist = |h: &BTreeMap<usize, usize>| {
-            Value::Object(
-                h.iter()
-                    .map(|(k, v)| (k.to_string(), json!(v)))
-                    .collect::<Map<_, _>>(),
-            )
-        };
-        let times: Map<String, Value> = self
-            .time_ms
-            .iter()
-            .map(|(k, v)| (k.clone(), json!(v)))
-            .collect();
-        let s = &self.sanitize;
+        let mut sanitize = self.sanitize.to_json();
+        sanitize.insert("split_edges".into(), json!(self.split_edges));
+        sanitize.insert(
+            "singular_on_iso_kinds".into(),
+            json!(self.sanitize.singular_kinds),
+        );
         json!({
             "input": {
                 "triangles": self.input_triangles,
@@ -122,30 +116,10 @@ impl QuadStats {
                 "singular_vertices": self.singular_vertices,
                 "singularities": self.singularities,
             },
-            "sanitize": {
-                "split_edges": self.split_edges,
-                "snapped_vertices": s.snapped_vertices,
-                "max_snap": s.max_snap,
-                "perturbed_vertices": s.perturbed_vertices,
-                "clusters": s.clusters,
-                "stuck_clusters": s.stuck_clusters,
-                "rounds": s.rounds,
-                "singular_on_iso": s.singular_on_iso.len(),
-                "singular_on_iso_kinds": s.singular_kinds,
-                "unresolved": s.unresolved,
-            },
+            "sanitize": sanitize,
             "nodes": self.nodes,
             "reverted_nodes": self.reverted_nodes,
-            "trace": {
-                "to_node": self.trace.to_node,
-                "to_boundary": self.trace.to_boundary,
-                "inconsistent": self.trace.inconsistent,
-                "loops": self.trace.loops,
-                "max_steps": self.trace.max_steps,
-                "non_mutual": self.non_mutual,
-                "rotation_mismatches": self.rotation_mismatches,
-                "label_violations": self.label_violations,
-            },
+            "trace": self.trace.to_json(&self.links, self.label_violations),
             "untangle": self.untangle.as_ref().map(|u| u.to_json()),
             "fairing": self.fairing,
             "folded_corners_collapsed": self.folded_corners_collapsed,
@@ -164,39 +138,11 @@ impl QuadStats {
                 "boundary_loops": self.boundary_loops,
                 "components": self.components,
                 "euler": self.euler,
-                "valence_interior": hist(&self.valence_interior),
-                "valence_boundary": hist(&self.valence_boundary),
+                "valence_interior": histogram_json(&self.valence_interior),
+                "valence_boundary": histogram_json(&self.valence_boundary),
                 "holes": self.holes_left_open,
             },
-            "time_ms": times,
+            "time_ms": times_json(&self.time_ms),
         })
     }
-}
-
-/// Interior and boundary valence histograms and the edge count.
-pub fn valences(mesh: &QuadMesh) -> (BTreeMap<usize, usize>, BTreeMap<usize, usize>, usize) {
-    let mut edges: std::collections::HashMap<(u32, u32), usize> = Default::default();
-    for q in &mesh.cells {
-        for k in 0..4 {
-            let (a, b) = (q[k], q[(k + 1) % 4]);
-            *edges.entry((a.min(b), a.max(b))).or_default() += 1;
-        }
-    }
-    let n = mesh.positions.len();
-    let mut deg = vec![0usize; n];
-    let mut on_boundary = vec![false; n];
-    for (&(a, b), &c) in &edges {
-        deg[a as usize] += 1;
-        deg[b as usize] += 1;
-        if c == 1 {
-            on_boundary[a as usize] = true;
-            on_boundary[b as usize] = true;
-        }
-    }
-    let (mut vi, mut vb) = (BTreeMap::new(), BTreeMap::new());
-    for v in 0..n {
-        let h = if on_boundary[v] { &mut vb } else { &mut vi };
-        *h.entry(deg[v]).or_insert(0) += 1;
-    }
-    (vi, vb, edges.len())
 }

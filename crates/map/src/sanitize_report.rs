@@ -1,0 +1,62 @@
+//! What sanitization did, in both dimensions (the report of `quad` and
+//! `hex`'s step 2), and its `sanitize` object in the stats JSON.
+
+use serde_json::{json, Map, Value};
+use std::collections::BTreeMap;
+
+/// What sanitization did.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SanitizeReport {
+    /// Vertices whose corners were snapped to one GP value.
+    pub snapped_vertices: usize,
+    /// Largest distance a snap moved a corner.
+    pub max_snap: f64,
+    /// Distinct vertices perturbed.
+    pub perturbed_vertices: usize,
+    /// Collapsed clusters (more than one vertex) found.
+    pub clusters: usize,
+    /// Cluster moves refused (the cluster holds a singular vertex or its
+    /// rotations disagree).
+    pub stuck_clusters: usize,
+    /// Rounds used.
+    pub rounds: usize,
+    /// 3D: singular vertices moved along their singular edge's axis.
+    pub singular_moved: usize,
+    /// 2D: singular vertices left on an iso, by kind (`"90_node"`,
+    /// `"180_iso"`, `"90_edge"`: only an edge through a grid point, …).
+    pub singular_kinds: BTreeMap<String, usize>,
+    /// Singular vertices left on an iso (cannot be perturbed).
+    pub singular_on_iso: Vec<u32>,
+    /// Non-singular vertices still on an iso after all rounds (0 expected).
+    pub unresolved: usize,
+}
+
+impl SanitizeReport {
+    /// The counts both dimensions report; each adds its own keys.
+    pub fn to_json(&self) -> Map<String, Value> {
+        let v = json!({
+            "snapped_vertices": self.snapped_vertices,
+            "max_snap": self.max_snap,
+            "perturbed_vertices": self.perturbed_vertices,
+            "clusters": self.clusters,
+            "stuck_clusters": self.stuck_clusters,
+            "rounds": self.rounds,
+            "singular_on_iso": self.singular_on_iso.len(),
+            "unresolved": self.unresolved,
+        });
+        match v {
+            Value::Object(m) => m,
+            _ => Map::new(),
+        }
+    }
+}
+
+/// A histogram (value → count) as a JSON object keyed by the value.
+pub fn histogram_json(h: &BTreeMap<usize, usize>) -> Value {
+    Value::Object(h.iter().map(|(k, v)| (k.to_string(), json!(v))).collect())
+}
+
+/// Stage timings (name, milliseconds) as a JSON object.
+pub fn times_json(times: &[(String, f64)]) -> Value {
+    Value::Object(times.iter().map(|(k, v)| (k.clone(), json!(v))).collect())
+}
