@@ -23,6 +23,7 @@ use std::path::Path;
 use std::process::{Command, ExitCode};
 
 const USAGE: &str = "usage: dualex-bench [--long] [--json] [--repeat N] [CASE...]\n\
+       dualex-bench --write CASE PATH   (write the case's input map to a file)\n\
   --repeat N: run each case N times (default 3), keep the fastest run\n\
   CASE: KIND:SIZE (square, square_noise, torus, torus_fold: grid resolution;\n\
   block, block_noise: cells per side) or file:PATH (.obj / .hexex)";
@@ -32,6 +33,11 @@ fn main() -> ExitCode {
     if let [flag, case] = &argv[..] {
         if flag == "--child" {
             return child(case);
+        }
+    }
+    if let [flag, case, path] = &argv[..] {
+        if flag == "--write" {
+            return write(case, Path::new(path));
         }
     }
     let (mut long, mut json, mut named, mut repeat) = (false, false, Vec::new(), 3);
@@ -64,6 +70,26 @@ fn main() -> ExitCode {
         named
     };
     parent(&list, json, repeat)
+}
+
+/// Writes the input map of case `case` to `path` (`.obj`/`.ply` for a
+/// triangle map, `.hexex` for a tet map), for timing the CLI as a process
+/// (`tools/bench-cli`).
+fn write(case: &str, path: &Path) -> ExitCode {
+    let done = cases::build(case).and_then(|input| {
+        match input {
+            cases::Input::Tri(map) => dualex_io::write_tri_map(path, &map),
+            cases::Input::Tet(map) => dualex_io::write_tet_map(path, &map),
+        }
+        .map_err(|e| e.to_string())
+    });
+    match done {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("dualex-bench: {e}");
+            ExitCode::from(1)
+        }
+    }
 }
 
 /// Runs one case in this process and prints its record as one JSON line.

@@ -30,6 +30,8 @@ options:
                         5 red, other green); inspect: the map in the plane, reverted
                         triangles purple, singularities marked
   --seed N              seed of the sanitization perturbations (default 1)
+  -j, --threads N       worker threads (default: all cores); the output is
+                        byte-identical whatever N
   -v, --verbose         per-stage counts and timings on stderr
   -q, --quiet           print nothing but errors
   -h, --help            this text";
@@ -67,6 +69,8 @@ pub struct Args {
     pub quality: bool,
     /// `--fallback` (extrude).
     pub fallback: bool,
+    /// `-j` / `--threads` (None: all cores).
+    pub threads: Option<usize>,
     /// `-v`.
     pub verbose: bool,
     /// `-q`.
@@ -121,6 +125,15 @@ pub fn parse(argv: &[String]) -> Result<Args, String> {
                 a.thickness = Some(
                     v.parse()
                         .map_err(|_| format!("--thickness: not a number: {v}"))?,
+                );
+            }
+            "-j" | "--threads" => {
+                let v = value(x)?;
+                a.threads = Some(
+                    v.parse()
+                        .ok()
+                        .filter(|&n: &usize| n > 0)
+                        .ok_or_else(|| format!("{x}: not a positive count: {v}"))?,
                 );
             }
             "--quality" => a.quality = true,

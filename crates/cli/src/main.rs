@@ -4,6 +4,7 @@
 
 mod args;
 mod progress;
+mod timing;
 
 use args::{Args, USAGE};
 use std::path::Path;
@@ -26,6 +27,15 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if let Some(n) = args.threads {
+        if let Err(e) = rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build_global()
+        {
+            eprintln!("dualex: --threads {n}: {e}");
+            return ExitCode::from(1);
+        }
+    }
     let result = match args.command.as_str() {
         "help" => {
             println!("{USAGE}");
@@ -51,9 +61,16 @@ fn main() -> ExitCode {
     }
 }
 
-fn read_2d(path: &Path, args: &Args) -> Result<dualex_map::TriMap, String> {
+fn read_2d(
+    path: &Path,
+    args: &Args,
+    laps: &mut timing::Laps,
+) -> Result<dualex_map::TriMap, String> {
     let map = dualex_io::read_tri_map(path).map_err(|e| e.to_string())?;
-    weld_if(map, args, &path.display().to_string())
+    laps.lap("read");
+    let map = weld_if(map, args, &path.display().to_string())?;
+    laps.lap("weld");
+    Ok(map)
 }
 
 fn weld_if(map: dualex_map::TriMap, args: &Args, name: &str) -> Result<dualex_map::TriMap, String> {
@@ -72,8 +89,9 @@ fn weld_if(map: dualex_map::TriMap, args: &Args, name: &str) -> Result<dualex_ma
 
 fn quad(args: &Args) -> Result<(), String> {
     let out = args.output.as_ref().ok_or("quad: missing -o OUTPUT")?;
+    let mut laps = timing::Laps::start();
     let (map, name) = match &args.input {
-        Some(p) => (read_2d(p, args)?, p.display().to_string()),
+        Some(p) => (read_2d(p, args, &mut laps)?, p.display().to_string()),
         None => {
             if !args.quiet {
                 eprintln!("dualex: no INPUT given: running on the embedded map (a folded, noisy cube surface)");
@@ -97,7 +115,9 @@ fn quad(args: &Args) -> Result<(), String> {
     progress.stage("extracting quads");
     let (mesh, stats) =
         dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    laps.lap("extract");
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    laps.lap("check");
     if !rep.is_valid() {
         return Err(format!(
             "{name}: could not make a valid quad mesh ({}); nothing written — please report this input",
@@ -106,7 +126,11 @@ fn quad(args: &Args) -> Result<(), String> {
     }
     progress.stage("writing");
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
+    laps.lap("write");
     drop(progress);
+    if args.verbose {
+        eprintln!("{}", laps.line());
+    }
     write_stats(args, &stats.to_json())?;
     if let Some(png) = &args.png {
         dualex_render::quad_png(&mesh, png, PNG_SIZE)
@@ -140,7 +164,9 @@ fn hex(args: &Args) -> Result<(), String> {
     let input = args.input.as_ref().ok_or("hex: missing INPUT (.hexex)")?;
     let out = args.output.as_ref().ok_or("hex: missing -o OUTPUT")?;
     let name = input.display().to_string();
+    let mut laps = timing::Laps::start();
     let map = dualex_io::read_tet_map(input).map_err(|e| e.to_string())?;
+    laps.lap("read");
     let opts = dualex_hex::HexOptions {
         transitions: dualex_map::TransitionOptions {
             round: args.round,
@@ -152,9 +178,11 @@ fn hex(args: &Args) -> Result<(), String> {
     progress.stage("extracting hexs");
     let (mesh, stats) =
         dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    laps.lap("extract");
     // combinatorial validity (hexes of a messy map may be geometrically
     // inverted: vertices sit on noisy preimages)
     let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    laps.lap("check");
     if !rep.is_valid() {
         return Err(format!(
             "{name}: could not make a valid hex mesh ({}); nothing written",
@@ -163,7 +191,11 @@ fn hex(args: &Args) -> Result<(), String> {
     }
     progress.stage("writing");
     dualex_io::write_hex_mesh(out, &mesh).map_err(|e| e.to_string())?;
+    laps.lap("write");
     drop(progress);
+    if args.verbose {
+        eprintln!("{}", laps.line());
+    }
     let json = stats.to_json();
     write_stats(args, &json)?;
     if !args.quiet {
@@ -308,7 +340,7 @@ fn extrude(args: &Args) -> Result<(), String> {
         .as_ref()
         .ok_or("extrude: missing -o OUT.hexex")?;
     let name = input.display().to_string();
-    let map = read_2d(input, args)?;
+    let map = read_2d(input, args, &mut timing::Laps::start())?;
     let opts = dualex_extrude::ExtrudeOptions {
         layers: args.layers.unwrap_or(1),
         thickness: args.thickness,

@@ -26,6 +26,7 @@ pub mod glue;
 pub mod graph;
 pub mod ids;
 pub mod ops;
+pub mod place;
 use dualex_map::rng;
 pub mod testgrid;
 mod uf;

@@ -67,22 +67,27 @@ impl TraceReport {
 /// steps)` and counts the outcomes; the ends are in side order.
 pub fn walk_all<const D: usize>(
     n_nodes: usize,
-    mut walk: impl FnMut(usize, usize) -> (End<D>, usize),
+    walk: impl Fn(usize, usize) -> (End<D>, usize) + Sync,
 ) -> (Vec<End<D>>, TraceReport) {
+    use rayon::prelude::*;
+    // walks are independent: in parallel, collected in (node, direction)
+    // order, so the result does not depend on the thread count
+    let walked: Vec<(End<D>, usize)> = (0..n_nodes * 2 * D)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|i| walk(i / (2 * D), i % (2 * D)))
+        .collect();
     let mut rep = TraceReport::default();
-    let mut ends = Vec::with_capacity(2 * D * n_nodes);
-    for n in 0..n_nodes {
-        for d in 0..2 * D {
-            let (end, steps) = walk(n, d);
-            rep.max_steps = rep.max_steps.max(steps);
-            match end {
-                End::Node { .. } => rep.to_node += 1,
-                End::Boundary => rep.to_boundary += 1,
-                End::Inconsistent => rep.inconsistent += 1,
-                End::Loop => rep.loops += 1,
-            }
-            ends.push(end);
+    let mut ends = Vec::with_capacity(walked.len());
+    for (end, steps) in walked {
+        rep.max_steps = rep.max_steps.max(steps);
+        match end {
+            End::Node { .. } => rep.to_node += 1,
+            End::Boundary => rep.to_boundary += 1,
+            End::Inconsistent => rep.inconsistent += 1,
+            End::Loop => rep.loops += 1,
         }
+        ends.push(end);
     }
     (ends, rep)
 }

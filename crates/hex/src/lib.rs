@@ -110,23 +110,13 @@ fn place_vertices(
     nodes: &nodes::Nodes,
     glued: &dualex_graph::Glued<3>,
 ) -> HexMesh {
-    let mut best: Vec<Option<geometry::Candidate>> = vec![None; glued.n_vertices];
-    for (node, _) in glued.cells() {
-        for code in 0..8 {
-            let v = glued.vertex(node, code) as usize;
-            let Some(slot) = best.get_mut(v) else {
-                panic!("bug: corner {code} of node {} has no vertex", node.idx())
-            };
-            if slot.is_some_and(|b| b.dist == 0.0) {
-                continue;
-            }
+    let best = glued.best_per_vertex(
+        |node, code| {
             let sgn = [0, 1, 2].map(|a| if code >> a & 1 == 1 { 1.0 } else { -1.0 });
-            let c = geometry::diagonal(map, local, topo, nodes, node.idx(), sgn);
-            if slot.is_none_or(|b| c.dist < b.dist) {
-                *slot = Some(c);
-            }
-        }
-    }
+            geometry::diagonal(map, local, topo, nodes, node.idx(), sgn)
+        },
+        |c| c.dist,
+    );
     HexMesh {
         positions: best.iter().map(|b| b.map_or([0.0; 3], |c| c.pos)).collect(),
         cells: glued.cells().map(|(_, h)| h).collect(),

@@ -25,43 +25,54 @@ pub struct Nodes {
     pub tet_offsets: Vec<u32>,
 }
 
-impl Nodes {
-    /// Finds the nodes of every tet.
-    pub fn find(local: &LocalMap) -> Self {
-        let mut n = Nodes::default();
-        n.tet_offsets.push(0);
-        for (s, p) in local.coords.iter().enumerate() {
-            let d = det(p);
-            if d != 0.0 && d.is_finite() {
-                n.in_tet(s, p, d);
-            }
-            n.tet_offsets.push(n.tet.len() as u32);
-        }
-        n
-    }
+/// One node: tet, integer point, barycentric coordinates, reverted.
+type Found = (u32, [i64; 3], [f64; 4], bool);
 
-    fn in_tet(&mut self, s: usize, p: &[[f64; 3]; 4], d: f64) {
-        let lo = |k: usize| p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min).ceil() as i64;
-        let hi = |k: usize| {
-            p.iter()
-                .map(|c| c[k])
-                .fold(f64::NEG_INFINITY, f64::max)
-                .floor() as i64
-        };
-        for i in lo(0)..=hi(0) {
-            for j in lo(1)..=hi(1) {
-                for k in lo(2)..=hi(2) {
-                    let q = [i as f64, j as f64, k as f64];
-                    let w = bary_weights(p, &q);
-                    if w.iter().all(|&x| x * d > 0.0) {
-                        self.tet.push(s as u32);
-                        self.ijk.push([i, j, k]);
-                        self.bary.push(w.map(|x| x / d));
-                        self.reverted.push(d < 0.0);
-                    }
+/// Pushes the integer points strictly inside tet `s` (image `p`, signed
+/// volume `d`) onto `out`, in (i, j, k) order.
+fn in_tet(s: usize, p: &[[f64; 3]; 4], d: f64, out: &mut Vec<Found>) {
+    let lo = |k: usize| p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min).ceil() as i64;
+    let hi = |k: usize| {
+        p.iter()
+            .map(|c| c[k])
+            .fold(f64::NEG_INFINITY, f64::max)
+            .floor() as i64
+    };
+    for i in lo(0)..=hi(0) {
+        for j in lo(1)..=hi(1) {
+            for k in lo(2)..=hi(2) {
+                let q = [i as f64, j as f64, k as f64];
+                let w = bary_weights(p, &q);
+                if w.iter().all(|&x| x * d > 0.0) {
+                    out.push((s as u32, [i, j, k], w.map(|x| x / d), d < 0.0));
                 }
             }
         }
+    }
+}
+
+impl Nodes {
+    /// Finds the nodes of every tet (in parallel over chunks of tets,
+    /// joined in tet order).
+    pub fn find(local: &LocalMap) -> Self {
+        let (items, tet_offsets) = dualex_map::par::csr(local.coords.len(), 2048, |s, out| {
+            let p = &local.coords[s];
+            let d = det(p);
+            if d != 0.0 && d.is_finite() {
+                in_tet(s, p, d, out);
+            }
+        });
+        let mut n = Nodes {
+            tet_offsets,
+            ..Default::default()
+        };
+        for (s, ijk, bary, reverted) in items {
+            n.tet.push(s);
+            n.ijk.push(ijk);
+            n.bary.push(bary);
+            n.reverted.push(reverted);
+        }
+        n
     }
 
     /// Number of nodes.

@@ -17,6 +17,15 @@ use dualex_map::{InputError, TetMap};
 
 /// Parses a `.hexex` tet map (see the module docs).
 pub fn parse_hexex(bytes: &[u8]) -> Result<TetMap, InputError> {
+    if let Some(map) = crate::fast::hexex(bytes) {
+        return Ok(map);
+    }
+    parse_hexex_sequential(bytes)
+}
+
+/// The sequential reader: the reference of [`crate::fast::hexex`], and the
+/// one that reports errors.
+pub(crate) fn parse_hexex_sequential(bytes: &[u8]) -> Result<TetMap, InputError> {
     let text = as_text(bytes, "hexex")?;
     let mut t = Tokens::new(text, 1);
     let nv = read_count(&mut t, ["vertex", "vertices"], 3)?;

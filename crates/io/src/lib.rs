@@ -23,6 +23,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod fast;
 mod hexex;
 mod medit;
 mod obj;
@@ -37,6 +38,8 @@ pub mod write_map;
 
 #[cfg(test)]
 mod data_tests;
+#[cfg(test)]
+mod fast_tests;
 #[cfg(test)]
 mod fuzz_tests;
 #[cfg(test)]

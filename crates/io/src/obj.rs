@@ -23,6 +23,15 @@ struct RawTri {
 
 /// Parses a text OBJ triangle map (see the module docs).
 pub fn parse_obj(bytes: &[u8]) -> Result<TriMap, InputError> {
+    if let Some(map) = crate::fast::obj(bytes) {
+        return Ok(map);
+    }
+    parse_obj_sequential(bytes)
+}
+
+/// The sequential OBJ reader: the reference of [`crate::fast::obj`], and
+/// the one that reports errors.
+pub(crate) fn parse_obj_sequential(bytes: &[u8]) -> Result<TriMap, InputError> {
     let text = as_text(bytes, "OBJ")?;
     let mut positions = Vec::new();
     let mut uvs: Vec<[f64; 2]> = Vec::new();

@@ -1,8 +1,11 @@
 //! Triangle-map and tet-map output, to any `Write` (exact round trip with
 //! the readers of this crate).
 //!
-//! - tri map, OBJ: `v` per vertex, one `vt` per triangle corner (corner `c`
-//!   of triangle `s` is `vt` number `3s + c + 1`), `f v/vt v/vt v/vt`;
+//! - tri map, OBJ: `v` per vertex, one `vt` per distinct (vertex, map
+//!   coordinates) pair — corners of one vertex with bit-identical
+//!   coordinates share their `vt`, as seamless-map writers do, so a map
+//!   without seams has about one `vt` per vertex — numbered in order of
+//!   first use, then `f v/vt v/vt v/vt`;
 //! - tri map, PLY: double `x y z`, per face `vertex_indices` (uchar/int)
 //!   and a `texcoord` list of 6 doubles, in the [`PlyFormat`] asked;
 //! - tet map, `.hexex`: `n_v`, `x y z` lines, `n_t`, one line per tet with
@@ -17,7 +20,8 @@ use crate::PlyFormat;
 use dualex_map::{TetMap, TriMap};
 use std::io::{self, Write};
 
-/// OBJ with one `vt` per corner (see the module docs).
+/// OBJ with one `vt` per distinct (vertex, coordinates) (see the module
+/// docs).
 pub fn tri_map_obj(w: &mut impl Write, map: &TriMap) -> io::Result<()> {
     writeln!(
         w,
@@ -28,17 +32,39 @@ pub fn tri_map_obj(w: &mut impl Write, map: &TriMap) -> io::Result<()> {
     for p in &map.positions {
         writeln!(w, "v {:?} {:?} {:?}", p[0], p[1], p[2])?;
     }
-    for corners in &map.coords {
-        for uv in corners {
-            writeln!(w, "vt {:?} {:?}", uv[0], uv[1])?;
-        }
+    let (uvs, corner_vt) = shared_uvs(map);
+    for uv in &uvs {
+        writeln!(w, "vt {:?} {:?}", uv[0], uv[1])?;
     }
-    for (s, t) in map.simplices.iter().enumerate() {
-        let vt = 3 * s as u64 + 1;
+    for (t, vt) in map.simplices.iter().zip(&corner_vt) {
         let [a, b, c] = t.map(|v| u64::from(v) + 1);
-        writeln!(w, "f {a}/{vt} {b}/{} {c}/{}", vt + 1, vt + 2)?;
+        let [ta, tb, tc] = vt.map(|i| u64::from(i) + 1);
+        writeln!(w, "f {a}/{ta} {b}/{tb} {c}/{tc}")?;
     }
     Ok(())
+}
+
+/// The distinct (vertex, coordinate bits) pairs of `map`'s corners in order
+/// of first use, and each corner's index among them.
+fn shared_uvs(map: &TriMap) -> (Vec<[f64; 2]>, Vec<[u32; 3]>) {
+    let mut index: std::collections::HashMap<(u32, [u64; 2]), u32> =
+        std::collections::HashMap::with_capacity(map.positions.len());
+    let mut uvs = Vec::with_capacity(map.positions.len());
+    let corner_vt = map
+        .simplices
+        .iter()
+        .zip(&map.coords)
+        .map(|(t, c)| {
+            std::array::from_fn(|k| {
+                let key = (t[k], c[k].map(f64::to_bits));
+                *index.entry(key).or_insert_with(|| {
+                    uvs.push(c[k]);
+                    (uvs.len() - 1) as u32
+                })
+            })
+        })
+        .collect();
+    (uvs, corner_vt)
 }
 
 /// PLY with a per-face `texcoord` list, in `format`.

@@ -24,6 +24,7 @@ pub mod grid;
 pub mod holonomy;
 pub mod local;
 pub mod mesh;
+pub mod par;
 pub mod report;
 // rotation.rs is owned elsewhere; its index loops read clearer than iterators
 pub mod rng;

@@ -12,7 +12,7 @@
 //! simplices keep their order and their per-corner coordinates.
 
 use crate::components::UnionFind;
-use crate::topology_build::sorted_facets;
+use crate::topology_build::{sorted_facets, vertex_corners};
 use crate::SimplexMap;
 
 /// What [`weld`] did.
@@ -34,21 +34,7 @@ pub fn weld<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> (SimplexMap<N, D>, WeldReport) {
     let nv = map.positions.len();
-    let mut boundary = vec![false; nv];
-    let keys = sorted_facets(&map.simplices);
-    let mut i = 0;
-    while i < keys.len() {
-        let mut j = i + 1;
-        while j < keys.len() && keys[j].0 == keys[i].0 {
-            j += 1;
-        }
-        if j - i == 1 {
-            for &v in &keys[i].0[..N - 1] {
-                boundary[v as usize] = true;
-            }
-        }
-        i = j;
-    }
+    let boundary = boundary_vertices(&map.simplices, nv);
     let mut by_pos: Vec<([u64; 3], u32)> = (0..nv)
         .filter(|&v| boundary[v])
         .map(|v| (position_key(&map.positions[v]), v as u32))
@@ -89,6 +75,56 @@ pub fn weld<const N: usize, const D: usize>(
         .map(|s| s.map(|v| new_id[rep_of[v as usize] as usize]))
         .collect();
     (out, rep)
+}
+
+/// Whether each vertex lies on a boundary facet (a facet of no other
+/// simplex). Simplices without a repeated vertex: a facet is shared when
+/// another simplex around its smallest vertex contains all its vertices
+/// (in parallel over simplices); with a repeated vertex anywhere (not a
+/// valid map, but `weld` takes any map), by sorting all facet keys.
+fn boundary_vertices<const N: usize>(simplices: &[[u32; N]], nv: usize) -> Vec<bool> {
+    use rayon::prelude::*;
+    let mut boundary = vec![false; nv];
+    let distinct = |t: &[u32; N]| (0..N).all(|i| !t[..i].contains(&t[i]));
+    if !simplices.par_iter().all(distinct) {
+        let keys = sorted_facets(simplices);
+        for group in keys.chunk_by(|a, b| a.0 == b.0) {
+            if let [(key, _)] = group {
+                for &v in &key[..N - 1] {
+                    boundary[v as usize] = true;
+                }
+            }
+        }
+        return boundary;
+    }
+    let (offsets, corners) = vertex_corners(simplices, nv);
+    let open: Vec<[bool; N]> = simplices
+        .par_iter()
+        .enumerate()
+        .with_min_len(4096)
+        .map(|(s, simplex)| {
+            std::array::from_fn(|f| {
+                let facet: [u32; N] = std::array::from_fn(|i| simplex[(f + 1 + i) % N]);
+                let facet = &facet[..N - 1];
+                let Some(&v0) = facet.iter().min() else {
+                    return false;
+                };
+                let star =
+                    &corners[offsets[v0 as usize] as usize..offsets[v0 as usize + 1] as usize];
+                !star.iter().any(|&(t, _)| {
+                    t as usize != s && facet.iter().all(|v| simplices[t as usize].contains(v))
+                })
+            })
+        })
+        .collect();
+    for (simplex, open) in simplices.iter().zip(&open) {
+        for f in (0..N).filter(|&f| open[f]) {
+            for i in 1..N {
+                boundary[simplex[(f + i) % N] as usize] = true;
+            }
+        }
+    }
+    boundary
 }
 
 /// Splits every merge class that would put two corners of one simplex on
@@ -145,6 +181,47 @@ mod tests {
             .collect();
         m.positions.push([9.0, 9.0, 9.0]); // unused
         m
+    }
+
+    /// The sort-based reference: vertices of facet keys that occur once.
+    fn boundary_by_sort<const N: usize>(simplices: &[[u32; N]], nv: usize) -> Vec<bool> {
+        let mut b = vec![false; nv];
+        for group in sorted_facets(simplices).chunk_by(|x, y| x.0 == y.0) {
+            if group.len() == 1 {
+                for &v in &group[0].0[..N - 1] {
+                    b[v as usize] = true;
+                }
+            }
+        }
+        b
+    }
+
+    #[test]
+    fn boundary_vertices_match_the_sort() {
+        use crate::test_maps::{cone, edge_fan, grid, tet_cube};
+        let mut cut = cut_square();
+        let check = |m: &TriMap| {
+            let nv = m.positions.len();
+            assert_eq!(
+                boundary_vertices(&m.simplices, nv),
+                boundary_by_sort(&m.simplices, nv)
+            );
+        };
+        check(&cut);
+        check(&grid(5));
+        check(&cone(5));
+        // a non-manifold edge (three triangles) and a repeated vertex
+        cut.simplices.push([0, 1, 8]);
+        check(&cut);
+        cut.simplices.push([2, 2, 3]);
+        check(&cut);
+        for m in [tet_cube(3), edge_fan(5)] {
+            let nv = m.positions.len();
+            assert_eq!(
+                boundary_vertices(&m.simplices, nv),
+                boundary_by_sort(&m.simplices, nv)
+            );
+        }
     }
 
     #[test]

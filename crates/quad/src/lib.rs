@@ -263,23 +263,14 @@ fn place_vertices(
     nodes: &nodes::Nodes,
     glued: &dualex_graph::Glued<2>,
 ) -> QuadMesh {
-    let nv = glued.n_vertices;
-    let mut best: Vec<Option<geometry::Candidate>> = vec![None; nv];
-    for (node, _) in glued.cells() {
-        let n = node.idx();
-        for code in 0..4 {
-            let v = glued.vertex(node, code) as usize;
-            if best[v].is_some_and(|b| b.dist == 0.0) {
-                continue;
-            }
+    let best = glued.best_per_vertex(
+        |node, code| {
             let su = if code & 1 == 1 { 1.0 } else { -1.0 };
             let sv = if code & 2 == 2 { 1.0 } else { -1.0 };
-            let c = geometry::diagonal(map, local, topo, nodes, n, su, sv);
-            if best[v].is_none_or(|b| c.dist < b.dist) {
-                best[v] = Some(c);
-            }
-        }
-    }
+            geometry::diagonal(map, local, topo, nodes, node.idx(), su, sv)
+        },
+        |c| c.dist,
+    );
     QuadMesh {
         positions: best.iter().map(|b| b.map_or([0.0; 3], |c| c.pos)).collect(),
         cells: glued.cells().map(|(_, q)| q).collect(),

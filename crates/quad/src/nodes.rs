@@ -26,42 +26,52 @@ pub struct Nodes {
     pub tri_offsets: Vec<u32>,
 }
 
+/// One node: triangle, integer point, barycentric coordinates, reverted.
+type Found = (u32, [i64; 2], [f64; 3], bool);
+
+/// Pushes the integer points strictly inside triangle `s` (image `p`,
+/// signed double area `det`) onto `out`, in (i, j) order.
+fn in_triangle(s: usize, p: &[[f64; 2]; 3], det: f64, out: &mut Vec<Found>) {
+    let lo = |k: usize| p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
+    let hi = |k: usize| p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
+    let (i0, i1) = (lo(0).ceil() as i64, hi(0).floor() as i64);
+    let (j0, j1) = (lo(1).ceil() as i64, hi(1).floor() as i64);
+    for i in i0..=i1 {
+        for j in j0..=j1 {
+            let q = [i as f64, j as f64];
+            let w: [f64; 3] = std::array::from_fn(|c| {
+                let a = p[(c + 1) % 3];
+                let b = p[(c + 2) % 3];
+                (a[0] - q[0]) * (b[1] - q[1]) - (a[1] - q[1]) * (b[0] - q[0])
+            });
+            if w.iter().all(|&x| x * det > 0.0) {
+                out.push((s as u32, [i, j], w.map(|x| x / det), det < 0.0));
+            }
+        }
+    }
+}
+
 impl Nodes {
-    /// Finds the nodes of every triangle.
+    /// Finds the nodes of every triangle (in parallel over chunks of
+    /// triangles, joined in triangle order).
     pub fn find(local: &LocalMap) -> Self {
-        let mut n = Nodes::default();
-        n.tri_offsets.push(0);
-        for (s, p) in local.coords.iter().enumerate() {
+        let (items, tri_offsets) = dualex_map::par::csr(local.coords.len(), 4096, |s, out| {
             let det = local.det(s);
             if det != 0.0 && det.is_finite() {
-                Self::in_triangle(&mut n, s, p, det);
+                in_triangle(s, &local.coords[s], det, out);
             }
-            n.tri_offsets.push(n.tri.len() as u32);
+        });
+        let mut n = Nodes {
+            tri_offsets,
+            ..Default::default()
+        };
+        for (s, ij, bary, reverted) in items {
+            n.tri.push(s);
+            n.ij.push(ij);
+            n.bary.push(bary);
+            n.reverted.push(reverted);
         }
         n
-    }
-
-    fn in_triangle(n: &mut Nodes, s: usize, p: &[[f64; 2]; 3], det: f64) {
-        let lo = |k: usize| p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
-        let hi = |k: usize| p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
-        let (i0, i1) = (lo(0).ceil() as i64, hi(0).floor() as i64);
-        let (j0, j1) = (lo(1).ceil() as i64, hi(1).floor() as i64);
-        for i in i0..=i1 {
-            for j in j0..=j1 {
-                let q = [i as f64, j as f64];
-                let w: [f64; 3] = std::array::from_fn(|c| {
-                    let a = p[(c + 1) % 3];
-                    let b = p[(c + 2) % 3];
-                    (a[0] - q[0]) * (b[1] - q[1]) - (a[1] - q[1]) * (b[0] - q[0])
-                });
-                if w.iter().all(|&x| x * det > 0.0) {
-                    n.tri.push(s as u32);
-                    n.ij.push([i, j]);
-                    n.bary.push(w.map(|x| x / det));
-                    n.reverted.push(det < 0.0);
-                }
-            }
-        }
     }
 
     /// Number of nodes.

@@ -1,0 +1,68 @@
+//! The choice of one candidate per output vertex, shared by quad and hex
+//! vertex placement.
+//!
+//! Input: a [`Glued`] mesh and a candidate function `(node, corner code) →
+//! C` with a distance (0 = exact). Output: per vertex, the candidate with
+//! the smallest distance among the corners of that vertex, taken in cell
+//! order then corner-code order, the first one on ties; candidates after an
+//! exact one (distance 0) are not computed. Vertices are processed in
+//! parallel (rayon); each vertex's corners are visited in the same order
+//! as a sequential sweep over the cells would, so the result does not
+//! depend on the thread count.
+
+use crate::glue::Glued;
+use crate::ids::Node;
+use rayon::prelude::*;
+
+impl<const D: usize> Glued<D> {
+    /// The best candidate of every vertex (see the module docs); `None` for
+    /// a vertex no alive corner uses.
+    pub fn best_per_vertex<C: Send>(
+        &self,
+        candidate: impl Fn(Node, usize) -> C + Sync,
+        dist: impl Fn(&C) -> f64 + Sync,
+    ) -> Vec<Option<C>> {
+        let k = 1usize << D;
+        let nv = self.n_vertices;
+        // the corners of each vertex, in (cell, code) order (CSR)
+        let mut offsets = vec![0u32; nv + 1];
+        for n in &self.nodes {
+            for code in 0..k {
+                let v = self.vertex(*n, code) as usize;
+                let Some(count) = offsets.get_mut(v + 1) else {
+                    panic!("bug: corner {code} of node {} has no vertex", n.idx());
+                };
+                *count += 1;
+            }
+        }
+        for v in 0..nv {
+            offsets[v + 1] += offsets[v];
+        }
+        let mut fill: Vec<u32> = offsets[..nv].to_vec();
+        let mut corners = vec![(Node(0), 0u8); offsets[nv] as usize];
+        for n in &self.nodes {
+            for code in 0..k {
+                let slot = &mut fill[self.vertex(*n, code) as usize];
+                corners[*slot as usize] = (*n, code as u8);
+                *slot += 1;
+            }
+        }
+        (0..nv)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(|v| {
+                let mut best: Option<C> = None;
+                for &(n, code) in &corners[offsets[v] as usize..offsets[v + 1] as usize] {
+                    if best.as_ref().is_some_and(|b| dist(b) == 0.0) {
+                        break;
+                    }
+                    let c = candidate(n, code as usize);
+                    if best.as_ref().is_none_or(|b| dist(&c) < dist(b)) {
+                        best = Some(c);
+                    }
+                }
+                best
+            })
+            .collect()
+    }
+}

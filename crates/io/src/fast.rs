@@ -1,0 +1,267 @@
+//! Parallel fast paths of the OBJ and `.hexex` readers.
+//!
+//! Input: the bytes of a whole file. Output: `Some(map)` when the file has
+//! the common layout below and is valid, `None` otherwise — then the
+//! sequential reader ([`crate::parse_obj`], [`crate::parse_hexex`]) runs and
+//! produces the result or the exact error, with its line. So the fast paths
+//! never produce an error of their own, and accept exactly what the
+//! sequential readers accept with the same result (tested on every file of
+//! the shared data, generated maps and the fuzz corpus):
+//! - OBJ: every `f` corner is `v/vt` or `v/vt/vn` with positive indices
+//!   (negative, relative indices send the file to the sequential reader);
+//! - `.hexex`: after the tet count, one tet per line (`a b c d` and 12
+//!   numbers), as every writer we know produces; anything else (several
+//!   tets per line, a tet split over lines) goes to the sequential reader.
+//!
+//! The file is cut into chunks of ~[`CHUNK`] bytes at line ends; chunks are
+//! checked (text, no NUL) and parsed in parallel with rayon, and joined in
+//! file order, so the result does not depend on the number of threads.
+
+use crate::scan::{parse_finite, Tokens};
+use dualex_map::{TetMap, TriMap};
+use rayon::prelude::*;
+
+/// Target chunk size in bytes.
+const CHUNK: usize = 1 << 20;
+
+/// `text` cut after a `\n` every ~[`CHUNK`] bytes (the last chunk may end
+/// without one; a cut after `\n` is a char boundary).
+fn line_chunks(text: &str, chunk: usize) -> Vec<&str> {
+    let chunk = chunk.max(1);
+    let mut out = Vec::with_capacity(text.len() / chunk + 1);
+    let mut rest = text;
+    while rest.len() > chunk {
+        let cut = rest.as_bytes()[chunk..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(rest.len(), |i| chunk + i + 1);
+        let (head, tail) = rest.split_at(cut);
+        out.push(head);
+        rest = tail;
+    }
+    if !rest.is_empty() {
+        out.push(rest);
+    }
+    out
+}
+
+/// `bytes` as text chunks, if it is text (valid UTF-8, no NUL byte).
+fn text_chunks(bytes: &[u8], chunk: usize) -> Option<(&str, Vec<&str>)> {
+    let text = std::str::from_utf8(bytes).ok()?;
+    let chunks = line_chunks(text, chunk);
+    let no_nul = chunks.par_iter().all(|c| !c.as_bytes().contains(&0));
+    no_nul.then_some((text, chunks))
+}
+
+/// A positive decimal integer token (digits only, as `str::parse::<u64>`
+/// without sign) minus one, or `None`.
+fn one_based(tok: &str) -> Option<u32> {
+    if tok.is_empty() || tok.len() > 10 || !tok.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let i: u64 = tok.parse().ok()?;
+    u32::try_from(i.checked_sub(1)?).ok()
+}
+
+/// What one OBJ chunk holds.
+#[derive(Default)]
+struct ObjChunk {
+    positions: Vec<[f64; 3]>,
+    uvs: Vec<[f64; 2]>,
+    v: Vec<[u32; 3]>,
+    vt: Vec<[u32; 3]>,
+}
+
+/// At least `n` finite numbers before the end or a `#`; the first `K`.
+fn numbers<'a, const K: usize>(toks: impl Iterator<Item = &'a str>) -> Option<[f64; K]> {
+    let mut out = [0.0; K];
+    let mut n = 0;
+    for tok in toks {
+        if tok.starts_with('#') {
+            break;
+        }
+        let x = parse_finite(tok, "").ok()?;
+        if let Some(slot) = out.get_mut(n) {
+            *slot = x;
+        }
+        n += 1;
+    }
+    (n >= K).then_some(out)
+}
+
+fn obj_chunk(text: &str) -> Option<ObjChunk> {
+    let mut c = ObjChunk::default();
+    for line in text.lines() {
+        let mut toks = line.split_ascii_whitespace();
+        let Some(kw) = toks.next() else { continue };
+        match kw {
+            "v" => c.positions.push(numbers::<3>(toks)?),
+            "vt" => c.uvs.push(numbers::<2>(toks)?),
+            "f" => {
+                let (mut v, mut vt) = ([0u32; 3], [0u32; 3]);
+                let mut n = 0;
+                for corner in toks.take_while(|t| !t.starts_with('#')) {
+                    if n == 3 {
+                        return None;
+                    }
+                    let mut parts = corner.split('/');
+                    v[n] = one_based(parts.next()?)?;
+                    vt[n] = one_based(parts.next()?)?;
+                    n += 1;
+                }
+                if n != 3 {
+                    return None;
+                }
+                c.v.push(v);
+                c.vt.push(vt);
+            }
+            _ => {
+                let skippable = kw.starts_with('#')
+                    || kw.starts_with(|ch: char| ch.is_ascii_alphabetic())
+                        && kw.chars().all(|ch| ch.is_ascii_alphanumeric() || ch == '_');
+                if !skippable {
+                    return None;
+                }
+            }
+        }
+    }
+    Some(c)
+}
+
+/// The OBJ fast path (see the module docs).
+pub(crate) fn obj(bytes: &[u8]) -> Option<TriMap> {
+    obj_chunked(bytes, CHUNK)
+}
+
+/// [`obj`] with chunks of ~`chunk` bytes.
+pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
+    let (_, texts) = text_chunks(bytes, chunk)?;
+    let parts: Vec<ObjChunk> = texts
+        .par_iter()
+        .map(|t| obj_chunk(t))
+        .collect::<Option<_>>()?;
+    let total = |f: fn(&ObjChunk) -> usize| parts.iter().map(f).sum::<usize>();
+    let mut positions = Vec::with_capacity(total(|c| c.positions.len()));
+    let mut uvs = Vec::with_capacity(total(|c| c.uvs.len()));
+    let nt = total(|c| c.v.len());
+    if nt == 0 {
+        return None;
+    }
+    for c in &parts {
+        positions.extend_from_slice(&c.positions);
+        uvs.extend_from_slice(&c.uvs);
+    }
+    let (nv, nvt) = (positions.len(), uvs.len());
+    let in_range = parts.par_iter().all(|c| {
+        c.v.iter().flatten().all(|&i| (i as usize) < nv)
+            && c.vt.iter().flatten().all(|&i| (i as usize) < nvt)
+    });
+    if !in_range {
+        return None;
+    }
+    let mut map = TriMap {
+        positions,
+        simplices: Vec::with_capacity(nt),
+        coords: Vec::with_capacity(nt),
+    };
+    for c in &parts {
+        map.simplices.extend_from_slice(&c.v);
+        map.coords
+            .extend(c.vt.iter().map(|t| t.map(|i| uvs[i as usize])));
+    }
+    map.validate().ok()?;
+    Some(map)
+}
+
+/// One tet line: 4 vertex indices below `nv` and 12 finite numbers.
+fn tet_line(line: &str, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> {
+    let mut toks = line.split_ascii_whitespace();
+    let mut tet = [0u32; 4];
+    for slot in &mut tet {
+        let tok = toks.next()?;
+        if !tok.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        let i: u64 = tok.parse().ok()?;
+        if i >= nv as u64 {
+            return None;
+        }
+        *slot = i as u32;
+    }
+    let mut uvw = [[0.0; 3]; 4];
+    for x in uvw.iter_mut().flatten() {
+        *x = parse_finite(toks.next()?, "").ok()?;
+    }
+    toks.next().is_none().then_some((tet, uvw))
+}
+
+/// The `.hexex` fast path (see the module docs).
+pub(crate) fn hexex(bytes: &[u8]) -> Option<TetMap> {
+    hexex_chunked(bytes, CHUNK)
+}
+
+/// [`hexex`] with chunks of ~`chunk` bytes.
+pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
+    let (text, _) = text_chunks(bytes, chunk)?;
+    // the header and vertices (a fifth of the file or less): sequential,
+    // with the reader's own token stream, up to the tet count
+    let mut t = Tokens::new(text, 1);
+    let nv: usize = t.next_token()?.0.parse().ok()?;
+    let mut positions = Vec::with_capacity(nv.min(bytes.len() / 6));
+    for _ in 0..nv {
+        let mut p = [0.0; 3];
+        for x in &mut p {
+            *x = parse_finite(t.next_token()?.0, "").ok()?;
+        }
+        positions.push(p);
+    }
+    let nt: usize = t.next_token()?.0.parse().ok()?;
+    // the rest of the tet count's line must be blank
+    let after = &text[text.len() - t.remaining()..];
+    let eol = after.find('\n')?;
+    if !after[..eol].trim().is_empty() || nt == 0 || nt > bytes.len() / 32 {
+        return None;
+    }
+    let body = &after[eol + 1..];
+    let body_chunks = line_chunks(body, chunk);
+    let lines: Vec<usize> = body_chunks
+        .par_iter()
+        .map(|c| c.bytes().filter(|&b| b == b'\n').count() + usize::from(!c.ends_with('\n')))
+        .collect();
+    let mut simplices = vec![[0u32; 4]; nt];
+    let mut coords = vec![[[0.0f64; 3]; 4]; nt];
+    // per chunk: its text, and the slices of the tets its lines fill
+    let mut jobs = Vec::with_capacity(body_chunks.len());
+    let (mut rest_s, mut rest_c) = (&mut simplices[..], &mut coords[..]);
+    for (c, &n) in body_chunks.iter().zip(&lines) {
+        let take = n.min(rest_s.len());
+        let (s, rs) = rest_s.split_at_mut(take);
+        let (k, rc) = rest_c.split_at_mut(take);
+        jobs.push((*c, s, k));
+        (rest_s, rest_c) = (rs, rc);
+    }
+    if !rest_s.is_empty() {
+        return None; // fewer lines than tets
+    }
+    let ok = jobs.into_par_iter().all(|(text, s, k)| {
+        let mut lines = text.lines();
+        for (slot_s, slot_c) in s.iter_mut().zip(k.iter_mut()) {
+            let Some((tet, uvw)) = lines.next().and_then(|l| tet_line(l, nv)) else {
+                return false;
+            };
+            (*slot_s, *slot_c) = (tet, uvw);
+        }
+        // lines after the last tet: blank only
+        lines.all(|l| l.trim().is_empty())
+    });
+    if !ok {
+        return None;
+    }
+    let map = TetMap {
+        positions,
+        simplices,
+        coords,
+    };
+    map.validate().ok()?;
+    Some(map)
+}

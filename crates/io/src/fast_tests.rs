@@ -1,0 +1,151 @@
+//! The parallel fast paths against the sequential readers: on valid files
+//! (generated and shared data) they must give the same map; on corrupted
+//! files they must give the same map or step aside (`None`), never accept
+//! what the sequential reader refuses. Small chunk sizes exercise the
+//! joins.
+
+use crate::fast::{hexex_chunked, obj_chunked};
+use crate::hexex::parse_hexex_sequential;
+use crate::obj::parse_obj_sequential;
+use crate::write_map::{tet_map_hexex, tri_map_obj};
+
+fn obj_bytes(map: &dualex_map::TriMap) -> Vec<u8> {
+    let mut out = Vec::new();
+    tri_map_obj(&mut out, map).unwrap();
+    out
+}
+
+fn hexex_bytes(map: &dualex_map::TetMap) -> Vec<u8> {
+    let mut out = Vec::new();
+    tet_map_hexex(&mut out, map).unwrap();
+    out
+}
+
+/// Same result as the sequential reader or `None`; `must` asks for `Some`.
+/// Returns whether the fast path read the file.
+fn agree_obj(bytes: &[u8], chunk: usize, must: bool) -> bool {
+    let fast = obj_chunked(bytes, chunk);
+    match (fast, parse_obj_sequential(bytes)) {
+        (Some(f), Ok(s)) => assert_eq!(f, s),
+        (Some(_), Err(e)) => panic!("fast OBJ path accepted a file refused with: {e}"),
+        (None, _) => {
+            assert!(
+                !must,
+                "fast OBJ path stepped aside on a valid canonical file"
+            );
+            return false;
+        }
+    }
+    true
+}
+
+fn agree_hexex(bytes: &[u8], chunk: usize, must: bool) -> bool {
+    let fast = hexex_chunked(bytes, chunk);
+    match (fast, parse_hexex_sequential(bytes)) {
+        (Some(f), Ok(s)) => assert_eq!(f, s),
+        (Some(_), Err(e)) => panic!("fast hexex path accepted a file refused with: {e}"),
+        (None, _) => {
+            assert!(
+                !must,
+                "fast hexex path stepped aside on a valid canonical file"
+            );
+            return false;
+        }
+    }
+    true
+}
+
+/// A deterministic corruption of `b` (overwrite, truncation, duplication).
+fn mutate(b: &[u8], seed: u64) -> Vec<u8> {
+    let mut s = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
+    let mut next = move |m: usize| {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s % m.max(1) as u64) as usize
+    };
+    let alphabet = b"0123456789 -+.e\n/#\xff\x00\x7f\t";
+    let mut b = b.to_vec();
+    for _ in 0..1 + next(3) {
+        let i = next(b.len());
+        match next(4) {
+            0 => b.truncate(i),
+            1 => {
+                let span: Vec<u8> = b[i..(i + next(40)).min(b.len())].to_vec();
+                b.splice(i..i, span);
+            }
+            _ if i < b.len() => b[i] = alphabet[next(alphabet.len())],
+            _ => {}
+        }
+    }
+    b
+}
+
+#[test]
+fn generated_maps_read_the_same_in_chunks() {
+    let alt = dualex_gen::Diagonal::Alternating;
+    let (tri, _) = dualex_gen::square_noise(12, 0.2, 6.2, 0.3, 7, alt);
+    let obj = obj_bytes(&tri);
+    let (tet, _) = dualex_gen::block::block_noise(4, 0.2, 2.2, 0.3, 7);
+    let hexex = hexex_bytes(&tet);
+    for chunk in [1, 7, 64, 1000, 1 << 20] {
+        agree_obj(&obj, chunk, true);
+        agree_hexex(&hexex, chunk, true);
+    }
+}
+
+#[test]
+fn corrupted_files_never_pass_the_fast_path_alone() {
+    let alt = dualex_gen::Diagonal::Alternating;
+    let (tri, _) = dualex_gen::square_identity(5, 0.2, 2.7, alt);
+    let obj = obj_bytes(&tri);
+    let (tet, _) = dualex_gen::block::block(2, 2, 2, 0.2, 1.2);
+    let hexex = hexex_bytes(&tet);
+    for seed in 0..3000 {
+        let chunk = [5, 50, 1 << 20][seed as usize % 3];
+        agree_obj(&mutate(&obj, seed), chunk, false);
+        agree_hexex(&mutate(&hexex, seed), chunk, false);
+    }
+    // layouts the fast paths leave to the sequential readers
+    let relative = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf -3/-3 -2/-2 -1/-1\n";
+    agree_obj(relative.as_bytes(), 8, false);
+    let one_line = "4 0 0 0 1 0 0 0 1 0 0 0 1 1 0 1 2 3 0 0 0 1 0 0 0 1 0 0 0 1\n";
+    agree_hexex(one_line.as_bytes(), 8, false);
+}
+
+#[test]
+fn shared_data_reads_the_same() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data");
+    let Ok(walk) = std::fs::read_dir(&dir) else {
+        eprintln!("SKIPPED: {} is absent", dir.display());
+        return;
+    };
+    let mut stack: Vec<std::path::PathBuf> = walk.flatten().map(|e| e.path()).collect();
+    let (mut seen, mut fast) = (0, 0);
+    while let Some(p) = stack.pop() {
+        if p.is_dir() {
+            stack.extend(
+                std::fs::read_dir(&p)
+                    .into_iter()
+                    .flatten()
+                    .flatten()
+                    .map(|e| e.path()),
+            );
+            continue;
+        }
+        let ext = p.extension().and_then(|e| e.to_str()).unwrap_or("");
+        let Ok(bytes) = std::fs::read(&p) else {
+            continue;
+        };
+        fast += usize::from(match ext {
+            "obj" => agree_obj(&bytes, 1 << 16, false),
+            "hexex" => agree_hexex(&bytes, 1 << 16, false),
+            _ => continue,
+        });
+        seen += 1;
+    }
+    eprintln!("{fast} of {seen} shared .obj/.hexex files read by the fast paths");
+    assert!(seen > 0, "no .obj/.hexex under {}", dir.display());
+    // the shared data's valid maps use the canonical layouts
+    assert!(fast * 2 > seen, "{fast} of {seen}");
+}
