@@ -15,7 +15,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-mod cases;
+use dualex_bench::cases;
 mod table;
 
 use serde_json::Value;

@@ -1,4 +1,4 @@
-//! The Markdown table of benchmark records (see [`crate::cases::run`]).
+//! The Markdown table of benchmark records (see [`dualex_bench::cases::run`]).
 
 use serde_json::Value;
 
