@@ -6,10 +6,10 @@
 //! visible. Whole-process figures (reading, writing, peak memory) come
 //! from `dualex-bench` and `tools/bench-cli`, see BENCHMARKS.md.
 
-use dualex_bench::cases::{build, Input};
-use dualex_map::{Stars, TetMap, Topology, TransitionOptions, Transitions, TriMap};
 use divan::counter::ItemsCount;
 use divan::Bencher;
+use dualex_bench::cases::{build, Input};
+use dualex_map::{Stars, TetMap, Topology, TransitionOptions, Transitions, TriMap};
 
 fn main() {
     divan::main();

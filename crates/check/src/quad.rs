@@ -85,7 +85,7 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     let mut on_boundary = vec![false; n_vertices];
     let mut valence = vec![0u32; n_vertices];
     let mut boundary_uf = UnionFind::new(n_vertices);
-    for (&(a, b), u) in &edges {
+    for &((a, b), u) in &edges {
         valence[a as usize] += 1;
         valence[b as usize] += 1;
         match u.total() {
@@ -140,21 +140,25 @@ fn classify_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32;
     good
 }
 
-/// Directed uses of every undirected edge of the faces.
-fn edge_uses(faces: &[[u32; 4]]) -> HashMap<(u32, u32), EdgeUse> {
-    let mut edges: HashMap<(u32, u32), EdgeUse> = HashMap::new();
+/// Directed uses of every undirected edge of the faces, by edge.
+fn edge_uses(faces: &[[u32; 4]]) -> Vec<((u32, u32), EdgeUse)> {
+    // (lo, hi, backward) per face side, sorted: one run per undirected edge
+    let mut sides: Vec<(u32, u32, bool)> = Vec::with_capacity(4 * faces.len());
     for q in faces {
         for i in 0..4 {
             let (a, b) = (q[i], q[(i + 1) % 4]);
-            let e = edges.entry((a.min(b), a.max(b))).or_default();
-            if a < b {
-                e.forward += 1;
-            } else {
-                e.backward += 1;
-            }
+            sides.push((a.min(b), a.max(b), a > b));
         }
     }
-    edges
+    sides.sort_unstable();
+    sides
+        .chunk_by(|x, y| (x.0, x.1) == (y.0, y.1))
+        .map(|run| {
+            let backward = run.iter().filter(|s| s.2).count() as u32;
+            let forward = run.len() as u32 - backward;
+            ((run[0].0, run[0].1), EdgeUse { forward, backward })
+        })
+        .collect()
 }
 
 /// Connected components of the faces through shared vertices.
@@ -189,6 +193,35 @@ fn non_manifold_vertices(faces: &[[u32; 4]]) -> Vec<u32> {
 
 /// Number of fans among the corners at one vertex (linked by a shared edge).
 fn fans(group: &[(u32, u32, u32)]) -> usize {
+    const SMALL: usize = 32;
+    if group.len() > SMALL {
+        return fans_large(group);
+    }
+    // pairwise on the stack: two corners are linked when they share an
+    // edge, i.e. a neighbour vertex
+    let mut parent: [usize; SMALL] = std::array::from_fn(|i| i);
+    fn root(parent: &mut [usize; SMALL], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for (i, &(_, pi, ni)) in group.iter().enumerate() {
+        for (j, &(_, pj, nj)) in group[..i].iter().enumerate() {
+            if pi == pj || pi == nj || ni == pj || ni == nj {
+                let (ri, rj) = (root(&mut parent, i), root(&mut parent, j));
+                parent[ri] = rj;
+            }
+        }
+    }
+    (0..group.len())
+        .filter(|&i| root(&mut parent, i) == i)
+        .count()
+}
+
+/// [`fans`] for a vertex with many corners.
+fn fans_large(group: &[(u32, u32, u32)]) -> usize {
     let mut uf = UnionFind::new(group.len());
     let mut first_with: HashMap<u32, usize> = HashMap::new();
     for (i, &(_, prev, next)) in group.iter().enumerate() {

@@ -97,3 +97,23 @@ fn empty_and_unused() {
     assert!(r.is_valid());
     assert_eq!((r.unused_vertices, r.components, r.euler), (3, 0, 0));
 }
+
+#[test]
+fn small_fans_count_as_the_general_rule() {
+    // random corner groups at one vertex: (vertex, prev, next) with
+    // neighbours drawn from a few ids, so that some share edges
+    let mut s = 0x2545_f491_4f6c_dd1du64;
+    let mut next = |m: u64| {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s % m) as u32
+    };
+    for _ in 0..2000 {
+        let k = 1 + next(12) as usize;
+        let ids = 2 + u64::from(next(20));
+        let group: Vec<(u32, u32, u32)> =
+            (0..k).map(|_| (0, 1 + next(ids), 1 + next(ids))).collect();
+        assert_eq!(super::fans(&group), super::fans_large(&group), "{group:?}");
+    }
+}
