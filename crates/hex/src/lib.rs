@@ -76,7 +76,9 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     lap(&mut st, "map");
     // 1–2
     let mut local = local::LocalMap::new(map, &topo, &trans);
+    drop(trans); // the local map carries its own transitions (peak memory)
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    drop(stars);
     lap(&mut st, "sanitize");
     // 3
     let nodes = nodes::Nodes::find(&local);

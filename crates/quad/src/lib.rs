@@ -84,10 +84,13 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         owned = split::split_edges(map, &topo, &edges);
         map = &owned;
     };
-    let _ = &trans;
+    // the local map carries its own transitions: free the input's early
+    // (peak memory)
+    drop(trans);
     lap(&mut st, "map");
     // 2
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    drop(stars);
     lap(&mut st, "sanitize");
     // 3
     let nodes = nodes::Nodes::find(&local);
