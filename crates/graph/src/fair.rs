@@ -81,12 +81,62 @@ struct Vertices {
     first: Vec<(Node, usize)>,
     corners: Vec<usize>,
     interior: Vec<bool>,
-    adj: Vec<Vec<u32>>,
+    /// Neighbours of vertex `v`: `adj[adj_at[v]..adj_at[v + 1]]`, ascending.
+    adj_at: Vec<u32>,
+    adj: Vec<u32>,
+}
+
+/// Mesh-edge neighbours of every vertex as CSR, each list ascending and
+/// without repeats (the adjacency of [`Glued::edges`], built per vertex
+/// instead of by one global sort).
+fn adjacency(glued: &Glued<2>) -> (Vec<u32>, Vec<u32>) {
+    let nv = glued.n_vertices;
+    // the cell sides: corners differing in one bit
+    let sides = || {
+        glued.nodes.iter().flat_map(move |n| {
+            [(0, 1), (0, 2), (1, 3), (2, 3)]
+                .map(|(c, d)| (glued.vertex(*n, c) as usize, glued.vertex(*n, d) as usize))
+        })
+    };
+    let mut at = vec![0u32; nv + 1];
+    for (p, q) in sides() {
+        at[p + 1] += 1;
+        at[q + 1] += 1;
+    }
+    for v in 0..nv {
+        at[v + 1] += at[v];
+    }
+    let mut fill: Vec<u32> = at[..nv].to_vec();
+    let mut adj = vec![0u32; at[nv] as usize];
+    for (p, q) in sides() {
+        for (from, to) in [(p, q), (q, p)] {
+            adj[fill[from] as usize] = to as u32;
+            fill[from] += 1;
+        }
+    }
+    // sort and dedup each list in place, compacting
+    let mut out_at = vec![0u32; nv + 1];
+    let mut len = 0usize;
+    for v in 0..nv {
+        let (lo, hi) = (at[v] as usize, at[v + 1] as usize);
+        adj[lo..hi].sort_unstable();
+        let mut last = None;
+        for i in lo..hi {
+            if last != Some(adj[i]) {
+                last = Some(adj[i]);
+                adj[len] = adj[i];
+                len += 1;
+            }
+        }
+        out_at[v + 1] = len as u32;
+    }
+    adj.truncate(len);
+    (out_at, adj)
 }
 
 impl Vertices {
     fn new(g: &NodeGraph<2>) -> Self {
-        let glued = g.glue();
+        let glued = g.glue_vertices();
         let nv = glued.n_vertices;
         let mut first = vec![(Node(0), 0); nv];
         let (mut corners, mut interior) = (vec![0usize; nv], vec![true; nv]);
@@ -106,16 +156,13 @@ impl Vertices {
                 }
             }
         }
-        let mut adj = vec![Vec::new(); nv];
-        for (a, b) in glued.edges() {
-            adj[a as usize].push(b);
-            adj[b as usize].push(a);
-        }
+        let (adj_at, adj) = adjacency(&glued);
         Vertices {
             glued,
             first,
             corners,
             interior,
+            adj_at,
             adj,
         }
     }
@@ -133,7 +180,7 @@ impl Vertices {
     /// Shortest path p → … → s through interior vertices to the nearest
     /// interior vertex of valence ≥ 7, at most `max` edges.
     fn path(&self, p: usize, max: usize) -> Option<Vec<usize>> {
-        let mut parent = vec![usize::MAX; self.adj.len()];
+        let mut parent = vec![usize::MAX; self.corners.len()];
         let mut queue = VecDeque::from([(p, 0usize)]);
         parent[p] = p;
         while let Some((v, d)) = queue.pop_front() {
@@ -148,7 +195,7 @@ impl Vertices {
             if d == max {
                 continue;
             }
-            for &w in &self.adj[v] {
+            for &w in &self.adj[self.adj_at[v] as usize..self.adj_at[v + 1] as usize] {
                 let w = w as usize;
                 if parent[w] == usize::MAX && self.interior[w] {
                     parent[w] = v;

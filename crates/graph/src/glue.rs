@@ -96,6 +96,16 @@ pub(crate) fn corners_on<const D: usize>(dir: usize) -> impl Iterator<Item = usi
 impl<const D: usize> NodeGraph<D> {
     /// Glues the alive nodes into a mesh (see the module docs).
     pub fn glue(&self) -> Glued<D> {
+        let mut g = self.glue_vertices();
+        g.boundary_loops = self.boundary_components();
+        g.components = self.components();
+        g
+    }
+
+    /// [`Self::glue`] without the whole-graph counts (`boundary_loops`
+    /// and `components` left 0): for callers that only need the vertices
+    /// (index fairing rebuilds them after every lift).
+    pub(crate) fn glue_vertices(&self) -> Glued<D> {
         let k = 1usize << D;
         let mut uf = UnionFind::new(self.n_nodes() * k);
         let mut corner_mismatches = 0;
@@ -106,14 +116,28 @@ impl<const D: usize> NodeGraph<D> {
             }
             let (x, y) = (self.node_of(s).idx(), self.node_of(t).idx());
             let (sd, td, rho) = (self.dir_of(s), self.dir_of(t), self.rot[s.idx()]);
-            let pairs: Option<Vec<(usize, usize)>> = corners_on::<D>(sd)
-                .map(|c| corner_across(sd, td, &rho, c).map(|ct| (c, ct)))
-                .collect();
-            match pairs {
-                Some(pairs) => pairs
+            // all corners of the side must match, else none is glued
+            let mut pairs = [(0usize, 0usize); 4];
+            let mut n = 0;
+            let mut matched = true;
+            for c in corners_on::<D>(sd) {
+                match corner_across(sd, td, &rho, c) {
+                    Some(ct) => {
+                        pairs[n] = (c, ct);
+                        n += 1;
+                    }
+                    None => {
+                        matched = false;
+                        break;
+                    }
+                }
+            }
+            if matched {
+                pairs[..n]
                     .iter()
-                    .for_each(|&(c, ct)| uf.union(x * k + c, y * k + ct)),
-                None => corner_mismatches += 1,
+                    .for_each(|&(c, ct)| uf.union(x * k + c, y * k + ct));
+            } else {
+                corner_mismatches += 1;
             }
         }
         let mut vertex_of = vec![NO_VERTEX; self.n_nodes() * k];
@@ -143,8 +167,8 @@ impl<const D: usize> NodeGraph<D> {
             vertex_of,
             n_vertices: n_vertices as usize,
             unmatched_sides: self.unmatched_sides(),
-            boundary_loops: self.boundary_components(),
-            components: self.components(),
+            boundary_loops: 0,
+            components: 0,
             corner_mismatches,
             nodes,
             cells,
