@@ -21,6 +21,7 @@
 //! Every lift is kept only if it brings the pair one edge closer (else it
 //! is undone by the inverse OP2), and a path that stalls is undone whole.
 
+use crate::fair_local::LocalVertices;
 use crate::fan::corner_sides;
 use crate::glue::Glued;
 use crate::graph::NodeGraph;
@@ -332,28 +333,36 @@ impl NodeGraph<2> {
         target: usize,
         st: &mut FairingStats,
     ) -> Option<LiftUndo> {
-        let v = Vertices::new(self);
-        let p = v.glued.vertex(pc.0, pc.1) as usize;
+        // local queries: the same answers as a whole-graph rebuild (see
+        // `fair_local`), at the cost of the region they touch
+        let mut v = LocalVertices::new(self);
+        let p = v.vertex_of(pc.0, pc.1)?;
         let path = v.path(p, max_path).filter(|path| path.len() == dist + 1)?;
-        let (s, next) = (path[dist], path[dist - 1] as u32);
-        let (sx, scode) = v.first[s];
-        let fan = self.fan(sx, scode).filter(|f| f.len() == v.corners[s])?;
+        let (s, next) = (path[dist], path[dist - 1]);
+        let (sx, scode) = v.first(s)?;
+        let fan = self
+            .fan(sx, scode)
+            .filter(|f| f.len() == v.corner_count(s))?;
         let n = fan.len();
-        for (i, step) in fan.iter().enumerate() {
-            let far = step.code() ^ (1 << axis(step.in_dir));
-            if v.glued.vertex(step.node, far) != next {
-                continue;
-            }
+        // the steps whose far corner is `next` (before any lift: a failed
+        // lift is undone exactly, so this stays true between trials)
+        let towards: Vec<bool> = fan
+            .iter()
+            .map(|step| {
+                let far = step.code() ^ (1 << axis(step.in_dir));
+                v.vertex_of(step.node, far) == Some(next)
+            })
+            .collect();
+        for (i, _) in fan.iter().enumerate().filter(|(i, _)| towards[*i]) {
             for j in [(i + 4) % n, (i + n - 4) % n] {
                 let Ok(u) = self.lift(sx, scode, i, j) else {
                     continue;
                 };
-                let after = Vertices::new(self);
-                let np = after.glued.vertex(pc.0, pc.1) as usize;
-                let ok = if dist == 1 {
-                    after.valence(np).is_some_and(|k| k > target)
-                } else {
-                    after.path(np, max_path).is_some_and(|p| p.len() == dist)
+                let mut after = LocalVertices::new(self);
+                let ok = match after.vertex_of(pc.0, pc.1) {
+                    None => false,
+                    Some(np) if dist == 1 => after.valence(np).is_some_and(|k| k > target),
+                    Some(np) => after.path(np, max_path).is_some_and(|p| p.len() == dist),
                 };
                 if ok {
                     return Some(u);
@@ -365,5 +374,55 @@ impl NodeGraph<2> {
             }
         }
         None
+    }
+}
+
+#[cfg(test)]
+mod local_tests {
+    use super::*;
+    use crate::testgrid::singular_disk;
+
+    /// Every alive corner: the local vertex has the glued vertex's corners,
+    /// valence, first corner and fairing path.
+    fn local_matches_global(g: &NodeGraph<2>) {
+        let global = Vertices::new(g);
+        let mut local = LocalVertices::new(g);
+        for n in g.alive_nodes() {
+            for c in 0..4 {
+                let gv = global.glued.vertex(n, c) as usize;
+                let Some(lv) = local.vertex_of(n, c) else {
+                    panic!("alive corner without a local vertex")
+                };
+                let first = local.first(lv).unwrap_or_else(|| panic!("no first corner"));
+                assert_eq!(first, global.first[gv], "first corner of {n:?}/{c}");
+                assert_eq!(local.corner_count(lv), global.corners[gv]);
+                assert_eq!(local.valence(lv), global.valence(gv));
+                let to_global = |l: &LocalVertices, v: usize| {
+                    let (fx, fc) = l.first(v).unwrap_or_else(|| panic!("no first corner"));
+                    global.glued.vertex(fx, fc) as usize
+                };
+                for max in [1, 3, 10] {
+                    let lp = local.path(lv, max);
+                    let lp =
+                        lp.map(|p| p.iter().map(|&v| to_global(&local, v)).collect::<Vec<_>>());
+                    assert_eq!(lp, global.path(gv, max), "path from {n:?}/{c}, max {max}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn local_vertices_answer_as_the_glued_table() {
+        for sectors in 3..=8 {
+            let mut g = singular_disk(sectors, 3);
+            local_matches_global(&g);
+            // split the centre by a saddle lift (valence 1 and n − 1 + …)
+            let centre = |s: usize| Node((s * 9) as u32);
+            let a = g.side(centre(0), 1);
+            let c = g.side(centre(0), 3);
+            if g.op2(a, c, Rot2::quarter_turns(3)).is_ok() {
+                local_matches_global(&g);
+            }
+        }
     }
 }

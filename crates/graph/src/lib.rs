@@ -21,6 +21,7 @@
 pub mod check;
 pub mod collapse;
 pub mod fair;
+mod fair_local;
 pub mod fan;
 pub mod glue;
 pub mod graph;

@@ -1,0 +1,189 @@
+//! Vertices of a 2D graph found around given corners, without gluing the
+//! whole graph: what index fairing asks after each trial saddle lift.
+//!
+//! Input: a [`NodeGraph<2>`] (its opposite relation an involution, as
+//! [`NodeGraph::check`] requires). Output, for the vertex of any corner:
+//! the same answers as [`crate::glue::Glued`] and the fairing's vertex
+//! table built from it — the set of corners glued together (the same
+//! union–find links: a pair of sides is processed from its smaller side,
+//! when that side's node is alive, and only if all its corners match),
+//! the alive corners, the interior flag, the neighbours along cell edges,
+//! and a vertex order equal to the order of glued vertex ids (ids are
+//! given by first alive corner in node order, so they compare as the
+//! smallest alive corner `node·4 + code`). A vertex is explored on first
+//! use; the cost is proportional to the region the queries touch.
+
+use crate::fan::corner_sides;
+use crate::glue::{corner_across, corners_on};
+use crate::graph::NodeGraph;
+use crate::ids::{Node, Side};
+use std::collections::{HashMap, VecDeque};
+
+/// One vertex: its smallest alive corner (its order), its alive corners
+/// (sorted) and whether it is interior.
+struct Vertex {
+    rep: usize,
+    alive: Vec<usize>,
+    interior: bool,
+}
+
+/// Vertices explored so far (valid while the graph does not change).
+pub(crate) struct LocalVertices<'a> {
+    g: &'a NodeGraph<2>,
+    of_corner: HashMap<usize, usize>,
+    vertices: Vec<Vertex>,
+}
+
+impl<'a> LocalVertices<'a> {
+    pub(crate) fn new(g: &'a NodeGraph<2>) -> Self {
+        LocalVertices {
+            g,
+            of_corner: HashMap::new(),
+            vertices: Vec::new(),
+        }
+    }
+
+    /// The corners glued to `corner` across side `s` of its node.
+    fn across(&self, s: Side, corner: usize, out: &mut Vec<usize>) {
+        let g = self.g;
+        let Some(t) = g.opposite(s) else { return };
+        let (lo, hi) = if s < t { (s, t) } else { (t, s) };
+        if !g.is_alive(g.node_of(lo)) {
+            return;
+        }
+        let (ld, hd, rho) = (g.dir_of(lo), g.dir_of(hi), g.rot[lo.idx()]);
+        let mut pairs = [(0usize, 0usize); 2];
+        let mut n = 0;
+        for c in corners_on::<2>(ld) {
+            let Some(ct) = corner_across(ld, hd, &rho, c) else {
+                return; // a mismatched pair glues nothing
+            };
+            pairs[n] = (c, ct);
+            n += 1;
+        }
+        let (lnode, hnode) = (g.node_of(lo).idx(), g.node_of(hi).idx());
+        let code = corner % 4;
+        for &(c, ct) in &pairs[..n] {
+            if s == lo && c == code {
+                out.push(hnode * 4 + ct);
+            }
+            if s == hi && ct == code {
+                out.push(lnode * 4 + c);
+            }
+        }
+    }
+
+    /// The vertex holding `corner` (`node·4 + code`), explored if new.
+    pub(crate) fn vertex(&mut self, corner: usize) -> usize {
+        if let Some(&v) = self.of_corner.get(&corner) {
+            return v;
+        }
+        let g = self.g;
+        let mut all = vec![corner];
+        let mut queue = VecDeque::from([corner]);
+        let mut next = Vec::new();
+        while let Some(k) = queue.pop_front() {
+            let (node, code) = (Node((k / 4) as u32), k % 4);
+            next.clear();
+            let (du, dv) = corner_sides(code);
+            for d in [du, dv] {
+                self.across(g.side(node, d), k, &mut next);
+            }
+            for &m in &next {
+                if !all.contains(&m) {
+                    all.push(m);
+                    queue.push_back(m);
+                }
+            }
+        }
+        let mut alive: Vec<usize> = all
+            .iter()
+            .copied()
+            .filter(|&k| g.is_alive(Node((k / 4) as u32)))
+            .collect();
+        alive.sort_unstable();
+        let interior = alive.iter().all(|&k| {
+            let (du, dv) = corner_sides(k % 4);
+            let node = Node((k / 4) as u32);
+            [du, dv]
+                .iter()
+                .all(|&d| g.opposite(g.side(node, d)).is_some())
+        });
+        let id = self.vertices.len();
+        for &k in &all {
+            self.of_corner.insert(k, id);
+        }
+        self.vertices.push(Vertex {
+            rep: alive.first().copied().unwrap_or(usize::MAX),
+            alive,
+            interior,
+        });
+        id
+    }
+
+    /// The vertex of corner `code` of `node`, if `node` is alive (the
+    /// glued table has no vertex for dead nodes).
+    pub(crate) fn vertex_of(&mut self, node: Node, code: usize) -> Option<usize> {
+        (self.g.is_alive(node) && code < 4).then(|| self.vertex(node.idx() * 4 + code))
+    }
+
+    /// Valence of an interior vertex (its alive corners), `None` on the
+    /// boundary.
+    pub(crate) fn valence(&self, v: usize) -> Option<usize> {
+        let x = &self.vertices[v];
+        x.interior.then_some(x.alive.len())
+    }
+
+    /// Number of alive corners.
+    pub(crate) fn corner_count(&self, v: usize) -> usize {
+        self.vertices[v].alive.len()
+    }
+
+    /// The first alive corner (in node order) as `(node, code)`.
+    pub(crate) fn first(&self, v: usize) -> Option<(Node, usize)> {
+        let k = *self.vertices[v].alive.first()?;
+        Some((Node((k / 4) as u32), k % 4))
+    }
+
+    /// Neighbours along cell edges, in glued-id order, without repeats.
+    fn neighbours(&mut self, v: usize) -> Vec<usize> {
+        let corners = self.vertices[v].alive.clone();
+        let mut out: Vec<usize> = Vec::with_capacity(2 * corners.len());
+        for k in corners {
+            for bit in [1, 2] {
+                out.push(self.vertex((k / 4) * 4 + ((k % 4) ^ bit)));
+            }
+        }
+        out.sort_unstable_by_key(|&w| self.vertices[w].rep);
+        out.dedup();
+        out
+    }
+
+    /// Shortest path p → … → s through interior vertices to the nearest
+    /// interior vertex of valence ≥ 7, at most `max` edges (the fairing's
+    /// breadth-first search, same visiting order).
+    pub(crate) fn path(&mut self, p: usize, max: usize) -> Option<Vec<usize>> {
+        let mut parent: HashMap<usize, usize> = HashMap::from([(p, p)]);
+        let mut queue = VecDeque::from([(p, 0usize)]);
+        while let Some((v, d)) = queue.pop_front() {
+            if v != p && self.valence(v).is_some_and(|k| k >= 7) {
+                let mut path = vec![v];
+                while let Some(&last) = path.last().filter(|&&x| x != p) {
+                    path.push(parent[&last]);
+                }
+                path.reverse();
+                return Some(path);
+            }
+            if d == max {
+                continue;
+            }
+            for w in self.neighbours(v) {
+                if !parent.contains_key(&w) && self.vertices[w].interior {
+                    parent.insert(w, v);
+                    queue.push_back((w, d + 1));
+                }
+            }
+        }
+        None
+    }
+}
