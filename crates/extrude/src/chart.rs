@@ -21,7 +21,6 @@ use crate::split::prism_tets;
 use crate::tetgen::TetgenMesh;
 use crate::ExtrudeError;
 use dualex_map::TetMap;
-use std::collections::{HashMap, HashSet};
 
 /// Builds the tet map (see the module docs); also returns the number of
 /// Steiner points.
@@ -34,7 +33,7 @@ pub fn tet_map(slab: &Slab, mesh: &TetgenMesh) -> Result<(TetMap, usize), Extrud
         ..Default::default()
     };
     // Steiner points get new ids on first use (cavity points are dropped)
-    let mut new_id: HashMap<u32, u32> = HashMap::new();
+    let mut new_id = vec![u32::MAX; mesh.nodes.len().saturating_sub(n_in)];
     let mut per_prism = vec![0usize; slab.prisms()];
     for (k, (tet, &region)) in mesh.tets.iter().zip(&mesh.regions).enumerate() {
         let prism = region as usize;
@@ -49,11 +48,15 @@ pub fn tet_map(slab: &Slab, mesh: &TetgenMesh) -> Result<(TetMap, usize), Extrud
             *c = corner_map(slab, prism - 1, *v, &p).ok_or_else(|| {
                 ExtrudeError::Output(format!("tet {k}: node {v} is not in prism {}", prism - 1))
             })?;
-            if *v as usize >= n_in {
-                *v = *new_id.entry(*v).or_insert_with(|| {
+            if let Some(id) = (*v as usize)
+                .checked_sub(n_in)
+                .and_then(|i| new_id.get_mut(i))
+            {
+                if *id == u32::MAX {
                     out.positions.push(p);
-                    out.positions.len() as u32 - 1
-                });
+                    *id = out.positions.len() as u32 - 1;
+                }
+                *v = *id;
             }
         }
         if !mesh.oriented && volume(&out.positions, &ids) < 0.0 {
@@ -77,35 +80,49 @@ pub fn tet_map(slab: &Slab, mesh: &TetgenMesh) -> Result<(TetMap, usize), Extrud
 /// face is also a PLC facet (a wall or a level triangle) or lies inside
 /// one prism (exactly 2 tets of that prism). With Steiner points the
 /// facets may be split and only the region labels tell the prisms.
+/// Sorting, not hashing: the faces are checked in the order of their
+/// sorted node ids, so the reported face does not depend on a hash seed.
 fn check_faces(slab: &Slab, mesh: &TetgenMesh) -> Result<(), ExtrudeError> {
     let strict = mesh.nodes.len() == slab.points.len();
     let key = |mut k: [u32; 3]| {
         k.sort_unstable();
         k
     };
-    let plc: HashSet<[u32; 3]> = crate::plc::facets(slab).into_iter().map(key).collect();
-    let mut seen: HashMap<[u32; 3], (usize, u64)> = HashMap::new();
+    let mut plc: Vec<[u32; 3]> = crate::plc::facets(slab).into_iter().map(key).collect();
+    plc.sort_unstable();
+    let is_facet = |k: &[u32; 3]| plc.binary_search(k).is_ok();
+    // (face, region) packed into one integer, which sorts faster than a
+    // tuple; regions past u32 (none is a prism's) saturate
+    let pack = |k: [u32; 3], r: u64| {
+        let r = r.min(u64::from(u32::MAX));
+        (u128::from(k[0]) << 96)
+            | (u128::from(k[1]) << 64)
+            | (u128::from(k[2]) << 32)
+            | u128::from(r)
+    };
+    let face = |x: u128| [(x >> 96) as u32, (x >> 64) as u32, (x >> 32) as u32];
+    let mut faces: Vec<u128> = Vec::with_capacity(4 * mesh.tets.len());
     for (t, &r) in mesh.tets.iter().zip(&mesh.regions) {
         for f in 0..4 {
-            let k = key(std::array::from_fn(|j| t[(f + 1 + j) % 4]));
-            let e = seen.entry(k).or_insert((0, r));
-            e.0 += 1;
-            if e.0 > 2 || (strict && e.1 != r && !plc.contains(&k)) {
-                return Err(ExtrudeError::Output(format!(
-                    "face {k:?} crosses a prism wall or is shared by 3 tets"
-                )));
-            }
+            faces.push(pack(key(std::array::from_fn(|j| t[(f + 1 + j) % 4])), r));
         }
     }
-    match seen
-        .iter()
-        .find(|(k, (n, _))| strict && *n == 1 && !plc.contains(*k))
-    {
-        Some((k, _)) => Err(ExtrudeError::Output(format!(
-            "face {k:?} is a hole inside a prism"
-        ))),
-        None => Ok(()),
+    faces.sort_unstable();
+    for group in faces.chunk_by(|&a, &b| a >> 32 == b >> 32) {
+        let k = &face(group[0]);
+        let crosses = strict && group.len() == 2 && group[0] != group[1] && !is_facet(k);
+        if group.len() > 2 || crosses {
+            return Err(ExtrudeError::Output(format!(
+                "face {k:?} crosses a prism wall or is shared by 3 tets"
+            )));
+        }
+        if strict && group.len() == 1 && !is_facet(k) {
+            return Err(ExtrudeError::Output(format!(
+                "face {k:?} is a hole inside a prism"
+            )));
+        }
     }
+    Ok(())
 }
 
 /// The input points must come back first and unmoved.

@@ -22,6 +22,7 @@ pub mod plc;
 pub mod slab;
 pub mod split;
 pub mod tetgen;
+pub mod text;
 pub mod volume;
 
 #[cfg(test)]

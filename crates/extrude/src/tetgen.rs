@@ -53,13 +53,13 @@ impl Drop for TempDir {
 }
 
 /// Runs `program` on `poly` (see the module docs).
-pub fn run(program: &Path, poly: &str, quality: bool) -> Result<TetgenMesh, ExtrudeError> {
-    run_poly(program, poly, if quality { "-pzQAq" } else { "-pYzQA" })
+pub fn run(program: &Path, poly: &[u8], quality: bool) -> Result<TetgenMesh, ExtrudeError> {
+    run_poly(program, poly, if quality { "-pzQAFq" } else { "-pYzQAF" })
 }
 
 /// Runs TetGen with `flags` on the `.poly` text `poly` in a temporary
 /// directory and reads its `.node` / `.ele` output.
-pub fn run_poly(program: &Path, poly: &str, flags: &str) -> Result<TetgenMesh, ExtrudeError> {
+pub fn run_poly(program: &Path, poly: &[u8], flags: &str) -> Result<TetgenMesh, ExtrudeError> {
     let dir = TempDir::new()?;
     let input = dir.0.join("slab.poly");
     std::fs::write(&input, poly)
@@ -101,44 +101,92 @@ pub fn run_poly(program: &Path, poly: &str, flags: &str) -> Result<TetgenMesh, E
     })
 }
 
-/// Non-empty, non-comment lines split into tokens.
-fn records(text: &str) -> impl Iterator<Item = Vec<&str>> {
+/// The fields of the non-empty, non-comment lines (no allocation per
+/// line).
+fn records(text: &str) -> impl Iterator<Item = Fields<'_>> {
     text.lines()
         .map(|l| {
-            l.split('#')
-                .next()
-                .unwrap_or("")
-                .split_whitespace()
-                .collect::<Vec<_>>()
+            Fields(
+                l.as_bytes()
+                    .iter()
+                    .position(|&b| b == b'#')
+                    .map_or(l, |i| &l[..i]),
+            )
         })
-        .filter(|t| !t.is_empty())
+        .filter(|f| f.0.split_ascii_whitespace().next().is_some())
+}
+
+/// One record's text (a line without its comment).
+#[derive(Clone, Copy)]
+struct Fields<'a>(&'a str);
+
+impl<'a> Fields<'a> {
+    /// A reader of the fields in order.
+    fn reader(self, file: &'a str) -> FieldReader<'a> {
+        FieldReader {
+            rec: self.0,
+            it: self.0.split_ascii_whitespace(),
+            k: 0,
+            file,
+        }
+    }
+}
+
+/// Reads one record's fields in order.
+struct FieldReader<'a> {
+    rec: &'a str,
+    it: std::str::SplitAsciiWhitespace<'a>,
+    k: usize,
+    file: &'a str,
+}
+
+impl FieldReader<'_> {
+    /// The next field as a region attribute: TetGen writes integers
+    /// (read as such, the fast path) or reals; negative means none (0).
+    fn region(&mut self) -> Result<u64, ExtrudeError> {
+        let rest = self.it.clone().next();
+        match rest.and_then(|x| x.parse::<u64>().ok()) {
+            Some(a) => {
+                self.it.next();
+                self.k += 1;
+                Ok(a)
+            }
+            None => {
+                let a: f64 = self.next()?;
+                Ok(if a >= 0.0 { a.round() as u64 } else { 0 })
+            }
+        }
+    }
+
+    /// The next field parsed as `T`.
+    fn next<T: std::str::FromStr>(&mut self) -> Result<T, ExtrudeError> {
+        let k = self.k;
+        self.k += 1;
+        self.it.next().and_then(|x| x.parse().ok()).ok_or_else(|| {
+            bad(
+                self.file,
+                format!("record {:?}: field {k}", self.rec.trim()),
+            )
+        })
+    }
 }
 
 fn bad(file: &str, what: String) -> ExtrudeError {
     ExtrudeError::TetgenFailed(format!("unreadable TetGen output .{file}: {what}"))
 }
 
-fn number<T: std::str::FromStr>(rec: &[&str], k: usize, file: &str) -> Result<T, ExtrudeError> {
-    rec.get(k)
-        .and_then(|x| x.parse().ok())
-        .ok_or_else(|| bad(file, format!("record {:?}: field {k}", rec.join(" "))))
-}
-
 /// Parses a `.node` file (0-based, 3D).
 pub fn parse_node(text: &str) -> Result<Vec<[f64; 3]>, ExtrudeError> {
     let mut recs = records(text);
     let head = recs.next().ok_or_else(|| bad("node", "empty".into()))?;
-    let n: usize = number(&head, 0, "node")?;
+    let n: usize = head.reader("node").next()?;
     let mut out = Vec::with_capacity(n.min(1 << 24));
     for (i, r) in recs.take(n).enumerate() {
-        if number::<usize>(&r, 0, "node")? != i {
+        let mut f = r.reader("node");
+        if f.next::<usize>()? != i {
             return Err(bad("node", format!("node {i} is out of order")));
         }
-        out.push([
-            number(&r, 1, "node")?,
-            number(&r, 2, "node")?,
-            number(&r, 3, "node")?,
-        ]);
+        out.push([f.next()?, f.next()?, f.next()?]);
     }
     if out.len() != n {
         return Err(bad("node", format!("{} of {n} nodes", out.len())));
@@ -150,25 +198,24 @@ pub fn parse_node(text: &str) -> Result<Vec<[f64; 3]>, ExtrudeError> {
 pub fn parse_ele(text: &str, nodes: usize) -> Result<(Vec<[u32; 4]>, Vec<u64>), ExtrudeError> {
     let mut recs = records(text);
     let head = recs.next().ok_or_else(|| bad("ele", "empty".into()))?;
-    let n: usize = number(&head, 0, "ele")?;
-    if number::<usize>(&head, 1, "ele")? != 4 || number::<usize>(&head, 2, "ele")? != 1 {
+    let mut h = head.reader("ele");
+    let n: usize = h.next()?;
+    if h.next::<usize>()? != 4 || h.next::<usize>()? != 1 {
         return Err(bad(
             "ele",
-            format!("header {:?}: want 4 nodes, 1 attribute", head.join(" ")),
+            format!("header {:?}: want 4 nodes, 1 attribute", head.0.trim()),
         ));
     }
     let (mut tets, mut regions) = (Vec::with_capacity(n.min(1 << 24)), Vec::new());
     for r in recs.take(n) {
-        let mut t = [0u32; 4];
-        for (k, x) in t.iter_mut().enumerate() {
-            *x = number(&r, k + 1, "ele")?;
-            if *x as usize >= nodes {
-                return Err(bad("ele", format!("node {x} of {nodes}")));
-            }
+        let mut f = r.reader("ele");
+        f.next::<u64>()?;
+        let t: [u32; 4] = [f.next()?, f.next()?, f.next()?, f.next()?];
+        if let Some(x) = t.iter().find(|&&x| x as usize >= nodes) {
+            return Err(bad("ele", format!("node {x} of {nodes}")));
         }
-        let a: f64 = number(&r, 5, "ele")?;
         tets.push(t);
-        regions.push(if a >= 0.0 { a.round() as u64 } else { 0 });
+        regions.push(f.region()?);
     }
     if tets.len() != n {
         return Err(bad("ele", format!("{} of {n} tets", tets.len())));
@@ -195,7 +242,7 @@ mod tests {
 
     #[test]
     fn a_missing_program_is_named() {
-        let e = run(Path::new("/nonexistent/tetgen"), "", false).expect_err("missing");
+        let e = run(Path::new("/nonexistent/tetgen"), b"", false).expect_err("missing");
         assert!(matches!(e, ExtrudeError::TetgenMissing(_)), "{e}");
         assert!(e.to_string().contains("apt-get install tetgen"), "{e}");
     }
