@@ -1,10 +1,11 @@
 //! TetGen as an external program (Debian's `tetgen`, 1.5): write the
-//! `.poly` into a fresh temporary directory, run `tetgen -pYzQA[q]`, parse
-//! `.1.node` and `.1.ele`, remove the directory.
+//! `.poly` into a fresh temporary directory, run `tetgen -pYzQAFN` (or
+//! `-pzQAFq`), parse `.1.ele` (and `.1.node`), remove the directory.
 //!
 //! Flags: `-p` tetrahedralize a PLC, `-Y` keep the input surface (every
 //! input facet, so no Steiner point on a prism wall), `-z` number from 0,
-//! `-Q` quiet, `-A` region attributes (the prism of each tet). Quality
+//! `-Q` quiet, `-A` region attributes (the prism of each tet), `-F` no
+//! `.face` / `.edge` files, `-N` no `.node` file (see [`run`)). Quality
 //! (`-q`) is run *without* `-Y`: in a thin slab every bad tet's
 //! circumcentre encroaches on a wall, so `-pYq` adds no point at all
 //! (measured: 0 points on a 6 × 6 grid slab, 104 with `-pq`). Walls and
@@ -46,20 +47,66 @@ impl TempDir {
     }
 }
 
+impl TempDir {
+    /// The text of TetGen's output file `slab.1.<ext>`.
+    fn read(&self, ext: &str) -> Result<String, ExtrudeError> {
+        let path = self.0.join(format!("slab.1.{ext}"));
+        std::fs::read_to_string(&path)
+            .map_err(|e| ExtrudeError::TetgenFailed(format!("{}: {e}", path.display())))
+    }
+}
+
 impl Drop for TempDir {
     fn drop(&mut self) {
         let _ = std::fs::remove_dir_all(&self.0);
     }
 }
 
-/// Runs `program` on `poly` (see the module docs).
-pub fn run(program: &Path, poly: &[u8], quality: bool) -> Result<TetgenMesh, ExtrudeError> {
-    run_poly(program, poly, if quality { "-pzQAFq" } else { "-pYzQAF" })
+/// Runs `program` on `poly` (see the module docs). Without quality, TetGen
+/// is first asked not to write the `.node` file (`-N`: ~6 % of its
+/// instructions on fandisk), whose points are then `points` (the `.poly`'s,
+/// which TetGen keeps in order: `-z`, no `-j`); only when a tet refers to a
+/// point past them (a Steiner point, which `-Y` does not rule out inside
+/// a prism) is TetGen run again with the `.node` file.
+pub fn run(
+    program: &Path,
+    poly: &[u8],
+    points: &[[f64; 3]],
+    quality: bool,
+) -> Result<TetgenMesh, ExtrudeError> {
+    if quality {
+        return run_poly(program, poly, "-pzQAFq");
+    }
+    let dir = run_in_dir(program, poly, "-pYzQAFN")?;
+    let (tets, regions) = parse_ele(&dir.read("ele")?, u32::MAX as usize)?;
+    if tets.iter().flatten().any(|&v| v as usize >= points.len()) {
+        return run_poly(program, poly, "-pYzQAF");
+    }
+    Ok(TetgenMesh {
+        nodes: points.to_vec(),
+        tets,
+        regions,
+        oriented: false,
+    })
 }
 
 /// Runs TetGen with `flags` on the `.poly` text `poly` in a temporary
 /// directory and reads its `.node` / `.ele` output.
 pub fn run_poly(program: &Path, poly: &[u8], flags: &str) -> Result<TetgenMesh, ExtrudeError> {
+    let dir = run_in_dir(program, poly, flags)?;
+    let nodes = parse_node(&dir.read("node")?)?;
+    let (tets, regions) = parse_ele(&dir.read("ele")?, nodes.len())?;
+    Ok(TetgenMesh {
+        nodes,
+        tets,
+        regions,
+        oriented: false,
+    })
+}
+
+/// Runs TetGen with `flags` on `poly` written to `slab.poly` in a fresh
+/// temporary directory, which holds its output files.
+fn run_in_dir(program: &Path, poly: &[u8], flags: &str) -> Result<TempDir, ExtrudeError> {
     let dir = TempDir::new()?;
     let input = dir.0.join("slab.poly");
     std::fs::write(&input, poly)
@@ -73,32 +120,23 @@ pub fn run_poly(program: &Path, poly: &[u8], flags: &str) -> Result<TetgenMesh, 
             std::io::ErrorKind::NotFound => ExtrudeError::TetgenMissing(program.into()),
             _ => ExtrudeError::Io(format!("cannot run {}: {e}", program.display())),
         })?;
-    let read = |ext: &str| std::fs::read_to_string(dir.0.join(format!("slab.1.{ext}")));
-    let (node, ele) = match (out.status.success(), read("node"), read("ele")) {
-        (true, Ok(n), Ok(e)) => (n, e),
-        _ => {
-            let all = format!(
-                "{} {}",
-                String::from_utf8_lossy(&out.stdout),
-                String::from_utf8_lossy(&out.stderr)
-            );
-            let tail: Vec<&str> = all.split_whitespace().collect();
-            let tail = tail[tail.len().saturating_sub(40)..].join(" ");
-            return Err(ExtrudeError::TetgenFailed(format!(
-                "{} {flags} exited with {}: {tail}",
-                program.display(),
-                out.status
-            )));
-        }
-    };
-    let nodes = parse_node(&node)?;
-    let (tets, regions) = parse_ele(&ele, nodes.len())?;
-    Ok(TetgenMesh {
-        nodes,
-        tets,
-        regions,
-        oriented: false,
-    })
+    let written = |ext: &str| dir.0.join(format!("slab.1.{ext}")).is_file();
+    let wants_node = !flags.contains('N');
+    if out.status.success() && written("ele") && (written("node") || !wants_node) {
+        return Ok(dir);
+    }
+    let all = format!(
+        "{} {}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let tail: Vec<&str> = all.split_whitespace().collect();
+    let tail = tail[tail.len().saturating_sub(40)..].join(" ");
+    Err(ExtrudeError::TetgenFailed(format!(
+        "{} {flags} exited with {}: {tail}",
+        program.display(),
+        out.status
+    )))
 }
 
 /// The fields of the non-empty, non-comment lines (no allocation per
@@ -240,9 +278,31 @@ mod tests {
         assert!(parse_node("1 3 0 0\n1 0 0 0\n").is_err());
     }
 
+    /// A stand-in for TetGen that adds a Steiner point (node 4): with
+    /// `-N` it writes only the `.ele`, else also the `.node`.
+    #[cfg(unix)]
+    #[test]
+    fn a_steiner_point_without_node_file_reruns_with_it() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = TempDir::new().expect("temp dir");
+        let fake = dir.0.join("fake-tetgen");
+        let script = r#"#!/bin/sh
+printf '2 4 1\n0 0 1 2 4 1\n1 0 1 3 4 1\n' > slab.1.ele
+case "$1" in *N*) exit 0;; esac
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0.25 0.25 0.25\n' > slab.1.node
+"#;
+        std::fs::write(&fake, script).expect("script");
+        std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).expect("chmod");
+        let points = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let m = run(&fake, b"", &points, false).expect("ran");
+        assert_eq!(m.nodes.len(), 5);
+        assert_eq!(m.nodes[4], [0.25, 0.25, 0.25]);
+        assert_eq!((m.tets[1], m.regions[1]), ([0, 1, 3, 4], 1));
+    }
+
     #[test]
     fn a_missing_program_is_named() {
-        let e = run(Path::new("/nonexistent/tetgen"), b"", false).expect_err("missing");
+        let e = run(Path::new("/nonexistent/tetgen"), b"", &[], false).expect_err("missing");
         assert!(matches!(e, ExtrudeError::TetgenMissing(_)), "{e}");
         assert!(e.to_string().contains("apt-get install tetgen"), "{e}");
     }
