@@ -293,7 +293,12 @@ printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0.25 0.25 0.25\n' > slab.
 "#;
         std::fs::write(&fake, script).expect("script");
         std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).expect("chmod");
-        let points = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let points = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
         let m = run(&fake, b"", &points, false).expect("ran");
         assert_eq!(m.nodes.len(), 5);
         assert_eq!(m.nodes[4], [0.25, 0.25, 0.25]);
