@@ -18,6 +18,7 @@
 #![warn(missing_docs)]
 
 pub mod chart;
+pub mod label;
 pub mod plc;
 pub mod slab;
 pub mod split;
@@ -142,7 +143,7 @@ pub fn extrude(
     let t0 = Instant::now();
     let mut fallback_reason = None;
     let poly = plc::poly_text(&slab);
-    let (mesh, used_tetgen) = match tetgen::run(&opts.program, &poly, &slab.points, opts.quality) {
+    let (mesh, used_tetgen) = match tetgen::run(&opts.program, &poly, &slab, opts.quality) {
         Ok(m) => (m, true),
         Err(e @ (ExtrudeError::TetgenMissing(_) | ExtrudeError::TetgenFailed(_)))
             if opts.fallback =>
