@@ -21,7 +21,7 @@
 //! the neighbouring prism `Q` (torus_fold, slab 0.5 × the mean edge thick:
 //! 3 of 10 941 points, least barycentric −0.04 in `P`'s split, 5.6e-3 off
 //! the wall). Clamped into `P`, that point's map disagreed with `Q`'s by up
-//! to 0.06. Such a point (least barycentric below −[`OUTSIDE`]) takes the
+//! to 0.06. Such a point (least barycentric below −1e-9) takes the
 //! map of the prism whose split holds it best, carried into `P`'s chart by
 //! the 2D transition across their shared edge: every face then has one
 //! map up to the transitions, and points inside their prism are unchanged.

@@ -7,9 +7,11 @@
 //! 1. [`slab`]: the layered points (planar maps offset along ±z, surfaces
 //!    along area-weighted vertex normals) and prisms;
 //! 2. [`plc`]: the prism walls as constraint facets, one region per prism;
-//! 3. [`tetgen`]: TetGen run as an external program (`tetgen -pYzQAFN`,
-//!    `-pzQAFq` with quality) — or, when asked and TetGen is absent, the
-//!    built-in 3-tet prism split ([`split`]);
+//! 3. [`tetgen`]: TetGen run as an external program (`tetgen -pYzQFN`,
+//!    each tet's prism from its nodes by [`label`]; `-pYzQAF` when that
+//!    fails or TetGen added points; `-pzQAFq` with quality) — or, when
+//!    asked and TetGen is absent, the built-in 3-tet prism split
+//!    ([`split`]);
 //! 4. [`chart`]: each tet gets its prism's triangle chart plus `w`;
 //!    Steiner points get the map of their preimage in the prism.
 //!

@@ -1,11 +1,12 @@
 //! TetGen as an external program (Debian's `tetgen`, 1.5): write the
-//! `.poly` into a fresh temporary directory, run `tetgen -pYzQAFN` (or
-//! `-pzQAFq`), parse `.1.ele` (and `.1.node`), remove the directory.
+//! `.poly` into a fresh temporary directory, run `tetgen -pYzQFN` (then
+//! `-pYzQAF` if needed, see [`run`]; `-pzQAFq` with quality), parse `.1.ele`
+//! (and `.1.node`), remove the directory.
 //!
 //! Flags: `-p` tetrahedralize a PLC, `-Y` keep the input surface (every
 //! input facet, so no Steiner point on a prism wall), `-z` number from 0,
 //! `-Q` quiet, `-A` region attributes (the prism of each tet), `-F` no
-//! `.face` / `.edge` files, `-N` no `.node` file (see [`run`)). Quality
+//! `.face` / `.edge` files, `-N` no `.node` file (see [`run`]). Quality
 //! (`-q`) is run *without* `-Y`: in a thin slab every bad tet's
 //! circumcentre encroaches on a wall, so `-pYq` adds no point at all
 //! (measured: 0 points on a 6 × 6 grid slab, 104 with `-pq`). Walls and
