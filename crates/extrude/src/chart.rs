@@ -67,7 +67,11 @@ pub fn tet_map(slab: &Slab, mesh: &TetgenMesh) -> Result<(TetMap, usize), Extrud
                 ExtrudeError::Output(format!("tet {k}: node {v} is not in prism {prism}"))
             })?;
             if let Some(h) = (v as usize).checked_sub(n_in).and_then(|i| home.get_mut(i)) {
-                if h.is_none_or(|(_, hd, _)| *d > hd) {
+                let deeper = match h {
+                    Some((_, hd, _)) => *d > *hd,
+                    None => true,
+                };
+                if deeper {
                     *h = Some((prism, *d, *c));
                 }
             }
