@@ -7,9 +7,11 @@
 //! 1. [`slab`]: the layered points (planar maps offset along ±z, surfaces
 //!    along area-weighted vertex normals) and prisms;
 //! 2. [`plc`]: the prism walls as constraint facets, one region per prism;
-//! 3. [`tetgen`]: TetGen run as an external program (`tetgen -pYzQA`,
-//!    `-q` with quality) — or, when asked and TetGen is absent, the
-//!    built-in 3-tet prism split ([`split`]);
+//! 3. [`tetgen`]: TetGen run as an external program (`tetgen -pYzQFN`,
+//!    each tet's prism from its nodes by [`label`]; `-pYzQAF` when that
+//!    fails or TetGen added points; `-pzQAFq` with quality) — or, when
+//!    asked and TetGen is absent, the built-in 3-tet prism split
+//!    ([`split`]);
 //! 4. [`chart`]: each tet gets its prism's triangle chart plus `w`;
 //!    Steiner points get the map of their preimage in the prism.
 //!
@@ -18,10 +20,12 @@
 #![warn(missing_docs)]
 
 pub mod chart;
+pub mod label;
 pub mod plc;
 pub mod slab;
 pub mod split;
 pub mod tetgen;
+pub mod text;
 pub mod volume;
 
 #[cfg(test)]
@@ -140,8 +144,8 @@ pub fn extrude(
     let slab = Slab::new(map, opts.layers, opts.thickness)?;
     let t0 = Instant::now();
     let mut fallback_reason = None;
-    let (mesh, used_tetgen) = match tetgen::run(&opts.program, &plc::poly_text(&slab), opts.quality)
-    {
+    let poly = plc::poly_text(&slab);
+    let (mesh, used_tetgen) = match tetgen::run(&opts.program, &poly, &slab, opts.quality) {
         Ok(m) => (m, true),
         Err(e @ (ExtrudeError::TetgenMissing(_) | ExtrudeError::TetgenFailed(_)))
             if opts.fallback =>

@@ -17,8 +17,7 @@
 //! ```
 
 use crate::slab::Slab;
-use std::collections::BTreeSet;
-use std::fmt::Write;
+use crate::text::{push_hex_float, push_uint};
 
 /// Triangle facets of the slab (module docs), as point ids.
 pub fn facets(slab: &Slab) -> Vec<[u32; 3]> {
@@ -26,11 +25,13 @@ pub fn facets(slab: &Slab) -> Vec<[u32; 3]> {
     for level in 0..=slab.layers {
         out.extend(slab.tris.iter().map(|t| t.map(|v| slab.point(v, level))));
     }
-    let edges: BTreeSet<(u32, u32)> = slab
+    let mut edges: Vec<(u32, u32)> = slab
         .tris
         .iter()
         .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
         .collect();
+    edges.sort_unstable();
+    edges.dedup();
     for l in 0..slab.layers {
         for &(a, b) in &edges {
             out.extend(wall(slab, a, b, l));
@@ -50,31 +51,48 @@ pub fn wall(slab: &Slab, a: u32, b: u32, l: usize) -> [[u32; 3]; 2] {
     [[a0, b0, b1], [a0, b1, a1]]
 }
 
-/// The `.poly` text: nodes, facets, no holes, one region per prism.
-pub fn poly_text(slab: &Slab) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "{} 3 0 0", slab.points.len());
-    for (i, p) in slab.points.iter().enumerate() {
-        let _ = writeln!(s, "{i} {:e} {:e} {:e}", p[0], p[1], p[2]);
-    }
+/// The `.poly` file (ASCII text): nodes, facets, no holes, one region per prism.
+/// Coordinates are hexadecimal floats ([`crate::text`]): exact, and
+/// written without `core::fmt`.
+pub fn poly_text(slab: &Slab) -> Vec<u8> {
     let f = facets(slab);
-    let _ = writeln!(s, "{} 0", f.len());
-    for t in &f {
-        let _ = writeln!(s, "1\n3 {} {} {}", t[0], t[1], t[2]);
+    let mut s = Vec::with_capacity(64 * slab.points.len() + 24 * f.len() + 80 * slab.prisms());
+    push_record(&mut s, &[slab.points.len() as u64, 3, 0, 0], &[], &[]);
+    for (i, p) in slab.points.iter().enumerate() {
+        push_record(&mut s, &[i as u64], p, &[]);
     }
-    let _ = writeln!(s, "0\n{}", slab.prisms());
+    push_record(&mut s, &[f.len() as u64, 0], &[], &[]);
+    for t in &f {
+        push_record(&mut s, &[1], &[], &[]);
+        push_record(&mut s, &[3], &[], &t.map(u64::from));
+    }
+    push_record(&mut s, &[0], &[], &[]);
+    push_record(&mut s, &[slab.prisms() as u64], &[], &[]);
     for prism in 0..slab.prisms() {
         let c = centroid(slab, prism);
-        let _ = writeln!(
-            s,
-            "{prism} {:e} {:e} {:e} {} 0",
-            c[0],
-            c[1],
-            c[2],
-            prism + 1
-        );
+        push_record(&mut s, &[prism as u64], &c, &[prism as u64 + 1, 0]);
     }
     s
+}
+
+/// Appends one line: the integers `head` (at least one), the floats `x`,
+/// the integers `tail`, separated by single spaces.
+fn push_record(s: &mut Vec<u8>, head: &[u64], x: &[f64], tail: &[u64]) {
+    for (k, &v) in head.iter().enumerate() {
+        if k > 0 {
+            s.push(b' ');
+        }
+        push_uint(s, v);
+    }
+    for &v in x {
+        s.push(b' ');
+        push_hex_float(s, v);
+    }
+    for &v in tail {
+        s.push(b' ');
+        push_uint(s, v);
+    }
+    s.push(b'\n');
 }
 
 /// A point strictly inside the prism's region: the centroid of the first
@@ -98,6 +116,7 @@ fn centroid(slab: &Slab, prism: usize) -> [f64; 3] {
 mod tests {
     use super::*;
     use dualex_map::TriMap;
+    use std::collections::BTreeSet;
 
     fn slab(layers: usize) -> Slab {
         let m = TriMap {
@@ -133,7 +152,7 @@ mod tests {
     #[test]
     fn poly_has_all_sections() {
         let s = slab(2);
-        let text = poly_text(&s);
+        let text = String::from_utf8(poly_text(&s)).expect("ASCII");
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines[0], "12 3 0 0");
         assert_eq!(lines[13], format!("{} 0", facets(&s).len()));

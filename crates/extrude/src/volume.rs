@@ -46,7 +46,7 @@ pub fn tetrahedralize_identity(
         let _ = writeln!(poly, "1\n3 {} {} {}", t[0], t[1], t[2]);
     }
     poly.push_str("0\n0\n");
-    let mesh = run_poly(program, &poly, "-pqzQA")?;
+    let mesh = run_poly(program, poly.as_bytes(), "-pqzQAF")?;
     let mut rng = SplitMix::new(opts.seed);
     let map_of: Vec<[f64; 3]> = mesh
         .nodes
