@@ -24,6 +24,7 @@
 #![warn(missing_docs)]
 
 mod fast;
+mod fmt;
 mod hexex;
 mod medit;
 mod obj;

@@ -1,7 +1,8 @@
 //! Quad and hex mesh output, to any `Write`.
 //!
-//! Formats (all exact: floats are printed in Rust's shortest round-trip
-//! form, or stored as binary doubles):
+//! Formats (all exact: floats are printed in shortest round-trip form —
+//! ryu for OBJ and MEDIT, formatted in parallel chunks ([`crate::fmt`]),
+//! Rust's `{:?}` for VTK — or stored as binary doubles):
 //! - quads: OBJ (`v`, `f a b c d`, 1-based), PLY (binary little endian,
 //!   double positions, `list uchar int vertex_indices`), legacy VTK ASCII
 //!   unstructured grid (`VTK_QUAD` = 9);
@@ -12,6 +13,7 @@
 //! written unchanged. Precondition, checked by [`check_cells`] before any
 //! byte is written by the file writers: indices in range, positions finite.
 
+use crate::fmt::{float, int, par_lines};
 use crate::ply_out::PlyWriter;
 use crate::PlyFormat;
 use dualex_map::{CellMesh, HexMesh, QuadMesh};
@@ -45,14 +47,22 @@ pub fn quad_obj(w: &mut impl Write, mesh: &QuadMesh) -> io::Result<()> {
         mesh.positions.len(),
         mesh.cells.len()
     )?;
-    for p in &mesh.positions {
-        writeln!(w, "v {:?} {:?} {:?}", p[0], p[1], p[2])?;
-    }
-    for q in &mesh.cells {
-        let [a, b, c, d] = q.map(|v| u64::from(v) + 1);
-        writeln!(w, "f {a} {b} {c} {d}")?;
-    }
-    Ok(())
+    par_lines(w, &mesh.positions, |out, p| {
+        out.push(b'v');
+        for &x in p {
+            out.push(b' ');
+            float(out, x);
+        }
+        out.push(b'\n');
+    })?;
+    par_lines(w, &mesh.cells, |out, q| {
+        out.push(b'f');
+        for &v in q {
+            out.push(b' ');
+            int(out, u64::from(v) + 1);
+        }
+        out.push(b'\n');
+    })
 }
 
 /// PLY with double positions and `vertex_indices` lists, in `format`.
@@ -123,17 +133,22 @@ pub fn hex_medit(w: &mut impl Write, mesh: &HexMesh) -> io::Result<()> {
     writeln!(w, "Dimension 3")?;
     writeln!(w, "Vertices")?;
     writeln!(w, "{}", mesh.positions.len())?;
-    for p in &mesh.positions {
-        writeln!(w, "{:?} {:?} {:?} 0", p[0], p[1], p[2])?;
-    }
+    par_lines(w, &mesh.positions, |out, p| {
+        for &x in p {
+            float(out, x);
+            out.push(b' ');
+        }
+        out.extend_from_slice(b"0\n");
+    })?;
     writeln!(w, "Hexahedra")?;
     writeln!(w, "{}", mesh.cells.len())?;
-    for h in &mesh.cells {
-        for v in h {
-            write!(w, "{} ", u64::from(*v) + 1)?;
+    par_lines(w, &mesh.cells, |out, h| {
+        for &v in h {
+            int(out, u64::from(v) + 1);
+            out.push(b' ');
         }
-        writeln!(w, "0")?;
-    }
+        out.extend_from_slice(b"0\n");
+    })?;
     writeln!(w, "End")
 }
 

@@ -11,10 +11,11 @@
 //! - tet map, `.hexex`: `n_v`, `x y z` lines, `n_t`, one line per tet with
 //!   its 4 indices (0-based) and 12 map coordinates.
 //!
-//! Floats are printed in Rust's shortest round-trip form (`{:?}`), which
+//! Floats are printed in their shortest round-trip form (ryu, see [`crate::fmt`]), which
 //! C's `strtod` and C++ streams read back exactly. The file writers validate
 //! the map ([`dualex_map::SimplexMap::validate`]) before writing.
 
+use crate::fmt::{float, int, par_lines};
 use crate::ply_out::PlyWriter;
 use crate::PlyFormat;
 use dualex_map::{TetMap, TriMap};
@@ -29,19 +30,34 @@ pub fn tri_map_obj(w: &mut impl Write, map: &TriMap) -> io::Result<()> {
         map.positions.len(),
         map.len()
     )?;
-    for p in &map.positions {
-        writeln!(w, "v {:?} {:?} {:?}", p[0], p[1], p[2])?;
-    }
+    par_lines(w, &map.positions, |out, p| {
+        out.push(b'v');
+        for &x in p {
+            out.push(b' ');
+            float(out, x);
+        }
+        out.push(b'\n');
+    })?;
     let (uvs, corner_vt) = shared_uvs(map);
-    for uv in &uvs {
-        writeln!(w, "vt {:?} {:?}", uv[0], uv[1])?;
-    }
-    for (t, vt) in map.simplices.iter().zip(&corner_vt) {
-        let [a, b, c] = t.map(|v| u64::from(v) + 1);
-        let [ta, tb, tc] = vt.map(|i| u64::from(i) + 1);
-        writeln!(w, "f {a}/{ta} {b}/{tb} {c}/{tc}")?;
-    }
-    Ok(())
+    par_lines(w, &uvs, |out, uv| {
+        out.extend_from_slice(b"vt");
+        for &x in uv {
+            out.push(b' ');
+            float(out, x);
+        }
+        out.push(b'\n');
+    })?;
+    let faces: Vec<(&[u32; 3], &[u32; 3])> = map.simplices.iter().zip(&corner_vt).collect();
+    par_lines(w, &faces, |out, (t, vt)| {
+        out.push(b'f');
+        for (&v, &i) in t.iter().zip(vt.iter()) {
+            out.push(b' ');
+            int(out, u64::from(v) + 1);
+            out.push(b'/');
+            int(out, u64::from(i) + 1);
+        }
+        out.push(b'\n');
+    })
 }
 
 /// The distinct (vertex, coordinate bits) pairs of `map`'s corners in order
@@ -94,16 +110,28 @@ pub fn tri_map_ply(w: &mut impl Write, map: &TriMap, format: PlyFormat) -> io::R
 /// HexEx `.hexex` (see the module docs).
 pub fn tet_map_hexex(w: &mut impl Write, map: &TetMap) -> io::Result<()> {
     writeln!(w, "{}", map.positions.len())?;
-    for p in &map.positions {
-        writeln!(w, "{:?} {:?} {:?}", p[0], p[1], p[2])?;
-    }
-    writeln!(w, "{}", map.len())?;
-    for (t, uvw) in map.simplices.iter().zip(&map.coords) {
-        write!(w, "{} {} {} {}", t[0], t[1], t[2], t[3])?;
-        for x in uvw.as_flattened() {
-            write!(w, " {x:?}")?;
+    par_lines(w, &map.positions, |out, p| {
+        for (k, &x) in p.iter().enumerate() {
+            if k > 0 {
+                out.push(b' ');
+            }
+            float(out, x);
         }
-        writeln!(w)?;
-    }
-    Ok(())
+        out.push(b'\n');
+    })?;
+    writeln!(w, "{}", map.len())?;
+    let tets: Vec<(&[u32; 4], &[[f64; 3]; 4])> = map.simplices.iter().zip(&map.coords).collect();
+    par_lines(w, &tets, |out, (t, uvw)| {
+        for (k, &v) in t.iter().enumerate() {
+            if k > 0 {
+                out.push(b' ');
+            }
+            int(out, u64::from(v));
+        }
+        for &x in uvw.as_flattened() {
+            out.push(b' ');
+            float(out, x);
+        }
+        out.push(b'\n');
+    })
 }
