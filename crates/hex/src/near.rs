@@ -17,15 +17,31 @@
 use crate::simplex::face_corners;
 use dualex_map::TetMap;
 
+use dualex_map::grid::{ceil, dist2d_below_eps, floor, round};
 pub use dualex_map::grid::{dist2d, grid_point_near_segment, near_int, EPS};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
 /// at `a`, at `b` (within [`EPS`] in the projection), or at neither.
 pub fn segment_near_iso_line(a: &[f64; 3], b: &[f64; 3]) -> Option<(bool, bool)> {
+    segment_near_iso_line_spanning(a, b, [true; 3])
+}
+
+/// [`segment_near_iso_line`] testing only the axis pairs whose both axes
+/// are `spans` (the segment's box, grown by `2·EPS`, holds an integer on
+/// that axis): a projection whose box holds no integer point has no grid
+/// point within `EPS`, so the answer is the same.
+pub fn segment_near_iso_line_spanning(
+    a: &[f64; 3],
+    b: &[f64; 3],
+    spans: [bool; 3],
+) -> Option<(bool, bool)> {
     for [i, j] in [[0, 1], [0, 2], [1, 2]] {
+        if !(spans[i] && spans[j]) {
+            continue;
+        }
         let (pa, pb) = ([a[i], a[j]], [b[i], b[j]]);
         if let Some(g) = grid_point_near_segment(&pa, &pb) {
-            return Some((dist2d(&g, &pa) < EPS, dist2d(&g, &pb) < EPS));
+            return Some((dist2d_below_eps(&g, &pa), dist2d_below_eps(&g, &pb)));
         }
     }
     None
@@ -59,20 +75,15 @@ pub fn triangle_near_grid_point(t: &[[f64; 3]; 3]) -> bool {
     // iterate the plane of the two axes other than the dominant normal one
     let z = (0..3).fold(0, |m, k| if n[k].abs() > n[m].abs() { k } else { m });
     let (x, y) = ((z + 1) % 3, (z + 2) % 3);
-    let lo = |k: usize| t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min).ceil() as i64;
-    let hi = |k: usize| {
-        t.iter()
-            .map(|p| p[k])
-            .fold(f64::NEG_INFINITY, f64::max)
-            .floor() as i64
-    };
+    let lo = |k: usize| ceil(t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min)) as i64;
+    let hi = |k: usize| floor(t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max)) as i64;
     for gx in lo(x)..=hi(x) {
         for gy in lo(y)..=hi(y) {
             let mut g = [0.0; 3];
             g[x] = gx as f64;
             g[y] = gy as f64;
             g[z] = t[0][z] - (n[x] * (g[x] - t[0][x]) + n[y] * (g[y] - t[0][y])) / n[z];
-            g[z] = g[z].round();
+            g[z] = round(g[z]);
             if dot(&sub(&g, &t[0]), &n).abs() / len >= EPS {
                 continue;
             }

@@ -90,7 +90,7 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
                 let y = e.rot.apply(&x_ref);
                 let x = &mut self.coords[e.simplex as usize][e.corner as usize];
                 for (xk, yk) in x.iter_mut().zip(y) {
-                    let snapped = yk + (*xk - yk).round();
+                    let snapped = yk + crate::grid::round(*xk - yk);
                     max_move = max_move.max((snapped - *xk).abs());
                     *xk = snapped;
                 }
