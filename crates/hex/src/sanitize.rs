@@ -211,9 +211,6 @@ struct BadScan {
     bad: Vec<bool>,
     /// Per tet: bit `k` set when the tet makes its corner `k` bad.
     mask: Vec<u8>,
-    /// Vertex → incident tets (CSR).
-    inc_offsets: Vec<u32>,
-    inc: Vec<u32>,
     v_stamp: Vec<u32>,
     s_stamp: Vec<u32>,
     epoch: u32,
@@ -225,21 +222,6 @@ const MIN_TASK: usize = 512;
 impl BadScan {
     fn new(map: &TetMap, coords: &[[[f64; 3]; 4]]) -> Self {
         let nv = map.positions.len();
-        let mut inc_offsets = vec![0u32; nv + 1];
-        for &v in map.simplices.iter().flatten() {
-            inc_offsets[v as usize + 1] += 1;
-        }
-        for v in 0..nv {
-            inc_offsets[v + 1] += inc_offsets[v];
-        }
-        let mut fill = inc_offsets.clone();
-        let mut inc = vec![0u32; 4 * map.simplices.len()];
-        for (s, tet) in map.simplices.iter().enumerate() {
-            for &v in tet {
-                inc[fill[v as usize] as usize] = s as u32;
-                fill[v as usize] += 1;
-            }
-        }
         let mask: Vec<u8> = coords
             .par_iter()
             .with_min_len(MIN_TASK)
@@ -254,8 +236,6 @@ impl BadScan {
         BadScan {
             bad,
             mask,
-            inc_offsets,
-            inc,
             v_stamp: vec![0; nv],
             s_stamp: vec![0; map.simplices.len()],
             epoch: 0,
@@ -303,16 +283,12 @@ impl BadScan {
                 }
             }
         }
+        // a vertex's star holds all its corners
         for w in verts {
-            let (a, b) = (
-                self.inc_offsets[w as usize],
-                self.inc_offsets[w as usize + 1],
-            );
-            self.bad[w as usize] = self.inc[a as usize..b as usize].iter().any(|&s| {
-                let tet = &map.simplices[s as usize];
-                let m = self.mask[s as usize];
-                (0..4).any(|k| tet[k] == w && m >> k & 1 != 0)
-            });
+            self.bad[w as usize] = stars
+                .of(w as usize)
+                .iter()
+                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
         }
     }
 }

@@ -156,9 +156,6 @@ struct BadScan {
     bad: Vec<bool>,
     /// Per triangle: bit `k` set when the triangle makes its corner `k` bad.
     mask: Vec<u8>,
-    /// Vertex → incident triangles (CSR).
-    inc_offsets: Vec<u32>,
-    inc: Vec<u32>,
     v_stamp: Vec<u32>,
     s_stamp: Vec<u32>,
     epoch: u32,
@@ -171,21 +168,6 @@ const MIN_TASK: usize = 1024;
 impl BadScan {
     fn new(map: &TriMap, local: &LocalMap) -> Self {
         let nv = map.positions.len();
-        let mut inc_offsets = vec![0u32; nv + 1];
-        for &v in map.simplices.iter().flatten() {
-            inc_offsets[v as usize + 1] += 1;
-        }
-        for v in 0..nv {
-            inc_offsets[v + 1] += inc_offsets[v];
-        }
-        let mut fill = inc_offsets.clone();
-        let mut inc = vec![0u32; 3 * map.simplices.len()];
-        for (s, tri) in map.simplices.iter().enumerate() {
-            for &v in tri {
-                inc[fill[v as usize] as usize] = s as u32;
-                fill[v as usize] += 1;
-            }
-        }
         let mask: Vec<u8> = local
             .coords
             .par_iter()
@@ -202,8 +184,6 @@ impl BadScan {
         BadScan {
             bad,
             mask,
-            inc_offsets,
-            inc,
             v_stamp,
             s_stamp,
             epoch: 0,
@@ -251,16 +231,12 @@ impl BadScan {
                 }
             }
         }
+        // a vertex's star holds all its corners
         for w in verts {
-            let (a, b) = (
-                self.inc_offsets[w as usize],
-                self.inc_offsets[w as usize + 1],
-            );
-            self.bad[w as usize] = self.inc[a as usize..b as usize].iter().any(|&s| {
-                let tri = &map.simplices[s as usize];
-                let m = self.mask[s as usize];
-                (0..3).any(|k| tri[k] == w && m >> k & 1 != 0)
-            });
+            self.bad[w as usize] = stars
+                .of(w as usize)
+                .iter()
+                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
         }
     }
 }
