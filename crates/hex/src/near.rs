@@ -17,29 +17,40 @@
 use crate::simplex::face_corners;
 use dualex_map::TetMap;
 
-use dualex_map::grid::{ceil, dist2d_below_eps, floor, round};
+use dualex_map::grid::{ceil, dist2d_below_eps, floor, round, segment_clear_of_grid};
 pub use dualex_map::grid::{dist2d, grid_point_near_segment, near_int, EPS};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
 /// at `a`, at `b` (within [`EPS`] in the projection), or at neither.
 pub fn segment_near_iso_line(a: &[f64; 3], b: &[f64; 3]) -> Option<(bool, bool)> {
-    segment_near_iso_line_spanning(a, b, [true; 3])
+    for [i, j] in [[0, 1], [0, 2], [1, 2]] {
+        let (pa, pb) = ([a[i], a[j]], [b[i], b[j]]);
+        if let Some(g) = grid_point_near_segment(&pa, &pb) {
+            return Some((dist2d(&g, &pa) < EPS, dist2d(&g, &pb) < EPS));
+        }
+    }
+    None
 }
 
-/// [`segment_near_iso_line`] testing only the axis pairs whose both axes
-/// are `spans` (the segment's box, grown by `2·EPS`, holds an integer on
-/// that axis): a projection whose box holds no integer point has no grid
-/// point within `EPS`, so the answer is the same.
-pub fn segment_near_iso_line_spanning(
+/// [`segment_near_iso_line`] for a segment whose box, grown by `2·EPS`,
+/// holds the integers `range[k][0]..=range[k][1]` on axis `k`: an axis pair
+/// is skipped when the projection's box holds no integer point, or when
+/// [`segment_clear_of_grid`] shows none is near (the answer is the same:
+/// a grid point within `EPS` of the projection lies in its grown box).
+pub fn segment_near_iso_line_in_box(
     a: &[f64; 3],
     b: &[f64; 3],
-    spans: [bool; 3],
+    range: &[[f64; 2]; 3],
 ) -> Option<(bool, bool)> {
     for [i, j] in [[0, 1], [0, 2], [1, 2]] {
-        if !(spans[i] && spans[j]) {
+        let (lo, hi) = ([range[i][0], range[j][0]], [range[i][1], range[j][1]]);
+        if lo[0] > hi[0] || lo[1] > hi[1] {
             continue;
         }
         let (pa, pb) = ([a[i], a[j]], [b[i], b[j]]);
+        if segment_clear_of_grid(&pa, &pb, lo, hi) {
+            continue;
+        }
         if let Some(g) = grid_point_near_segment(&pa, &pb) {
             return Some((dist2d_below_eps(&g, &pa), dist2d_below_eps(&g, &pb)));
         }

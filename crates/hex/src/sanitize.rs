@@ -20,7 +20,7 @@
 
 use crate::clusters::Clusters;
 use crate::local::LocalMap;
-use crate::near::{near_int, segment_near_iso_line_spanning, triangle_near_grid_point};
+use crate::near::{near_int, segment_near_iso_line_in_box, triangle_near_grid_point};
 use crate::rng::SplitMix;
 use crate::simplex::face_corners;
 use dualex_map::grid::{box_bounds, box_spans};
@@ -298,16 +298,23 @@ const EDGES: [[usize; 2]; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
 /// The edges (indices into [`EDGES`]) of face `f` (opposite corner `f`).
 const FACE_EDGES: [[usize; 3]; 4] = [[3, 4, 5], [1, 2, 5], [0, 2, 4], [0, 1, 3]];
 
+/// Per corner and axis of a tet: its [`box_bounds`].
+type Bounds = [[[f64; 2]; 3]; 4];
+
+fn corner_bounds(c: &[[f64; 3]; 4]) -> Bounds {
+    let mut b = [[[0.0; 2]; 3]; 4];
+    for (bk, ck) in b.iter_mut().zip(c) {
+        for (bka, &x) in bk.iter_mut().zip(ck) {
+            *bka = box_bounds(x);
+        }
+    }
+    b
+}
+
 /// Per edge of a tet: bit `a` set when the edge's box, grown by `2·EPS`,
 /// holds an integer on axis `a` (no iso-line or grid point within `EPS` of
 /// the edge otherwise; see [`box_spans`], also for faces).
-fn edge_spans(c: &[[f64; 3]; 4]) -> [u8; 6] {
-    let mut b = [[[0.0; 2]; 3]; 4];
-    for k in 0..4 {
-        for a in 0..3 {
-            b[k][a] = box_bounds(c[k][a]);
-        }
-    }
+fn edge_spans(b: &Bounds) -> [u8; 6] {
     let mut span = [0u8; 6];
     for (bits, &[k, l]) in span.iter_mut().zip(&EDGES) {
         for (a, (&bk, &bl)) in b[k].iter().zip(&b[l]).enumerate() {
@@ -315,6 +322,21 @@ fn edge_spans(c: &[[f64; 3]; 4]) -> [u8; 6] {
         }
     }
     span
+}
+
+/// The integer range of edge `k`–`l`'s box (grown by `2·EPS`) per axis.
+fn edge_range(b: &Bounds, k: usize, l: usize) -> [[f64; 2]; 3] {
+    let (lo, hi) = (
+        |x: f64, y: f64| if y < x { y } else { x },
+        |x: f64, y: f64| {
+            if y > x {
+                y
+            } else {
+                x
+            }
+        },
+    );
+    std::array::from_fn(|a| [lo(b[k][a][0], b[l][a][0]), hi(b[k][a][1], b[l][a][1])])
 }
 
 /// The corners that a tet (corners `c`) makes bad, as a mask, with the
@@ -328,14 +350,15 @@ fn tet_mask(c: &[[f64; 3]; 4]) -> u8 {
             mask |= 1 << k;
         }
     }
-    let span = edge_spans(c);
+    let bounds = corner_bounds(c);
+    let span = edge_spans(&bounds);
     for (&[k, l], &bits) in EDGES.iter().zip(&span) {
         // fewer than two axes
         if bits & bits.wrapping_sub(1) == 0 {
             continue;
         }
-        let spans = [0, 1, 2].map(|a| bits >> a & 1 != 0);
-        if let Some((at_k, at_l)) = segment_near_iso_line_spanning(&c[k], &c[l], spans) {
+        let range = edge_range(&bounds, k, l);
+        if let Some((at_k, at_l)) = segment_near_iso_line_in_box(&c[k], &c[l], &range) {
             mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
         }
     }
@@ -423,7 +446,7 @@ mod scan_tests {
                     }
                 })
             });
-            let span = edge_spans(&c);
+            let span = edge_spans(&corner_bounds(&c));
             for a in 0..3 {
                 for (e, &[k, l]) in EDGES.iter().enumerate() {
                     let want = spans_integer(&[&c[k], &c[l]], a);

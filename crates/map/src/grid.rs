@@ -100,6 +100,44 @@ pub fn box_spans(p: [f64; 2], q: [f64; 2]) -> bool {
     p[0] <= q[1] || q[0] <= p[1]
 }
 
+/// Whether [`grid_point_near_segment`] certainly returns `None` for the
+/// segment `a`–`b`, whose box holds the integers `lo[k]..=hi[k]` on axis
+/// `k` (from [`box_bounds`] of its ends, grown by `2·EPS`: any grid point
+/// it finds is one of them). True when every such point is farther than
+/// `3·EPS` from the segment's line by the cross product; the rounding
+/// errors of that test and of the distance computed by
+/// [`grid_point_near_segment`] are below `1e-12` for coordinates under
+/// 1024, far from the `2·EPS` margin. `false` when unsure (larger
+/// coordinates, more than 4 points, a degenerate segment).
+#[inline]
+pub fn segment_clear_of_grid(a: &[f64; 2], b: &[f64; 2], lo: [f64; 2], hi: [f64; 2]) -> bool {
+    const SMALL: f64 = 1024.0;
+    if !(a[0].abs() < SMALL && a[1].abs() < SMALL && b[0].abs() < SMALL && b[1].abs() < SMALL) {
+        return false;
+    }
+    if hi[0] < lo[0] || hi[1] < lo[1] {
+        return true;
+    }
+    if (hi[0] - lo[0] + 1.0) * (hi[1] - lo[1] + 1.0) > 4.0 {
+        return false;
+    }
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let lim = 9.0 * EPS * EPS * (d[0] * d[0] + d[1] * d[1]);
+    let mut gx = lo[0];
+    while gx <= hi[0] {
+        let mut gy = lo[1];
+        while gy <= hi[1] {
+            let cr = d[0] * (gy - a[1]) - d[1] * (gx - a[0]);
+            if cr * cr <= lim {
+                return false;
+            }
+            gy += 1.0;
+        }
+        gx += 1.0;
+    }
+    true
+}
+
 /// Distance between two points of the plane.
 pub fn dist2d(a: &[f64; 2], b: &[f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
@@ -257,6 +295,40 @@ mod tests {
                 assert_eq!(got, reference(x, y), "{x:e} {y:e}");
             }
         }
+    }
+
+    /// [`segment_clear_of_grid`] never hides a grid point that
+    /// [`grid_point_near_segment`] finds, on segments through, next to and
+    /// ending at grid points, and clears most segments away from them.
+    #[test]
+    fn clear_segments_have_no_grid_point() {
+        let mut z = 11u64;
+        let mut next = || {
+            z = z
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (z >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut found, mut cleared) = (0, 0);
+        for k in 0..200000 {
+            let g = [(8.0 * next() - 4.0).round(), (8.0 * next() - 4.0).round()];
+            let dir = std::f64::consts::TAU * next();
+            let (u, v) = (dir.cos(), dir.sin());
+            // offset from the grid point across the segment: 0 to 4 EPS
+            let off = EPS * (4.0 * next()) * if k % 3 == 0 { 0.0 } else { 1.0 };
+            let (s0, s1) = (-2.0 * next(), 2.0 * next());
+            let (s0, s1) = if k % 5 == 0 { (0.0, s1) } else { (s0, s1) };
+            let p = |t: f64| [g[0] + t * u - off * v, g[1] + t * v + off * u];
+            let (a, b) = (p(s0), p(s1));
+            let lo = [0, 1].map(|x| box_bounds(a[x])[0].min(box_bounds(b[x])[0]));
+            let hi = [0, 1].map(|x| box_bounds(a[x])[1].max(box_bounds(b[x])[1]));
+            let near = grid_point_near_segment(&a, &b).is_some();
+            let clear = segment_clear_of_grid(&a, &b, lo, hi);
+            assert!(!(near && clear), "{a:?} {b:?}");
+            found += usize::from(near);
+            cleared += usize::from(clear);
+        }
+        assert!(found > 50000 && cleared > 20000, "{found} {cleared}");
     }
 
     #[test]

@@ -141,7 +141,9 @@ pub fn edge_near_grid_point(a: &[f64; 2], b: &[f64; 2]) -> bool {
 
 /// An integer point within [`EPS`] of segment `a`–`b`, if any.
 pub use dualex_map::grid::grid_point_near_segment as grid_point_near_edge;
-use dualex_map::grid::{box_bounds, box_spans, dist2d_below_eps as below_eps, near_int};
+use dualex_map::grid::{
+    box_bounds, box_spans, dist2d_below_eps as below_eps, near_int, segment_clear_of_grid,
+};
 use rayon::prelude::*;
 
 /// The vertices on an iso, or endpoints of an edge through a grid point,
@@ -251,7 +253,8 @@ fn spans_integer(a: &[f64; 2], b: &[f64; 2], axis: usize) -> bool {
 /// The corners that triangle `c` makes bad, as a mask: corners on an iso,
 /// endpoints of an edge through a grid point (a grid point at an endpoint
 /// is that endpoint's problem only). An edge is skipped unless its box,
-/// grown by `2·EPS`, holds an integer on both axes ([`box_spans`]).
+/// grown by `2·EPS`, holds an integer on both axes ([`box_spans`]) and one
+/// of those integer points is near its line ([`segment_clear_of_grid`]).
 fn tri_mask(c: &[[f64; 2]; 3]) -> u8 {
     let mut b = [[[0.0; 2]; 2]; 3];
     for k in 0..3 {
@@ -266,6 +269,16 @@ fn tri_mask(c: &[[f64; 2]; 3]) -> u8 {
         }
         let l = (k + 1) % 3;
         if !(box_spans(b[k][0], b[l][0]) && box_spans(b[k][1], b[l][1])) {
+            continue;
+        }
+        // the integer range of the edge's grown box per axis
+        let (mut lo, mut hi) = ([0.0; 2], [0.0; 2]);
+        for a in 0..2 {
+            let (bk, bl) = (b[k][a], b[l][a]);
+            lo[a] = if bl[0] < bk[0] { bl[0] } else { bk[0] };
+            hi[a] = if bl[1] > bk[1] { bl[1] } else { bk[1] };
+        }
+        if segment_clear_of_grid(&c[k], &c[l], lo, hi) {
             continue;
         }
         if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
