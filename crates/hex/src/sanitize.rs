@@ -66,7 +66,7 @@ pub fn sanitize(
         epoch: 0,
     };
     let mut amp = AMPLITUDE;
-    let mut scan = BadScan::new(map, &local.coords);
+    let mut scan = BadScan::new(map, stars, &local.coords);
     let mut bad = scan.list();
     for round in 0..ROUNDS {
         rep.rounds = round;
@@ -220,19 +220,24 @@ struct BadScan {
 const MIN_TASK: usize = 512;
 
 impl BadScan {
-    fn new(map: &TetMap, coords: &[[[f64; 3]; 4]]) -> Self {
+    fn new(map: &TetMap, stars: &Stars<3>, coords: &[[[f64; 3]; 4]]) -> Self {
         let nv = map.positions.len();
         let mask: Vec<u8> = coords
             .par_iter()
             .with_min_len(MIN_TASK)
             .map(tet_mask)
             .collect();
-        let mut bad = vec![false; nv];
-        for (tet, &m) in map.simplices.iter().zip(&mask) {
-            for (k, &v) in tet.iter().enumerate() {
-                bad[v as usize] |= m >> k & 1 != 0;
-            }
-        }
+        // a vertex's star holds all its corners
+        let bad = (0..nv)
+            .into_par_iter()
+            .with_min_len(MIN_TASK)
+            .map(|v| {
+                stars
+                    .of(v)
+                    .iter()
+                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
+            })
+            .collect();
         BadScan {
             bad,
             mask,
@@ -326,17 +331,7 @@ fn edge_spans(b: &Bounds) -> [u8; 6] {
 
 /// The integer range of edge `k`–`l`'s box (grown by `2·EPS`) per axis.
 fn edge_range(b: &Bounds, k: usize, l: usize) -> [[f64; 2]; 3] {
-    let (lo, hi) = (
-        |x: f64, y: f64| if y < x { y } else { x },
-        |x: f64, y: f64| {
-            if y > x {
-                y
-            } else {
-                x
-            }
-        },
-    );
-    std::array::from_fn(|a| [lo(b[k][a][0], b[l][a][0]), hi(b[k][a][1], b[l][a][1])])
+    std::array::from_fn(|a| [b[k][a][0].min(b[l][a][0]), b[k][a][1].max(b[l][a][1])])
 }
 
 /// The corners that a tet (corners `c`) makes bad, as a mask, with the
@@ -476,7 +471,7 @@ mod scan_tests {
             Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
         let stars = Stars::build(&map, &topo, &trans);
         let mut local = LocalMap::new(&map, &topo, &trans);
-        let mut scan = BadScan::new(&map, &local.coords);
+        let mut scan = BadScan::new(&map, &stars, &local.coords);
         assert_eq!(scan.list(), bad_vertices(&map, &local.coords));
         assert!(!scan.list().is_empty());
         let mut rng = SplitMix::new(5);

@@ -51,7 +51,7 @@ pub fn sanitize(
     let mut rng = SplitMix::new(seed);
     let mut moved = vec![false; map.positions.len()];
     let mut amp = AMPLITUDE;
-    let mut scan = BadScan::new(map, local);
+    let mut scan = BadScan::new(map, stars, local);
     let mut touched = Vec::new();
     // the last round in which each cluster root moved
     let mut done_round = vec![usize::MAX; map.positions.len()];
@@ -168,7 +168,7 @@ struct BadScan {
 const MIN_TASK: usize = 1024;
 
 impl BadScan {
-    fn new(map: &TriMap, local: &LocalMap) -> Self {
+    fn new(map: &TriMap, stars: &Stars<2>, local: &LocalMap) -> Self {
         let nv = map.positions.len();
         let mask: Vec<u8> = local
             .coords
@@ -176,12 +176,17 @@ impl BadScan {
             .with_min_len(MIN_TASK)
             .map(tri_mask)
             .collect();
-        let mut bad = vec![false; nv];
-        for (tri, &m) in map.simplices.iter().zip(&mask) {
-            for (k, &v) in tri.iter().enumerate() {
-                bad[v as usize] |= m >> k & 1 != 0;
-            }
-        }
+        // a vertex's star holds all its corners
+        let bad = (0..nv)
+            .into_par_iter()
+            .with_min_len(MIN_TASK)
+            .map(|v| {
+                stars
+                    .of(v)
+                    .iter()
+                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
+            })
+            .collect();
         let (v_stamp, s_stamp) = (vec![0; nv], vec![0; map.simplices.len()]);
         BadScan {
             bad,
@@ -306,8 +311,8 @@ mod tests {
         let stars = Stars::build(&map, &topo, &trans);
         let mut local = LocalMap::new(&map, &topo, &trans);
         // a fresh scan tests every triangle
-        let full = |local: &LocalMap| BadScan::new(&map, local).list();
-        let mut scan = BadScan::new(&map, &local);
+        let full = |local: &LocalMap| BadScan::new(&map, &stars, local).list();
+        let mut scan = BadScan::new(&map, &stars, &local);
         assert_eq!(scan.list(), full(&local));
         let mut rng = SplitMix::new(9);
         let nv = map.positions.len();
