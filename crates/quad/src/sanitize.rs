@@ -298,8 +298,9 @@ fn tri_mask(c: &[[f64; 2]; 3]) -> u8 {
 mod tests {
     use super::*;
 
-    /// The incremental scan equals a full scan (every triangle tested)
-    /// after moves onto isos, through grid points, and random steps.
+    /// The incremental scan equals a full unfiltered scan (every triangle,
+    /// every edge tested) after moves onto isos, through grid points, and
+    /// random steps.
     #[test]
     fn incremental_scan_equals_full_scan() {
         use dualex_map::{Topology, Transitions};
@@ -310,8 +311,25 @@ mod tests {
             Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
         let stars = Stars::build(&map, &topo, &trans);
         let mut local = LocalMap::new(&map, &topo, &trans);
-        // a fresh scan tests every triangle
-        let full = |local: &LocalMap| BadScan::new(&map, &stars, local).list();
+        // every triangle tested without the box filters, as in the paper
+        let full = |local: &LocalMap| {
+            let mut bad = vec![false; map.positions.len()];
+            for (tri, c) in map.simplices.iter().zip(&local.coords) {
+                for k in 0..3 {
+                    let l = (k + 1) % 3;
+                    bad[tri[k] as usize] |= near_int(c[k][0]) || near_int(c[k][1]);
+                    if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
+                        let dist = dualex_map::grid::dist2d;
+                        let (at_k, at_l) = (dist(&g, &c[k]) < EPS, dist(&g, &c[l]) < EPS);
+                        bad[tri[k] as usize] |= at_k || !at_l;
+                        bad[tri[l] as usize] |= at_l || !at_k;
+                    }
+                }
+            }
+            (0..bad.len() as u32)
+                .filter(|&v| bad[v as usize])
+                .collect::<Vec<u32>>()
+        };
         let mut scan = BadScan::new(&map, &stars, &local);
         assert_eq!(scan.list(), full(&local));
         let mut rng = SplitMix::new(9);
