@@ -13,11 +13,16 @@
 //! [`bad_vertices`] turns these into the vertices to move; a grid point at
 //! (or next to) an endpoint is that endpoint's problem only, so a vertex
 //! that cannot move (singular) does not keep its neighbours moving.
+//! [`corner_bounds`], [`edge_spans`], [`edge_range`] and
+//! [`segment_near_iso_line_in_box`] are the exact box prefilters of the
+//! incremental scan (`crate::sanitize`): same answers, fewer tests.
 
 use crate::simplex::face_corners;
 use dualex_map::TetMap;
 
-use dualex_map::grid::{ceil, dist2d_below_eps, floor, round, segment_clear_of_grid};
+use dualex_map::grid::{
+    box_bounds, box_spans, ceil, dist2d_below_eps, floor, round, segment_clear_of_grid,
+};
 pub use dualex_map::grid::{dist2d, grid_point_near_segment, near_int, EPS};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
@@ -56,6 +61,47 @@ pub fn segment_near_iso_line_in_box(
         }
     }
     None
+}
+
+/// The edges of a tet as corner pairs, in the order of the reference scan.
+pub const EDGES: [[usize; 2]; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+/// The edges (indices into [`EDGES`]) of face `f` (opposite corner `f`).
+pub const FACE_EDGES: [[usize; 3]; 4] = [[3, 4, 5], [1, 2, 5], [0, 2, 4], [0, 1, 3]];
+
+/// Per corner and axis of a tet: its [`box_bounds`].
+pub type Bounds = [[[f64; 2]; 3]; 4];
+
+/// The [`box_bounds`] of every coordinate of a tet.
+pub fn corner_bounds(c: &[[f64; 3]; 4]) -> Bounds {
+    let mut b = [[[0.0; 2]; 3]; 4];
+    for (bk, ck) in b.iter_mut().zip(c) {
+        for (bka, &x) in bk.iter_mut().zip(ck) {
+            *bka = box_bounds(x);
+        }
+    }
+    b
+}
+
+/// Per edge of a tet: bit `a` set when the edge's box, grown by `2·EPS`,
+/// holds an integer on axis `a` (no iso-line or grid point within `EPS` of
+/// the edge otherwise; see [`box_spans`], also for faces).
+pub fn edge_spans(b: &Bounds) -> [u8; 6] {
+    let mut span = [0u8; 6];
+    for (bits, &[k, l]) in span.iter_mut().zip(&EDGES) {
+        for (a, (&bk, &bl)) in b[k].iter().zip(&b[l]).enumerate() {
+            *bits |= u8::from(box_spans(bk, bl)) << a;
+        }
+    }
+    span
+}
+
+/// The integer range of edge `k`–`l`'s box (grown by `2·EPS`) per axis.
+pub fn edge_range(b: &Bounds, k: usize, l: usize) -> [[f64; 2]; 3] {
+    // not NaN (validated input): plain comparisons, cheaper than f64::min
+    std::array::from_fn(|a| {
+        let ([lk, hk], [ll, hl]) = (b[k][a], b[l][a]);
+        [if ll < lk { ll } else { lk }, if hl > hk { hl } else { hk }]
+    })
 }
 
 fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {

@@ -20,10 +20,12 @@
 
 use crate::clusters::Clusters;
 use crate::local::LocalMap;
-use crate::near::{near_int, segment_near_iso_line_in_box, triangle_near_grid_point};
+use crate::near::{
+    corner_bounds, edge_range, edge_spans, near_int, segment_near_iso_line_in_box,
+    triangle_near_grid_point, EDGES, FACE_EDGES,
+};
 use crate::rng::SplitMix;
 use crate::simplex::face_corners;
-use dualex_map::grid::{box_bounds, box_spans};
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
 use rayon::prelude::*;
 use std::collections::HashSet;
@@ -298,42 +300,6 @@ impl BadScan {
     }
 }
 
-/// The edges of a tet as corner pairs, in the order of the reference scan.
-const EDGES: [[usize; 2]; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
-/// The edges (indices into [`EDGES`]) of face `f` (opposite corner `f`).
-const FACE_EDGES: [[usize; 3]; 4] = [[3, 4, 5], [1, 2, 5], [0, 2, 4], [0, 1, 3]];
-
-/// Per corner and axis of a tet: its [`box_bounds`].
-type Bounds = [[[f64; 2]; 3]; 4];
-
-fn corner_bounds(c: &[[f64; 3]; 4]) -> Bounds {
-    let mut b = [[[0.0; 2]; 3]; 4];
-    for (bk, ck) in b.iter_mut().zip(c) {
-        for (bka, &x) in bk.iter_mut().zip(ck) {
-            *bka = box_bounds(x);
-        }
-    }
-    b
-}
-
-/// Per edge of a tet: bit `a` set when the edge's box, grown by `2·EPS`,
-/// holds an integer on axis `a` (no iso-line or grid point within `EPS` of
-/// the edge otherwise; see [`box_spans`], also for faces).
-fn edge_spans(b: &Bounds) -> [u8; 6] {
-    let mut span = [0u8; 6];
-    for (bits, &[k, l]) in span.iter_mut().zip(&EDGES) {
-        for (a, (&bk, &bl)) in b[k].iter().zip(&b[l]).enumerate() {
-            *bits |= u8::from(box_spans(bk, bl)) << a;
-        }
-    }
-    span
-}
-
-/// The integer range of edge `k`–`l`'s box (grown by `2·EPS`) per axis.
-fn edge_range(b: &Bounds, k: usize, l: usize) -> [[f64; 2]; 3] {
-    std::array::from_fn(|a| [b[k][a][0].min(b[l][a][0]), b[k][a][1].max(b[l][a][1])])
-}
-
 /// The corners that a tet (corners `c`) makes bad, as a mask, with the
 /// tests of [`crate::near::bad_vertices`] (edges whose box holds an integer
 /// on fewer than two axes, faces whose box misses one, skipped: they cannot
@@ -377,15 +343,15 @@ mod scan_tests {
     /// Whether the box of `pts` (grown by `2·EPS`) holds an integer on `axis`
     /// (the reference formulation of [`edge_spans`]).
     fn spans_integer(pts: &[&[f64; 3]], axis: usize) -> bool {
-        let lo = pts.iter().map(|p| p[axis]).fold(f64::INFINITY, f64::min);
-        let hi = pts
-            .iter()
-            .map(|p| p[axis])
-            .fold(f64::NEG_INFINITY, f64::max);
+        let x = pts.iter().map(|p| p[axis]);
+        let (lo, hi) = (
+            x.clone().fold(f64::INFINITY, f64::min),
+            x.fold(-f64::INFINITY, f64::max),
+        );
         (lo - 2.0 * EPS).ceil() <= hi + 2.0 * EPS
     }
 
-    /// The box prefilter of [`mark_tet`] never hides an iso-line or a grid
+    /// The box prefilter of [`tet_mask`] never hides an iso-line or a grid
     /// point: whenever the exact tests find one, the box spans integers.
     #[test]
     fn boxes_without_integers_are_never_near_the_grid() {

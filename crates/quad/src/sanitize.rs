@@ -354,7 +354,7 @@ mod tests {
         }
     }
 
-    /// The box prefilter of [`mark_tri`] never hides a grid point.
+    /// The box prefilter of [`tri_mask`] never hides a grid point.
     #[test]
     fn edges_whose_box_holds_no_grid_point_are_never_near_one() {
         let mut rng = SplitMix::new(3);
