@@ -13,10 +13,16 @@
 //! [`bad_vertices`] turns these into the vertices to move; a grid point at
 //! (or next to) an endpoint is that endpoint's problem only, so a vertex
 //! that cannot move (singular) does not keep its neighbours moving.
+//! [`corner_bounds`], [`edge_spans`], [`edge_range`] and
+//! [`segment_near_iso_line_in_box`] are the exact box prefilters of the
+//! incremental scan (`crate::sanitize`): same answers, fewer tests.
 
 use crate::simplex::face_corners;
 use dualex_map::TetMap;
 
+use dualex_map::grid::{
+    box_bounds, box_spans, ceil, dist2d_below_eps, floor, round, segment_clear_of_grid,
+};
 pub use dualex_map::grid::{dist2d, grid_point_near_segment, near_int, EPS};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
@@ -29,6 +35,73 @@ pub fn segment_near_iso_line(a: &[f64; 3], b: &[f64; 3]) -> Option<(bool, bool)>
         }
     }
     None
+}
+
+/// [`segment_near_iso_line`] for a segment whose box, grown by `2·EPS`,
+/// holds the integers `range[k][0]..=range[k][1]` on axis `k`: an axis pair
+/// is skipped when the projection's box holds no integer point, or when
+/// [`segment_clear_of_grid`] shows none is near (the answer is the same:
+/// a grid point within `EPS` of the projection lies in its grown box).
+pub fn segment_near_iso_line_in_box(
+    a: &[f64; 3],
+    b: &[f64; 3],
+    range: &[[f64; 2]; 3],
+) -> Option<(bool, bool)> {
+    for [i, j] in [[0, 1], [0, 2], [1, 2]] {
+        let (lo, hi) = ([range[i][0], range[j][0]], [range[i][1], range[j][1]]);
+        if lo[0] > hi[0] || lo[1] > hi[1] {
+            continue;
+        }
+        let (pa, pb) = ([a[i], a[j]], [b[i], b[j]]);
+        if segment_clear_of_grid(&pa, &pb, lo, hi) {
+            continue;
+        }
+        if let Some(g) = grid_point_near_segment(&pa, &pb) {
+            return Some((dist2d_below_eps(&g, &pa), dist2d_below_eps(&g, &pb)));
+        }
+    }
+    None
+}
+
+/// The edges of a tet as corner pairs, in the order of the reference scan.
+pub const EDGES: [[usize; 2]; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+/// The edges (indices into [`EDGES`]) of face `f` (opposite corner `f`).
+pub const FACE_EDGES: [[usize; 3]; 4] = [[3, 4, 5], [1, 2, 5], [0, 2, 4], [0, 1, 3]];
+
+/// Per corner and axis of a tet: its [`box_bounds`].
+pub type Bounds = [[[f64; 2]; 3]; 4];
+
+/// The [`box_bounds`] of every coordinate of a tet.
+pub fn corner_bounds(c: &[[f64; 3]; 4]) -> Bounds {
+    let mut b = [[[0.0; 2]; 3]; 4];
+    for (bk, ck) in b.iter_mut().zip(c) {
+        for (bka, &x) in bk.iter_mut().zip(ck) {
+            *bka = box_bounds(x);
+        }
+    }
+    b
+}
+
+/// Per edge of a tet: bit `a` set when the edge's box, grown by `2·EPS`,
+/// holds an integer on axis `a` (no iso-line or grid point within `EPS` of
+/// the edge otherwise; see [`box_spans`], also for faces).
+pub fn edge_spans(b: &Bounds) -> [u8; 6] {
+    let mut span = [0u8; 6];
+    for (bits, &[k, l]) in span.iter_mut().zip(&EDGES) {
+        for (a, (&bk, &bl)) in b[k].iter().zip(&b[l]).enumerate() {
+            *bits |= u8::from(box_spans(bk, bl)) << a;
+        }
+    }
+    span
+}
+
+/// The integer range of edge `k`–`l`'s box (grown by `2·EPS`) per axis.
+pub fn edge_range(b: &Bounds, k: usize, l: usize) -> [[f64; 2]; 3] {
+    // not NaN (validated input): plain comparisons, cheaper than f64::min
+    std::array::from_fn(|a| {
+        let ([lk, hk], [ll, hl]) = (b[k][a], b[l][a]);
+        [if ll < lk { ll } else { lk }, if hl > hk { hl } else { hk }]
+    })
 }
 
 fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
@@ -59,20 +132,15 @@ pub fn triangle_near_grid_point(t: &[[f64; 3]; 3]) -> bool {
     // iterate the plane of the two axes other than the dominant normal one
     let z = (0..3).fold(0, |m, k| if n[k].abs() > n[m].abs() { k } else { m });
     let (x, y) = ((z + 1) % 3, (z + 2) % 3);
-    let lo = |k: usize| t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min).ceil() as i64;
-    let hi = |k: usize| {
-        t.iter()
-            .map(|p| p[k])
-            .fold(f64::NEG_INFINITY, f64::max)
-            .floor() as i64
-    };
+    let lo = |k: usize| ceil(t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min)) as i64;
+    let hi = |k: usize| floor(t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max)) as i64;
     for gx in lo(x)..=hi(x) {
         for gy in lo(y)..=hi(y) {
             let mut g = [0.0; 3];
             g[x] = gx as f64;
             g[y] = gy as f64;
             g[z] = t[0][z] - (n[x] * (g[x] - t[0][x]) + n[y] * (g[y] - t[0][y])) / n[z];
-            g[z] = g[z].round();
+            g[z] = round(g[z]);
             if dot(&sub(&g, &t[0]), &n).abs() / len >= EPS {
                 continue;
             }

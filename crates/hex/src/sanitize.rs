@@ -20,10 +20,14 @@
 
 use crate::clusters::Clusters;
 use crate::local::LocalMap;
-use crate::near::{near_int, segment_near_iso_line, triangle_near_grid_point, EPS};
+use crate::near::{
+    corner_bounds, edge_range, edge_spans, near_int, segment_near_iso_line_in_box,
+    triangle_near_grid_point, EDGES, FACE_EDGES,
+};
 use crate::rng::SplitMix;
 use crate::simplex::face_corners;
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
+use rayon::prelude::*;
 use std::collections::HashSet;
 
 /// Initial perturbation amplitude (map units).
@@ -64,7 +68,7 @@ pub fn sanitize(
         epoch: 0,
     };
     let mut amp = AMPLITUDE;
-    let mut scan = BadScan::new(map, &local.coords);
+    let mut scan = BadScan::new(map, stars, &local.coords);
     let mut bad = scan.list();
     for round in 0..ROUNDS {
         rep.rounds = round;
@@ -197,46 +201,48 @@ fn singular_free_axis(
     }
 }
 
-/// [`crate::near::bad_vertices`], kept up to date incrementally: after a
-/// round only the tets around the vertices whose tets moved are tested
-/// again (a tet's test depends on its own corners only, so the result is
-/// that of a full scan; a full scan every round made the rounds dominate).
+/// [`crate::near::bad_vertices`], kept up to date incrementally. Each tet's
+/// test (a function of its own corners only) is kept as a mask of the
+/// corners it makes bad, and a vertex is bad iff some incident tet's mask
+/// says so; after a round only the tets in the stars of the moved vertices
+/// are tested again, and only the vertices of tets whose mask changed are
+/// re-derived, so the result is that of a full scan. The tests run in
+/// parallel (order-preserving collect; the masks do not depend on the
+/// thread count).
 struct BadScan {
     bad: Vec<bool>,
-    /// Vertex → incident tets (CSR).
-    inc_offsets: Vec<u32>,
-    inc: Vec<u32>,
+    /// Per tet: bit `k` set when the tet makes its corner `k` bad.
+    mask: Vec<u8>,
     v_stamp: Vec<u32>,
     s_stamp: Vec<u32>,
     epoch: u32,
 }
 
+/// Tets per parallel task: below this, splitting costs more than it saves.
+const MIN_TASK: usize = 512;
+
 impl BadScan {
-    fn new(map: &TetMap, coords: &[[[f64; 3]; 4]]) -> Self {
+    fn new(map: &TetMap, stars: &Stars<3>, coords: &[[[f64; 3]; 4]]) -> Self {
         let nv = map.positions.len();
-        let mut inc_offsets = vec![0u32; nv + 1];
-        for &v in map.simplices.iter().flatten() {
-            inc_offsets[v as usize + 1] += 1;
-        }
-        for v in 0..nv {
-            inc_offsets[v + 1] += inc_offsets[v];
-        }
-        let mut fill = inc_offsets.clone();
-        let mut inc = vec![0u32; 4 * map.simplices.len()];
-        for (s, tet) in map.simplices.iter().enumerate() {
-            for &v in tet {
-                inc[fill[v as usize] as usize] = s as u32;
-                fill[v as usize] += 1;
-            }
-        }
-        let mut bad = vec![false; nv];
-        for (tet, c) in map.simplices.iter().zip(coords) {
-            mark_tet(tet, c, &mut bad);
-        }
+        let mask: Vec<u8> = coords
+            .par_iter()
+            .with_min_len(MIN_TASK)
+            .map(tet_mask)
+            .collect();
+        // a vertex's star holds all its corners
+        let bad = (0..nv)
+            .into_par_iter()
+            .with_min_len(MIN_TASK)
+            .map(|v| {
+                stars
+                    .of(v)
+                    .iter()
+                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
+            })
+            .collect();
         BadScan {
             bad,
-            inc_offsets,
-            inc,
+            mask,
             v_stamp: vec![0; nv],
             s_stamp: vec![0; map.simplices.len()],
             epoch: 0,
@@ -254,79 +260,98 @@ impl BadScan {
     fn update(&mut self, map: &TetMap, stars: &Stars<3>, coords: &[[[f64; 3]; 4]], moved: &[u32]) {
         self.epoch += 1;
         let epoch = self.epoch;
-        // vertices of the changed tets: their status is recomputed
+        // the tets whose corners moved
         let mut redo = Vec::new();
         for &v in moved {
             for e in stars.of(v as usize) {
-                for &w in &map.simplices[e.simplex as usize] {
-                    if self.v_stamp[w as usize] != epoch {
-                        self.v_stamp[w as usize] = epoch;
-                        self.bad[w as usize] = false;
-                        redo.push(w);
-                    }
-                }
-            }
-        }
-        for &w in &redo {
-            for k in self.inc_offsets[w as usize]..self.inc_offsets[w as usize + 1] {
-                let s = self.inc[k as usize] as usize;
+                let s = e.simplex as usize;
                 if self.s_stamp[s] != epoch {
                     self.s_stamp[s] = epoch;
-                    mark_tet(&map.simplices[s], &coords[s], &mut self.bad);
+                    redo.push(e.simplex);
                 }
             }
         }
-    }
-}
-
-/// Whether the box of `pts` (grown by `2·EPS`) holds an integer on `axis`:
-/// no iso-line or grid point within `EPS` of them otherwise.
-fn spans_integer(pts: &[&[f64; 3]], axis: usize) -> bool {
-    let lo = pts.iter().map(|p| p[axis]).fold(f64::INFINITY, f64::min);
-    let hi = pts
-        .iter()
-        .map(|p| p[axis])
-        .fold(f64::NEG_INFINITY, f64::max);
-    (lo - 2.0 * EPS).ceil() <= hi + 2.0 * EPS
-}
-
-/// Marks the vertices that tet `tet` (corners `c`) makes bad, with the
-/// tests of [`crate::near::bad_vertices`] (edges and faces whose box holds
-/// no integer on enough axes skipped: they cannot be near the grid).
-fn mark_tet(tet: &[u32; 4], c: &[[f64; 3]; 4], bad: &mut [bool]) {
-    for k in 0..4 {
-        if c[k].iter().any(|&x| near_int(x)) {
-            bad[tet[k] as usize] = true;
-        }
-        for l in k + 1..4 {
-            if (0..3)
-                .filter(|&a| spans_integer(&[&c[k], &c[l]], a))
-                .count()
-                < 2
-            {
+        let masks: Vec<u8> = redo
+            .par_iter()
+            .with_min_len(MIN_TASK)
+            .map(|&s| tet_mask(&coords[s as usize]))
+            .collect();
+        // the vertices of the tets whose mask changed
+        let mut verts = Vec::new();
+        for (&s, &m) in redo.iter().zip(&masks) {
+            if self.mask[s as usize] == m {
                 continue;
             }
-            if let Some((at_k, at_l)) = segment_near_iso_line(&c[k], &c[l]) {
-                bad[tet[k] as usize] |= at_k || !at_l;
-                bad[tet[l] as usize] |= at_l || !at_k;
+            self.mask[s as usize] = m;
+            for &w in &map.simplices[s as usize] {
+                if self.v_stamp[w as usize] != epoch {
+                    self.v_stamp[w as usize] = epoch;
+                    verts.push(w);
+                }
             }
         }
-    }
-    for f in 0..4 {
-        let fc = face_corners(f);
-        let pts = fc.map(|i| &c[i]);
-        if (0..3).all(|a| spans_integer(&pts, a)) && triangle_near_grid_point(&fc.map(|i| c[i])) {
-            fc.iter().for_each(|&i| bad[tet[i] as usize] = true);
+        // a vertex's star holds all its corners
+        for w in verts {
+            self.bad[w as usize] = stars
+                .of(w as usize)
+                .iter()
+                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
         }
     }
+}
+
+/// The corners that a tet (corners `c`) makes bad, as a mask, with the
+/// tests of [`crate::near::bad_vertices`] (edges whose box holds an integer
+/// on fewer than two axes, faces whose box misses one, skipped: they cannot
+/// be near an iso-line or a grid point).
+fn tet_mask(c: &[[f64; 3]; 4]) -> u8 {
+    let mut mask = 0u8;
+    for (k, p) in c.iter().enumerate() {
+        if p.iter().any(|&x| near_int(x)) {
+            mask |= 1 << k;
+        }
+    }
+    let bounds = corner_bounds(c);
+    let span = edge_spans(&bounds);
+    for (&[k, l], &bits) in EDGES.iter().zip(&span) {
+        // fewer than two axes
+        if bits & bits.wrapping_sub(1) == 0 {
+            continue;
+        }
+        let range = edge_range(&bounds, k, l);
+        if let Some((at_k, at_l)) = segment_near_iso_line_in_box(&c[k], &c[l], &range) {
+            mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
+        }
+    }
+    for (f, [e0, e1, e2]) in FACE_EDGES.into_iter().enumerate() {
+        if span[e0] | span[e1] | span[e2] != 0b111 {
+            continue;
+        }
+        let [i, j, k] = face_corners(f);
+        if triangle_near_grid_point(&[c[i], c[j], c[k]]) {
+            mask |= 1 << i | 1 << j | 1 << k;
+        }
+    }
+    mask
 }
 
 #[cfg(test)]
 mod scan_tests {
     use super::*;
-    use crate::near::bad_vertices;
+    use crate::near::{bad_vertices, segment_near_iso_line, EPS};
 
-    /// The box prefilter of [`mark_tet`] never hides an iso-line or a grid
+    /// Whether the box of `pts` (grown by `2·EPS`) holds an integer on `axis`
+    /// (the reference formulation of [`edge_spans`]).
+    fn spans_integer(pts: &[&[f64; 3]], axis: usize) -> bool {
+        let x = pts.iter().map(|p| p[axis]);
+        let (lo, hi) = (
+            x.clone().fold(f64::INFINITY, f64::min),
+            x.fold(-f64::INFINITY, f64::max),
+        );
+        (lo - 2.0 * EPS).ceil() <= hi + 2.0 * EPS
+    }
+
+    /// The box prefilter of [`tet_mask`] never hides an iso-line or a grid
     /// point: whenever the exact tests find one, the box spans integers.
     #[test]
     fn boxes_without_integers_are_never_near_the_grid() {
@@ -354,6 +379,49 @@ mod scan_tests {
         assert!(edges >= 5000 && faces >= 1000, "{edges} {faces}");
     }
 
+    /// [`edge_spans`] equals [`spans_integer`] on every edge, and so does
+    /// the union over its edges on every face, also for corners within a
+    /// few `EPS` of integers; [`FACE_EDGES`] are the edges of each face.
+    #[test]
+    fn box_test_equals_reference() {
+        for (f, edges) in FACE_EDGES.iter().enumerate() {
+            let mut want: Vec<[usize; 2]> = edges.iter().map(|&e| EDGES[e]).collect();
+            let fc = face_corners(f);
+            let mut got = vec![[fc[0], fc[1]], [fc[0], fc[2]], [fc[1], fc[2]]];
+            for e in want.iter_mut().chain(got.iter_mut()) {
+                e.sort_unstable();
+            }
+            want.sort_unstable();
+            got.sort_unstable();
+            assert_eq!(want, got, "face {f}");
+        }
+        let mut rng = SplitMix::new(17);
+        for _ in 0..20000 {
+            let c: [[f64; 3]; 4] = std::array::from_fn(|_| {
+                rng.direction().map(|x| {
+                    let x = 3.0 * x;
+                    match (rng.unit() * 4.0) as u32 {
+                        0 => x.round() + EPS * (rng.unit() * 6.0 - 3.0).round(),
+                        1 => x.round(),
+                        _ => x,
+                    }
+                })
+            });
+            let span = edge_spans(&corner_bounds(&c));
+            for a in 0..3 {
+                for (e, &[k, l]) in EDGES.iter().enumerate() {
+                    let want = spans_integer(&[&c[k], &c[l]], a);
+                    assert_eq!(span[e] >> a & 1 != 0, want, "{c:?}");
+                }
+                for (f, edges) in FACE_EDGES.iter().enumerate() {
+                    let want = spans_integer(&face_corners(f).map(|i| &c[i]), a);
+                    let got = edges.iter().any(|&e| span[e] >> a & 1 != 0);
+                    assert_eq!(got, want, "{c:?}");
+                }
+            }
+        }
+    }
+
     /// The incremental scan equals a full scan after arbitrary moves,
     /// including moves onto isos, grid lines and grid points.
     #[test]
@@ -369,7 +437,7 @@ mod scan_tests {
             Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
         let stars = Stars::build(&map, &topo, &trans);
         let mut local = LocalMap::new(&map, &topo, &trans);
-        let mut scan = BadScan::new(&map, &local.coords);
+        let mut scan = BadScan::new(&map, &stars, &local.coords);
         assert_eq!(scan.list(), bad_vertices(&map, &local.coords));
         assert!(!scan.list().is_empty());
         let mut rng = SplitMix::new(5);

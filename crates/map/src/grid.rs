@@ -1,6 +1,12 @@
 //! Closeness to the integer grid, shared by the sanitization of both
 //! dimensions: values on an iso, 2D segments through a grid point.
 //! Coordinates are local (see [`crate::local`]), so [`EPS`] is absolute.
+//!
+//! Hot loops call the rounding functions here instead of `f64::round`,
+//! `ceil` and `floor` (library calls on the baseline x86-64 target) and
+//! compare distances with [`EPS`] without `hypot` unless the comparison is
+//! too close to call: every function returns bit for bit what the `std` /
+//! `hypot` formulation returns.
 
 /// Distance below which a value counts as "on" an iso.
 pub const EPS: f64 = 1e-9;
@@ -8,7 +14,128 @@ pub const EPS: f64 = 1e-9;
 /// Whether `x` is within [`EPS`] of an integer.
 #[inline]
 pub fn near_int(x: f64) -> bool {
-    (x - x.round()).abs() < EPS
+    if x.abs() < FAST {
+        // `x − nearest_even(x)` is exact and equals `x − x.round()` but at
+        // ties, where both are ±½
+        (x - nearest_even(x)).abs() < EPS
+    } else {
+        (x - x.round()).abs() < EPS
+    }
+}
+
+/// 2^51: below it in magnitude, [`nearest_even`] is exact.
+const FAST: f64 = 2_251_799_813_685_248.0;
+/// 1.5·2^52: `(x + MAGIC) − MAGIC` lands in `[2^52, 2^53)`, where the
+/// spacing of doubles is 1, so the addition rounds `x` to an integer.
+const MAGIC: f64 = 6_755_399_441_055_744.0;
+
+/// The integer nearest to `x` (ties to even) for `|x| < 2^51`, as `+0.0`
+/// when zero.
+#[inline]
+fn nearest_even(x: f64) -> f64 {
+    (x + MAGIC) - MAGIC
+}
+
+/// `x.round()`, bit for bit (sign of zero included), without a library call
+/// on the common path.
+#[inline]
+pub fn round(x: f64) -> f64 {
+    if x.abs() < FAST {
+        let r = nearest_even(x);
+        // ties (`x − r = ±½`, exact) go away from zero in `f64::round`
+        if (x - r).abs() != 0.5 {
+            return r.copysign(x);
+        }
+    }
+    x.round()
+}
+
+/// `x.ceil()`, bit for bit (see [`round`]).
+#[inline]
+pub fn ceil(x: f64) -> f64 {
+    if x.abs() < FAST {
+        let r = nearest_even(x);
+        let c = if r < x { r + 1.0 } else { r };
+        return c.copysign(x);
+    }
+    x.ceil()
+}
+
+/// `x.floor()`, bit for bit (see [`round`]).
+#[inline]
+pub fn floor(x: f64) -> f64 {
+    if x.abs() < FAST {
+        let r = nearest_even(x);
+        let f = if r > x { r - 1.0 } else { r };
+        return f.copysign(x);
+    }
+    x.floor()
+}
+
+/// `[ceil(x − 2·EPS), floor(x + 2·EPS)]` up to the sign of zero: the
+/// integer bounds of `x`'s range grown by `2·EPS`, for [`box_spans`].
+#[inline]
+pub fn box_bounds(x: f64) -> [f64; 2] {
+    let (y, z) = (x - 2.0 * EPS, x + 2.0 * EPS);
+    if x.abs() < 0.5 * FAST {
+        let (ry, rz) = (nearest_even(y), nearest_even(z));
+        [
+            if ry < y { ry + 1.0 } else { ry },
+            if rz > z { rz - 1.0 } else { rz },
+        ]
+    } else {
+        [y.ceil(), z.floor()]
+    }
+}
+
+/// Whether the range of two values (their [`box_bounds`] `p`, `q`), grown
+/// by `2·EPS`, holds an integer: `ceil(min − 2·EPS) ≤ max + 2·EPS` for
+/// values that are not NaN. Ceil and floor commute with min and max, so
+/// that is `min lo ≤ max hi`, and as `lo` and `hi` are both monotone in
+/// the value, `lo_p ≤ hi_q ∨ lo_q ≤ hi_p`. A triangle's range holds an
+/// integer iff one of its edges' does (its least and greatest values
+/// belong to one edge).
+#[inline]
+pub fn box_spans(p: [f64; 2], q: [f64; 2]) -> bool {
+    p[0] <= q[1] || q[0] <= p[1]
+}
+
+/// Whether [`grid_point_near_segment`] certainly returns `None` for the
+/// segment `a`–`b`, whose box holds the integers `lo[k]..=hi[k]` on axis
+/// `k` (from [`box_bounds`] of its ends, grown by `2·EPS`: any grid point
+/// it finds is one of them). True when every such point is farther than
+/// `3·EPS` from the segment's line by the cross product; the rounding
+/// errors of that test and of the distance computed by
+/// [`grid_point_near_segment`] are below `1e-12` for coordinates under
+/// 1024, far from the `2·EPS` margin. `false` when unsure (larger
+/// coordinates, more than 4 points, a degenerate segment).
+#[inline]
+pub fn segment_clear_of_grid(a: &[f64; 2], b: &[f64; 2], lo: [f64; 2], hi: [f64; 2]) -> bool {
+    const SMALL: f64 = 1024.0;
+    if !(a[0].abs() < SMALL && a[1].abs() < SMALL && b[0].abs() < SMALL && b[1].abs() < SMALL) {
+        return false;
+    }
+    if hi[0] < lo[0] || hi[1] < lo[1] {
+        return true;
+    }
+    if (hi[0] - lo[0] + 1.0) * (hi[1] - lo[1] + 1.0) > 4.0 {
+        return false;
+    }
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let lim = 9.0 * EPS * EPS * (d[0] * d[0] + d[1] * d[1]);
+    let mut gx = lo[0];
+    while gx <= hi[0] {
+        let mut gy = lo[1];
+        while gy <= hi[1] {
+            let cr = d[0] * (gy - a[1]) - d[1] * (gx - a[0]);
+            if cr * cr <= lim {
+                return false;
+            }
+            gy += 1.0;
+        }
+        gx += 1.0;
+    }
+    true
 }
 
 /// Distance between two points of the plane.
@@ -16,8 +143,32 @@ pub fn dist2d(a: &[f64; 2], b: &[f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
-/// Distance from `p` to the segment `a`–`b`.
-pub fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
+/// `dist2d(a, b) < EPS`, without `hypot` unless the comparison is too close
+/// to call from the squared distance (which is within a few ulps of exact:
+/// a relative margin of 1e-6 decides every other case exactly).
+#[inline]
+pub fn dist2d_below_eps(a: &[f64; 2], b: &[f64; 2]) -> bool {
+    below_eps(a[0] - b[0], a[1] - b[1])
+}
+
+/// `dx.hypot(dy) < EPS` (see [`dist2d_below_eps`]).
+#[inline]
+fn below_eps(dx: f64, dy: f64) -> bool {
+    const LO2: f64 = EPS * EPS * (1.0 - 1e-6);
+    const HI2: f64 = EPS * EPS * (1.0 + 1e-6);
+    let s = dx * dx + dy * dy;
+    if s < LO2 {
+        true
+    } else if s > HI2 {
+        false
+    } else {
+        dx.hypot(dy) < EPS
+    }
+}
+
+/// The point of segment `a`–`b` nearest to `p`.
+#[inline]
+fn nearest_on_segment(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> [f64; 2] {
     let d = [b[0] - a[0], b[1] - a[1]];
     let l2 = d[0] * d[0] + d[1] * d[1];
     let t = if l2 == 0.0 {
@@ -25,7 +176,18 @@ pub fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
     } else {
         (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
     };
-    dist2d(&[a[0] + t * d[0], a[1] + t * d[1]], p)
+    [a[0] + t * d[0], a[1] + t * d[1]]
+}
+
+/// Distance from `p` to the segment `a`–`b`.
+pub fn point_segment_dist(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
+    dist2d(&nearest_on_segment(p, a, b), p)
+}
+
+/// `point_segment_dist(p, a, b) < EPS` (see [`dist2d_below_eps`]).
+#[inline]
+fn point_segment_below_eps(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> bool {
+    dist2d_below_eps(&nearest_on_segment(p, a, b), p)
 }
 
 /// An integer point within [`EPS`] of the segment `a`–`b`, if any: for each
@@ -37,7 +199,7 @@ pub fn grid_point_near_segment(a: &[f64; 2], b: &[f64; 2]) -> Option<[f64; 2]> {
         let o = 1 - axis;
         let (lo, hi) = (a[axis].min(b[axis]), a[axis].max(b[axis]));
         let len = b[axis] - a[axis];
-        let mut i = (lo - EPS).ceil();
+        let mut i = ceil(lo - EPS);
         while i <= hi + EPS {
             let t = if len == 0.0 {
                 0.0
@@ -46,8 +208,8 @@ pub fn grid_point_near_segment(a: &[f64; 2], b: &[f64; 2]) -> Option<[f64; 2]> {
             };
             let mut g = [0.0; 2];
             g[axis] = i;
-            g[o] = (a[o] + t * (b[o] - a[o])).round();
-            if point_segment_dist(&g, a, b) < EPS {
+            g[o] = round(a[o] + t * (b[o] - a[o]));
+            if point_segment_below_eps(&g, a, b) {
                 return Some(g);
             }
             i += 1.0;
@@ -69,5 +231,131 @@ mod tests {
         assert!(g[0] == 3.0 && [-1.0, 0.0, 1.0].contains(&g[1]), "{g:?}");
         assert!(grid_point_near_segment(&[4.0, 4.0], &[4.0, 4.0]).is_some());
         assert!(near_int(2.0 + 0.5 * EPS) && !near_int(2.0 + 2.0 * EPS));
+    }
+
+    /// Values around every kind of boundary of the rounding functions:
+    /// integers, ties, either side of them by one ulp, signed zeros,
+    /// magnitudes around 2^51 / 2^52 / 2^53, infinities and NaN.
+    fn probes() -> Vec<f64> {
+        let mut out = vec![0.0, -0.0, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
+        out.extend([f64::MIN_POSITIVE, 5e-324, f64::MAX, f64::EPSILON]);
+        let mut base: Vec<f64> = (-40..=40).map(|k| f64::from(k) * 0.25).collect();
+        base.extend([0.1, 0.3, 0.7, 1e-9, 2e-9, 1e-12, 123.456, 1e6 + 0.5]);
+        for e in [49, 50, 51, 52, 53, 54] {
+            let p = 2f64.powi(e);
+            base.extend([p, p + 0.5, p - 0.5, p + 1.0, p - 1.0, p + 1.5]);
+        }
+        for x in base {
+            for y in [x, -x] {
+                out.extend([y, f64::from_bits(y.to_bits() + 1)]);
+                if y.to_bits() > 0 {
+                    out.push(f64::from_bits(y.to_bits() - 1));
+                }
+            }
+        }
+        let mut z = 0x9e37_79b9_7f4a_7c15_u64;
+        for _ in 0..20000 {
+            z = z
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let u = (z >> 11) as f64 / (1u64 << 53) as f64;
+            out.push((u - 0.5) * 2f64.powi((z % 60) as i32));
+        }
+        out
+    }
+
+    #[test]
+    fn rounding_is_bit_identical_to_std() {
+        for x in probes() {
+            assert_eq!(round(x).to_bits(), x.round().to_bits(), "round {x:e}");
+            assert_eq!(ceil(x).to_bits(), x.ceil().to_bits(), "ceil {x:e}");
+            assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "floor {x:e}");
+            assert_eq!(near_int(x), (x - x.round()).abs() < EPS, "near {x:e}");
+            let y = x + 0.5 * EPS;
+            assert_eq!(near_int(y), (y - y.round()).abs() < EPS, "near {y:e}");
+        }
+    }
+
+    /// [`box_spans`] equals its reference on pairs of probes, and on
+    /// pairs within a few `EPS` of integers.
+    #[test]
+    fn box_test_equals_reference() {
+        let reference = |x: f64, y: f64| (x.min(y) - 2.0 * EPS).ceil() <= x.max(y) + 2.0 * EPS;
+        let mut vals: Vec<f64> = probes().into_iter().filter(|x| !x.is_nan()).collect();
+        for k in -3..=3 {
+            for n in [-2.0, 0.0, 1.0, 7.0, 1e6] {
+                vals.push(n + f64::from(k) * EPS);
+                vals.push(n + 0.5 + f64::from(k) * EPS);
+            }
+        }
+        for (i, &x) in vals.iter().enumerate() {
+            let step = 1 + i % 13;
+            for &y in vals.iter().step_by(step) {
+                let got = box_spans(box_bounds(x), box_bounds(y));
+                assert_eq!(got, reference(x, y), "{x:e} {y:e}");
+            }
+        }
+    }
+
+    /// [`segment_clear_of_grid`] never hides a grid point that
+    /// [`grid_point_near_segment`] finds, on segments through, next to and
+    /// ending at grid points, and clears most segments away from them.
+    #[test]
+    fn clear_segments_have_no_grid_point() {
+        let mut z = 11u64;
+        let mut next = || {
+            z = z
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (z >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut found, mut cleared) = (0, 0);
+        for k in 0..200000 {
+            let g = [(8.0 * next() - 4.0).round(), (8.0 * next() - 4.0).round()];
+            let dir = std::f64::consts::TAU * next();
+            let (u, v) = (dir.cos(), dir.sin());
+            // offset from the grid point across the segment: 0 to 4 EPS
+            let off = EPS * (4.0 * next()) * if k % 3 == 0 { 0.0 } else { 1.0 };
+            let (s0, s1) = (-2.0 * next(), 2.0 * next());
+            let (s0, s1) = if k % 5 == 0 { (0.0, s1) } else { (s0, s1) };
+            let p = |t: f64| [g[0] + t * u - off * v, g[1] + t * v + off * u];
+            let (a, b) = (p(s0), p(s1));
+            let lo = [0, 1].map(|x| box_bounds(a[x])[0].min(box_bounds(b[x])[0]));
+            let hi = [0, 1].map(|x| box_bounds(a[x])[1].max(box_bounds(b[x])[1]));
+            let near = grid_point_near_segment(&a, &b).is_some();
+            let clear = segment_clear_of_grid(&a, &b, lo, hi);
+            assert!(!(near && clear), "{a:?} {b:?}");
+            found += usize::from(near);
+            cleared += usize::from(clear);
+        }
+        assert!(found > 50000 && cleared > 20000, "{found} {cleared}");
+    }
+
+    #[test]
+    fn eps_comparison_is_identical_to_hypot() {
+        let mut z = 7u64;
+        let mut next = || {
+            z = z
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (z >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for k in 0..200000 {
+            // lengths spread around EPS, plus exact hits on it
+            let r = EPS * (0.5 + next()) * if k % 7 == 0 { 1.0 } else { 2.0 * next() };
+            let r = if k % 11 == 0 { EPS } else { r };
+            let a = std::f64::consts::TAU * next();
+            let (dx, dy) = (r * a.cos(), r * a.sin());
+            assert_eq!(below_eps(dx, dy), dx.hypot(dy) < EPS, "{dx:e} {dy:e}");
+        }
+        for (dx, dy) in [
+            (0.0, 0.0),
+            (EPS, 0.0),
+            (0.0, -EPS),
+            (f64::NAN, 0.0),
+            (1e300, 1e300),
+        ] {
+            assert_eq!(below_eps(dx, dy), dx.hypot(dy) < EPS, "{dx:e} {dy:e}");
+        }
     }
 }

@@ -51,7 +51,7 @@ pub fn sanitize(
     let mut rng = SplitMix::new(seed);
     let mut moved = vec![false; map.positions.len()];
     let mut amp = AMPLITUDE;
-    let mut scan = BadScan::new(map, local);
+    let mut scan = BadScan::new(map, stars, local);
     let mut touched = Vec::new();
     // the last round in which each cluster root moved
     let mut done_round = vec![usize::MAX; map.positions.len()];
@@ -141,49 +141,56 @@ pub fn edge_near_grid_point(a: &[f64; 2], b: &[f64; 2]) -> bool {
 
 /// An integer point within [`EPS`] of segment `a`–`b`, if any.
 pub use dualex_map::grid::grid_point_near_segment as grid_point_near_edge;
-use dualex_map::grid::{dist2d as dist2, near_int};
+use dualex_map::grid::{
+    box_bounds, box_spans, dist2d_below_eps as below_eps, near_int, segment_clear_of_grid,
+};
+use rayon::prelude::*;
 
 /// The vertices on an iso, or endpoints of an edge through a grid point,
-/// kept up to date incrementally: after a round only the triangles around
-/// the vertices whose triangles moved are tested again (a triangle's test
-/// depends on its own corners only, so the result is that of a full scan).
+/// kept up to date incrementally. Each triangle's test (a function of its
+/// own corners only) is kept as a mask of the corners it makes bad, and a
+/// vertex is bad iff some incident triangle's mask says so; after a round
+/// only the triangles in the stars of the moved vertices are tested again,
+/// and only the vertices of triangles whose mask changed are re-derived, so
+/// the result is that of a full scan. The tests run in parallel
+/// (order-preserving collect; the masks do not depend on the thread count).
 struct BadScan {
     bad: Vec<bool>,
-    /// Vertex → incident triangles (CSR).
-    inc_offsets: Vec<u32>,
-    inc: Vec<u32>,
+    /// Per triangle: bit `k` set when the triangle makes its corner `k` bad.
+    mask: Vec<u8>,
     v_stamp: Vec<u32>,
     s_stamp: Vec<u32>,
     epoch: u32,
 }
 
+/// Triangles per parallel task: below this, splitting costs more than it
+/// saves.
+const MIN_TASK: usize = 1024;
+
 impl BadScan {
-    fn new(map: &TriMap, local: &LocalMap) -> Self {
+    fn new(map: &TriMap, stars: &Stars<2>, local: &LocalMap) -> Self {
         let nv = map.positions.len();
-        let mut inc_offsets = vec![0u32; nv + 1];
-        for &v in map.simplices.iter().flatten() {
-            inc_offsets[v as usize + 1] += 1;
-        }
-        for v in 0..nv {
-            inc_offsets[v + 1] += inc_offsets[v];
-        }
-        let mut fill = inc_offsets.clone();
-        let mut inc = vec![0u32; 3 * map.simplices.len()];
-        for (s, tri) in map.simplices.iter().enumerate() {
-            for &v in tri {
-                inc[fill[v as usize] as usize] = s as u32;
-                fill[v as usize] += 1;
-            }
-        }
-        let mut bad = vec![false; nv];
-        for (tri, c) in map.simplices.iter().zip(&local.coords) {
-            mark_tri(tri, c, &mut bad);
-        }
+        let mask: Vec<u8> = local
+            .coords
+            .par_iter()
+            .with_min_len(MIN_TASK)
+            .map(tri_mask)
+            .collect();
+        // a vertex's star holds all its corners
+        let bad = (0..nv)
+            .into_par_iter()
+            .with_min_len(MIN_TASK)
+            .map(|v| {
+                stars
+                    .of(v)
+                    .iter()
+                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
+            })
+            .collect();
         let (v_stamp, s_stamp) = (vec![0; nv], vec![0; map.simplices.len()]);
         BadScan {
             bad,
-            inc_offsets,
-            inc,
+            mask,
             v_stamp,
             s_stamp,
             epoch: 0,
@@ -201,61 +208,99 @@ impl BadScan {
     fn update(&mut self, map: &TriMap, stars: &Stars<2>, local: &LocalMap, moved: &[u32]) {
         self.epoch += 1;
         let epoch = self.epoch;
+        // the triangles whose corners moved
         let mut redo = Vec::new();
         for &v in moved {
             for e in stars.of(v as usize) {
-                for &w in &map.simplices[e.simplex as usize] {
-                    if self.v_stamp[w as usize] != epoch {
-                        self.v_stamp[w as usize] = epoch;
-                        self.bad[w as usize] = false;
-                        redo.push(w);
-                    }
+                let s = e.simplex as usize;
+                if self.s_stamp[s] != epoch {
+                    self.s_stamp[s] = epoch;
+                    redo.push(e.simplex);
                 }
             }
         }
-        for &w in &redo {
-            for k in self.inc_offsets[w as usize]..self.inc_offsets[w as usize + 1] {
-                let s = self.inc[k as usize] as usize;
-                if self.s_stamp[s] != epoch {
-                    self.s_stamp[s] = epoch;
-                    mark_tri(&map.simplices[s], &local.coords[s], &mut self.bad);
+        let masks: Vec<u8> = redo
+            .par_iter()
+            .with_min_len(MIN_TASK)
+            .map(|&s| tri_mask(&local.coords[s as usize]))
+            .collect();
+        // the vertices of the triangles whose mask changed
+        let mut verts = Vec::new();
+        for (&s, &m) in redo.iter().zip(&masks) {
+            if self.mask[s as usize] == m {
+                continue;
+            }
+            self.mask[s as usize] = m;
+            for &w in &map.simplices[s as usize] {
+                if self.v_stamp[w as usize] != epoch {
+                    self.v_stamp[w as usize] = epoch;
+                    verts.push(w);
                 }
             }
+        }
+        // a vertex's star holds all its corners
+        for w in verts {
+            self.bad[w as usize] = stars
+                .of(w as usize)
+                .iter()
+                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
         }
     }
 }
 
-/// Whether `[lo, hi]` of `a`, `b` on `axis`, grown by `2·EPS`, holds an integer.
+/// Whether `[lo, hi]` of `a`, `b` on `axis`, grown by `2·EPS`, holds an
+/// integer (the reference formulation of the test in [`tri_mask`]).
+#[cfg(test)]
 fn spans_integer(a: &[f64; 2], b: &[f64; 2], axis: usize) -> bool {
     (a[axis].min(b[axis]) - 2.0 * EPS).ceil() <= a[axis].max(b[axis]) + 2.0 * EPS
 }
 
-/// Marks the vertices that triangle `tri` (corners `c`) makes bad.
-fn mark_tri(tri: &[u32; 3], c: &[[f64; 2]; 3], bad: &mut [bool]) {
+/// The corners that triangle `c` makes bad, as a mask: corners on an iso,
+/// endpoints of an edge through a grid point (a grid point at an endpoint
+/// is that endpoint's problem only). An edge is skipped unless its box,
+/// grown by `2·EPS`, holds an integer on both axes ([`box_spans`]) and one
+/// of those integer points is near its line ([`segment_clear_of_grid`]).
+fn tri_mask(c: &[[f64; 2]; 3]) -> u8 {
+    let mut b = [[[0.0; 2]; 2]; 3];
+    for k in 0..3 {
+        for a in 0..2 {
+            b[k][a] = box_bounds(c[k][a]);
+        }
+    }
+    let mut mask = 0u8;
     for k in 0..3 {
         if near_int(c[k][0]) || near_int(c[k][1]) {
-            bad[tri[k] as usize] = true;
+            mask |= 1 << k;
         }
         let l = (k + 1) % 3;
-        // no grid point near the edge unless its box holds one
-        if !(spans_integer(&c[k], &c[l], 0) && spans_integer(&c[k], &c[l], 1)) {
+        if !(box_spans(b[k][0], b[l][0]) && box_spans(b[k][1], b[l][1])) {
+            continue;
+        }
+        // the integer range of the edge's grown box per axis
+        let (mut lo, mut hi) = ([0.0; 2], [0.0; 2]);
+        for a in 0..2 {
+            let (bk, bl) = (b[k][a], b[l][a]);
+            lo[a] = if bl[0] < bk[0] { bl[0] } else { bk[0] };
+            hi[a] = if bl[1] > bk[1] { bl[1] } else { bk[1] };
+        }
+        if segment_clear_of_grid(&c[k], &c[l], lo, hi) {
             continue;
         }
         if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
-            // a grid point at an endpoint is that endpoint's problem only
-            let (at_k, at_l) = (dist2(&g, &c[k]) < EPS, dist2(&g, &c[l]) < EPS);
-            bad[tri[k] as usize] |= at_k || !at_l;
-            bad[tri[l] as usize] |= at_l || !at_k;
+            let (at_k, at_l) = (below_eps(&g, &c[k]), below_eps(&g, &c[l]));
+            mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
         }
     }
+    mask
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// The incremental scan equals a full scan (every triangle tested)
-    /// after moves onto isos, through grid points, and random steps.
+    /// The incremental scan equals a full unfiltered scan (every triangle,
+    /// every edge tested) after moves onto isos, through grid points, and
+    /// random steps.
     #[test]
     fn incremental_scan_equals_full_scan() {
         use dualex_map::{Topology, Transitions};
@@ -266,9 +311,26 @@ mod tests {
             Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
         let stars = Stars::build(&map, &topo, &trans);
         let mut local = LocalMap::new(&map, &topo, &trans);
-        // a fresh scan tests every triangle
-        let full = |local: &LocalMap| BadScan::new(&map, local).list();
-        let mut scan = BadScan::new(&map, &local);
+        // every triangle tested without the box filters, as in the paper
+        let full = |local: &LocalMap| {
+            let mut bad = vec![false; map.positions.len()];
+            for (tri, c) in map.simplices.iter().zip(&local.coords) {
+                for k in 0..3 {
+                    let l = (k + 1) % 3;
+                    bad[tri[k] as usize] |= near_int(c[k][0]) || near_int(c[k][1]);
+                    if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
+                        let dist = dualex_map::grid::dist2d;
+                        let (at_k, at_l) = (dist(&g, &c[k]) < EPS, dist(&g, &c[l]) < EPS);
+                        bad[tri[k] as usize] |= at_k || !at_l;
+                        bad[tri[l] as usize] |= at_l || !at_k;
+                    }
+                }
+            }
+            (0..bad.len() as u32)
+                .filter(|&v| bad[v as usize])
+                .collect::<Vec<u32>>()
+        };
+        let mut scan = BadScan::new(&map, &stars, &local);
         assert_eq!(scan.list(), full(&local));
         let mut rng = SplitMix::new(9);
         let nv = map.positions.len();
@@ -292,7 +354,7 @@ mod tests {
         }
     }
 
-    /// The box prefilter of [`mark_tri`] never hides a grid point.
+    /// The box prefilter of [`tri_mask`] never hides a grid point.
     #[test]
     fn edges_whose_box_holds_no_grid_point_are_never_near_one() {
         let mut rng = SplitMix::new(3);
@@ -308,6 +370,28 @@ mod tests {
             }
         }
         assert!(near >= 10000);
+    }
+
+    /// The box test of [`tri_mask`] equals [`spans_integer`], also for
+    /// ends within a few `EPS` of integers.
+    #[test]
+    fn box_test_equals_reference() {
+        let mut rng = SplitMix::new(5);
+        for _ in 0..50000 {
+            let mut p = || {
+                let x = 6.0 * rng.unit() - 3.0;
+                match (rng.unit() * 4.0) as u32 {
+                    0 => x.round() + EPS * (rng.unit() * 6.0 - 3.0).round(),
+                    1 => x.round(),
+                    _ => x,
+                }
+            };
+            let (a, b) = ([p(), p()], [p(), p()]);
+            for axis in 0..2 {
+                let fast = box_spans(box_bounds(a[axis]), box_bounds(b[axis]));
+                assert_eq!(fast, spans_integer(&a, &b, axis), "{a:?} {b:?}");
+            }
+        }
     }
 
     #[test]
