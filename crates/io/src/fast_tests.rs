@@ -5,6 +5,7 @@
 //! joins.
 
 use crate::fast::{hexex_chunked, obj_chunked};
+use crate::fuzz_tests::mutants;
 use crate::hexex::parse_hexex_sequential;
 use crate::obj::parse_obj_sequential;
 use crate::write_map::{tet_map_hexex, tri_map_obj};
@@ -55,32 +56,6 @@ fn agree_hexex(bytes: &[u8], chunk: usize, must: bool) -> bool {
     true
 }
 
-/// A deterministic corruption of `b` (overwrite, truncation, duplication).
-fn mutate(b: &[u8], seed: u64) -> Vec<u8> {
-    let mut s = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
-    let mut next = move |m: usize| {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s % m.max(1) as u64) as usize
-    };
-    let alphabet = b"0123456789 -+.e\n/#\xff\x00\x7f\t";
-    let mut b = b.to_vec();
-    for _ in 0..1 + next(3) {
-        let i = next(b.len());
-        match next(4) {
-            0 => b.truncate(i),
-            1 => {
-                let span: Vec<u8> = b[i..(i + next(40)).min(b.len())].to_vec();
-                b.splice(i..i, span);
-            }
-            _ if i < b.len() => b[i] = alphabet[next(alphabet.len())],
-            _ => {}
-        }
-    }
-    b
-}
-
 #[test]
 fn generated_maps_read_the_same_in_chunks() {
     let alt = dualex_gen::Diagonal::Alternating;
@@ -101,10 +76,11 @@ fn corrupted_files_never_pass_the_fast_path_alone() {
     let obj = obj_bytes(&tri);
     let (tet, _) = dualex_gen::block::block(2, 2, 2, 0.2, 1.2);
     let hexex = hexex_bytes(&tet);
-    for seed in 0..3000 {
-        let chunk = [5, 50, 1 << 20][seed as usize % 3];
-        agree_obj(&mutate(&obj, seed), chunk, false);
-        agree_hexex(&mutate(&hexex, seed), chunk, false);
+    let (bad_obj, bad_hexex) = (mutants(&obj, 3000), mutants(&hexex, 3000));
+    for (i, (o, h)) in bad_obj.iter().zip(&bad_hexex).enumerate() {
+        let chunk = [5, 50, 1 << 20][i % 3];
+        agree_obj(o, chunk, false);
+        agree_hexex(h, chunk, false);
     }
     // layouts the fast paths leave to the sequential readers
     let relative = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf -3/-3 -2/-2 -1/-1\n";

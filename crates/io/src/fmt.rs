@@ -24,6 +24,20 @@ pub(crate) fn int(out: &mut Vec<u8>, n: u64) {
     out.extend_from_slice(b.format(n).as_bytes());
 }
 
+/// Appends one line: `prefix`, then each of `xs` after a space (no space
+/// after an empty prefix), then `suffix` and a newline.
+pub(crate) fn floats_line(out: &mut Vec<u8>, prefix: &[u8], xs: &[f64], suffix: &[u8]) {
+    out.extend_from_slice(prefix);
+    for (k, &x) in xs.iter().enumerate() {
+        if k > 0 || !prefix.is_empty() {
+            out.push(b' ');
+        }
+        float(out, x);
+    }
+    out.extend_from_slice(suffix);
+    out.push(b'\n');
+}
+
 /// Records per parallel chunk, and chunks formatted before writing (bounds
 /// the buffered bytes to ~`WAVE · CHUNK` records).
 const CHUNK: usize = 8192;

@@ -31,7 +31,7 @@ fn tet() -> TetMap {
 
 /// `n` mutants of `base`: byte overwrites (often digits, spaces, 0xff),
 /// truncations and duplicated spans.
-fn mutants(base: &[u8], n: usize) -> Vec<Vec<u8>> {
+pub(crate) fn mutants(base: &[u8], n: usize) -> Vec<Vec<u8>> {
     let mut s = 0x9e3779b97f4a7c15u64;
     let mut next = move |m: usize| {
         s ^= s << 13;
@@ -39,7 +39,7 @@ fn mutants(base: &[u8], n: usize) -> Vec<Vec<u8>> {
         s ^= s << 17;
         (s % m.max(1) as u64) as usize
     };
-    let alphabet = b"0123456789 -.e\n/\xff\x00\x7f9";
+    let alphabet = b"0123456789 -+.e\n/#\t\xff\x00\x7f9";
     (0..n)
         .map(|_| {
             let mut b = base.to_vec();

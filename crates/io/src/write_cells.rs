@@ -13,7 +13,7 @@
 //! written unchanged. Precondition, checked by [`check_cells`] before any
 //! byte is written by the file writers: indices in range, positions finite.
 
-use crate::fmt::{float, int, par_lines};
+use crate::fmt::{floats_line, int, par_lines};
 use crate::ply_out::PlyWriter;
 use crate::PlyFormat;
 use dualex_map::{CellMesh, HexMesh, QuadMesh};
@@ -47,14 +47,7 @@ pub fn quad_obj(w: &mut impl Write, mesh: &QuadMesh) -> io::Result<()> {
         mesh.positions.len(),
         mesh.cells.len()
     )?;
-    par_lines(w, &mesh.positions, |out, p| {
-        out.push(b'v');
-        for &x in p {
-            out.push(b' ');
-            float(out, x);
-        }
-        out.push(b'\n');
-    })?;
+    par_lines(w, &mesh.positions, |out, p| floats_line(out, b"v", p, b""))?;
     par_lines(w, &mesh.cells, |out, q| {
         out.push(b'f');
         for &v in q {
@@ -133,13 +126,7 @@ pub fn hex_medit(w: &mut impl Write, mesh: &HexMesh) -> io::Result<()> {
     writeln!(w, "Dimension 3")?;
     writeln!(w, "Vertices")?;
     writeln!(w, "{}", mesh.positions.len())?;
-    par_lines(w, &mesh.positions, |out, p| {
-        for &x in p {
-            float(out, x);
-            out.push(b' ');
-        }
-        out.extend_from_slice(b"0\n");
-    })?;
+    par_lines(w, &mesh.positions, |out, p| floats_line(out, b"", p, b" 0"))?;
     writeln!(w, "Hexahedra")?;
     writeln!(w, "{}", mesh.cells.len())?;
     par_lines(w, &mesh.cells, |out, h| {

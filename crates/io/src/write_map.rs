@@ -15,7 +15,7 @@
 //! C's `strtod` and C++ streams read back exactly. The file writers validate
 //! the map ([`dualex_map::SimplexMap::validate`]) before writing.
 
-use crate::fmt::{float, int, par_lines};
+use crate::fmt::{float, floats_line, int, par_lines};
 use crate::ply_out::PlyWriter;
 use crate::PlyFormat;
 use dualex_map::{TetMap, TriMap};
@@ -30,23 +30,9 @@ pub fn tri_map_obj(w: &mut impl Write, map: &TriMap) -> io::Result<()> {
         map.positions.len(),
         map.len()
     )?;
-    par_lines(w, &map.positions, |out, p| {
-        out.push(b'v');
-        for &x in p {
-            out.push(b' ');
-            float(out, x);
-        }
-        out.push(b'\n');
-    })?;
+    par_lines(w, &map.positions, |out, p| floats_line(out, b"v", p, b""))?;
     let (uvs, corner_vt) = shared_uvs(map);
-    par_lines(w, &uvs, |out, uv| {
-        out.extend_from_slice(b"vt");
-        for &x in uv {
-            out.push(b' ');
-            float(out, x);
-        }
-        out.push(b'\n');
-    })?;
+    par_lines(w, &uvs, |out, uv| floats_line(out, b"vt", uv, b""))?;
     let faces: Vec<(&[u32; 3], &[u32; 3])> = map.simplices.iter().zip(&corner_vt).collect();
     par_lines(w, &faces, |out, (t, vt)| {
         out.push(b'f');
@@ -110,15 +96,7 @@ pub fn tri_map_ply(w: &mut impl Write, map: &TriMap, format: PlyFormat) -> io::R
 /// HexEx `.hexex` (see the module docs).
 pub fn tet_map_hexex(w: &mut impl Write, map: &TetMap) -> io::Result<()> {
     writeln!(w, "{}", map.positions.len())?;
-    par_lines(w, &map.positions, |out, p| {
-        for (k, &x) in p.iter().enumerate() {
-            if k > 0 {
-                out.push(b' ');
-            }
-            float(out, x);
-        }
-        out.push(b'\n');
-    })?;
+    par_lines(w, &map.positions, |out, p| floats_line(out, b"", p, b""))?;
     writeln!(w, "{}", map.len())?;
     let tets: Vec<(&[u32; 4], &[[f64; 3]; 4])> = map.simplices.iter().zip(&map.coords).collect();
     par_lines(w, &tets, |out, (t, uvw)| {
