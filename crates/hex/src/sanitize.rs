@@ -27,7 +27,6 @@ use crate::near::{
 use crate::rng::SplitMix;
 use crate::simplex::face_corners;
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
-use rayon::prelude::*;
 use std::collections::HashSet;
 
 /// Initial perturbation amplitude (map units).
@@ -201,102 +200,28 @@ fn singular_free_axis(
     }
 }
 
-/// [`crate::near::bad_vertices`], kept up to date incrementally. Each tet's
-/// test (a function of its own corners only) is kept as a mask of the
-/// corners it makes bad, and a vertex is bad iff some incident tet's mask
-/// says so; after a round only the tets in the stars of the moved vertices
-/// are tested again, and only the vertices of tets whose mask changed are
-/// re-derived, so the result is that of a full scan. The tests run in
-/// parallel (order-preserving collect; the masks do not depend on the
-/// thread count).
-struct BadScan {
-    bad: Vec<bool>,
-    /// Per tet: bit `k` set when the tet makes its corner `k` bad.
-    mask: Vec<u8>,
-    v_stamp: Vec<u32>,
-    s_stamp: Vec<u32>,
-    epoch: u32,
-}
+/// [`dualex_map::bad_scan::BadScan`] with the tet test
+/// ([`crate::near::bad_vertices`] kept up to date incrementally).
+struct BadScan(dualex_map::bad_scan::BadScan);
 
-/// Tets per parallel task: below this, splitting costs more than it saves.
+/// Tets per parallel task.
 const MIN_TASK: usize = 512;
 
 impl BadScan {
     fn new(map: &TetMap, stars: &Stars<3>, coords: &[[[f64; 3]; 4]]) -> Self {
-        let nv = map.positions.len();
-        let mask: Vec<u8> = coords
-            .par_iter()
-            .with_min_len(MIN_TASK)
-            .map(tet_mask)
-            .collect();
-        // a vertex's star holds all its corners
-        let bad = (0..nv)
-            .into_par_iter()
-            .with_min_len(MIN_TASK)
-            .map(|v| {
-                stars
-                    .of(v)
-                    .iter()
-                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
-            })
-            .collect();
-        BadScan {
-            bad,
-            mask,
-            v_stamp: vec![0; nv],
-            s_stamp: vec![0; map.simplices.len()],
-            epoch: 0,
-        }
+        BadScan(dualex_map::bad_scan::BadScan::new(
+            map, stars, coords, tet_mask, MIN_TASK,
+        ))
     }
 
     /// The bad vertices, in increasing order.
     fn list(&self) -> Vec<u32> {
-        (0..self.bad.len() as u32)
-            .filter(|&v| self.bad[v as usize])
-            .collect()
+        self.0.list()
     }
 
     /// Re-tests after the vertices `moved` (corners in their stars) moved.
     fn update(&mut self, map: &TetMap, stars: &Stars<3>, coords: &[[[f64; 3]; 4]], moved: &[u32]) {
-        self.epoch += 1;
-        let epoch = self.epoch;
-        // the tets whose corners moved
-        let mut redo = Vec::new();
-        for &v in moved {
-            for e in stars.of(v as usize) {
-                let s = e.simplex as usize;
-                if self.s_stamp[s] != epoch {
-                    self.s_stamp[s] = epoch;
-                    redo.push(e.simplex);
-                }
-            }
-        }
-        let masks: Vec<u8> = redo
-            .par_iter()
-            .with_min_len(MIN_TASK)
-            .map(|&s| tet_mask(&coords[s as usize]))
-            .collect();
-        // the vertices of the tets whose mask changed
-        let mut verts = Vec::new();
-        for (&s, &m) in redo.iter().zip(&masks) {
-            if self.mask[s as usize] == m {
-                continue;
-            }
-            self.mask[s as usize] = m;
-            for &w in &map.simplices[s as usize] {
-                if self.v_stamp[w as usize] != epoch {
-                    self.v_stamp[w as usize] = epoch;
-                    verts.push(w);
-                }
-            }
-        }
-        // a vertex's star holds all its corners
-        for w in verts {
-            self.bad[w as usize] = stars
-                .of(w as usize)
-                .iter()
-                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
-        }
+        self.0.update(map, stars, coords, tet_mask, moved);
     }
 }
 

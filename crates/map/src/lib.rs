@@ -16,6 +16,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bad_scan;
 pub mod cells;
 pub mod cluster;
 mod components;

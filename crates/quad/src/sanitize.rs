@@ -144,24 +144,9 @@ pub use dualex_map::grid::grid_point_near_segment as grid_point_near_edge;
 use dualex_map::grid::{
     box_bounds, box_spans, dist2d_below_eps as below_eps, near_int, segment_clear_of_grid,
 };
-use rayon::prelude::*;
 
-/// The vertices on an iso, or endpoints of an edge through a grid point,
-/// kept up to date incrementally. Each triangle's test (a function of its
-/// own corners only) is kept as a mask of the corners it makes bad, and a
-/// vertex is bad iff some incident triangle's mask says so; after a round
-/// only the triangles in the stars of the moved vertices are tested again,
-/// and only the vertices of triangles whose mask changed are re-derived, so
-/// the result is that of a full scan. The tests run in parallel
-/// (order-preserving collect; the masks do not depend on the thread count).
-struct BadScan {
-    bad: Vec<bool>,
-    /// Per triangle: bit `k` set when the triangle makes its corner `k` bad.
-    mask: Vec<u8>,
-    v_stamp: Vec<u32>,
-    s_stamp: Vec<u32>,
-    epoch: u32,
-}
+/// [`dualex_map::bad_scan::BadScan`] with the triangle test.
+struct BadScan(dualex_map::bad_scan::BadScan);
 
 /// Triangles per parallel task: below this, splitting costs more than it
 /// saves.
@@ -169,82 +154,23 @@ const MIN_TASK: usize = 1024;
 
 impl BadScan {
     fn new(map: &TriMap, stars: &Stars<2>, local: &LocalMap) -> Self {
-        let nv = map.positions.len();
-        let mask: Vec<u8> = local
-            .coords
-            .par_iter()
-            .with_min_len(MIN_TASK)
-            .map(tri_mask)
-            .collect();
-        // a vertex's star holds all its corners
-        let bad = (0..nv)
-            .into_par_iter()
-            .with_min_len(MIN_TASK)
-            .map(|v| {
-                stars
-                    .of(v)
-                    .iter()
-                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
-            })
-            .collect();
-        let (v_stamp, s_stamp) = (vec![0; nv], vec![0; map.simplices.len()]);
-        BadScan {
-            bad,
-            mask,
-            v_stamp,
-            s_stamp,
-            epoch: 0,
-        }
+        BadScan(dualex_map::bad_scan::BadScan::new(
+            map,
+            stars,
+            &local.coords,
+            tri_mask,
+            MIN_TASK,
+        ))
     }
 
     /// The bad vertices, in increasing order.
     fn list(&self) -> Vec<u32> {
-        (0..self.bad.len() as u32)
-            .filter(|&v| self.bad[v as usize])
-            .collect()
+        self.0.list()
     }
 
     /// Re-tests after the vertices `moved` (corners in their stars) moved.
     fn update(&mut self, map: &TriMap, stars: &Stars<2>, local: &LocalMap, moved: &[u32]) {
-        self.epoch += 1;
-        let epoch = self.epoch;
-        // the triangles whose corners moved
-        let mut redo = Vec::new();
-        for &v in moved {
-            for e in stars.of(v as usize) {
-                let s = e.simplex as usize;
-                if self.s_stamp[s] != epoch {
-                    self.s_stamp[s] = epoch;
-                    redo.push(e.simplex);
-                }
-            }
-        }
-        let masks: Vec<u8> = redo
-            .par_iter()
-            .with_min_len(MIN_TASK)
-            .map(|&s| tri_mask(&local.coords[s as usize]))
-            .collect();
-        // the vertices of the triangles whose mask changed
-        let mut verts = Vec::new();
-        for (&s, &m) in redo.iter().zip(&masks) {
-            if self.mask[s as usize] == m {
-                continue;
-            }
-            self.mask[s as usize] = m;
-            for &w in &map.simplices[s as usize] {
-                if self.v_stamp[w as usize] != epoch {
-                    self.v_stamp[w as usize] = epoch;
-                    verts.push(w);
-                }
-            }
-        }
-        // a vertex's star holds all its corners
-        for w in verts {
-            self.bad[w as usize] = stars
-                .of(w as usize)
-                .iter()
-                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
-        }
+        self.0.update(map, stars, &local.coords, tri_mask, moved);
     }
 }
 

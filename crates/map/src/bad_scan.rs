@@ -1,0 +1,122 @@
+//! The bad vertices of a sanitization, kept up to date incrementally;
+//! shared by the quad and hex sanitizers.
+//!
+//! Input: a map, its stars, the local coordinates, and a per-simplex test
+//! `mask_of(corners) -> u8` (bit `k` set when the simplex makes its corner
+//! `k` bad; a function of the simplex's own corners only). Output: per
+//! vertex, whether some incident simplex's mask says it is bad.
+//!
+//! Invariant: after [`BadScan::update`] with the vertices that moved, the
+//! flags equal those of a full scan — only the simplices in the stars of
+//! the moved vertices are tested again, and only the vertices of simplices
+//! whose mask changed are re-derived (a vertex's star holds all its
+//! corners). The tests run in parallel (order-preserving collect; the
+//! masks do not depend on the thread count).
+
+use crate::{SimplexMap, Stars};
+use rayon::prelude::*;
+
+/// Bad-vertex flags with the per-simplex masks behind them.
+pub struct BadScan {
+    bad: Vec<bool>,
+    mask: Vec<u8>,
+    v_stamp: Vec<u32>,
+    s_stamp: Vec<u32>,
+    epoch: u32,
+    /// Simplices per parallel task.
+    min_task: usize,
+}
+
+impl BadScan {
+    /// Tests every simplex; `min_task` simplices at least per parallel
+    /// task (below it, splitting costs more than it saves).
+    pub fn new<const N: usize, const D: usize>(
+        map: &SimplexMap<N, D>,
+        stars: &Stars<D>,
+        coords: &[[[f64; D]; N]],
+        mask_of: impl Fn(&[[f64; D]; N]) -> u8 + Sync,
+        min_task: usize,
+    ) -> Self {
+        let nv = map.positions.len();
+        let mask: Vec<u8> = coords
+            .par_iter()
+            .with_min_len(min_task)
+            .map(&mask_of)
+            .collect();
+        let bad = (0..nv)
+            .into_par_iter()
+            .with_min_len(min_task)
+            .map(|v| {
+                stars
+                    .of(v)
+                    .iter()
+                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
+            })
+            .collect();
+        BadScan {
+            bad,
+            mask,
+            v_stamp: vec![0; nv],
+            s_stamp: vec![0; map.simplices.len()],
+            epoch: 0,
+            min_task,
+        }
+    }
+
+    /// The bad vertices, in increasing order.
+    pub fn list(&self) -> Vec<u32> {
+        (0..self.bad.len() as u32)
+            .filter(|&v| self.bad[v as usize])
+            .collect()
+    }
+
+    /// Re-tests after the vertices `moved` (corners in their stars) moved.
+    pub fn update<const N: usize, const D: usize>(
+        &mut self,
+        map: &SimplexMap<N, D>,
+        stars: &Stars<D>,
+        coords: &[[[f64; D]; N]],
+        mask_of: impl Fn(&[[f64; D]; N]) -> u8 + Sync,
+        moved: &[u32],
+    ) {
+        self.epoch += 1;
+        let epoch = self.epoch;
+        // the simplices whose corners moved
+        let mut redo = Vec::new();
+        for &v in moved {
+            for e in stars.of(v as usize) {
+                let s = e.simplex as usize;
+                if self.s_stamp[s] != epoch {
+                    self.s_stamp[s] = epoch;
+                    redo.push(e.simplex);
+                }
+            }
+        }
+        let masks: Vec<u8> = redo
+            .par_iter()
+            .with_min_len(self.min_task)
+            .map(|&s| mask_of(&coords[s as usize]))
+            .collect();
+        // the vertices of the simplices whose mask changed
+        let mut verts = Vec::new();
+        for (&s, &m) in redo.iter().zip(&masks) {
+            if self.mask[s as usize] == m {
+                continue;
+            }
+            self.mask[s as usize] = m;
+            for &w in &map.simplices[s as usize] {
+                if self.v_stamp[w as usize] != epoch {
+                    self.v_stamp[w as usize] = epoch;
+                    verts.push(w);
+                }
+            }
+        }
+        // a vertex's star holds all its corners
+        for w in verts {
+            self.bad[w as usize] = stars
+                .of(w as usize)
+                .iter()
+                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
+        }
+    }
+}
