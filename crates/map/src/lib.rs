@@ -37,6 +37,7 @@ pub mod topology;
 mod topology_build;
 pub mod transition;
 mod transition_derive;
+mod transition_fit;
 pub mod weld;
 
 #[cfg(test)]
