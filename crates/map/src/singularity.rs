@@ -181,25 +181,42 @@ pub fn edge_angle(r: &Rot3, dir: &[f64; 3]) -> Option<EdgeAngle> {
     }
 }
 
+/// Every edge of a tet mesh once, ordered by its sorted vertex pair, as
+/// `(s, i, j)`: the first tet `s` holding it and its corners `i < j` there.
+/// Found around each vertex (through its corners, in tet order) among the
+/// edges to larger vertices: no global sort.
+fn first_tet_of_edges(map: &TetMap) -> Vec<(u32, u8, u8)> {
+    let (offsets, corners) = vertex_corners(&map.simplices, map.positions.len());
+    let mut out = Vec::with_capacity(map.len() * 2);
+    let mut around: Vec<(u32, u32, u8, u8)> = Vec::new();
+    // seen[b] == a: edge (a, b) already has its first tet
+    let mut seen = vec![u32::MAX; map.positions.len()];
+    for a in 0..map.positions.len() {
+        around.clear();
+        for &(s, c) in &corners[offsets[a] as usize..offsets[a + 1] as usize] {
+            let t = &map.simplices[s as usize];
+            for (d, &b) in t.iter().enumerate() {
+                if b as usize > a && seen[b as usize] != a as u32 {
+                    seen[b as usize] = a as u32;
+                    let (i, j) = (c.min(d as u8), c.max(d as u8));
+                    around.push((b, s, i, j));
+                }
+            }
+        }
+        around.sort_unstable_by_key(|e| e.0);
+        out.extend(around.iter().map(|&(_, s, i, j)| (s, i, j)));
+    }
+    out
+}
+
 /// Singular interior edges of a tet mesh (see the module docs).
 pub fn edge_singularities(
     map: &TetMap,
     topo: &Topology<4>,
     trans: &Transitions<4, 3>,
 ) -> Vec<EdgeSingularity> {
-    let mut edges: Vec<([u32; 2], u32, u8, u8)> = Vec::with_capacity(map.len() * 6);
-    for (s, t) in map.simplices.iter().enumerate() {
-        for i in 0..4u8 {
-            for j in i + 1..4u8 {
-                let (a, b) = (t[i as usize], t[j as usize]);
-                edges.push(([a.min(b), a.max(b)], s as u32, i, j));
-            }
-        }
-    }
-    edges.sort_unstable();
-    edges.dedup_by_key(|e| e.0);
     let mut out = Vec::new();
-    for (_, s, i, j) in edges {
+    for (s, i, j) in first_tet_of_edges(map) {
         let (s, i, j) = (s as usize, i as usize, j as usize);
         let Some(rot) = ridge_rotation(topo, trans, s, &[i, j]) else {
             continue;
@@ -329,6 +346,31 @@ mod tests {
         assert_eq!(e[0].edge, [0, 1]);
         let stars = Stars::build(&m, &topo, &tr);
         assert_eq!(stars.singular, vec![true, true, false, false, false]);
+    }
+
+    #[test]
+    fn edges_in_sorted_order_with_their_first_tet() {
+        let mut m = crate::test_maps::tet_cube(3);
+        // shuffle vertex ids so that corner order and vertex order differ
+        let nv = m.positions.len() as u32;
+        for t in m.simplices.iter_mut() {
+            for v in t.iter_mut() {
+                *v = (*v * 7 + 3) % nv;
+            }
+        }
+        let mut want: Vec<([u32; 2], u32, u8, u8)> = Vec::new();
+        for (s, t) in m.simplices.iter().enumerate() {
+            for i in 0..4u8 {
+                for j in i + 1..4u8 {
+                    let (a, b) = (t[i as usize], t[j as usize]);
+                    want.push(([a.min(b), a.max(b)], s as u32, i, j));
+                }
+            }
+        }
+        want.sort_unstable();
+        want.dedup_by_key(|e| e.0);
+        let want: Vec<(u32, u8, u8)> = want.iter().map(|e| (e.1, e.2, e.3)).collect();
+        assert_eq!(first_tet_of_edges(&m), want);
     }
 
     #[test]

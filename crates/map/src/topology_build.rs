@@ -9,7 +9,10 @@
 //!    through the facets that contain it (2D: more than one fan).
 //!
 //! Key of a facet: its sorted vertex ids (the unused last slot holds
-//! `u32::MAX`), sorted together with the half-facet id `s·N + f`.
+//! `u32::MAX`). The half-facets `(key, s·N + f)` are visited in sorted
+//! order (so the first error is the one of the least key): bucketed by
+//! their least vertex, each bucket sorted by the other vertices and the
+//! half-facet id, which is the order of one global sort.
 
 use crate::mesh::simplex_word;
 use crate::topology::{Topology, NONE};
@@ -51,6 +54,53 @@ fn key_text<const N: usize>(key: &[u32; N]) -> String {
     parts.join("-")
 }
 
+/// The other vertices of a facet key (all but the least), packed into one
+/// integer in the key's order.
+#[inline]
+fn rest_of<const N: usize>(key: &[u32; N]) -> u64 {
+    key[1..N - 1]
+        .iter()
+        .fold(0u64, |acc, &v| (acc << 32) | u64::from(v))
+}
+
+/// All half-facets as CSR buckets by their least vertex:
+/// `(offsets, (rest_of(key), s·N + f))`, each bucket sorted.
+fn facet_buckets<const N: usize>(
+    simplices: &[[u32; N]],
+    vertex_count: usize,
+) -> (Vec<u32>, Vec<(u64, u32)>) {
+    let least = |simplex: &[u32; N], f: usize| {
+        (0..N)
+            .filter(|&c| c != f)
+            .map(|c| simplex[c])
+            .min()
+            .unwrap_or(u32::MAX)
+    };
+    let mut offsets = vec![0u32; vertex_count + 1];
+    for simplex in simplices {
+        for f in 0..N {
+            offsets[least(simplex, f) as usize + 1] += 1;
+        }
+    }
+    for v in 0..vertex_count {
+        offsets[v + 1] += offsets[v];
+    }
+    let mut fill: Vec<u32> = offsets[..vertex_count].to_vec();
+    let mut half = vec![(0u64, 0u32); offsets[vertex_count] as usize];
+    for (s, simplex) in simplices.iter().enumerate() {
+        for f in 0..N {
+            let key = facet_key(simplex, f);
+            let slot = &mut fill[key[0] as usize];
+            half[*slot as usize] = (rest_of(&key), (s * N + f) as u32);
+            *slot += 1;
+        }
+    }
+    for v in 0..vertex_count {
+        half[offsets[v] as usize..offsets[v + 1] as usize].sort_unstable();
+    }
+    (offsets, half)
+}
+
 pub(crate) fn build<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> Result<Topology<N>, InputError> {
@@ -61,30 +111,41 @@ pub(crate) fn build<const N: usize, const D: usize>(
         nbr_corner: vec![[[0u8; N]; N]; ns],
         boundary_facets: 0,
     };
-    let keys = sorted_facets(&map.simplices);
-    let mut i = 0;
-    while i < keys.len() {
-        let mut j = i + 1;
-        while j < keys.len() && keys[j].0 == keys[i].0 {
-            j += 1;
-        }
-        match j - i {
-            1 => topo.boundary_facets += 1,
-            2 => glue(map, &mut topo, keys[i].1 as usize, keys[i + 1].1 as usize)?,
-            n => {
-                let mut owners: Vec<usize> = keys[i..j].iter().map(|k| k.1 as usize / N).collect();
-                owners.sort_unstable();
-                let list: Vec<String> = owners.iter().map(|s| s.to_string()).collect();
-                return Err(InputError::new(format!(
-                    "{} {} is shared by {n} {}s ({}): non-manifold",
-                    facet_word(N),
-                    key_text(&keys[i].0),
-                    simplex_word(N),
-                    list.join(", ")
-                )));
+    let (offsets, half) = facet_buckets(&map.simplices, map.positions.len());
+    for v in 0..map.positions.len() {
+        let bucket = &half[offsets[v] as usize..offsets[v + 1] as usize];
+        let mut i = 0;
+        while i < bucket.len() {
+            let mut j = i + 1;
+            while j < bucket.len() && bucket[j].0 == bucket[i].0 {
+                j += 1;
             }
+            match j - i {
+                1 => topo.boundary_facets += 1,
+                2 => glue(
+                    map,
+                    &mut topo,
+                    bucket[i].1 as usize,
+                    bucket[i + 1].1 as usize,
+                )?,
+                n => {
+                    let h = bucket[i].1 as usize;
+                    let key = facet_key(&map.simplices[h / N], h % N);
+                    let mut owners: Vec<usize> =
+                        bucket[i..j].iter().map(|k| k.1 as usize / N).collect();
+                    owners.sort_unstable();
+                    let list: Vec<String> = owners.iter().map(|s| s.to_string()).collect();
+                    return Err(InputError::new(format!(
+                        "{} {} is shared by {n} {}s ({}): non-manifold",
+                        facet_word(N),
+                        key_text(&key),
+                        simplex_word(N),
+                        list.join(", ")
+                    )));
+                }
+            }
+            i = j;
         }
-        i = j;
     }
     check_vertices(map, &topo)?;
     Ok(topo)
