@@ -26,7 +26,12 @@
 use crate::holonomy::ridge_rotation;
 use crate::mesh::simplex_word;
 use crate::topology_build::facet_word;
-use crate::transition_fit::{fit_facet, rounded};
+use crate::transition_fit::{fit_facet, rounded, Fit};
+use rayon::prelude::*;
+
+/// Simplices whose facets are fitted in one parallel batch (bounds the
+/// memory of the fits waiting to be used in order).
+const BATCH: usize = 1 << 16;
 use crate::{
     InputError, Rot, SimplexMap, Topology, TransitionOptions, TransitionReport, Transitions,
 };
@@ -72,15 +77,21 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     let all = Rot::<D>::all();
     let mut ambiguous = Vec::new();
     let mut failed: Option<(f64, f64, usize, usize)> = None;
-    for s in 0..ns {
-        for f in 0..N {
-            let Some((n, g)) = topo.neighbour(s, f) else {
-                continue;
-            };
-            if (n, g) < (s, f) {
-                continue;
-            }
-            let fit = fit_facet(map, topo, s, f, &all, opts)?;
+    // the fits of a batch in parallel, then used in facet order: the first
+    // error returned is the one of the sequential loop
+    for lo in (0..ns).step_by(BATCH) {
+        let fits: Vec<(usize, usize, Result<Fit<D>, InputError>)> = (lo..ns.min(lo + BATCH))
+            .into_par_iter()
+            .flat_map_iter(|s| {
+                let all = &all;
+                (0..N).filter_map(move |f| {
+                    let nf = topo.neighbour(s, f)?;
+                    (nf > (s, f)).then(|| (s, f, fit_facet(map, topo, s, f, all, opts)))
+                })
+            })
+            .collect();
+        for (s, f, fit) in fits {
+            let fit = fit?;
             if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
                 rep.max_residual = rep.max_residual.max(fit.residual);
                 rep.worst_facet = Some((s, f));

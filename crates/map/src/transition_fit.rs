@@ -77,14 +77,18 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     let n = topo.adj[s][f] as usize;
     let m = N - 1;
     // a[i], b[i] for i < m: the facet's corners in the charts of s and n
-    let a: [[f64; D]; N] = std::array::from_fn(|i| map.coords[s][(f + 1 + i) % N]);
-    let b: [[f64; D]; N] =
-        std::array::from_fn(|i| map.coords[n][topo.nbr_corner[s][f][(f + 1 + i) % N] as usize]);
-    let scale = a[..m]
-        .iter()
-        .chain(&b[..m])
-        .flatten()
-        .fold(0.0f64, |acc, x| acc.max(x.abs()));
+    let (cs, cn, corner) = (&map.coords[s], &map.coords[n], &topo.nbr_corner[s][f]);
+    let mut a = [[0.0f64; D]; N];
+    let mut b = [[0.0f64; D]; N];
+    let mut scale = 0.0f64;
+    for i in 0..m {
+        let c = (f + 1 + i) % N;
+        a[i] = cs[c];
+        b[i] = cn[corner[c] as usize];
+        for k in 0..D {
+            scale = scale.max(a[i][k].abs()).max(b[i][k].abs());
+        }
+    }
     let tol = opts.tolerance_at(scale);
     let table = mismatch_table(&a[..m], &b[..m]);
     let mut mis = [0.0f64; MAX_ROTATIONS];
