@@ -20,6 +20,7 @@ pub mod cells;
 pub mod cluster;
 mod components;
 pub mod error;
+mod float;
 pub mod grid;
 pub mod holonomy;
 pub mod local;

@@ -25,6 +25,7 @@ use crate::mesh::det_of;
 use crate::topology_build::vertex_corners;
 use crate::transition_derive::ulp;
 use crate::{Rot3, SimplexMap, TetMap, Topology, Transitions, TriMap};
+use rayon::prelude::*;
 
 /// A singular interior vertex of a triangle mesh.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -93,8 +94,11 @@ pub fn is_degenerate<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> bool 
 
 /// `(reverted, degenerate)` simplex counts: `det < 0`, and [`is_degenerate`].
 pub fn quality<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> (usize, usize) {
-    let reverted = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
-    let degenerate = map.coords.iter().filter(|p| is_degenerate(p)).count();
+    let reverted = (0..map.len())
+        .into_par_iter()
+        .filter(|&s| map.map_det(s) < 0.0)
+        .count();
+    let degenerate = map.coords.par_iter().filter(|p| is_degenerate(p)).count();
     (reverted, degenerate)
 }
 
@@ -215,24 +219,22 @@ pub fn edge_singularities(
     topo: &Topology<4>,
     trans: &Transitions<4, 3>,
 ) -> Vec<EdgeSingularity> {
-    let mut out = Vec::new();
-    for (s, i, j) in first_tet_of_edges(map) {
-        let (s, i, j) = (s as usize, i as usize, j as usize);
-        let Some(rot) = ridge_rotation(topo, trans, s, &[i, j]) else {
-            continue;
-        };
-        let p = &map.coords[s];
-        let dir: [f64; 3] = std::array::from_fn(|k| p[j][k] - p[i][k]);
-        if let Some(angle) = edge_angle(&rot, &dir) {
+    // the walks around the edges in parallel, collected in edge order
+    first_tet_of_edges(map)
+        .into_par_iter()
+        .filter_map(|(s, i, j)| {
+            let (s, i, j) = (s as usize, i as usize, j as usize);
+            let rot = ridge_rotation(topo, trans, s, &[i, j])?;
+            let p = &map.coords[s];
+            let dir: [f64; 3] = std::array::from_fn(|k| p[j][k] - p[i][k]);
             let t = &map.simplices[s];
-            out.push(EdgeSingularity {
+            edge_angle(&rot, &dir).map(|angle| EdgeSingularity {
                 edge: [t[i], t[j]],
                 rot,
                 angle,
-            });
-        }
-    }
-    out
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -212,7 +212,8 @@ fn permutation_parity<const N: usize>(p: &[u8; N]) -> u32 {
     inv % 2
 }
 
-/// The corners around each vertex, as CSR: `(offsets, (simplex, corner))`.
+/// The corners around each vertex, as CSR: `(offsets, (simplex, corner))`,
+/// each vertex's corners in simplex order.
 pub(crate) fn vertex_corners<const N: usize>(
     simplices: &[[u32; N]],
     vertex_count: usize,

@@ -80,7 +80,7 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     // the fits of a batch in parallel, then used in facet order: the first
     // error returned is the one of the sequential loop
     for lo in (0..ns).step_by(BATCH) {
-        let fits: Vec<(usize, usize, Result<Fit<D>, InputError>)> = (lo..ns.min(lo + BATCH))
+        let fits: Vec<(usize, usize, Result<Fit<D>, Box<InputError>>)> = (lo..ns.min(lo + BATCH))
             .into_par_iter()
             .flat_map_iter(|s| {
                 let all = &all;
@@ -91,7 +91,7 @@ pub(crate) fn derive<const N: usize, const D: usize>(
             })
             .collect();
         for (s, f, fit) in fits {
-            let fit = fit?;
+            let fit = fit.map_err(|e| *e)?;
             if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
                 rep.max_residual = rep.max_residual.max(fit.residual);
                 rep.worst_facet = Some((s, f));
