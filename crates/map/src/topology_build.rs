@@ -17,6 +17,10 @@
 use crate::mesh::simplex_word;
 use crate::topology::{Topology, NONE};
 use crate::{InputError, SimplexMap};
+use rayon::prelude::*;
+
+/// Vertices whose facet buckets are sorted by one parallel task.
+const SORT_BLOCK: usize = 4096;
 
 /// Word for a facet of a simplex with `N` corners, for messages.
 pub(crate) fn facet_word(n: usize) -> &'static str {
@@ -95,9 +99,23 @@ fn facet_buckets<const N: usize>(
             *slot += 1;
         }
     }
-    for v in 0..vertex_count {
-        half[offsets[v] as usize..offsets[v + 1] as usize].sort_unstable();
+    // the buckets of blocks of vertices sorted in parallel, each block in
+    // its own slice
+    let mut blocks: Vec<(usize, &mut [(u64, u32)])> = Vec::new();
+    let mut rest = &mut half[..];
+    for first in (0..vertex_count).step_by(SORT_BLOCK) {
+        let end = vertex_count.min(first + SORT_BLOCK);
+        let len = (offsets[end] - offsets[first]) as usize;
+        let (block, tail) = std::mem::take(&mut rest).split_at_mut(len);
+        rest = tail;
+        blocks.push((first, block));
     }
+    blocks.into_par_iter().for_each(|(first, block)| {
+        let base = offsets[first] as usize;
+        for v in first..vertex_count.min(first + SORT_BLOCK) {
+            block[offsets[v] as usize - base..offsets[v + 1] as usize - base].sort_unstable();
+        }
+    });
     (offsets, half)
 }
 
