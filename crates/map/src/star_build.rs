@@ -77,14 +77,15 @@ pub(crate) fn build<const N: usize, const D: usize>(
 /// over a table of at least twice the star's size (reused between
 /// vertices).
 #[derive(Default)]
-struct Reached {
+pub(crate) struct Reached {
     keys: Vec<u32>,
     entry: Vec<u32>,
     shift: u32,
 }
 
 impl Reached {
-    fn reset(&mut self, star: usize) {
+    /// Empties the table for a star of up to `star` simplices.
+    pub(crate) fn reset(&mut self, star: usize) {
         let cap = (2 * star).next_power_of_two().max(4);
         self.keys.clear();
         self.keys.resize(cap, u32::MAX);
@@ -94,13 +95,24 @@ impl Reached {
 
     /// The slot of simplex `n`: its own, or the free one to insert it in.
     #[inline]
-    fn slot(&self, n: u32) -> usize {
+    pub(crate) fn slot(&self, n: u32) -> usize {
         let mask = self.keys.len() - 1;
         let mut i = (n.wrapping_mul(0x9E37_79B9) >> self.shift) as usize;
         while self.keys[i] != n && self.keys[i] != u32::MAX {
             i = (i + 1) & mask;
         }
         i
+    }
+
+    /// Marks simplex `n` reached (entry `e`); false if it already was.
+    #[inline]
+    pub(crate) fn insert(&mut self, n: u32, e: u32) -> bool {
+        let i = self.slot(n);
+        if self.keys[i] == n {
+            return false;
+        }
+        (self.keys[i], self.entry[i]) = (n, e);
+        true
     }
 }
 
