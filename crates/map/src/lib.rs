@@ -21,6 +21,7 @@ pub mod cells;
 pub mod cluster;
 mod components;
 pub mod error;
+mod float;
 pub mod grid;
 pub mod holonomy;
 pub mod local;
@@ -39,6 +40,7 @@ pub mod topology;
 mod topology_build;
 pub mod transition;
 mod transition_derive;
+mod transition_fit;
 pub mod weld;
 
 #[cfg(test)]

@@ -13,7 +13,9 @@
 //! shift folded in: `h − R·h` is integral for `h = (½, …, ½)` and every grid
 //! rotation), up to the map's own GP residual.
 
+use crate::float::floor_i64;
 use crate::{Rot, SimplexMap, Stars, Topology, Transitions};
+use rayon::prelude::*;
 
 /// A map in local shifted coordinates.
 #[derive(Clone, Debug)]
@@ -33,22 +35,19 @@ pub fn shift_defect<const D: usize>(r: &Rot<D>) -> [i64; D] {
 }
 
 impl<const N: usize, const D: usize> LocalMap<N, D> {
-    /// Builds local shifted coordinates and the matching transitions.
+    /// Builds local shifted coordinates and the matching transitions (per
+    /// simplex, in parallel: each writes only its own entries).
     pub fn new(map: &SimplexMap<N, D>, topo: &Topology<N>, trans: &Transitions<N, D>) -> Self {
-        let offset: Vec<[i64; D]> = map
-            .coords
-            .iter()
-            .map(|c| c[0].map(|x| x.floor() as i64))
-            .collect();
+        let offset: Vec<[i64; D]> = map.coords.par_iter().map(|c| c[0].map(floor_i64)).collect();
         let coords = map
             .coords
-            .iter()
+            .par_iter()
             .zip(&offset)
             .map(|(c, o)| c.map(|p| std::array::from_fn(|k| (p[k] - o[k] as f64) + 0.5)))
             .collect();
         let mut t = trans.clone();
-        for s in 0..map.len() {
-            for f in 0..N {
+        t.trans.par_iter_mut().enumerate().for_each(|(s, ts)| {
+            for (f, tf) in ts.iter_mut().enumerate() {
                 let Some((n, _)) = topo.neighbour(s, f) else {
                     continue;
                 };
@@ -56,9 +55,9 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
                 let ro = r.apply_i(&offset[s]);
                 let d = shift_defect(&r);
                 let tt = trans.trans[s][f];
-                t.trans[s][f] = std::array::from_fn(|k| ro[k] + tt[k] - offset[n][k] + d[k]);
+                *tf = std::array::from_fn(|k| ro[k] + tt[k] - offset[n][k] + d[k]);
             }
-        }
+        });
         LocalMap {
             coords,
             offset,

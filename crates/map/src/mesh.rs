@@ -15,6 +15,7 @@
 //! repeated vertex in a simplex, every position and map coordinate finite.
 
 use crate::error::InputError;
+use rayon::prelude::*;
 
 /// A simplicial mesh with per-corner map coordinates.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -178,9 +179,6 @@ impl TetMap {
             let p: [[f64; 3]; 4] = self.simplices[s].map(|v| self.positions[v as usize]);
             det_of::<4, 3>(&p)
         };
-        let total: f64 = (0..self.len()).map(geo).sum();
-        let sign = if total < 0.0 { -1.0 } else { 1.0 };
-        let (mut bad, mut all, mut worst, mut reverted) = (0.0, 0.0, None, 0.0);
         // "degenerate": |det| below 1e-12 of the cube of the longest edge
         let scale = |p: &[[f64; 3]; 4]| {
             let mut l = 0.0f64;
@@ -191,11 +189,19 @@ impl TetMap {
             }
             l.sqrt().powi(3) * 1e-12
         };
-        for s in 0..self.len() {
-            let g = (geo(s) * sign).max(0.0);
+        // per tet (in parallel): geometric det, map det, degeneracy bound;
+        // the sums below stay sequential, in tet order
+        let per_tet: Vec<(f64, f64, f64)> = (0..self.len())
+            .into_par_iter()
+            .map(|s| (geo(s), self.map_det(s), scale(&self.coords[s])))
+            .collect();
+        let total: f64 = per_tet.iter().map(|t| t.0).sum();
+        let sign = if total < 0.0 { -1.0 } else { 1.0 };
+        let (mut bad, mut all, mut worst, mut reverted) = (0.0, 0.0, None, 0.0);
+        for (s, &(geo_s, map_s, tiny)) in per_tet.iter().enumerate() {
+            let g = (geo_s * sign).max(0.0);
             all += g;
-            let m = self.map_det(s) * sign;
-            let tiny = scale(&self.coords[s]);
+            let m = map_s * sign;
             if m <= tiny {
                 bad += g;
                 if m < -tiny {

@@ -25,6 +25,7 @@ use crate::mesh::det_of;
 use crate::topology_build::vertex_corners;
 use crate::transition_derive::ulp;
 use crate::{Rot3, SimplexMap, TetMap, Topology, Transitions, TriMap};
+use rayon::prelude::*;
 
 /// A singular interior vertex of a triangle mesh.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -93,8 +94,11 @@ pub fn is_degenerate<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> bool 
 
 /// `(reverted, degenerate)` simplex counts: `det < 0`, and [`is_degenerate`].
 pub fn quality<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> (usize, usize) {
-    let reverted = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
-    let degenerate = map.coords.iter().filter(|p| is_degenerate(p)).count();
+    let reverted = (0..map.len())
+        .into_par_iter()
+        .filter(|&s| map.map_det(s) < 0.0)
+        .count();
+    let degenerate = map.coords.par_iter().filter(|p| is_degenerate(p)).count();
     (reverted, degenerate)
 }
 
@@ -181,41 +185,56 @@ pub fn edge_angle(r: &Rot3, dir: &[f64; 3]) -> Option<EdgeAngle> {
     }
 }
 
+/// Every edge of a tet mesh once, ordered by its sorted vertex pair, as
+/// `(s, i, j)`: the first tet `s` holding it and its corners `i < j` there.
+/// Found around each vertex (through its corners, in tet order) among the
+/// edges to larger vertices: no global sort.
+fn first_tet_of_edges(map: &TetMap) -> Vec<(u32, u8, u8)> {
+    let (offsets, corners) = vertex_corners(&map.simplices, map.positions.len());
+    let mut out = Vec::with_capacity(map.len() * 2);
+    let mut around: Vec<(u32, u32, u8, u8)> = Vec::new();
+    // seen[b] == a: edge (a, b) already has its first tet
+    let mut seen = vec![u32::MAX; map.positions.len()];
+    for a in 0..map.positions.len() {
+        around.clear();
+        for &(s, c) in &corners[offsets[a] as usize..offsets[a + 1] as usize] {
+            let t = &map.simplices[s as usize];
+            for (d, &b) in t.iter().enumerate() {
+                if b as usize > a && seen[b as usize] != a as u32 {
+                    seen[b as usize] = a as u32;
+                    let (i, j) = (c.min(d as u8), c.max(d as u8));
+                    around.push((b, s, i, j));
+                }
+            }
+        }
+        around.sort_unstable_by_key(|e| e.0);
+        out.extend(around.iter().map(|&(_, s, i, j)| (s, i, j)));
+    }
+    out
+}
+
 /// Singular interior edges of a tet mesh (see the module docs).
 pub fn edge_singularities(
     map: &TetMap,
     topo: &Topology<4>,
     trans: &Transitions<4, 3>,
 ) -> Vec<EdgeSingularity> {
-    let mut edges: Vec<([u32; 2], u32, u8, u8)> = Vec::with_capacity(map.len() * 6);
-    for (s, t) in map.simplices.iter().enumerate() {
-        for i in 0..4u8 {
-            for j in i + 1..4u8 {
-                let (a, b) = (t[i as usize], t[j as usize]);
-                edges.push(([a.min(b), a.max(b)], s as u32, i, j));
-            }
-        }
-    }
-    edges.sort_unstable();
-    edges.dedup_by_key(|e| e.0);
-    let mut out = Vec::new();
-    for (_, s, i, j) in edges {
-        let (s, i, j) = (s as usize, i as usize, j as usize);
-        let Some(rot) = ridge_rotation(topo, trans, s, &[i, j]) else {
-            continue;
-        };
-        let p = &map.coords[s];
-        let dir: [f64; 3] = std::array::from_fn(|k| p[j][k] - p[i][k]);
-        if let Some(angle) = edge_angle(&rot, &dir) {
+    // the walks around the edges in parallel, collected in edge order
+    first_tet_of_edges(map)
+        .into_par_iter()
+        .filter_map(|(s, i, j)| {
+            let (s, i, j) = (s as usize, i as usize, j as usize);
+            let rot = ridge_rotation(topo, trans, s, &[i, j])?;
+            let p = &map.coords[s];
+            let dir: [f64; 3] = std::array::from_fn(|k| p[j][k] - p[i][k]);
             let t = &map.simplices[s];
-            out.push(EdgeSingularity {
+            edge_angle(&rot, &dir).map(|angle| EdgeSingularity {
                 edge: [t[i], t[j]],
                 rot,
                 angle,
-            });
-        }
-    }
-    out
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -329,6 +348,31 @@ mod tests {
         assert_eq!(e[0].edge, [0, 1]);
         let stars = Stars::build(&m, &topo, &tr);
         assert_eq!(stars.singular, vec![true, true, false, false, false]);
+    }
+
+    #[test]
+    fn edges_in_sorted_order_with_their_first_tet() {
+        let mut m = crate::test_maps::tet_cube(3);
+        // shuffle vertex ids so that corner order and vertex order differ
+        let nv = m.positions.len() as u32;
+        for t in m.simplices.iter_mut() {
+            for v in t.iter_mut() {
+                *v = (*v * 7 + 3) % nv;
+            }
+        }
+        let mut want: Vec<([u32; 2], u32, u8, u8)> = Vec::new();
+        for (s, t) in m.simplices.iter().enumerate() {
+            for i in 0..4u8 {
+                for j in i + 1..4u8 {
+                    let (a, b) = (t[i as usize], t[j as usize]);
+                    want.push(([a.min(b), a.max(b)], s as u32, i, j));
+                }
+            }
+        }
+        want.sort_unstable();
+        want.dedup_by_key(|e| e.0);
+        let want: Vec<(u32, u8, u8)> = want.iter().map(|e| (e.1, e.2, e.3)).collect();
+        assert_eq!(first_tet_of_edges(&m), want);
     }
 
     #[test]

@@ -7,9 +7,26 @@
 //! its reference chart (identity). A vertex is singular when some simplex is
 //! reached with two different rotations; on the boundary when one of its
 //! facets has no neighbour. Vertices used by no simplex have an empty star.
+//!
+//! Every simplex around a vertex gets exactly one entry, so the stars have
+//! the layout of the vertices' corner lists: blocks of vertices are walked
+//! in parallel, each into its own slice of the entries (the same entries,
+//! in the same order, as one sequential walk).
 
 use crate::topology_build::vertex_corners;
 use crate::{Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
+use rayon::prelude::*;
+
+/// Vertices walked by one parallel task.
+const BLOCK: usize = 2048;
+
+/// One parallel task: vertices `first..`, and their slices of the outputs.
+type Job<'a, const D: usize> = (
+    usize,
+    &'a mut [StarEntry<D>],
+    &'a mut [bool],
+    &'a mut [bool],
+);
 
 pub(crate) fn build<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
@@ -18,80 +35,230 @@ pub(crate) fn build<const N: usize, const D: usize>(
 ) -> Stars<D> {
     let nv = map.positions.len();
     let (offsets, corners) = vertex_corners(&map.simplices, nv);
+    let blank = StarEntry {
+        simplex: 0,
+        corner: 0,
+        rot: Rot::IDENTITY,
+    };
     let mut stars = Stars {
-        offsets: vec![0u32; nv + 1],
-        entries: Vec::with_capacity(corners.len()),
+        entries: vec![blank; corners.len()],
+        offsets,
         singular: vec![false; nv],
         boundary: vec![false; nv],
     };
-    // per simplex: (vertex stamp, index of its entry in `entries`)
-    let mut seen = vec![(u32::MAX, 0u32); map.simplices.len()];
-    for v in 0..nv {
-        let start = stars.entries.len();
-        for &(s0, c0) in &corners[offsets[v] as usize..offsets[v + 1] as usize] {
-            if seen[s0 as usize].0 == v as u32 {
-                continue;
-            }
-            // a new component of the star (only when the topology was not
-            // checked); its first simplex is its own reference chart
-            walk(
-                topo,
-                trans,
-                &mut stars,
-                &mut seen,
-                v,
-                s0 as usize,
-                c0 as usize,
-            );
-        }
-        stars.offsets[v + 1] = stars.entries.len() as u32;
-        debug_assert_eq!(
-            stars.entries.len() - start,
-            (offsets[v + 1] - offsets[v]) as usize
-        );
+    let mut jobs: Vec<Job<D>> = Vec::with_capacity(nv.div_ceil(BLOCK));
+    let mut entries = &mut stars.entries[..];
+    let mut singular = &mut stars.singular[..];
+    let mut boundary = &mut stars.boundary[..];
+    for first in (0..nv).step_by(BLOCK) {
+        let end = nv.min(first + BLOCK);
+        let len = (stars.offsets[end] - stars.offsets[first]) as usize;
+        let (e, e_rest) = std::mem::take(&mut entries).split_at_mut(len);
+        let (s, s_rest) = std::mem::take(&mut singular).split_at_mut(end - first);
+        let (b, b_rest) = std::mem::take(&mut boundary).split_at_mut(end - first);
+        (entries, singular, boundary) = (e_rest, s_rest, b_rest);
+        jobs.push((first, e, s, b));
     }
+    let offsets = &stars.offsets;
+    jobs.into_par_iter().for_each(|(first, e, s, b)| {
+        let base = offsets[first] as usize;
+        let mut reached = Reached::default();
+        for (i, (sv, bv)) in s.iter_mut().zip(b.iter_mut()).enumerate() {
+            let v = first + i;
+            let (lo, hi) = (offsets[v] as usize, offsets[v + 1] as usize);
+            let out = &mut e[lo - base..hi - base];
+            (*sv, *bv) = star_of(topo, trans, &corners[lo..hi], out, &mut reached);
+        }
+    });
     stars
 }
 
-/// Breadth-first walk around `v` from corner `c0` of `s0`.
-fn walk<const N: usize, const D: usize>(
+/// Entry index of each simplex reached around one vertex: open addressing
+/// over a table of at least twice the star's size (reused between
+/// vertices).
+#[derive(Default)]
+pub(crate) struct Reached {
+    keys: Vec<u32>,
+    entry: Vec<u32>,
+    shift: u32,
+}
+
+impl Reached {
+    /// Empties the table for a star of up to `star` simplices.
+    pub(crate) fn reset(&mut self, star: usize) {
+        let cap = (2 * star).next_power_of_two().max(4);
+        self.keys.clear();
+        self.keys.resize(cap, u32::MAX);
+        self.entry.resize(cap, 0);
+        self.shift = 32 - cap.trailing_zeros();
+    }
+
+    /// The slot of simplex `n`: its own, or the free one to insert it in.
+    #[inline]
+    pub(crate) fn slot(&self, n: u32) -> usize {
+        let mask = self.keys.len() - 1;
+        let mut i = (n.wrapping_mul(0x9E37_79B9) >> self.shift) as usize;
+        while self.keys[i] != n && self.keys[i] != u32::MAX {
+            i = (i + 1) & mask;
+        }
+        i
+    }
+
+    /// Marks simplex `n` reached (entry `e`); false if it already was.
+    #[inline]
+    pub(crate) fn insert(&mut self, n: u32, e: u32) -> bool {
+        let i = self.slot(n);
+        if self.keys[i] == n {
+            return false;
+        }
+        (self.keys[i], self.entry[i]) = (n, e);
+        true
+    }
+}
+
+/// Walks the star of one vertex, whose corners are `corners`, into `out`
+/// (one entry per corner): breadth-first from each corner not reached yet
+/// (more than one only when the topology was not checked; each new
+/// component's first simplex is its own reference chart). Returns
+/// `(singular, boundary)`.
+fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
-    stars: &mut Stars<D>,
-    seen: &mut [(u32, u32)],
-    v: usize,
-    s0: usize,
-    c0: usize,
-) {
-    let mut head = stars.entries.len();
-    seen[s0] = (v as u32, head as u32);
-    stars.entries.push(StarEntry {
-        simplex: s0 as u32,
-        corner: c0 as u8,
-        rot: Rot::IDENTITY,
-    });
-    while head < stars.entries.len() {
-        let e = stars.entries[head];
-        head += 1;
-        let (s, c) = (e.simplex as usize, e.corner as usize);
-        for f in (0..N).filter(|&f| f != c) {
-            let Some((n, _)) = topo.neighbour(s, f) else {
-                stars.boundary[v] = true;
-                continue;
-            };
-            let rot = e.rot.then(&trans.rot[s][f]);
-            if seen[n].0 == v as u32 {
-                if stars.entries[seen[n].1 as usize].rot != rot {
-                    stars.singular[v] = true;
-                }
-                continue;
-            }
-            seen[n] = (v as u32, stars.entries.len() as u32);
-            stars.entries.push(StarEntry {
-                simplex: n as u32,
-                corner: topo.nbr_corner[s][f][c],
-                rot,
-            });
+    corners: &[(u32, u8)],
+    out: &mut [StarEntry<D>],
+    reached: &mut Reached,
+) -> (bool, bool) {
+    let (mut singular, mut boundary) = (false, false);
+    reached.reset(corners.len());
+    let mut len = 0;
+    for &(s0, c0) in corners {
+        let i0 = reached.slot(s0);
+        if reached.keys[i0] == s0 {
+            continue;
         }
+        let mut head = len;
+        out[len] = StarEntry {
+            simplex: s0,
+            corner: c0,
+            rot: Rot::IDENTITY,
+        };
+        (reached.keys[i0], reached.entry[i0]) = (s0, len as u32);
+        len += 1;
+        while head < len {
+            let e = out[head];
+            head += 1;
+            let (s, c) = (e.simplex as usize, e.corner as usize);
+            for f in (0..N).filter(|&f| f != c) {
+                let Some((n, _)) = topo.neighbour(s, f) else {
+                    boundary = true;
+                    continue;
+                };
+                let rot = e.rot.then(&trans.rot[s][f]);
+                let i = reached.slot(n as u32);
+                if reached.keys[i] == n as u32 {
+                    if out[reached.entry[i] as usize].rot != rot {
+                        singular = true;
+                    }
+                    continue;
+                }
+                out[len] = StarEntry {
+                    simplex: n as u32,
+                    corner: topo.nbr_corner[s][f][c],
+                    rot,
+                };
+                (reached.keys[i], reached.entry[i]) = (n as u32, len as u32);
+                len += 1;
+            }
+        }
+    }
+    debug_assert_eq!(len, out.len());
+    (singular, boundary)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_maps::{cone, cube_surface, edge_fan, grid, rechart, tet_cube};
+    use crate::TransitionOptions;
+
+    /// The stars as first written: one sequential walk per vertex with a
+    /// per-simplex stamp.
+    fn reference<const N: usize, const D: usize>(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        trans: &Transitions<N, D>,
+    ) -> Stars<D> {
+        let nv = map.positions.len();
+        let (offsets, corners) = vertex_corners(&map.simplices, nv);
+        let mut stars = Stars {
+            offsets: vec![0u32; nv + 1],
+            entries: Vec::new(),
+            singular: vec![false; nv],
+            boundary: vec![false; nv],
+        };
+        let mut seen = vec![(u32::MAX, 0u32); map.simplices.len()];
+        for v in 0..nv {
+            for &(s0, c0) in &corners[offsets[v] as usize..offsets[v + 1] as usize] {
+                if seen[s0 as usize].0 == v as u32 {
+                    continue;
+                }
+                let mut head = stars.entries.len();
+                seen[s0 as usize] = (v as u32, head as u32);
+                stars.entries.push(StarEntry {
+                    simplex: s0,
+                    corner: c0,
+                    rot: Rot::IDENTITY,
+                });
+                while head < stars.entries.len() {
+                    let e = stars.entries[head];
+                    head += 1;
+                    let (s, c) = (e.simplex as usize, e.corner as usize);
+                    for f in (0..N).filter(|&f| f != c) {
+                        let Some((n, _)) = topo.neighbour(s, f) else {
+                            stars.boundary[v] = true;
+                            continue;
+                        };
+                        let rot = e.rot.then(&trans.rot[s][f]);
+                        if seen[n].0 == v as u32 {
+                            if stars.entries[seen[n].1 as usize].rot != rot {
+                                stars.singular[v] = true;
+                            }
+                            continue;
+                        }
+                        seen[n] = (v as u32, stars.entries.len() as u32);
+                        stars.entries.push(StarEntry {
+                            simplex: n as u32,
+                            corner: topo.nbr_corner[s][f][c],
+                            rot,
+                        });
+                    }
+                }
+            }
+            stars.offsets[v + 1] = stars.entries.len() as u32;
+        }
+        stars
+    }
+
+    fn same<const N: usize, const D: usize>(map: &SimplexMap<N, D>) {
+        let topo = Topology::build(map).expect("topology");
+        let (tr, _) = Transitions::derive(map, &topo, &TransitionOptions::default()).expect("tr");
+        let (got, want) = (build(map, &topo, &tr), reference(map, &topo, &tr));
+        assert_eq!(got.offsets, want.offsets);
+        assert_eq!(got.entries, want.entries);
+        assert_eq!(got.singular, want.singular);
+        assert_eq!(got.boundary, want.boundary);
+    }
+
+    #[test]
+    fn same_stars_as_one_sequential_walk() {
+        let mut m = grid(70);
+        rechart(&mut m, 3);
+        same(&m);
+        same(&cube_surface(3));
+        same(&cone(300));
+        same(&edge_fan(5));
+        let mut t = tet_cube(4);
+        rechart(&mut t, 4);
+        same(&t);
     }
 }

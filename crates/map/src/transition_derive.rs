@@ -26,6 +26,12 @@
 use crate::holonomy::ridge_rotation;
 use crate::mesh::simplex_word;
 use crate::topology_build::facet_word;
+use crate::transition_fit::{fit_facet, rounded, Fit};
+use rayon::prelude::*;
+
+/// Simplices whose facets are fitted in one parallel batch (bounds the
+/// memory of the fits waiting to be used in order).
+const BATCH: usize = 1 << 16;
 use crate::{
     InputError, Rot, SimplexMap, Topology, TransitionOptions, TransitionReport, Transitions,
 };
@@ -36,15 +42,6 @@ struct Ambiguous<const D: usize> {
     f: usize,
     /// Rotations with an integral translation, and that translation.
     cands: Vec<(Rot<D>, [i64; D])>,
-}
-
-/// The chosen transition of one facet and what it measured.
-struct Fit<const D: usize> {
-    rot: Rot<D>,
-    trans: [f64; D],
-    residual: f64,
-    tol: f64,
-    ambiguous: Option<Vec<(Rot<D>, [i64; D])>>,
 }
 
 /// Distance from `x` to the next larger float (`x ≥ 0`).
@@ -66,14 +63,6 @@ pub(crate) fn num(x: f64) -> String {
     }
 }
 
-fn residual_of<const D: usize>(t: &[f64; D]) -> f64 {
-    t.iter().map(|x| (x - x.round()).abs()).fold(0.0, f64::max)
-}
-
-fn rounded<const D: usize>(t: &[f64; D]) -> [i64; D] {
-    t.map(|x| x.round() as i64)
-}
-
 pub(crate) fn derive<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     topo: &Topology<N>,
@@ -88,15 +77,21 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     let all = Rot::<D>::all();
     let mut ambiguous = Vec::new();
     let mut failed: Option<(f64, f64, usize, usize)> = None;
-    for s in 0..ns {
-        for f in 0..N {
-            let Some((n, g)) = topo.neighbour(s, f) else {
-                continue;
-            };
-            if (n, g) < (s, f) {
-                continue;
-            }
-            let fit = fit_facet(map, topo, s, f, &all, opts)?;
+    // the fits of a batch in parallel, then used in facet order: the first
+    // error returned is the one of the sequential loop
+    for lo in (0..ns).step_by(BATCH) {
+        let fits: Vec<(usize, usize, Result<Fit<D>, Box<InputError>>)> = (lo..ns.min(lo + BATCH))
+            .into_par_iter()
+            .flat_map_iter(|s| {
+                let all = &all;
+                (0..N).filter_map(move |f| {
+                    let nf = topo.neighbour(s, f)?;
+                    (nf > (s, f)).then(|| (s, f, fit_facet(map, topo, s, f, all, opts)))
+                })
+            })
+            .collect();
+        for (s, f, fit) in fits {
+            let fit = fit.map_err(|e| *e)?;
             if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
                 rep.max_residual = rep.max_residual.max(fit.residual);
                 rep.worst_facet = Some((s, f));
@@ -152,93 +147,6 @@ fn set<const N: usize, const D: usize>(
     tr.trans[s][f] = t;
     tr.rot[n][g] = inv;
     tr.trans[n][g] = inv.apply_i(&t).map(|x| -x);
-}
-
-/// Fits the rotation and translation of one interior facet.
-fn fit_facet<const N: usize, const D: usize>(
-    map: &SimplexMap<N, D>,
-    topo: &Topology<N>,
-    s: usize,
-    f: usize,
-    all: &[Rot<D>],
-    opts: &TransitionOptions,
-) -> Result<Fit<D>, InputError> {
-    let n = topo.adj[s][f] as usize;
-    let m = N - 1;
-    let a: Vec<[f64; D]> = (1..N).map(|i| map.coords[s][(f + i) % N]).collect();
-    let b: Vec<[f64; D]> = (1..N)
-        .map(|i| map.coords[n][topo.nbr_corner[s][f][(f + i) % N] as usize])
-        .collect();
-    let scale = a
-        .iter()
-        .chain(&b)
-        .flatten()
-        .fold(0.0f64, |acc, x| acc.max(x.abs()));
-    let tol = opts.tolerance_at(scale);
-    let mismatch = |r: &Rot<D>| {
-        let mut worst = 0.0f64;
-        for i in 1..m {
-            let ea: [f64; D] = std::array::from_fn(|k| a[i][k] - a[0][k]);
-            let ra = r.apply(&ea);
-            for k in 0..D {
-                worst = worst.max((ra[k] - (b[i][k] - b[0][k])).abs());
-            }
-        }
-        worst
-    };
-    let translation = |r: &Rot<D>| -> [f64; D] {
-        let mut t = [0.0; D];
-        for i in 0..m {
-            let ra = r.apply(&a[i]);
-            for k in 0..D {
-                t[k] += (b[i][k] - ra[k]) / m as f64;
-            }
-        }
-        t
-    };
-    let mis: Vec<f64> = all.iter().map(mismatch).collect();
-    let best = mis.iter().copied().fold(f64::INFINITY, f64::min);
-    let fit_tol = if opts.round { tol.max(0.25) } else { tol };
-    if best > fit_tol {
-        return Err(InputError::new(format!(
-            "{w} {s} {fw} {f}: the charts of {w}s {s} and {n} differ by a reflection or a \
-             non-grid rotation (mismatch {})",
-            num(best),
-            w = simplex_word(N),
-            fw = facet_word(N),
-        )));
-    }
-    let cands: Vec<(Rot<D>, [f64; D])> = all
-        .iter()
-        .zip(&mis)
-        .filter(|(_, &e)| e <= best + tol)
-        .map(|(r, _)| (*r, translation(r)))
-        .collect();
-    let integral: Vec<&(Rot<D>, [f64; D])> = cands
-        .iter()
-        .filter(|(_, t)| residual_of(t) <= tol)
-        .collect();
-    let chosen = match (cands.len(), integral.first()) {
-        (1, _) | (_, None) => {
-            // determined by the fit, or no integral choice: best fit, then
-            // smallest residual
-            let key = |c: &&(Rot<D>, [f64; D])| mismatch(&c.0) + residual_of(&c.1);
-            let Some(c) = cands.iter().min_by(|x, y| key(x).total_cmp(&key(y))) else {
-                panic!("bug: no rotation candidate on facet {f} of simplex {s}");
-            };
-            *c
-        }
-        (_, Some(c)) => **c,
-    };
-    let ambiguous = (cands.len() > 1 && integral.len() > 1)
-        .then(|| integral.iter().map(|(r, t)| (*r, rounded(t))).collect());
-    Ok(Fit {
-        rot: chosen.0,
-        trans: chosen.1,
-        residual: residual_of(&chosen.1),
-        tol,
-        ambiguous,
-    })
 }
 
 /// Chooses, for each ambiguous facet, the candidate that minimises the number
