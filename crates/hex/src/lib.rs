@@ -75,8 +75,8 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     (st.reverted_tets, st.degenerate_tets) = quality(map);
     lap(&mut st, "map");
     // 1–2
-    let mut local = local::LocalMap::new(map, &topo, &trans);
-    drop(trans); // the local map carries its own transitions (peak memory)
+    // the local map takes over the transitions (no second copy)
+    let mut local = local::LocalMap::from_transitions(map, &topo, trans);
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
     drop(stars);
     lap(&mut st, "sanitize");

@@ -2,7 +2,8 @@
 //! dimensions: values on an iso, 2D segments through a grid point.
 //! Coordinates are local (see [`crate::local`]), so [`EPS`] is absolute.
 //!
-//! Hot loops call the rounding functions here instead of `f64::round`,
+//! Hot loops of the whole crate (and of the sanitizers) call the rounding
+//! functions here instead of `f64::round`,
 //! `ceil` and `floor` (library calls on the baseline x86-64 target) and
 //! compare distances with [`EPS`] without `hypot` unless the comparison is
 //! too close to call: every function returns bit for bit what the `std` /

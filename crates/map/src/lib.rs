@@ -21,7 +21,6 @@ pub mod cells;
 pub mod cluster;
 mod components;
 pub mod error;
-mod float;
 pub mod grid;
 pub mod holonomy;
 pub mod local;

@@ -13,7 +13,6 @@
 //! shift folded in: `h − R·h` is integral for `h = (½, …, ½)` and every grid
 //! rotation), up to the map's own GP residual.
 
-use crate::float::floor_i64;
 use crate::{Rot, SimplexMap, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
@@ -38,23 +37,39 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
     /// Builds local shifted coordinates and the matching transitions (per
     /// simplex, in parallel: each writes only its own entries).
     pub fn new(map: &SimplexMap<N, D>, topo: &Topology<N>, trans: &Transitions<N, D>) -> Self {
-        let offset: Vec<[i64; D]> = map.coords.par_iter().map(|c| c[0].map(floor_i64)).collect();
+        Self::from_transitions(map, topo, trans.clone())
+    }
+
+    /// [`Self::new`] taking the input transitions and rewriting them in
+    /// place (the extractions do not need them afterwards: one copy less
+    /// at the peak of memory).
+    pub fn from_transitions(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        trans: Transitions<N, D>,
+    ) -> Self {
+        let offset: Vec<[i64; D]> = map
+            .coords
+            .par_iter()
+            .map(|c| c[0].map(|x| crate::grid::floor(x) as i64))
+            .collect();
         let coords = map
             .coords
             .par_iter()
             .zip(&offset)
             .map(|(c, o)| c.map(|p| std::array::from_fn(|k| (p[k] - o[k] as f64) + 0.5)))
             .collect();
-        let mut t = trans.clone();
+        let mut t = trans;
+        let rot = &t.rot;
         t.trans.par_iter_mut().enumerate().for_each(|(s, ts)| {
             for (f, tf) in ts.iter_mut().enumerate() {
                 let Some((n, _)) = topo.neighbour(s, f) else {
                     continue;
                 };
-                let r = trans.rot[s][f];
+                let r = rot[s][f];
                 let ro = r.apply_i(&offset[s]);
                 let d = shift_defect(&r);
-                let tt = trans.trans[s][f];
+                let tt = *tf;
                 *tf = std::array::from_fn(|k| ro[k] + tt[k] - offset[n][k] + d[k]);
             }
         });

@@ -31,7 +31,7 @@ use rayon::prelude::*;
 
 /// Simplices whose facets are fitted in one parallel batch (bounds the
 /// memory of the fits waiting to be used in order).
-const BATCH: usize = 1 << 16;
+const BATCH: usize = 1 << 13;
 use crate::{
     InputError, Rot, SimplexMap, Topology, TransitionOptions, TransitionReport, Transitions,
 };

@@ -12,7 +12,7 @@
 //! ([`unique_fit`]) only answers when exactly one rotation is within `tol`
 //! of the best, and then both agree on it and on the best mismatch.
 
-use crate::float::round_half_away;
+use crate::grid::round;
 use crate::mesh::simplex_word;
 use crate::topology_build::facet_word;
 use crate::transition_derive::num;
@@ -28,13 +28,11 @@ pub(crate) struct Fit<const D: usize> {
 }
 
 fn residual_of<const D: usize>(t: &[f64; D]) -> f64 {
-    t.iter()
-        .map(|&x| (x - round_half_away(x)).abs())
-        .fold(0.0, f64::max)
+    t.iter().map(|&x| (x - round(x)).abs()).fold(0.0, f64::max)
 }
 
 pub(crate) fn rounded<const D: usize>(t: &[f64; D]) -> [i64; D] {
-    t.map(|x| round_half_away(x) as i64)
+    t.map(|x| round(x) as i64)
 }
 
 /// Size of the largest rotation group (24 in 3D).

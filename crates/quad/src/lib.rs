@@ -67,7 +67,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     st.reverted_triangles = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
     let mut owned;
     let mut map = map;
-    let (topo, trans, stars, mut local) = loop {
+    let (topo, stars, mut local) = loop {
         let topo = Topology::build(map)?;
         let (trans, trep) = Transitions::derive(map, &topo, &opts.transitions)?;
         st.max_transition_residual = trep.max_residual;
@@ -75,18 +75,16 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         let stars = Stars::build(map, &topo, &trans);
         st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
         // 1
-        let local = local::LocalMap::new(map, &topo, &trans);
+        // the local map takes over the transitions (no second copy)
+        let local = local::LocalMap::from_transitions(map, &topo, trans);
         let edges = split::edges_to_split(map, &topo, &stars, &local);
         if edges.is_empty() || st.split_edges >= map.len() {
-            break (topo, trans, stars, local);
+            break (topo, stars, local);
         }
         st.split_edges += edges.len();
         owned = split::split_edges(map, &topo, &edges);
         map = &owned;
     };
-    // the local map carries its own transitions: free the input's early
-    // (peak memory)
-    drop(trans);
     lap(&mut st, "map");
     // 2
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
