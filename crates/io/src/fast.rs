@@ -175,24 +175,64 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
 
 /// One tet line: 4 vertex indices below `nv` and 12 finite numbers.
 fn tet_line(line: &str, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> {
-    let mut toks = line.split_ascii_whitespace();
+    let mut toks = Fields { text: line, pos: 0 };
     let mut tet = [0u32; 4];
     for slot in &mut tet {
         let tok = toks.next()?;
-        if !tok.bytes().all(|b| b.is_ascii_digit()) {
+        // digits only (as `str::parse::<u64>` without a sign), below nv
+        if tok.is_empty() || tok.len() > 10 {
             return None;
         }
-        let i: u64 = tok.parse().ok()?;
+        let mut i = 0u64;
+        for b in tok.bytes() {
+            if !b.is_ascii_digit() {
+                return None;
+            }
+            i = 10 * i + u64::from(b - b'0');
+        }
         if i >= nv as u64 {
             return None;
         }
         *slot = i as u32;
     }
     let mut uvw = [[0.0; 3]; 4];
-    for x in uvw.iter_mut().flatten() {
-        *x = parse_finite(toks.next()?, "").ok()?;
+    for corner in &mut uvw {
+        for x in corner {
+            let v: f64 = toks.next()?.parse().ok()?;
+            if !v.is_finite() {
+                return None;
+            }
+            *x = v;
+        }
     }
     toks.next().is_none().then_some((tet, uvw))
+}
+
+/// The ASCII-whitespace-separated fields of a line (what
+/// `str::split_ascii_whitespace` yields, with less machinery).
+struct Fields<'a> {
+    text: &'a str,
+    pos: usize,
+}
+
+impl<'a> Iterator for Fields<'a> {
+    type Item = &'a str;
+
+    #[inline]
+    fn next(&mut self) -> Option<&'a str> {
+        let b = self.text.as_bytes();
+        let mut i = self.pos;
+        while i < b.len() && b[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        let start = i;
+        while i < b.len() && !b[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        self.pos = i;
+        // ASCII bytes around the field: char boundaries
+        (start < i).then(|| self.text.get(start..i)).flatten()
+    }
 }
 
 /// The `.hexex` fast path (see the module docs).
