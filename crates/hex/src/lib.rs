@@ -29,7 +29,7 @@ pub mod stats;
 pub mod trace;
 
 use dualex_graph::NodeGraph;
-use dualex_map::singularity::{edge_singularities, quality};
+use dualex_map::singularity::{edge_singularities_with_stars, quality};
 use dualex_map::{HexMesh, InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
 pub use stats::HexStats;
 use std::time::Instant;
@@ -71,7 +71,7 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     st.snapped_transitions = trep.snapped;
     let stars = Stars::build(map, &topo, &trans);
     st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
-    st.singular_edges = edge_singularities(map, &topo, &trans).len();
+    st.singular_edges = edge_singularities_with_stars(map, &topo, &trans, &stars).len();
     (st.reverted_tets, st.degenerate_tets) = quality(map);
     lap(&mut st, "map");
     // 1–2

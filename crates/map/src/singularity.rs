@@ -219,9 +219,42 @@ pub fn edge_singularities(
     topo: &Topology<4>,
     trans: &Transitions<4, 3>,
 ) -> Vec<EdgeSingularity> {
-    // the walks around the edges in parallel, collected in edge order
+    edges_walked(map, topo, trans, None)
+}
+
+/// [`edge_singularities`], given the vertex stars: only the edges whose
+/// two ends are singular vertices are walked (none when no vertex is).
+/// Same result: the loop of tets around an edge lies in the star of each
+/// end, and a star whose rotations agree across every facet of it (a
+/// non-singular vertex) has identity holonomy around every loop in it.
+pub fn edge_singularities_with_stars(
+    map: &TetMap,
+    topo: &Topology<4>,
+    trans: &Transitions<4, 3>,
+    stars: &crate::Stars<3>,
+) -> Vec<EdgeSingularity> {
+    if !stars.singular.contains(&true) {
+        return Vec::new();
+    }
+    edges_walked(map, topo, trans, Some(&stars.singular))
+}
+
+/// The walks around the edges (those between two singular vertices when
+/// `singular` is given) in parallel, collected in edge order.
+fn edges_walked(
+    map: &TetMap,
+    topo: &Topology<4>,
+    trans: &Transitions<4, 3>,
+    singular: Option<&[bool]>,
+) -> Vec<EdgeSingularity> {
     first_tet_of_edges(map)
         .into_par_iter()
+        .filter(|&(s, i, j)| {
+            singular.is_none_or(|sing| {
+                let t = &map.simplices[s as usize];
+                sing[t[i as usize] as usize] && sing[t[j as usize] as usize]
+            })
+        })
         .filter_map(|(s, i, j)| {
             let (s, i, j) = (s as usize, i as usize, j as usize);
             let rot = ridge_rotation(topo, trans, s, &[i, j])?;
@@ -326,6 +359,23 @@ mod tests {
         assert_eq!((topo.boundary_facets, topo.components()), (0, 1));
         assert!(vertex_singularities(&t, &topo, &tr).is_empty());
         assert!(sing(&grid(3)).is_empty());
+    }
+
+    #[test]
+    fn edges_between_singular_vertices_are_all_the_singular_edges() {
+        for m in [
+            edge_fan(3),
+            edge_fan(5),
+            edge_fan(6),
+            crate::test_maps::tet_cube(3),
+        ] {
+            let (topo, tr) = derive(&m);
+            let stars = Stars::build(&m, &topo, &tr);
+            assert_eq!(
+                edge_singularities_with_stars(&m, &topo, &tr, &stars),
+                edge_singularities(&m, &topo, &tr)
+            );
+        }
     }
 
     #[test]
