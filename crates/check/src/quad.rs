@@ -20,6 +20,7 @@
 //!   interior and boundary vertices.
 
 use crate::union_find::UnionFind;
+use rayon::slice::ParallelSliceMut;
 use std::collections::{BTreeMap, HashMap};
 
 /// What [`check_quad_mesh`] found; see the module docs for definitions.
@@ -142,7 +143,9 @@ fn classify_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32;
 
 /// Directed uses of every undirected edge of the faces, by edge.
 fn edge_uses(faces: &[[u32; 4]]) -> Vec<((u32, u32), EdgeUse)> {
-    // (lo, hi, backward) per face side, sorted: one run per undirected edge
+    // (lo, hi, backward) per face side, sorted (in parallel; equal keys are
+    // equal values, so the order does not depend on the threads): one run
+    // per undirected edge
     let mut sides: Vec<(u32, u32, bool)> = Vec::with_capacity(4 * faces.len());
     for q in faces {
         for i in 0..4 {
@@ -150,7 +153,7 @@ fn edge_uses(faces: &[[u32; 4]]) -> Vec<((u32, u32), EdgeUse)> {
             sides.push((a.min(b), a.max(b), a > b));
         }
     }
-    sides.sort_unstable();
+    sides.par_sort_unstable();
     sides
         .chunk_by(|x, y| (x.0, x.1) == (y.0, y.1))
         .map(|run| {
@@ -181,7 +184,7 @@ fn non_manifold_vertices(faces: &[[u32; 4]]) -> Vec<u32> {
             corners.push((q[i], q[(i + 3) % 4], q[(i + 1) % 4]));
         }
     }
-    corners.sort_unstable();
+    corners.par_sort_unstable();
     let mut out = Vec::new();
     for group in corners.chunk_by(|a, b| a.0 == b.0) {
         if fans(group) > 1 {
