@@ -77,7 +77,7 @@ fn weld_if(map: dualex_map::TriMap, args: &Args, name: &str) -> Result<dualex_ma
     if args.no_weld {
         return Ok(map);
     }
-    let (map, rep) = dualex_map::weld::weld(&map);
+    let (map, rep) = dualex_map::weld::weld_owned(map);
     if rep.welded_vertices > 0 && !args.quiet {
         eprintln!(
             "dualex: {name}: welded {} coincident boundary vertices (cut mesh); --no-weld keeps them",

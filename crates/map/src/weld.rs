@@ -33,6 +33,33 @@ fn position_key(p: &[f64; 3]) -> [u64; 3] {
 pub fn weld<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> (SimplexMap<N, D>, WeldReport) {
+    weld_pairs(map, &coincident_boundary_pairs(map))
+}
+
+/// [`weld`] taking the map: when there is nothing to merge or drop (no two
+/// boundary vertices at one position, every vertex used — a closed or
+/// uncut mesh), the map itself is returned, without building a copy.
+pub fn weld_owned<const N: usize, const D: usize>(
+    map: SimplexMap<N, D>,
+) -> (SimplexMap<N, D>, WeldReport) {
+    let pairs = coincident_boundary_pairs(&map);
+    let mut used = vec![false; map.positions.len()];
+    for simplex in &map.simplices {
+        for &v in simplex {
+            used[v as usize] = true;
+        }
+    }
+    if pairs.is_empty() && !used.contains(&false) {
+        return (map, WeldReport::default());
+    }
+    weld_pairs(&map, &pairs)
+}
+
+/// Pairs of boundary vertices at exactly the same position (consecutive
+/// in position order).
+fn coincident_boundary_pairs<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+) -> Vec<(u32, u32)> {
     let nv = map.positions.len();
     let boundary = boundary_vertices(&map.simplices, nv);
     let mut by_pos: Vec<([u64; 3], u32)> = (0..nv)
@@ -40,11 +67,22 @@ pub fn weld<const N: usize, const D: usize>(
         .map(|v| (position_key(&map.positions[v]), v as u32))
         .collect();
     by_pos.sort_unstable();
+    by_pos
+        .windows(2)
+        .filter(|w| w[0].0 == w[1].0)
+        .map(|w| (w[0].1, w[1].1))
+        .collect()
+}
+
+/// Merges the classes of `pairs` (see the module docs).
+fn weld_pairs<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    pairs: &[(u32, u32)],
+) -> (SimplexMap<N, D>, WeldReport) {
+    let nv = map.positions.len();
     let mut uf = UnionFind::new(nv);
-    for w in by_pos.windows(2) {
-        if w[0].0 == w[1].0 {
-            uf.union(w[0].1, w[1].1);
-        }
+    for &(a, b) in pairs {
+        uf.union(a, b);
     }
     unmerge_conflicts(map, &mut uf);
     let mut rep = WeldReport::default();
@@ -221,6 +259,16 @@ mod tests {
                 boundary_vertices(&m.simplices, nv),
                 boundary_by_sort(&m.simplices, nv)
             );
+        }
+    }
+
+    #[test]
+    fn owned_weld_returns_the_map_when_nothing_merges() {
+        use crate::test_maps::{cube_surface, grid};
+        for m in [grid(4), cube_surface(3), cut_square()] {
+            let (a, ra) = weld(&m);
+            let (b, rb) = weld_owned(m.clone());
+            assert_eq!((a, ra), (b, rb));
         }
     }
 
