@@ -14,7 +14,6 @@
 //! use; the cost is proportional to the region the queries touch.
 
 use crate::fan::corner_sides;
-use crate::glue::{corner_across, corners_on};
 use crate::graph::NodeGraph;
 use crate::ids::{Node, Side};
 use std::collections::{HashMap, VecDeque};
@@ -51,16 +50,10 @@ impl<'a> LocalVertices<'a> {
         if !g.is_alive(g.node_of(lo)) {
             return;
         }
-        let (ld, hd, rho) = (g.dir_of(lo), g.dir_of(hi), g.rot[lo.idx()]);
-        let mut pairs = [(0usize, 0usize); 2];
-        let mut n = 0;
-        for c in corners_on::<2>(ld) {
-            let Some(ct) = corner_across(ld, hd, &rho, c) else {
-                return; // a mismatched pair glues nothing
-            };
-            pairs[n] = (c, ct);
-            n += 1;
-        }
+        // the gluing's own rule, from the smaller side
+        let Some((pairs, n)) = g.matched_corners(lo, hi) else {
+            return; // a mismatched pair glues nothing
+        };
         let (lnode, hnode) = (g.node_of(lo).idx(), g.node_of(hi).idx());
         let code = corner % 4;
         for &(c, ct) in &pairs[..n] {

@@ -102,6 +102,22 @@ impl<const D: usize> NodeGraph<D> {
         g
     }
 
+    /// The corners glued across the pair `s` ↔ `t = opposite(s)`, as (corner
+    /// code on `s`'s node, corner code on `t`'s node), first `n` entries of
+    /// the array; `None` when some corner of the side does not match (then
+    /// none is glued). The rule of [`Self::glue`], which applies it from the
+    /// smaller side of each pair whose node is alive.
+    pub(crate) fn matched_corners(&self, s: Side, t: Side) -> Option<([(usize, usize); 4], usize)> {
+        let (sd, td, rho) = (self.dir_of(s), self.dir_of(t), self.rot[s.idx()]);
+        let mut pairs = [(0usize, 0usize); 4];
+        let mut n = 0;
+        for c in corners_on::<D>(sd) {
+            pairs[n] = (c, corner_across(sd, td, &rho, c)?);
+            n += 1;
+        }
+        Some((pairs, n))
+    }
+
     /// [`Self::glue`] without the whole-graph counts (`boundary_loops`
     /// and `components` left 0): for callers that only need the vertices
     /// (index fairing rebuilds them after every lift).
@@ -115,29 +131,11 @@ impl<const D: usize> NodeGraph<D> {
                 continue;
             }
             let (x, y) = (self.node_of(s).idx(), self.node_of(t).idx());
-            let (sd, td, rho) = (self.dir_of(s), self.dir_of(t), self.rot[s.idx()]);
-            // all corners of the side must match, else none is glued
-            let mut pairs = [(0usize, 0usize); 4];
-            let mut n = 0;
-            let mut matched = true;
-            for c in corners_on::<D>(sd) {
-                match corner_across(sd, td, &rho, c) {
-                    Some(ct) => {
-                        pairs[n] = (c, ct);
-                        n += 1;
-                    }
-                    None => {
-                        matched = false;
-                        break;
-                    }
-                }
-            }
-            if matched {
-                pairs[..n]
+            match self.matched_corners(s, t) {
+                Some((pairs, n)) => pairs[..n]
                     .iter()
-                    .for_each(|&(c, ct)| uf.union(x * k + c, y * k + ct));
-            } else {
-                corner_mismatches += 1;
+                    .for_each(|&(c, ct)| uf.union(x * k + c, y * k + ct)),
+                None => corner_mismatches += 1,
             }
         }
         let mut vertex_of = vec![NO_VERTEX; self.n_nodes() * k];
