@@ -129,7 +129,7 @@ fn quad(args: &Args) -> Result<(), String> {
     laps.lap("write");
     drop(progress);
     if args.verbose {
-        eprintln!("{}", laps.line());
+        eprintln!("{}", timing::line(&laps));
     }
     write_stats(args, &stats.to_json())?;
     if let Some(png) = &args.png {
@@ -194,7 +194,7 @@ fn hex(args: &Args) -> Result<(), String> {
     laps.lap("write");
     drop(progress);
     if args.verbose {
-        eprintln!("{}", laps.line());
+        eprintln!("{}", timing::line(&laps));
     }
     let json = stats.to_json();
     write_stats(args, &json)?;

@@ -30,9 +30,9 @@ pub mod trace;
 
 use dualex_graph::NodeGraph;
 use dualex_map::singularity::{edge_singularities_with_stars, quality};
+use dualex_map::timing::Laps;
 use dualex_map::{HexMesh, InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
 pub use stats::HexStats;
-use std::time::Instant;
 
 /// Options of [`extract`].
 #[derive(Clone, Debug)]
@@ -55,12 +55,7 @@ impl Default for HexOptions {
 /// Extracts the hex mesh of `map`.
 pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), InputError> {
     let mut st = HexStats::default();
-    let mut clock = Instant::now();
-    let mut lap = |st: &mut HexStats, name: &str| {
-        let ms = clock.elapsed().as_secs_f64() * 1e3;
-        st.time_ms.push((name.to_string(), ms));
-        clock = Instant::now();
-    };
+    let mut laps = Laps::start();
     map.validate()?;
     nodes::check_size(map)?;
     map.check_not_reflected()?;
@@ -73,33 +68,34 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
     st.singular_edges = edge_singularities_with_stars(map, &topo, &trans, &stars).len();
     (st.reverted_tets, st.degenerate_tets) = quality(map);
-    lap(&mut st, "map");
+    laps.lap("map");
     // 1–2
     // the local map takes over the transitions (no second copy)
     let mut local = local::LocalMap::from_transitions(map, &topo, trans);
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
     drop(stars);
-    lap(&mut st, "sanitize");
+    laps.lap("sanitize");
     // 3
     let nodes = nodes::Nodes::find(&local);
     st.nodes = nodes.len();
     st.reverted_nodes = nodes.reverted.iter().filter(|&&r| r).count();
-    lap(&mut st, "nodes");
+    laps.lap("nodes");
     // 4
     let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
     st.trace = trep;
     let mut graph = NodeGraph::<3>::new(nodes.reverted.clone());
     st.links = graph.link_mutual(&ends);
     st.label_violations = graph.label_violations();
-    lap(&mut st, "trace");
+    laps.lap("trace");
     // 5
     st.untangle = Some(graph.untangle());
-    lap(&mut st, "untangle");
+    laps.lap("untangle");
     // 6
     let glued = graph.glue();
     let mesh = place_vertices(map, &local, &topo, &nodes, &glued);
     st.finish_output(&graph, &glued, &mesh);
-    lap(&mut st, "glue_geometry");
+    laps.lap("glue_geometry");
+    st.time_ms = laps.into_laps();
     Ok((mesh, st))
 }
 

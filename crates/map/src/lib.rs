@@ -35,6 +35,7 @@ pub mod sanitize_report;
 pub mod singularity;
 pub mod star;
 mod star_build;
+pub mod timing;
 pub mod topology;
 mod topology_build;
 pub mod transition;

@@ -27,9 +27,9 @@ pub mod stats;
 pub mod trace;
 
 use dualex_graph::{Node, NodeGraph, Side};
+use dualex_map::timing::Laps;
 use dualex_map::{InputError, QuadMesh, Stars, Topology, TransitionOptions, Transitions, TriMap};
 pub use stats::QuadStats;
-use std::time::Instant;
 
 /// Options of [`extract`].
 #[derive(Clone, Debug)]
@@ -55,12 +55,7 @@ impl Default for QuadOptions {
 /// Extracts the quad mesh of `map`.
 pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats), InputError> {
     let mut st = QuadStats::default();
-    let mut clock = Instant::now();
-    let mut lap = |st: &mut QuadStats, name: &str| {
-        let ms = clock.elapsed().as_secs_f64() * 1e3;
-        st.time_ms.push((name.to_string(), ms));
-        clock = Instant::now();
-    };
+    let mut laps = Laps::start();
     map.validate()?;
     nodes::check_size(map)?;
     st.input_triangles = map.len();
@@ -85,26 +80,26 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         owned = split::split_edges(map, &topo, &edges);
         map = &owned;
     };
-    lap(&mut st, "map");
+    laps.lap("map");
     // 2
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
     drop(stars);
-    lap(&mut st, "sanitize");
+    laps.lap("sanitize");
     // 3
     let nodes = nodes::Nodes::find(&local);
     st.nodes = nodes.len();
     st.reverted_nodes = nodes.reverted.iter().filter(|&&r| r).count();
-    lap(&mut st, "nodes");
+    laps.lap("nodes");
     // 4
     let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
     st.trace = trep;
     let mut graph = NodeGraph::<2>::new(nodes.reverted.clone());
     st.links = graph.link_mutual(&ends);
     st.label_violations = graph.label_violations();
-    lap(&mut st, "trace");
+    laps.lap("trace");
     // 5
     st.untangle = Some(graph.untangle());
-    lap(&mut st, "untangle");
+    laps.lap("untangle");
     // 6
     if opts.fairing {
         st.fairing = Some(fairing::fair(&mut graph));
@@ -112,7 +107,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     // 6b: a valence-1 vertex left (no partner for fairing) is a folded quad;
     // collapse it so the output has no repeated vertex
     st.folded_corners_collapsed = graph.collapse_folded_corners();
-    lap(&mut st, "fairing");
+    laps.lap("fairing");
     // 7
     let mut glued = graph.glue();
     st.zipped_sides = zip_two_side_holes(&mut graph, &glued);
@@ -138,7 +133,8 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         mesh = sub;
         st.finish_mesh(&mesh);
     }
-    lap(&mut st, "glue_geometry");
+    laps.lap("glue_geometry");
+    st.time_ms = laps.into_laps();
     Ok((mesh, st))
 }
 
