@@ -29,12 +29,8 @@ use crate::simplex::face_corners;
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
 use std::collections::HashSet;
 
-/// Initial perturbation amplitude (map units).
-pub const AMPLITUDE: f64 = 1e-5;
-/// Perturbation rounds before giving up on a vertex.
-const ROUNDS: usize = 40;
-
-pub use dualex_map::sanitize_report::SanitizeReport;
+use dualex_map::sanitize_report::ROUNDS;
+pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
 
 /// Sanitizes `local` in place.
 pub fn sanitize(

@@ -1,8 +1,14 @@
 //! What sanitization did, in both dimensions (the report of `quad` and
-//! `hex`'s step 2), and its `sanitize` object in the stats JSON.
+//! `hex`'s step 2), and its `sanitize` object in the stats JSON; the
+//! perturbation schedule both use.
 
 use serde_json::{json, Map, Value};
 use std::collections::BTreeMap;
+
+/// Initial perturbation amplitude (map units), doubled every 8 rounds.
+pub const AMPLITUDE: f64 = 1e-5;
+/// Perturbation rounds before giving up on a vertex.
+pub const ROUNDS: usize = 40;
 
 /// What sanitization did.
 #[derive(Clone, Debug, Default, PartialEq)]

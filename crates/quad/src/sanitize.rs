@@ -29,12 +29,8 @@ use dualex_map::{Stars, Topology, TriMap};
 type Clusters = dualex_map::cluster::Clusters<2>;
 
 pub use dualex_map::grid::EPS;
-/// Initial perturbation amplitude (map units).
-pub const AMPLITUDE: f64 = 1e-5;
-/// Perturbation rounds before giving up on a vertex.
-const ROUNDS: usize = 40;
-
-pub use dualex_map::sanitize_report::SanitizeReport;
+use dualex_map::sanitize_report::ROUNDS;
+pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
 
 /// Sanitizes `local` in place.
 pub fn sanitize(
