@@ -136,10 +136,13 @@ fn quad(args: &Args) -> Result<(), String> {
         dualex_render::quad_png(&mesh, png, PNG_SIZE)
             .map_err(|e| format!("{}: {e}", png.display()))?;
     }
-    if stats.repair_triangles > 0 && !args.quiet {
+    if stats.subdivided {
+        // printed under -q too: the output is not the map's own mesh
         eprintln!(
-            "dualex: warning: {} singular vertices sit exactly on dual nodes (not a SoG map); their 3-sided faces were made quads by one step of subdivision",
-            stats.repair_triangles
+            "dualex: warning: {} faces that quads cannot represent ({} triangles at singular vertices on dual nodes, {} holes closed by polygons) were made quads by one step of subdivision of the whole mesh",
+            stats.repair_triangles + stats.holes_filled,
+            stats.repair_triangles,
+            stats.holes_filled
         );
     }
     if !args.quiet {

@@ -72,7 +72,10 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     // 1–2
     // the local map takes over the transitions (no second copy)
     let mut local = local::LocalMap::from_transitions(map, &topo, trans);
+    // singular vertices exactly on their fixed sets before any test
+    let singular_snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    st.sanitize.singular_snap = singular_snap;
     drop(stars);
     laps.lap("sanitize");
     // 3

@@ -5,7 +5,10 @@
 //! per non-trivial cluster its members with the rotation from the root's
 //! reference chart to each member's reference chart (read through a simplex
 //! that holds both ends of a collapsed edge); a cluster is stuck (`None`)
-//! when it holds a singular vertex or its rotations disagree. Generic over
+//! when its rotations disagree. Singular vertices never join a cluster:
+//! they do not move, and a vertex collapsed onto one (exactly, once
+//! singular vertices are snapped to their fixed points) must still move
+//! away from it. Generic over
 //! the dimension: used by both extractions.
 
 use crate::{Rot, SimplexMap, Stars};
@@ -33,7 +36,10 @@ impl<const D: usize> Clusters<D> {
         for (s, tet) in map.simplices.iter().enumerate() {
             for k in 0..N {
                 for l in k + 1..N {
-                    if coords[s][k] == coords[s][l] {
+                    // a singular vertex never moves: a vertex collapsed
+                    // onto it moves on its own, away from it
+                    let singular = |v: u32| stars.singular[v as usize];
+                    if coords[s][k] == coords[s][l] && !singular(tet[k]) && !singular(tet[l]) {
                         edges.push((tet[k], tet[l], s));
                         union(&mut parent, tet[k], tet[l]);
                     }

@@ -32,6 +32,7 @@ pub mod rng;
 #[allow(clippy::needless_range_loop)]
 pub mod rotation;
 pub mod sanitize_report;
+pub mod singular_snap;
 pub mod singularity;
 pub mod star;
 mod star_build;

@@ -35,6 +35,9 @@ pub struct SanitizeReport {
     pub singular_on_iso: Vec<u32>,
     /// Non-singular vertices still on an iso after all rounds (0 expected).
     pub unresolved: usize,
+    /// Singular vertices put exactly on the fixed set of their holonomies
+    /// ([`crate::singular_snap`]).
+    pub singular_snap: crate::singular_snap::SingularSnap,
 }
 
 impl SanitizeReport {
@@ -49,6 +52,9 @@ impl SanitizeReport {
             "rounds": self.rounds,
             "singular_on_iso": self.singular_on_iso.len(),
             "unresolved": self.unresolved,
+            "singular_snapped": self.singular_snap.snapped,
+            "max_singular_snap": self.singular_snap.max_move,
+            "singular_left_unsnapped": self.singular_snap.left,
         });
         match v {
             Value::Object(m) => m,

@@ -62,7 +62,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     st.reverted_triangles = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
     let mut owned;
     let mut map = map;
-    let (topo, stars, mut local) = loop {
+    let (topo, stars, mut local, singular_snap) = loop {
         let topo = Topology::build(map)?;
         let (trans, trep) = Transitions::derive(map, &topo, &opts.transitions)?;
         st.max_transition_residual = trep.max_residual;
@@ -71,10 +71,12 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
         // 1
         // the local map takes over the transitions (no second copy)
-        let local = local::LocalMap::from_transitions(map, &topo, trans);
+        let mut local = local::LocalMap::from_transitions(map, &topo, trans);
+        // singular vertices exactly on their fixed points before any test
+        let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
         let edges = split::edges_to_split(map, &topo, &stars, &local);
         if edges.is_empty() || st.split_edges >= map.len() {
-            break (topo, stars, local);
+            break (topo, stars, local, snap);
         }
         st.split_edges += edges.len();
         owned = split::split_edges(map, &topo, &edges);
@@ -83,6 +85,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     laps.lap("map");
     // 2
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    st.sanitize.singular_snap = singular_snap;
     drop(stars);
     laps.lap("sanitize");
     // 3
@@ -120,17 +123,18 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     let holes = hole_edges(&graph, &glued, &ends, topo.boundary_facets == 0);
     let (fill, open) = repair::hole_polygons(&holes);
     st.holes_left_open = open;
-    if let Some((sub, dropped)) = repair::subdivide_if_odd(&mesh, &fill) {
+    if let Some(rep) = repair::subdivide_if_odd(&mesh, &fill) {
         st.repair_triangles = repair::odd_cells(&mesh);
         st.holes_filled = fill.len();
-        st.repair_dropped = dropped;
+        st.repair_dropped = rep.dropped;
+        st.subdivided = rep.subdivided;
         // the collapsed sides of the triangles were unmatched sides whose
         // two corners are one vertex, and the filled holes' sides are glued
         // to the new faces: neither is boundary
         let collapsed = collapsed_unmatched_sides(&graph, &glued);
         st.unmatched_sides -= (collapsed + holes.len()).min(st.unmatched_sides);
         st.boundary_loops -= (collapsed + fill.len()).min(st.boundary_loops);
-        mesh = sub;
+        mesh = rep.mesh;
         st.finish_mesh(&mesh);
     }
     laps.lap("glue_geometry");

@@ -37,10 +37,23 @@ pub fn odd_cells(mesh: &QuadMesh) -> usize {
     mesh.cells.iter().filter(|c| polygon(c).len() != 4).count()
 }
 
-/// Subdivides every cell once when some cell is a triangle or `extra`
-/// (hole-filling polygons) is not empty (module docs); cells of fewer than
-/// 3 distinct corners are dropped and counted.
-pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<(QuadMesh, usize)> {
+/// What [`subdivide_if_odd`] made of the glued cells.
+#[derive(Clone, Debug)]
+pub struct Repaired {
+    /// The all-quad mesh.
+    pub mesh: QuadMesh,
+    /// Cells of fewer than 3 distinct corners dropped.
+    pub dropped: usize,
+    /// Whether every cell was subdivided (else the quads of `extra` were
+    /// only added).
+    pub subdivided: bool,
+}
+
+/// Subdivides every cell once when some cell is a triangle or some polygon
+/// of `extra` (hole-filling polygons) is not a quad (module docs); cells of
+/// fewer than 3 distinct corners are dropped and counted. Quads in `extra`
+/// alone are added as they are.
+pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired> {
     if odd_cells(mesh) == 0 && extra.iter().all(|p| p.len() == 4) {
         if extra.is_empty() {
             return None;
@@ -48,7 +61,11 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<(QuadMesh
         let mut out = mesh.clone();
         out.cells
             .extend(extra.iter().map(|p| [p[0], p[1], p[2], p[3]]));
-        return Some((out, 0));
+        return Some(Repaired {
+            mesh: out,
+            dropped: 0,
+            subdivided: false,
+        });
     }
     let polygons = mesh.cells.iter().map(polygon).chain(extra.iter().cloned());
     let mut out = QuadMesh {
@@ -85,7 +102,11 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<(QuadMesh
             out.cells.push([v, e_next, f, e_prev]);
         }
     }
-    Some((out, dropped))
+    Some(Repaired {
+        mesh: out,
+        dropped,
+        subdivided: true,
+    })
 }
 
 #[cfg(test)]
@@ -106,7 +127,9 @@ mod tests {
             cells: vec![[0, 1, 2, 3], [1, 4, 4, 2]],
         };
         assert_eq!(odd_cells(&mesh), 1);
-        let (out, dropped) = subdivide_if_odd(&mesh, &[]).expect("subdivided");
+        let rep = subdivide_if_odd(&mesh, &[]).expect("subdivided");
+        assert!(rep.subdivided);
+        let (out, dropped) = (rep.mesh, rep.dropped);
         assert_eq!(dropped, 0);
         assert_eq!(out.cells.len(), 7);
         // V = 5 + 2 face points + 6 edge points (the shared edge once)

@@ -53,6 +53,9 @@ pub struct QuadStats {
     pub repair_triangles: usize,
     /// Cells of fewer than 3 distinct corners dropped by the subdivision.
     pub repair_dropped: usize,
+    /// Whether the whole mesh was subdivided once (a triangle, or a hole
+    /// that is not a quad, could not be made a quad otherwise).
+    pub subdivided: bool,
     /// Output: quads.
     pub quads: usize,
     /// Output: vertices.
@@ -128,7 +131,7 @@ impl QuadStats {
                 "holes_filled": self.holes_filled,
                 "holes_left_open": self.holes_left_open,
                 "triangles": self.repair_triangles,
-                "subdivided": self.repair_triangles > 0,
+                "subdivided": self.subdivided,
                 "dropped_cells": self.repair_dropped,
             },
             "output": {

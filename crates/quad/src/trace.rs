@@ -24,10 +24,17 @@ pub type End = dualex_graph::walk::End<2>;
 pub use dualex_graph::walk::TraceReport;
 
 /// An iso crossing of an edge: edge index and the moving coordinate there.
-fn crossings(p: &[[f64; 2]; 3], fixed_axis: usize, val: i64) -> ([(usize, f64); 2], usize) {
+type Crossing = (usize, f64);
+
+/// The iso crossings of triangle `p`'s edges, their number, and per
+/// crossing whether it is exactly at a corner (a vertex on the iso: after
+/// sanitization only a singular vertex, which no walk can pass
+/// consistently — its charts disagree around it).
+fn crossings(p: &[[f64; 2]; 3], fixed_axis: usize, val: i64) -> ([Crossing; 2], usize, [bool; 2]) {
     let mv = 1 - fixed_axis;
     let v = val as f64;
     let mut out = [(0usize, 0.0f64); 2];
+    let mut at_corner = [false; 2];
     let mut n = 0;
     for f in 0..3 {
         // edge f is opposite corner f
@@ -37,11 +44,12 @@ fn crossings(p: &[[f64; 2]; 3], fixed_axis: usize, val: i64) -> ([(usize, f64); 
         if (da > 0.0) != (db > 0.0) {
             if n < 2 {
                 out[n] = (f, a[mv] + (b[mv] - a[mv]) * da / (da - db));
+                at_corner[n] = da == 0.0 || db == 0.0;
             }
             n += 1;
         }
     }
-    (out, n)
+    (out, n, at_corner)
 }
 
 /// Traces every side; returns the end of each walk.
@@ -100,11 +108,15 @@ pub fn trace(
     if let Some(m) = node_ahead(nodes, t, fixed, val, s0, sgn) {
         return (node_end(m, dir(axis, sgn) ^ 1, Rot2::IDENTITY), 0);
     }
-    let (cr, nc) = crossings(&local.coords[t], fixed, val);
-    let exit = cr[..nc.min(2)].iter().find(|c| (c.1 - s0) * sgn > 0.0);
-    let Some(&(mut e, _)) = exit else {
+    let (cr, nc, at_corner) = crossings(&local.coords[t], fixed, val);
+    let exit = (0..nc.min(2)).find(|&k| (cr[k].1 - s0) * sgn > 0.0);
+    let Some(k) = exit else {
         return (End::Inconsistent, 0);
     };
+    if at_corner[k] {
+        return (End::Inconsistent, 0);
+    }
+    let mut e = cr[k].0;
     let mut rho = Rot2::IDENTITY;
     for step in 1..=max_steps {
         let Some((t2, e2)) = topo.neighbour(t, e) else {
@@ -121,18 +133,22 @@ pub fn trace(
         let fixed2 = 1 - axis2;
         let val2 = pi[fixed2] + tr[fixed2];
         rho = rho.then(&r);
-        let (cr, nc) = crossings(&local.coords[t2], fixed2, val2);
+        let (cr, nc, at_corner) = crossings(&local.coords[t2], fixed2, val2);
         if nc != 2 || (cr[0].0 != e2 && cr[1].0 != e2) {
             return (End::Inconsistent, step);
         }
-        let (inn, out) = if cr[0].0 == e2 {
-            (cr[0], cr[1])
+        let (inn, out, out_at_corner) = if cr[0].0 == e2 {
+            (cr[0], cr[1], at_corner[1])
         } else {
-            (cr[1], cr[0])
+            (cr[1], cr[0], at_corner[0])
         };
         let sgn2 = if out.1 > inn.1 { 1.0 } else { -1.0 };
         if let Some(m) = node_ahead(nodes, t2, fixed2, val2, inn.1, sgn2) {
             return (node_end(m, dir(axis2, sgn2) ^ 1, rho), step);
+        }
+        if out_at_corner {
+            // the walk reaches a vertex on its iso
+            return (End::Inconsistent, step);
         }
         (t, e, axis, fixed, val, sgn) = (t2, out.0, axis2, fixed2, val2, sgn2);
     }
