@@ -8,12 +8,14 @@
 //! rotations met when the walk closes a loop); the [`VertexClass`].
 //!
 //! Class (computed independently of dualex-map): `Boundary` when the vertex
-//! is on a boundary facet; else by the subspace fixed by the holonomy:
-//! everything → `Regular`, a line (3D: a vertex inside a singular edge) →
-//! `SingularEdge`, only 0 → `Singular` (2D: a cone vertex, valence ≠ 4;
-//! 3D: where non-collinear singular edges meet).
+//! is on a boundary facet; else from the refined mesh `M_k` (2D: interior
+//! valence ≠ 4 → `Singular`; 3D: on 2 interior edges of valence ≠ 4 →
+//! `SingularEdge`, on 1 or more than 2 → `Singular`), raised to `Singular`
+//! when the holonomy fixes no direction. The holonomy alone cannot see a
+//! cone of a whole number of turns (valence 8: trivial holonomy), hence
+//! the combinatorial test.
 
-use dualex_map::{Rot, SimplexMap};
+use dualex_map::{HexMesh, QuadMesh, Rot, SimplexMap};
 use std::collections::HashMap;
 
 /// What kind of vertex a map vertex is (module docs).
@@ -52,9 +54,12 @@ impl<const D: usize> Star<D> {
         s.map(|x| x / self.group.len() as f64)
     }
 
-    fn class(&self) -> VertexClass {
+    fn class(&self, combinatorial: VertexClass) -> VertexClass {
         if self.boundary {
             return VertexClass::Boundary;
+        }
+        if combinatorial == VertexClass::Singular {
+            return combinatorial;
         }
         // dimension of the fixed subspace: rank of the projector
         let dim = (0..D)
@@ -65,8 +70,8 @@ impl<const D: usize> Star<D> {
             })
             .count();
         match dim {
-            d if d == D => VertexClass::Regular,
             0 => VertexClass::Singular,
+            d if d == D => combinatorial,
             _ => VertexClass::SingularEdge,
         }
     }
@@ -178,7 +183,105 @@ fn star_of<const N: usize, const D: usize>(
     }
 }
 
-/// The class of every vertex.
-pub(crate) fn classify<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> Vec<VertexClass> {
-    stars(map).iter().map(Star::class).collect()
+/// The class of every vertex, given its class in `M_k` (`Regular` for
+/// vertices not in it).
+pub(crate) fn classify<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    combinatorial: &[VertexClass],
+) -> Vec<VertexClass> {
+    stars(map)
+        .iter()
+        .enumerate()
+        .map(|(v, s)| {
+            s.class(
+                combinatorial
+                    .get(v)
+                    .copied()
+                    .unwrap_or(VertexClass::Regular),
+            )
+        })
+        .collect()
 }
+
+/// Classes from the quad mesh `M_k` (interior valence ≠ 4: `Singular`;
+/// boundary vertices are told apart by the map).
+pub(crate) fn from_quad_mesh(mesh: &QuadMesh) -> Vec<VertexClass> {
+    let mut valence = vec![0u32; mesh.positions.len()];
+    for q in &mesh.cells {
+        for &v in q {
+            valence[v as usize] += 1;
+        }
+    }
+    valence
+        .iter()
+        .map(|&n| match n {
+            4 => VertexClass::Regular,
+            _ => VertexClass::Singular,
+        })
+        .collect()
+}
+
+/// Classes from the hex mesh `M_k` (module docs).
+pub(crate) fn from_hex_mesh(mesh: &HexMesh) -> Vec<VertexClass> {
+    let key = |a: u32, b: u32| (a.min(b), a.max(b));
+    let mut edges: HashMap<(u32, u32), u32> = HashMap::new();
+    let mut boundary: HashMap<(u32, u32), ()> = HashMap::new();
+    let mut faces: HashMap<[u32; 4], (u32, [u32; 4])> = HashMap::new();
+    for h in &mesh.cells {
+        for [a, b] in HEX_EDGES {
+            *edges.entry(key(h[a], h[b])).or_insert(0) += 1;
+        }
+        for f in HEX_FACES {
+            let cyc = f.map(|i| h[i]);
+            let mut k = cyc;
+            k.sort_unstable();
+            faces.entry(k).or_insert((0, cyc)).0 += 1;
+        }
+    }
+    for (n, cyc) in faces.values() {
+        if *n == 1 {
+            for i in 0..4 {
+                boundary.insert(key(cyc[i], cyc[(i + 1) % 4]), ());
+            }
+        }
+    }
+    let mut count = vec![0u32; mesh.positions.len()];
+    for (&(a, b), &n) in &edges {
+        if n != 4 && !boundary.contains_key(&(a, b)) {
+            count[a as usize] += 1;
+            count[b as usize] += 1;
+        }
+    }
+    count
+        .iter()
+        .map(|&c| match c {
+            0 => VertexClass::Regular,
+            2 => VertexClass::SingularEdge,
+            _ => VertexClass::Singular,
+        })
+        .collect()
+}
+
+/// The 12 edges and 6 faces (cyclic) of a hex in VTK order.
+const HEX_EDGES: [[usize; 2]; 12] = [
+    [0, 1],
+    [1, 2],
+    [2, 3],
+    [3, 0],
+    [4, 5],
+    [5, 6],
+    [6, 7],
+    [7, 4],
+    [0, 4],
+    [1, 5],
+    [2, 6],
+    [3, 7],
+];
+const HEX_FACES: [[usize; 4]; 6] = [
+    [0, 3, 2, 1],
+    [4, 5, 6, 7],
+    [0, 1, 5, 4],
+    [1, 2, 6, 5],
+    [2, 3, 7, 6],
+    [3, 0, 4, 7],
+];

@@ -8,13 +8,13 @@
 //! symmetric and rotations are signed permutations, so `δ` in two charts
 //! differ by their rotation exactly and every sum is exact: the map stays
 //! exactly GP (transitions unchanged). The splits pick distinct edges
-//! around singular vertices; classes are recomputed afterwards.
+//! around singular vertices; the new vertex's class is that of its edge.
 //!
 //! Jitter: every corner of a selected vertex (class in the list, then kept
 //! with probability `fraction`) moves by its own uniform vector in
 //! `[-amplitude, amplitude]^D`: charts then disagree by ~amplitude.
 
-use super::classify::{classify, VertexClass};
+use super::classify::VertexClass;
 use super::{Jitter, Slivers};
 use crate::rng::SplitMix64;
 use dualex_map::SimplexMap;
@@ -83,9 +83,22 @@ pub(crate) fn slivers<const N: usize, const D: usize>(
             break;
         }
         let (a, b) = edges.swap_remove((rng.next_u64() % edges.len() as u64) as usize);
-        split_edge(map, a, b, s.lambda, quantum);
+        if split_edge(map, a, b, s.lambda, quantum) {
+            classes.push(sliver_class::<D>(classes[a as usize], classes[b as usize]));
+        }
     }
-    *classes = classify(map);
+}
+
+/// The class of a vertex inside edge `(a, b)` (approximate: the edge is
+/// taken as singular when both ends are, on the boundary when both are).
+fn sliver_class<const D: usize>(a: VertexClass, b: VertexClass) -> VertexClass {
+    use VertexClass::*;
+    let singular = |c: VertexClass| matches!(c, Singular | SingularEdge);
+    match (a, b) {
+        (Boundary, Boundary) => Boundary,
+        (x, y) if D == 3 && singular(x) && singular(y) => SingularEdge,
+        _ => Regular,
+    }
 }
 
 /// Splits edge `(a, b)` at `lambda` from `a` in every simplex holding it.
@@ -95,13 +108,13 @@ fn split_edge<const N: usize, const D: usize>(
     b: u32,
     lambda: f64,
     quantum: f64,
-) {
+) -> bool {
     if !map
         .simplices
         .iter()
         .any(|t| t.contains(&a) && t.contains(&b))
     {
-        return; // split away by an earlier sliver
+        return false; // split away by an earlier sliver
     }
     let p = map.positions.len() as u32;
     let (pa, pb) = (map.positions[a as usize], map.positions[b as usize]);
@@ -129,4 +142,5 @@ fn split_edge<const N: usize, const D: usize>(
         map.simplices.push(near_b.0);
         map.coords.push(near_b.1);
     }
+    true
 }

@@ -236,7 +236,7 @@ pub fn from_quads(mesh: &QuadMesh, opts: &FromMeshOptions) -> Result<FromQuads, 
         simplices,
         coords,
     };
-    let mut classes = classify::classify(&map);
+    let mut classes = classify::classify(&map, &classify::from_quad_mesh(&refined));
     perturb::perturb(&mut map, &classes, opts);
     if let Some(s) = opts.slivers {
         messy::slivers(&mut map, &mut classes, s, opts.seed);
@@ -273,7 +273,7 @@ pub fn from_hexes(mesh: &HexMesh, opts: &FromMeshOptions) -> Result<FromHexes, F
         simplices,
         coords,
     };
-    let mut classes = classify::classify(&map);
+    let mut classes = classify::classify(&map, &classify::from_hex_mesh(&refined));
     perturb::perturb(&mut map, &classes, opts);
     if let Some(s) = opts.slivers {
         messy::slivers(&mut map, &mut classes, s, opts.seed);

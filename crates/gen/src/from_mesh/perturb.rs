@@ -10,7 +10,9 @@
 //!
 //! Noise: `d` uniform in `[-a, a]^D`. Folds: up to 3 vertices next to a
 //! singular vertex or edge (else any free vertex) get `|d| = 1.5` per
-//! axis instead, which reverts the simplices around them.
+//! axis instead, which reverts the simplices around them. Boundary and
+//! singular vertices never move; vertices on a singular edge move along it
+//! (or not at all when its holonomy is trivial: a whole number of turns).
 
 use super::classify::{stars, Star, VertexClass};
 use super::FromMeshOptions;
@@ -87,7 +89,14 @@ pub(crate) fn perturb<const N: usize, const D: usize>(
         }
     }
     for (v, star) in stars.iter().enumerate() {
-        if classes[v] == VertexClass::Boundary {
+        // singular edges with a trivial holonomy (a whole number of turns)
+        // do not tell their direction: such vertices stay too
+        let stays = match classes[v] {
+            VertexClass::Boundary | VertexClass::Singular => true,
+            VertexClass::SingularEdge => star.group.len() == 1,
+            VertexClass::Regular => false,
+        };
+        if stays {
             continue;
         }
         let dv = snap(star.project(d[v]));

@@ -279,6 +279,9 @@ fn classes_and_singularities_are_the_meshes() {
         let edges: usize = r.singular_edges.values().sum();
         assert_eq!(edges, 40, "{split:?}: {r:?}");
     }
+    // a whole turn of excess (valence 8): trivial holonomy, still singular
+    let g = quads("ngon8", &opts(1));
+    assert_eq!(class_counts(&g.classes).get(&Singular), Some(&1));
     // cylinder of 3 wedges, 2 layers, k = 1: one interior axis vertex
     let g = hexes("cylinder3", &opts(1));
     assert_eq!(class_counts(&g.classes).get(&SingularEdge), Some(&1));
