@@ -13,8 +13,10 @@
 //! run the real binary (`dualex generate --from-mesh` + `dualex quad|hex`).
 
 mod common;
+mod mesh_oracle;
 use common::*;
-use dualex_gen::from_mesh::{self, meshes, FromMeshOptions};
+use dualex_gen::from_mesh::{meshes, FromMeshOptions};
+use mesh_oracle::*;
 use std::collections::BTreeMap;
 
 /// Cases that fail today: run and reported, not asserted. Symptoms (2026-12):
@@ -36,134 +38,6 @@ const KNOWN_FAILING: &[&str] = &[
     "prism5_poles/k1/half",
     "prism5_poles/k2/half",
 ];
-
-/// The outcome of one case: `Ok` or what went wrong.
-type Outcome = Result<(), String>;
-
-fn diff<T: std::fmt::Debug + PartialEq>(out: &mut Vec<String>, what: &str, got: T, want: T) {
-    if got != want {
-        out.push(format!("{what}: got {got:?}, expected {want:?}"));
-    }
-}
-
-fn catch(f: impl FnOnce() -> Outcome) -> Outcome {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|p| {
-        let msg = p
-            .downcast_ref::<String>()
-            .cloned()
-            .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
-            .unwrap_or_default();
-        Err(format!("panic: {msg}"))
-    })
-}
-
-fn quad_case(name: &str, o: &FromMeshOptions) -> Outcome {
-    let mesh = meshes::quad_mesh_by_name(name).ok_or("unknown mesh")?;
-    let g = from_mesh::from_quads(&mesh, o).map_err(|e| format!("generate: {e}"))?;
-    let (out, _) =
-        dualex_quad::extract(&g.map, &Default::default()).map_err(|e| format!("refused: {e}"))?;
-    let got = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
-    let mut bad = Vec::new();
-    if !got.is_valid() {
-        bad.push(format!("invalid: {:?}", got.errors()));
-    }
-    if o.half_shift {
-        let e = &g.expected;
-        diff(&mut bad, "quads", Some(got.faces), e.quads);
-        diff(
-            &mut bad,
-            "interior valence",
-            Some(&got.interior_valence),
-            e.interior_valence.as_ref(),
-        );
-        diff(&mut bad, "euler", Some(got.euler), e.euler);
-        diff(
-            &mut bad,
-            "boundary loops",
-            Some(got.boundary_loops),
-            e.boundary_loops,
-        );
-    } else {
-        let want = dualex_check::check_quad_mesh(g.refined.positions.len(), &g.refined.cells);
-        diff(&mut bad, "quads", got.faces, want.faces);
-        diff(
-            &mut bad,
-            "interior valence",
-            &got.interior_valence,
-            &want.interior_valence,
-        );
-        diff(
-            &mut bad,
-            "boundary valence",
-            &got.boundary_valence,
-            &want.boundary_valence,
-        );
-        diff(&mut bad, "euler", got.euler, want.euler);
-        diff(
-            &mut bad,
-            "boundary loops",
-            got.boundary_loops,
-            want.boundary_loops,
-        );
-        diff(&mut bad, "components", got.components, want.components);
-    }
-    if bad.is_empty() {
-        Ok(())
-    } else {
-        Err(bad.join("; "))
-    }
-}
-
-fn hex_case(name: &str, o: &FromMeshOptions) -> Outcome {
-    let mesh = meshes::hex_mesh_by_name(name).ok_or("unknown mesh")?;
-    let g = from_mesh::from_hexes(&mesh, o).map_err(|e| format!("generate: {e}"))?;
-    let (out, _) =
-        dualex_hex::extract(&g.map, &Default::default()).map_err(|e| format!("refused: {e}"))?;
-    let got = dualex_check::check_hex_mesh(out.positions.len(), &out.cells, None);
-    let want = dualex_check::check_hex_mesh(g.refined.positions.len(), &g.refined.cells, None);
-    let mut bad = Vec::new();
-    if !got.is_valid() {
-        bad.push(format!("invalid: {:?}", got.errors()));
-    }
-    diff(&mut bad, "hexes", got.cells, want.cells);
-    diff(
-        &mut bad,
-        "interior edge valence",
-        &got.interior_edge_valence,
-        &want.interior_edge_valence,
-    );
-    diff(&mut bad, "euler", got.euler, want.euler);
-    diff(&mut bad, "components", got.components, want.components);
-    diff(
-        &mut bad,
-        "boundary quads",
-        got.boundary.faces,
-        want.boundary.faces,
-    );
-    diff(
-        &mut bad,
-        "boundary components",
-        got.boundary.components,
-        want.boundary.components,
-    );
-    diff(
-        &mut bad,
-        "boundary euler",
-        got.boundary.euler,
-        want.boundary.euler,
-    );
-    diff(
-        &mut bad,
-        "boundary valence",
-        &got.boundary.interior_valence,
-        &want.boundary.interior_valence,
-    );
-    if bad.is_empty() {
-        Ok(())
-    } else {
-        Err(bad.join("; "))
-    }
-}
 
 /// Every case: `(name, dimension, mesh, options)`.
 fn cases() -> Vec<(String, bool, String, FromMeshOptions)> {
