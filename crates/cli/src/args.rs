@@ -19,6 +19,11 @@ usage:
                         0.5 × on a planar map)
   dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`;
                                                 2D maps → .obj/.ply, 3D maps → .hexex)
+  dualex generate --from-mesh MESH -o MAP [--scale K] [--noise A] [--folds] [--seed N] [--half-shift]
+                        (MESH: quads .obj/.ply or hexes .mesh, each element one chart
+                        [0,K]^D; noise A in [0,1] grid units, exactly GP; writes MAP and
+                        MAP.expected.json + the refined mesh MAP.expected.obj/.mesh;
+                        NAME may also be a built-in mesh of `--list`, e.g. cubed_ball)
 
 INPUT:   triangle mesh with per-corner map: .obj (f v/vt) or .ply (face texcoord);
          tet mesh with 3D map: .hexex
@@ -75,6 +80,16 @@ pub struct Args {
     pub verbose: bool,
     /// `-q`.
     pub quiet: bool,
+    /// `--from-mesh` (generate).
+    pub from_mesh: Option<PathBuf>,
+    /// `--scale` (generate --from-mesh).
+    pub scale: Option<usize>,
+    /// `--noise` (generate --from-mesh).
+    pub noise: Option<f64>,
+    /// `--folds` (generate --from-mesh).
+    pub folds: bool,
+    /// `--half-shift` (generate --from-mesh).
+    pub half_shift: bool,
 }
 
 /// Parses `argv[1..]`.
@@ -136,6 +151,23 @@ pub fn parse(argv: &[String]) -> Result<Args, String> {
                         .ok_or_else(|| format!("{x}: not a positive count: {v}"))?,
                 );
             }
+            "--from-mesh" => a.from_mesh = Some(value(x)?.into()),
+            "--scale" => {
+                let v = value(x)?;
+                a.scale = Some(
+                    v.parse()
+                        .map_err(|_| format!("--scale: not a count: {v}"))?,
+                );
+            }
+            "--noise" => {
+                let v = value(x)?;
+                a.noise = Some(
+                    v.parse()
+                        .map_err(|_| format!("--noise: not a number: {v}"))?,
+                );
+            }
+            "--folds" => a.folds = true,
+            "--half-shift" => a.half_shift = true,
             "--quality" => a.quality = true,
             "--fallback" => a.fallback = true,
             "-v" | "--verbose" => a.verbose = true,

@@ -3,6 +3,7 @@
 #![forbid(unsafe_code)]
 
 mod args;
+mod generate_from_mesh;
 mod progress;
 mod timing;
 
@@ -303,21 +304,33 @@ fn inspect(args: &Args) -> Result<(), String> {
 }
 
 fn generate(args: &Args) -> Result<(), String> {
+    use dualex_gen::from_mesh::meshes;
     if args.list {
         for n in dualex_gen::names()
             .into_iter()
             .chain(dualex_gen::names_3d())
+            .chain(meshes::quad_mesh_names())
+            .chain(meshes::hex_mesh_names())
         {
             println!("{n}");
         }
         return Ok(());
+    }
+    let out = args.output.as_ref().ok_or("generate: missing -o OUTPUT")?;
+    if let Some(path) = &args.from_mesh {
+        return generate_from_mesh::run(args, generate_from_mesh::read(path)?, out);
     }
     let name = args
         .input
         .as_ref()
         .ok_or("generate: missing NAME (see --list)")?;
     let name = name.display().to_string();
-    let out = args.output.as_ref().ok_or("generate: missing -o OUTPUT")?;
+    if let Some(m) = meshes::quad_mesh_by_name(&name) {
+        return generate_from_mesh::run(args, generate_from_mesh::Input::Quads(m, name), out);
+    }
+    if let Some(m) = meshes::hex_mesh_by_name(&name) {
+        return generate_from_mesh::run(args, generate_from_mesh::Input::Hexes(m, name), out);
+    }
     if let Some((map, _)) = dualex_gen::by_name(&name, args.seed) {
         dualex_io::write_tri_map(out, &map).map_err(|e| e.to_string())?;
         if !args.quiet {

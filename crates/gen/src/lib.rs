@@ -18,6 +18,9 @@
 //! - [`block`]: 3D tet maps of a box (identity, noise, fold, half-rotated,
 //!   degenerate) with [`block::ExpectedHex`];
 //! - [`prism`]: extrusion of 2D maps into tet maps; a singular edge;
+//! - [`from_mesh`]: any quad / hex mesh as a map (one chart per element),
+//!   refined, with exactly-GP noise, folds, slivers and non-exact jitter:
+//!   exact oracles for extraction;
 //! - [`registry`]: names → generators with default parameters.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -27,6 +30,7 @@ mod build;
 pub mod closed;
 pub mod disk;
 pub mod expected;
+pub mod from_mesh;
 pub mod prism;
 pub mod registry;
 pub mod rng;

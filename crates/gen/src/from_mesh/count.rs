@@ -1,0 +1,175 @@
+//! Expected counts of a refined mesh, by counting its combinatorics (no
+//! extraction involved).
+//!
+//! Input: `M_k` as a quad or hex mesh. Output: [`Expected`] (quads,
+//! interior valence histogram, Euler characteristic `V − E + F`, boundary
+//! loops) or [`ExpectedHex`] (hexes, boundary surface components and Euler
+//! characteristic). Boundary loops are the connected components of the
+//! boundary edges (equal to the loops on a manifold boundary).
+
+use crate::block::ExpectedHex;
+use crate::expected::Expected;
+use dualex_map::{HexMesh, QuadMesh};
+use std::collections::{BTreeMap, HashMap};
+
+/// Smallest union–find (path halving).
+struct Sets(Vec<usize>);
+
+impl Sets {
+    fn find(&mut self, mut x: usize) -> usize {
+        while self.0[x] != x {
+            self.0[x] = self.0[self.0[x]];
+            x = self.0[x];
+        }
+        x
+    }
+    fn union(&mut self, a: usize, b: usize) {
+        let (a, b) = (self.find(a), self.find(b));
+        self.0[a] = b;
+    }
+}
+
+/// Counts of a quad (or any polygon) surface given as cycles of vertices.
+struct Surface {
+    vertices: usize,
+    edges: usize,
+    faces: usize,
+    /// Faces around each used vertex.
+    valence: HashMap<u32, u32>,
+    /// Vertices on a boundary edge.
+    boundary: Vec<u32>,
+    /// Components of the boundary edges.
+    boundary_loops: usize,
+}
+
+fn surface(n: usize, faces: &[Vec<u32>]) -> Surface {
+    let mut edge_faces: HashMap<(u32, u32), usize> = HashMap::new();
+    let mut valence: HashMap<u32, u32> = HashMap::new();
+    for f in faces {
+        for (i, &a) in f.iter().enumerate() {
+            let b = f[(i + 1) % f.len()];
+            *edge_faces.entry((a.min(b), a.max(b))).or_insert(0) += 1;
+            *valence.entry(a).or_insert(0) += 1;
+        }
+    }
+    let mut sets = Sets((0..n).collect());
+    let mut on_boundary = vec![false; n];
+    for (&(a, b), &c) in &edge_faces {
+        if c == 1 {
+            sets.union(a as usize, b as usize);
+            on_boundary[a as usize] = true;
+            on_boundary[b as usize] = true;
+        }
+    }
+    let boundary: Vec<u32> = (0..n as u32).filter(|&v| on_boundary[v as usize]).collect();
+    let mut roots: Vec<usize> = boundary.iter().map(|&v| sets.find(v as usize)).collect();
+    roots.sort_unstable();
+    roots.dedup();
+    Surface {
+        vertices: valence.len(),
+        edges: edge_faces.len(),
+        faces: faces.len(),
+        valence,
+        boundary,
+        boundary_loops: roots.len(),
+    }
+}
+
+impl Surface {
+    fn euler(&self) -> i64 {
+        self.vertices as i64 - self.edges as i64 + self.faces as i64
+    }
+
+    fn interior_valence(&self) -> BTreeMap<u32, usize> {
+        let mut h = BTreeMap::new();
+        for (v, &val) in &self.valence {
+            if self.boundary.binary_search(v).is_err() {
+                *h.entry(val).or_insert(0) += 1;
+            }
+        }
+        h
+    }
+}
+
+/// The counts of `M_k` itself: what a map without half shift extracts to.
+pub fn expected_quad(mesh: &QuadMesh) -> Expected {
+    let faces: Vec<Vec<u32>> = mesh.cells.iter().map(|c| c.to_vec()).collect();
+    let s = surface(mesh.positions.len(), &faces);
+    Expected {
+        quads: Some(s.faces),
+        interior_valence: Some(s.interior_valence()),
+        euler: Some(s.euler()),
+        boundary_loops: Some(s.boundary_loops),
+    }
+}
+
+/// The counts for a half-shifted map (see the parent module docs): the
+/// dual of `M_k`, split once linearly when some vertex of `M_k` has a
+/// valence other than 4. Unknown with a boundary.
+pub(crate) fn expected_half_shift(mesh: &QuadMesh) -> Expected {
+    let faces: Vec<Vec<u32>> = mesh.cells.iter().map(|c| c.to_vec()).collect();
+    let s = surface(mesh.positions.len(), &faces);
+    if !s.boundary.is_empty() {
+        return Expected::unknown();
+    }
+    let hist = s.interior_valence();
+    let regular = hist.keys().all(|&v| v == 4);
+    let (quads, valence) = if regular {
+        // the dual: a quad per vertex, a valence-4 vertex per quad
+        (s.vertices, BTreeMap::from([(4, s.faces)]))
+    } else {
+        // each n-gon of the dual into n quads: the old dual vertices
+        // (faces of M_k) and edge midpoints have valence 4, the n-gon
+        // centres (vertices of M_k) keep their valence
+        let mut h = hist.clone();
+        *h.entry(4).or_insert(0) += s.faces + s.edges;
+        (2 * s.edges, h)
+    };
+    Expected {
+        quads: Some(quads),
+        interior_valence: Some(valence),
+        euler: Some(s.euler()),
+        boundary_loops: Some(0),
+    }
+}
+
+/// The counts of the hex mesh `M_k`.
+pub fn expected_hex(mesh: &HexMesh) -> ExpectedHex {
+    const FACES: [[usize; 4]; 6] = [
+        [0, 3, 2, 1],
+        [4, 5, 6, 7],
+        [0, 1, 5, 4],
+        [1, 2, 6, 5],
+        [2, 3, 7, 6],
+        [3, 0, 4, 7],
+    ];
+    let mut count: HashMap<[u32; 4], (usize, Vec<u32>)> = HashMap::new();
+    for h in &mesh.cells {
+        for f in FACES {
+            let cyc: Vec<u32> = f.iter().map(|&i| h[i]).collect();
+            let mut key = [cyc[0], cyc[1], cyc[2], cyc[3]];
+            key.sort_unstable();
+            count.entry(key).or_insert((0, cyc)).0 += 1;
+        }
+    }
+    let boundary: Vec<Vec<u32>> = count
+        .into_values()
+        .filter(|(c, _)| *c == 1)
+        .map(|(_, cyc)| cyc)
+        .collect();
+    let s = surface(mesh.positions.len(), &boundary);
+    let mut sets = Sets((0..mesh.positions.len()).collect());
+    for f in &boundary {
+        for w in f.windows(2) {
+            sets.union(w[0] as usize, w[1] as usize);
+        }
+    }
+    let mut roots: Vec<usize> = s.valence.keys().map(|&v| sets.find(v as usize)).collect();
+    roots.sort_unstable();
+    roots.dedup();
+    ExpectedHex {
+        hexes: Some(mesh.cells.len()),
+        boundary_components: Some(roots.len()),
+        boundary_euler: Some(s.euler()),
+    }
+}
