@@ -3,6 +3,8 @@
 //! The driver [`extract`] reads as the pipeline's numbered steps, one
 //! module each:
 //! 1. [`local`]: local shifted coordinates (integer offset per tet);
+//!    then [`split`]: edges and faces spanned by unmovable vertices across
+//!    the dual grid are split (repeated until none is left);
 //! 2. [`sanitize`]: snap to exact GP, move vertices off the dual isos
 //!    ([`near`] says what "on" means, [`clusters`] what moves together);
 //! 3. [`nodes`]: integer points inside tets, reverted flags;
@@ -25,6 +27,7 @@ pub mod nodes;
 use dualex_map::rng;
 pub mod sanitize;
 pub mod simplex;
+pub mod split;
 pub mod stats;
 pub mod trace;
 
@@ -60,20 +63,43 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     nodes::check_size(map)?;
     map.check_not_reflected()?;
     st.input_tets = map.len();
-    let topo = Topology::build(map)?;
-    let (trans, trep) = Transitions::derive(map, &topo, &opts.transitions)?;
-    st.max_transition_residual = trep.max_residual;
-    st.snapped_transitions = trep.snapped;
-    let stars = Stars::build(map, &topo, &trans);
-    st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
-    st.singular_edges = edge_singularities_with_stars(map, &topo, &trans, &stars).len();
-    (st.reverted_tets, st.degenerate_tets) = quality(map);
+    let owned;
+    let (map, topo, stars, mut local, singular_snap) = {
+        let mut map = std::borrow::Cow::Borrowed(map);
+        loop {
+            let topo = Topology::build(&map)?;
+            let (trans, trep) = Transitions::derive(&map, &topo, &opts.transitions)?;
+            st.max_transition_residual = trep.max_residual;
+            st.snapped_transitions = trep.snapped;
+            let stars = Stars::build(&map, &topo, &trans);
+            let singular = edge_singularities_with_stars(&map, &topo, &trans, &stars);
+            if st.split_faces == 0 {
+                // the input's own counts, not those of the split map
+                st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
+                st.singular_edges = singular.len();
+                (st.reverted_tets, st.degenerate_tets) = quality(&map);
+            }
+            // 1: the local map takes over the transitions (no second copy)
+            let mut local = local::LocalMap::from_transitions(&map, &topo, trans);
+            // singular vertices exactly on their fixed sets before any test
+            let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+            // 1b: edges and faces that unmovable vertices span across the grid
+            let pairs = singular
+                .iter()
+                .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
+                .collect();
+            let faces = split::faces_to_split(&map, &stars, &pairs, &local);
+            if faces.is_empty() || st.split_faces >= st.input_tets {
+                owned = map;
+                break (&*owned, topo, stars, local, snap);
+            }
+            let (next, applied) = dualex_map::split::split_faces(&map, &faces);
+            st.split_faces += applied;
+            map = std::borrow::Cow::Owned(next);
+        }
+    };
     laps.lap("map");
-    // 1–2
-    // the local map takes over the transitions (no second copy)
-    let mut local = local::LocalMap::from_transitions(map, &topo, trans);
-    // singular vertices exactly on their fixed sets before any test
-    let singular_snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+    // 2
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
     st.sanitize.singular_snap = singular_snap;
     drop(stars);

@@ -27,6 +27,8 @@ pub struct HexStats {
     pub singular_vertices: usize,
     /// Singular interior edges.
     pub singular_edges: usize,
+    /// Tet edges and faces split before sanitization (`crate::split`).
+    pub split_faces: usize,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
     /// Nodes found.
@@ -89,6 +91,7 @@ impl HexStats {
     pub fn to_json(&self) -> Value {
         let mut sanitize = self.sanitize.to_json();
         sanitize.insert("singular_moved".into(), json!(self.sanitize.singular_moved));
+        sanitize.insert("split_faces".into(), json!(self.split_faces));
         json!({
             "input": {
                 "tets": self.input_tets,

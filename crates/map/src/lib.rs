@@ -34,6 +34,7 @@ pub mod rotation;
 pub mod sanitize_report;
 pub mod singular_snap;
 pub mod singularity;
+pub mod split;
 pub mod star;
 mod star_build;
 pub mod timing;

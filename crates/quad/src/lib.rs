@@ -78,8 +78,9 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         if edges.is_empty() || st.split_edges >= map.len() {
             break (topo, stars, local, snap);
         }
-        st.split_edges += edges.len();
-        owned = split::split_edges(map, &topo, &edges);
+        let applied;
+        (owned, applied) = split::split_edges(map, &edges);
+        st.split_edges += applied;
         map = &owned;
     };
     laps.lap("map");

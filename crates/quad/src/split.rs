@@ -47,52 +47,17 @@ pub fn edges_to_split(
     out
 }
 
-fn mid<const K: usize>(a: &[f64; K], b: &[f64; K]) -> [f64; K] {
-    std::array::from_fn(|k| 0.5 * (a[k] + b[k]))
-}
-
-/// Splits the given edges (see the module docs).
-pub fn split_edges(map: &TriMap, topo: &Topology<3>, edges: &[(usize, usize)]) -> TriMap {
-    let mut out = map.clone();
-    // per triangle: the facet to split there and the new vertex
-    let mut cut: Vec<Option<(usize, u32)>> = vec![None; map.len()];
-    for &(s, f) in edges {
-        let tri = map.simplices[s];
-        let (a, b) = (tri[(f + 1) % 3] as usize, tri[(f + 2) % 3] as usize);
-        let nbr = topo.neighbour(s, f);
-        if cut[s].is_some() || nbr.is_some_and(|(n, _)| cut[n].is_some()) {
-            continue; // one split per triangle per pass; the next pass takes it
-        }
-        let m = out.positions.len() as u32;
-        out.positions
-            .push(mid(&map.positions[a], &map.positions[b]));
-        cut[s] = Some((f, m));
-        if let Some((n, g)) = nbr {
-            cut[n] = Some((g, m));
-        }
-    }
-    out.simplices.clear();
-    out.coords.clear();
-    for (s, cut_s) in cut.iter().enumerate() {
-        let (tri, uv) = (map.simplices[s], map.coords[s]);
-        let Some((f, m)) = *cut_s else {
-            out.simplices.push(tri);
-            out.coords.push(uv);
-            continue;
-        };
-        let (ca, cb) = ((f + 1) % 3, (f + 2) % 3);
-        let um = mid(&uv[ca], &uv[cb]);
-        // (f, a, b) → (f, a, m) and (f, m, b), same orientation
-        let mut t1 = tri;
-        t1[cb] = m;
-        let mut u1 = uv;
-        u1[cb] = um;
-        let mut t2 = tri;
-        t2[ca] = m;
-        let mut u2 = uv;
-        u2[ca] = um;
-        out.simplices.extend([t1, t2]);
-        out.coords.extend([u1, u2]);
-    }
-    out
+/// Splits the given edges (see the module docs) with the generic face
+/// split of `dualex_map::split`; returns the new map and the number of
+/// edges split (an edge sharing a triangle with an earlier one waits for
+/// the next pass).
+pub fn split_edges(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, usize) {
+    let faces: Vec<Vec<u32>> = edges
+        .iter()
+        .map(|&(s, f)| {
+            let tri = map.simplices[s];
+            vec![tri[(f + 1) % 3], tri[(f + 2) % 3]]
+        })
+        .collect();
+    dualex_map::split::split_faces(map, &faces)
 }
