@@ -110,6 +110,7 @@ fn quad(args: &Args) -> Result<(), String> {
             ..Default::default()
         },
         seed: args.seed,
+        grid_offset: args.grid_offset,
     };
     let progress = progress::Progress::new(map.len(), args.quiet);
     progress.stage("extracting quads");
@@ -173,6 +174,7 @@ fn hex(args: &Args) -> Result<(), String> {
             ..Default::default()
         },
         seed: args.seed,
+        grid_offset: args.grid_offset,
     };
     let progress = progress::Progress::new(map.len(), args.quiet);
     progress.stage("extracting hexs");

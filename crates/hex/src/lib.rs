@@ -29,6 +29,7 @@ pub mod stats;
 pub mod trace;
 
 use dualex_graph::NodeGraph;
+pub use dualex_map::grid_offset::GridOffset;
 use dualex_map::singularity::{edge_singularities_with_stars, quality};
 use dualex_map::timing::Laps;
 use dualex_map::{HexMesh, InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
@@ -41,6 +42,8 @@ pub struct HexOptions {
     pub transitions: TransitionOptions,
     /// Seed of the sanitization perturbations.
     pub seed: u64,
+    /// Where the dual grid sits (`--grid-offset`).
+    pub grid_offset: GridOffset,
 }
 
 impl Default for HexOptions {
@@ -48,6 +51,7 @@ impl Default for HexOptions {
         HexOptions {
             transitions: TransitionOptions::default(),
             seed: 1,
+            grid_offset: GridOffset::Auto,
         }
     }
 }
@@ -70,8 +74,9 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     (st.reverted_tets, st.degenerate_tets) = quality(map);
     laps.lap("map");
     // 1–2
+    st.grid_offset = dualex_map::grid_offset::choose(map, &stars, opts.grid_offset);
     // the local map takes over the transitions (no second copy)
-    let mut local = local::LocalMap::from_transitions(map, &topo, trans);
+    let mut local = local::LocalMap::with_grid(map, &topo, trans, st.grid_offset.offset);
     st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
     drop(stars);
     laps.lap("sanitize");

@@ -5,7 +5,7 @@
 
 use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
-use dualex_map::sanitize_report::{histogram_json, times_json};
+use dualex_map::sanitize_report::{histogram_json, offset_json, times_json};
 use dualex_map::HexMesh;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -27,6 +27,9 @@ pub struct HexStats {
     pub singular_vertices: usize,
     /// Singular interior edges.
     pub singular_edges: usize,
+    /// The grid offset used, and the singular vertices on the grid under
+    /// each choice (`Auto`).
+    pub grid_offset: dualex_map::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
     /// Nodes found.
@@ -99,6 +102,8 @@ impl HexStats {
                 "singular_vertices": self.singular_vertices,
                 "singular_edges": self.singular_edges,
             },
+            "grid_offset": self.grid_offset.offset.name(),
+            "grid_offset_choice": offset_json(&self.grid_offset),
             "sanitize": sanitize,
             "nodes": self.nodes,
             "reverted_nodes": self.reverted_nodes,

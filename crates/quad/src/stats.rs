@@ -3,7 +3,7 @@
 
 use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
-use dualex_map::sanitize_report::{histogram_json, times_json};
+use dualex_map::sanitize_report::{histogram_json, offset_json, times_json};
 use dualex_map::QuadMesh;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -25,6 +25,9 @@ pub struct QuadStats {
     pub singularities: BTreeMap<String, usize>,
     /// Edges joining two singular vertices through a grid point, split.
     pub split_edges: usize,
+    /// The grid offset used, and the singular vertices on the grid under
+    /// each choice (`Auto`).
+    pub grid_offset: dualex_map::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
     /// Nodes found.
@@ -116,6 +119,8 @@ impl QuadStats {
                 "singular_vertices": self.singular_vertices,
                 "singularities": self.singularities,
             },
+            "grid_offset": self.grid_offset.offset.name(),
+            "grid_offset_choice": offset_json(&self.grid_offset),
             "sanitize": sanitize,
             "nodes": self.nodes,
             "reverted_nodes": self.reverted_nodes,
