@@ -137,6 +137,11 @@ fn quad(args: &Args) -> Result<(), String> {
         dualex_render::quad_png(&mesh, png, PNG_SIZE)
             .map_err(|e| format!("{}: {e}", png.display()))?;
     }
+    warn_rounded(
+        args,
+        stats.snapped_transitions,
+        stats.max_transition_residual,
+    );
     if stats.repair_triangles > 0 && !args.quiet {
         eprintln!(
             "dualex: warning: {} singular vertices sit exactly on dual nodes (not a SoG map); their 3-sided faces were made quads by one step of subdivision",
@@ -200,6 +205,18 @@ fn hex(args: &Args) -> Result<(), String> {
     }
     let json = stats.to_json();
     write_stats(args, &json)?;
+    warn_rounded(
+        args,
+        stats.snapped_transitions,
+        stats.max_transition_residual,
+    );
+    if stats.open_interior_faces > 0 {
+        // loud: printed even with -q (a crack is a wrong mesh, not noise)
+        eprintln!(
+            "dualex: WARNING: {} interior faces left open (walks lost at singular edges: cracks, not input boundary); see \"holes\" in the stats",
+            stats.open_interior_faces
+        );
+    }
     if !args.quiet {
         println!(
             "done: {} hexes, {} vertices -> {}",
@@ -209,6 +226,16 @@ fn hex(args: &Args) -> Result<(), String> {
         );
     }
     Ok(())
+}
+
+/// The warning for transitions rounded without `--round-transitions`
+/// (or with it): how many, and the largest residual.
+fn warn_rounded(args: &Args, rounded: usize, max_residual: f64) {
+    if rounded > 0 && !args.quiet {
+        eprintln!(
+            "dualex: warning: rounded {rounded} transition translations that were not integral (largest residual {max_residual:.3e}); the map is not exactly grid-preserving"
+        );
+    }
 }
 
 fn view(args: &Args) -> Result<(), String> {

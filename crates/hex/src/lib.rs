@@ -99,6 +99,8 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     let glued = graph.glue();
     let mesh = place_vertices(map, &local, &topo, &nodes, &glued);
     st.finish_output(&graph, &glued, &mesh);
+    // cracks: unmatched sides that are not on the input's boundary
+    st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
     Ok((mesh, st))

@@ -17,7 +17,9 @@ pub struct QuadStats {
     pub reverted_triangles: usize,
     /// Largest residual of a transition translation.
     pub max_transition_residual: f64,
-    /// Transitions snapped by `--round-transitions`.
+    /// Transitions rounded (residual above the tolerance: up to 0.1 by
+    /// default, any with `--round-transitions`); `transitions_rounded` in
+    /// the JSON.
     pub snapped_transitions: usize,
     /// Vertices whose star rotations are inconsistent.
     pub singular_vertices: usize,
@@ -116,6 +118,7 @@ impl QuadStats {
                 "reverted_triangles": self.reverted_triangles,
                 "max_transition_residual": self.max_transition_residual,
                 "snapped_transitions": self.snapped_transitions,
+                "transitions_rounded": self.snapped_transitions,
                 "singular_vertices": self.singular_vertices,
                 "singularities": self.singularities,
             },
