@@ -5,6 +5,7 @@
 mod args;
 mod progress;
 mod timing;
+mod verify;
 
 use args::{Args, USAGE};
 use std::path::Path;
@@ -125,6 +126,19 @@ fn quad(args: &Args) -> Result<(), String> {
             rep.errors().join("; ")
         ));
     }
+    use dualex_check::topology as topo;
+    let topology = topo::Comparison {
+        input: topo::surface_shape(map.positions.len(), &map.simplices),
+        output: topo::quad_shape(&rep),
+    };
+    let summary = verify::Output {
+        cell: "quad",
+        cells: mesh.cells.len(),
+        nodes: stats.nodes,
+        measure: verify::measure(&map),
+        topology,
+    };
+    verify::last_check(&name, &summary, args.strict, args.quiet)?;
     progress.stage("writing");
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
     laps.lap("write");
@@ -132,7 +146,9 @@ fn quad(args: &Args) -> Result<(), String> {
     if args.verbose {
         eprintln!("{}", timing::line(&laps));
     }
-    write_stats(args, &stats.to_json())?;
+    let mut json = stats.to_json();
+    verify::add_to_stats(&mut json, &topology);
+    write_stats(args, &json)?;
     if let Some(png) = &args.png {
         dualex_render::quad_png(&mesh, png, PNG_SIZE)
             .map_err(|e| format!("{}: {e}", png.display()))?;
@@ -196,6 +212,19 @@ fn hex(args: &Args) -> Result<(), String> {
             rep.errors().join("; ")
         ));
     }
+    use dualex_check::topology as topo;
+    let topology = topo::Comparison {
+        input: topo::tet_shape(map.positions.len(), &map.simplices),
+        output: topo::hex_shape(&rep),
+    };
+    let summary = verify::Output {
+        cell: "hex",
+        cells: mesh.cells.len(),
+        nodes: stats.nodes,
+        measure: verify::measure(&map),
+        topology,
+    };
+    verify::last_check(&name, &summary, args.strict, args.quiet)?;
     progress.stage("writing");
     dualex_io::write_hex_mesh(out, &mesh).map_err(|e| e.to_string())?;
     laps.lap("write");
@@ -203,7 +232,8 @@ fn hex(args: &Args) -> Result<(), String> {
     if args.verbose {
         eprintln!("{}", timing::line(&laps));
     }
-    let json = stats.to_json();
+    let mut json = stats.to_json();
+    verify::add_to_stats(&mut json, &topology);
     write_stats(args, &json)?;
     warn_rounded(
         args,
