@@ -9,7 +9,9 @@
 //!
 //! - [`quad`]: [`check_quad_mesh`] → [`QuadReport`];
 //! - [`hex`]: [`check_hex_mesh`] → [`HexReport`] (its boundary surface is
-//!   checked as a quad mesh).
+//!   checked as a quad mesh);
+//! - [`topology`]: the output's topology against the input's (components,
+//!   Euler characteristic, boundary components).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -17,6 +19,7 @@ pub mod hex;
 pub mod quad;
 #[cfg(test)]
 mod test_meshes;
+pub mod topology;
 mod union_find;
 
 pub use hex::{check_hex_mesh, HexReport};

@@ -30,7 +30,15 @@ INPUT:   triangle mesh with per-corner map: .obj (f v/vt) or .ply (face texcoord
 OUTPUT:  quads: .obj .ply .vtk; hexes: .mesh (MEDIT) .vtk
 options:
   --no-weld             keep coincident boundary vertices of cut meshes apart
-  --round-transitions   snap non-integer transition translations (reports how far)
+  --round-transitions   snap non-integer transition translations of any residual
+                        (residuals up to 0.1 are rounded by default, with a warning)
+  --grid-offset G       quad, hex: where the dual grid sits: auto (default), half
+                        (nodes at the map's half-integers, output vertices at its
+                        integer points) or zero (the reverse); auto takes zero only
+                        when fewer singular vertices then sit on nodes (then isos)
+  --strict              quad, hex: an output whose topology (components, Euler
+                        characteristic, boundary components) differs from the
+                        input's is an error (nothing written) instead of a warning
   --png FILE            quad: picture of the mesh colored by valence (3 blue, 4 grey,
                         5 red, other green); inspect: the map in the plane, reverted
                         triangles purple, singularities marked
@@ -38,7 +46,8 @@ options:
   -j, --threads N       worker threads (default: all cores); the output is
                         byte-identical whatever N
   -v, --verbose         per-stage counts and timings on stderr
-  -q, --quiet           print nothing but errors
+  -q, --quiet           print nothing but errors and the warnings about the output
+                        itself (open interior faces, topology unlike the input's)
   -h, --help            this text";
 
 /// Parsed command line.
@@ -60,6 +69,10 @@ pub struct Args {
     pub no_weld: bool,
     /// `--round-transitions`.
     pub round: bool,
+    /// `--grid-offset` (quad, hex).
+    pub grid_offset: dualex_map::grid_offset::GridOffset,
+    /// `--strict` (quad, hex): a topology mismatch is an error.
+    pub strict: bool,
     /// `--seed`.
     pub seed: u64,
     /// `--png`.
@@ -127,6 +140,14 @@ pub fn parse(argv: &[String]) -> Result<Args, String> {
             "--no-fairing" => a.no_fairing = true,
             "--no-weld" => a.no_weld = true,
             "--round-transitions" => a.round = true,
+            "--strict" => a.strict = true,
+            "--grid-offset" => {
+                let v = value(x)?;
+                a.grid_offset =
+                    dualex_map::grid_offset::GridOffset::parse(&v).ok_or_else(|| {
+                        format!("--grid-offset: expected auto, half or zero, not {v:?}")
+                    })?;
+            }
             "--list" => a.list = true,
             "--layers" => {
                 let v = value(x)?;

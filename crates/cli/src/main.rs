@@ -6,6 +6,7 @@ mod args;
 mod generate_from_mesh;
 mod progress;
 mod timing;
+mod verify;
 
 use args::{Args, USAGE};
 use std::path::Path;
@@ -111,6 +112,7 @@ fn quad(args: &Args) -> Result<(), String> {
             ..Default::default()
         },
         seed: args.seed,
+        grid_offset: args.grid_offset,
     };
     let progress = progress::Progress::new(map.len(), args.quiet);
     progress.stage("extracting quads");
@@ -125,6 +127,19 @@ fn quad(args: &Args) -> Result<(), String> {
             rep.errors().join("; ")
         ));
     }
+    use dualex_check::topology as topo;
+    let topology = topo::Comparison {
+        input: topo::surface_shape(map.positions.len(), &map.simplices),
+        output: topo::quad_shape(&rep),
+    };
+    let summary = verify::Output {
+        cell: "quad",
+        cells: mesh.cells.len(),
+        nodes: stats.nodes,
+        measure: verify::measure(&map),
+        topology,
+    };
+    verify::last_check(&name, &summary, args.strict, args.quiet)?;
     progress.stage("writing");
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
     laps.lap("write");
@@ -132,11 +147,18 @@ fn quad(args: &Args) -> Result<(), String> {
     if args.verbose {
         eprintln!("{}", timing::line(&laps));
     }
-    write_stats(args, &stats.to_json())?;
+    let mut json = stats.to_json();
+    verify::add_to_stats(&mut json, &topology);
+    write_stats(args, &json)?;
     if let Some(png) = &args.png {
         dualex_render::quad_png(&mesh, png, PNG_SIZE)
             .map_err(|e| format!("{}: {e}", png.display()))?;
     }
+    warn_rounded(
+        args,
+        stats.snapped_transitions,
+        stats.max_transition_residual,
+    );
     if stats.subdivided {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(
@@ -177,6 +199,7 @@ fn hex(args: &Args) -> Result<(), String> {
             ..Default::default()
         },
         seed: args.seed,
+        grid_offset: args.grid_offset,
     };
     let progress = progress::Progress::new(map.len(), args.quiet);
     progress.stage("extracting hexs");
@@ -193,6 +216,19 @@ fn hex(args: &Args) -> Result<(), String> {
             rep.errors().join("; ")
         ));
     }
+    use dualex_check::topology as topo;
+    let topology = topo::Comparison {
+        input: topo::tet_shape(map.positions.len(), &map.simplices),
+        output: topo::hex_shape(&rep),
+    };
+    let summary = verify::Output {
+        cell: "hex",
+        cells: mesh.cells.len(),
+        nodes: stats.nodes,
+        measure: verify::measure(&map),
+        topology,
+    };
+    verify::last_check(&name, &summary, args.strict, args.quiet)?;
     progress.stage("writing");
     dualex_io::write_hex_mesh(out, &mesh).map_err(|e| e.to_string())?;
     laps.lap("write");
@@ -200,8 +236,21 @@ fn hex(args: &Args) -> Result<(), String> {
     if args.verbose {
         eprintln!("{}", timing::line(&laps));
     }
-    let json = stats.to_json();
+    let mut json = stats.to_json();
+    verify::add_to_stats(&mut json, &topology);
     write_stats(args, &json)?;
+    warn_rounded(
+        args,
+        stats.snapped_transitions,
+        stats.max_transition_residual,
+    );
+    if stats.open_interior_faces > 0 {
+        // loud: printed even with -q (a crack is a wrong mesh, not noise)
+        eprintln!(
+            "dualex: WARNING: {} interior faces left open (walks lost at singular edges: cracks, not input boundary); see \"holes\" in the stats",
+            stats.open_interior_faces
+        );
+    }
     if !args.quiet {
         println!(
             "done: {} hexes, {} vertices -> {}",
@@ -211,6 +260,16 @@ fn hex(args: &Args) -> Result<(), String> {
         );
     }
     Ok(())
+}
+
+/// The warning for transitions rounded without `--round-transitions`
+/// (or with it): how many, and the largest residual.
+fn warn_rounded(args: &Args, rounded: usize, max_residual: f64) {
+    if rounded > 0 && !args.quiet {
+        eprintln!(
+            "dualex: warning: rounded {rounded} transition translations that were not integral (largest residual {max_residual:.3e}); the map is not exactly grid-preserving"
+        );
+    }
 }
 
 fn view(args: &Args) -> Result<(), String> {

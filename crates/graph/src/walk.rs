@@ -127,6 +127,22 @@ impl<const D: usize> NodeGraph<D> {
         }
         rep
     }
+
+    /// Unmatched sides of alive nodes that are not boundary but cracks
+    /// (open interior faces / edges): all of them on a closed input (no
+    /// boundary facet); otherwise those whose walk got lost (inconsistent
+    /// or looping: at a singular vertex or edge). The others reached the
+    /// boundary, directly or handed over by a reconnection of untangling.
+    pub fn lost_unmatched_sides(&self, ends: &[End<D>], closed: bool) -> usize {
+        self.alive_nodes()
+            .flat_map(|n| (0..2 * D).map(move |d| (n, d)))
+            .map(|(n, d)| self.side(n, d))
+            .filter(|&s| self.opposite(s).is_none())
+            .filter(|s| {
+                closed || matches!(ends.get(s.0 as usize), Some(End::Inconsistent | End::Loop))
+            })
+            .count()
+    }
 }
 
 #[cfg(test)]
@@ -153,6 +169,11 @@ mod tests {
         );
         assert_eq!(g.opposite(Side(0)), Some(Side(5)));
         g.check().expect("valid");
+        // 6 unmatched sides: all cracks on a closed input, none otherwise
+        assert_eq!(g.lost_unmatched_sides(&ends, true), 6);
+        assert_eq!(g.lost_unmatched_sides(&ends, false), 0);
+        ends[7] = End::Inconsistent;
+        assert_eq!(g.lost_unmatched_sides(&ends, false), 1);
     }
 
     #[test]

@@ -32,6 +32,7 @@ pub mod stats;
 pub mod trace;
 
 use dualex_graph::NodeGraph;
+pub use dualex_map::grid_offset::GridOffset;
 use dualex_map::singularity::{edge_singularities_with_stars, quality};
 use dualex_map::timing::Laps;
 use dualex_map::{HexMesh, InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
@@ -44,6 +45,8 @@ pub struct HexOptions {
     pub transitions: TransitionOptions,
     /// Seed of the sanitization perturbations.
     pub seed: u64,
+    /// Where the dual grid sits (`--grid-offset`).
+    pub grid_offset: GridOffset,
 }
 
 impl Default for HexOptions {
@@ -51,6 +54,7 @@ impl Default for HexOptions {
         HexOptions {
             transitions: TransitionOptions::default(),
             seed: 1,
+            grid_offset: GridOffset::Auto,
         }
     }
 }
@@ -78,9 +82,12 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
                 st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
                 st.singular_edges = singular.len();
                 (st.reverted_tets, st.degenerate_tets) = quality(&map);
+                // the offset is chosen once (splits add no singular vertex)
+                st.grid_offset =
+                    dualex_map::grid_offset::choose(&map, &topo, &stars, opts.grid_offset);
             }
             // 1: the local map takes over the transitions (no second copy)
-            let mut local = local::LocalMap::from_transitions(&map, &topo, trans);
+            let mut local = local::LocalMap::with_grid(&map, &topo, trans, st.grid_offset.offset);
             // singular vertices exactly on their fixed sets before any test
             let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
             // 1b: edges and faces that unmovable vertices span across the grid
@@ -123,6 +130,8 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     let glued = graph.glue();
     let mesh = place_vertices(map, &local, &topo, &nodes, &glued);
     st.finish_output(&graph, &glued, &mesh);
+    // cracks: unmatched sides that are not on the input's boundary
+    st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
     Ok((mesh, st))

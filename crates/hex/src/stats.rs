@@ -5,7 +5,7 @@
 
 use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
-use dualex_map::sanitize_report::{histogram_json, times_json};
+use dualex_map::sanitize_report::{histogram_json, offset_json, times_json};
 use dualex_map::HexMesh;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -21,7 +21,8 @@ pub struct HexStats {
     pub degenerate_tets: usize,
     /// Largest residual of a transition translation.
     pub max_transition_residual: f64,
-    /// Transitions snapped by `round`.
+    /// Transitions rounded (residual above the tolerance: up to 0.1 by
+    /// default, any with `round`); `transitions_rounded` in the JSON.
     pub snapped_transitions: usize,
     /// Vertices whose star rotations are inconsistent (on singular edges).
     pub singular_vertices: usize,
@@ -29,6 +30,9 @@ pub struct HexStats {
     pub singular_edges: usize,
     /// Tet edges and faces split before sanitization (`crate::split`).
     pub split_faces: usize,
+    /// The grid offset used, and the singular vertices on the grid under
+    /// each choice (`Auto`).
+    pub grid_offset: dualex_map::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
     /// Nodes found.
@@ -49,6 +53,9 @@ pub struct HexStats {
     pub vertices: usize,
     /// Output: unmatched sides in the final graph (boundary faces).
     pub unmatched_sides: usize,
+    /// Output: unmatched sides that are cracks, not input boundary (walks
+    /// lost at a singular edge; every unmatched side of a closed input).
+    pub open_interior_faces: usize,
     /// Output: boundary surfaces, counted in the graph.
     pub boundary_surfaces: usize,
     /// Output: connected components.
@@ -99,9 +106,12 @@ impl HexStats {
                 "degenerate_tets": self.degenerate_tets,
                 "max_transition_residual": self.max_transition_residual,
                 "snapped_transitions": self.snapped_transitions,
+                "transitions_rounded": self.snapped_transitions,
                 "singular_vertices": self.singular_vertices,
                 "singular_edges": self.singular_edges,
             },
+            "grid_offset": self.grid_offset.offset.name(),
+            "grid_offset_choice": offset_json(&self.grid_offset),
             "sanitize": sanitize,
             "nodes": self.nodes,
             "reverted_nodes": self.reverted_nodes,
@@ -117,7 +127,8 @@ impl HexStats {
                 "corner_mismatches": self.corner_mismatches,
                 "euler": self.euler,
                 "edge_valence_interior": histogram_json(&self.edge_valence_interior),
-                "holes": 0,
+                "open_interior_faces": self.open_interior_faces,
+                "holes": self.open_interior_faces,
             },
             "time_ms": times_json(&self.time_ms),
         })

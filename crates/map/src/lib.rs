@@ -11,6 +11,8 @@
 //! - [`star`]: vertex stars with rotations; singular vertices;
 //! - [`holonomy`]: rotation around a vertex (2D) or an edge (3D);
 //! - [`singularity`]: singular vertices (2D) and edges (3D), their indices;
+//! - [`grid_offset`]: the dual grid's offset (½ or 0), chosen from the
+//!   singular vertices;
 //! - [`weld`]: welding of cut meshes (vertices duplicated along seams);
 //! - [`report`]: `inspect`, all of the above in one report.
 #![forbid(unsafe_code)]
@@ -22,6 +24,7 @@ pub mod cluster;
 mod components;
 pub mod error;
 pub mod grid;
+pub mod grid_offset;
 pub mod holonomy;
 pub mod local;
 pub mod mesh;

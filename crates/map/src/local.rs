@@ -1,8 +1,10 @@
 //! Local, shifted coordinates: step 1 of both extractions.
 //!
-//! Input: a map, its topology and transitions. Output: [`LocalMap`], where
+//! Input: a map, its topology and transitions, and a grid offset
+//! ([`crate::grid_offset`]). Output: [`LocalMap`], where
 //! each simplex's corners are expressed relative to an integer offset of
-//! that simplex (`global = local + offset`) and shifted by (½, …, ½): the
+//! that simplex (`global = local + offset`) and shifted by `h` = (½, …, ½)
+//! (the default) or 0: the
 //! integer points of the local coordinates are the dual grid (nodes), and
 //! local values stay small whatever the magnitude of the input (a map
 //! translated by 2^40 behaves like one at the origin: subtracting an integer
@@ -10,9 +12,10 @@
 //!
 //! Invariant: across each interior facet, `local(n) = rot · local(s) +
 //! trans` with an integer `trans` (the input transitions with offsets and
-//! shift folded in: `h − R·h` is integral for `h = (½, …, ½)` and every grid
-//! rotation), up to the map's own GP residual.
+//! shift folded in: `h − R·h` is integral for `h = (½, …, ½)`, `h = 0` and
+//! every grid rotation), up to the map's own GP residual.
 
+use crate::grid_offset::GridOffset;
 use crate::{Rot, SimplexMap, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
@@ -23,6 +26,8 @@ pub struct LocalMap<const N: usize, const D: usize> {
     pub coords: Vec<[[f64; D]; N]>,
     /// Integer offset of each simplex (global shifted = local + offset).
     pub offset: Vec<[i64; D]>,
+    /// The grid offset used (`Half` or `Zero`).
+    pub grid: GridOffset,
     /// Transitions between local charts.
     pub trans: Transitions<N, D>,
 }
@@ -48,6 +53,22 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
         topo: &Topology<N>,
         trans: Transitions<N, D>,
     ) -> Self {
+        Self::with_grid(map, topo, trans, GridOffset::Half)
+    }
+
+    /// [`Self::from_transitions`] with the shift of `grid` (`Auto` counts
+    /// as `Half`: resolve it first with [`crate::grid_offset::choose`]).
+    pub fn with_grid(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        trans: Transitions<N, D>,
+        grid: GridOffset,
+    ) -> Self {
+        let h = grid.shift();
+        let grid = match grid {
+            GridOffset::Zero => GridOffset::Zero,
+            GridOffset::Auto | GridOffset::Half => GridOffset::Half,
+        };
         let offset: Vec<[i64; D]> = map
             .coords
             .par_iter()
@@ -57,7 +78,7 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
             .coords
             .par_iter()
             .zip(&offset)
-            .map(|(c, o)| c.map(|p| std::array::from_fn(|k| (p[k] - o[k] as f64) + 0.5)))
+            .map(|(c, o)| c.map(|p| std::array::from_fn(|k| (p[k] - o[k] as f64) + h)))
             .collect();
         let mut t = trans;
         let rot = &t.rot;
@@ -68,7 +89,7 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
                 };
                 let r = rot[s][f];
                 let ro = r.apply_i(&offset[s]);
-                let d = shift_defect(&r);
+                let d = if h == 0.0 { [0; D] } else { shift_defect(&r) };
                 let tt = *tf;
                 *tf = std::array::from_fn(|k| ro[k] + tt[k] - offset[n][k] + d[k]);
             }
@@ -76,6 +97,7 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
         LocalMap {
             coords,
             offset,
+            grid,
             trans: t,
         }
     }

@@ -119,6 +119,7 @@ fn analyse<const N: usize, const D: usize>(
     let topts = TransitionOptions {
         tolerance: opts.tolerance,
         round: opts.round,
+        ..Default::default()
     };
     let (trans, trep) = Transitions::derive(&map, &topo, &topts)?;
     let stars = Stars::build(&map, &topo, &trans);

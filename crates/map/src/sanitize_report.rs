@@ -72,3 +72,10 @@ pub fn histogram_json(h: &BTreeMap<usize, usize>) -> Value {
 pub fn times_json(times: &[(String, f64)]) -> Value {
     Value::Object(times.iter().map(|(k, v)| (k.clone(), json!(v))).collect())
 }
+
+/// What the grid offset was chosen on: the singular vertices on a node and
+/// on an iso under each offset (zeros when the offset was given).
+pub fn offset_json(c: &crate::grid_offset::OffsetChoice) -> Value {
+    let on = |g: &crate::grid_offset::OnGrid| json!({"on_node": g.on_node, "on_iso": g.on_iso, "boundary_facets_on_iso": g.boundary_on_iso});
+    json!({"half": on(&c.half), "zero": on(&c.zero)})
+}

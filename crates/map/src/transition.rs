@@ -22,15 +22,29 @@ pub struct TransitionOptions {
     /// it grows with the float spacing of large ones, see
     /// [`TransitionOptions::tolerance_at`].
     pub tolerance: f64,
-    /// Snap non-integer translations instead of failing (`--round-transitions`).
+    /// Snap non-integer translations of any residual instead of failing
+    /// (`--round-transitions`).
     pub round: bool,
+    /// Largest residual rounded without `round` (counted in
+    /// [`TransitionReport::snapped`], which callers report as a warning).
+    pub round_limit: f64,
 }
+
+/// Residuals (map units) rounded by default: a noisy export of an exact
+/// map (independent noise of a few 1e-3 on every corner) derives, with a
+/// warning, while a chart off by a sizeable fraction of a cell is refused.
+pub const ROUND_LIMIT: f64 = 0.1;
+
+/// Largest rotation mismatch accepted with `round` (beyond it the charts
+/// differ by more than noise: a reflection or a non-grid rotation).
+pub const ROUND_FIT_LIMIT: f64 = 0.25;
 
 impl Default for TransitionOptions {
     fn default() -> Self {
         TransitionOptions {
             tolerance: 1e-3,
             round: false,
+            round_limit: ROUND_LIMIT,
         }
     }
 }
@@ -41,6 +55,22 @@ impl TransitionOptions {
     /// float spacing 2^-12 there).
     pub fn tolerance_at(&self, magnitude: f64) -> f64 {
         self.tolerance + 64.0 * crate::transition_derive::ulp(magnitude)
+    }
+
+    /// Largest rotation mismatch accepted where the residual tolerance is
+    /// `tol`: [`ROUND_FIT_LIMIT`] with `round`, else `round_limit` (noise
+    /// that would be rounded must not be refused as a non-grid rotation).
+    pub fn fit_tolerance(&self, tol: f64) -> f64 {
+        tol.max(if self.round {
+            ROUND_FIT_LIMIT
+        } else {
+            self.round_limit
+        })
+    }
+
+    /// Whether a residual above the tolerance is rounded (else refused).
+    pub fn rounds(&self, residual: f64) -> bool {
+        self.round || residual <= self.round_limit
     }
 }
 
@@ -60,7 +90,8 @@ pub struct TransitionReport {
     pub max_residual: f64,
     /// Simplex and facet of the largest residual.
     pub worst_facet: Option<(usize, usize)>,
-    /// Interior facet pairs whose translation was snapped (with `round`).
+    /// Interior facet pairs whose translation was rounded: residual above
+    /// the tolerance, up to `round_limit` (or any, with `round`).
     pub snapped: usize,
     /// Zero-length facets whose rotation was ambiguous.
     pub ambiguous_facets: usize,

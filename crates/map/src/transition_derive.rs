@@ -8,8 +8,9 @@
 //! `s` and of its neighbour `n` (matched through `nbr_corner`):
 //! 1. **Fit**: for each grid rotation `R`, the mismatch
 //!    `max_i |R(a_i − a_0) − (b_i − b_0)|∞`. The best mismatch must be within
-//!    the fit tolerance (the accepted residual below; with `round`, at least
-//!    1/4), else the charts differ by a reflection or a non-grid rotation.
+//!    the fit tolerance ([`TransitionOptions::fit_tolerance`]: the rounding
+//!    limit below; with `round`, 1/4), else the charts differ by a reflection
+//!    or a non-grid rotation.
 //! 2. **Candidates**: the rotations whose mismatch is within `tol` of the
 //!    best. More than one only when the facet's edge vectors do not determine
 //!    `R` (zero-length edge in 2D, collapsed or collinear face in 3D).
@@ -20,8 +21,12 @@
 //! **Tolerance** (accepted residual) of a facet:
 //! `opts.tolerance + 64·ulp(max |coordinate| of the facet's corners in both
 //! charts)`, so that a map translated by 2^40 still derives while a residual
-//! of 0.3 fails. A residual above it is an error naming the worst facet,
-//! unless `opts.round`, which snaps `T` and counts the facet in `snapped`.
+//! of 0.3 fails. A residual above it is rounded (`T` snapped, the facet
+//! counted in `snapped`, for the caller to warn) up to `opts.round_limit`
+//! (0.1 by default), or whatever it is with `opts.round`; a larger one is an
+//! error naming the worst facet. The fit of step 1 accepts a mismatch up to
+//! the same limit (1/4 with `round`), so that noise that would be rounded is
+//! not refused as a non-grid rotation.
 
 use crate::holonomy::ridge_rotation;
 use crate::mesh::simplex_word;
@@ -97,7 +102,7 @@ pub(crate) fn derive<const N: usize, const D: usize>(
                 rep.worst_facet = Some((s, f));
             }
             if fit.residual > fit.tol {
-                if opts.round {
+                if opts.rounds(fit.residual) {
                     rep.snapped += 1;
                 } else if failed.is_none_or(|w| fit.residual > w.0) {
                     failed = Some((fit.residual, fit.tol, s, f));
@@ -112,10 +117,11 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     if let Some((res, tol, s, f)) = failed {
         let n = topo.adj[s][f];
         return Err(InputError::new(format!(
-            "{w} {s} {fw} {f}: the transition to {w} {n} is not integral (residual {} > tolerance {}); \
-             rounding it (--round-transitions) would snap it",
+            "{w} {s} {fw} {f}: the transition to {w} {n} is not integral (residual {} > tolerance {}, \
+             and above {}, the largest rounded by default); --round-transitions would round it",
             num(res),
             num(tol),
+            num(opts.round_limit),
             w = simplex_word(N),
             fw = facet_word(N),
         )));
@@ -295,6 +301,36 @@ mod tests {
         let (_, rep) = derive(&m, &topo, &opts).expect("rounded");
         assert_eq!(rep.snapped, 3);
         assert!((rep.max_residual - 0.3).abs() < 1e-12);
+    }
+
+    /// Residuals up to the rounding limit are rounded without `round`; a
+    /// noisy rotation is not refused as a non-grid one, and the message for
+    /// a larger mismatch suggests `--round-transitions` when it would help.
+    #[test]
+    fn small_residuals_round_by_default() {
+        let mut m = grid(4);
+        rechart(&mut m, 2);
+        let s = 2 * (4 + 1);
+        for p in m.coords[s].iter_mut() {
+            p[0] += 0.05;
+        }
+        let topo = Topology::build(&m).expect("topology");
+        let (_, rep) = derive(&m, &topo, &TransitionOptions::default()).expect("rounded");
+        assert_eq!(rep.snapped, 3);
+        assert!((rep.max_residual - 0.05).abs() < 1e-12);
+        // one corner moved by 0.2: a mismatch of 0.2 (above 0.1, below ¼)
+        m.coords[s][0][1] += 0.2;
+        let e = derive(&m, &topo, &TransitionOptions::default()).expect_err("mismatch 0.2");
+        assert!(e.message.contains("non-grid rotation (mismatch 0.2"), "{e}");
+        assert!(
+            e.message.contains("--round-transitions would accept it"),
+            "{e}"
+        );
+        let opts = TransitionOptions {
+            round: true,
+            ..Default::default()
+        };
+        derive(&m, &topo, &opts).expect("rounded with --round-transitions");
     }
 
     #[test]

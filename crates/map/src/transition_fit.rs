@@ -15,6 +15,7 @@
 use crate::grid::round;
 use crate::mesh::simplex_word;
 use crate::topology_build::facet_word;
+use crate::transition::ROUND_FIT_LIMIT;
 use crate::transition_derive::num;
 use crate::{InputError, Rot, SimplexMap, Topology, TransitionOptions};
 
@@ -92,11 +93,17 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
             (best, None)
         }
     };
-    let fit_tol = if opts.round { tol.max(0.25) } else { tol };
-    if best > fit_tol {
+    if best > opts.fit_tolerance(tol) {
+        // rounding accepts a mismatch up to ROUND_FIT_LIMIT: say so when it
+        // would
+        let hint = if !opts.round && best <= opts.fit_tolerance(tol).max(ROUND_FIT_LIMIT) {
+            "; if the charts are only noisy, --round-transitions would accept it"
+        } else {
+            ""
+        };
         return Err(Box::new(InputError::new(format!(
             "{w} {s} {fw} {f}: the charts of {w}s {s} and {n} differ by a reflection or a \
-             non-grid rotation (mismatch {})",
+             non-grid rotation (mismatch {}){hint}",
             num(best),
             w = simplex_word(N),
             fw = facet_word(N),
@@ -356,8 +363,7 @@ mod tests {
         };
         let mis: Vec<f64> = all.iter().map(mismatch).collect();
         let best = mis.iter().copied().fold(f64::INFINITY, f64::min);
-        let fit_tol = if opts.round { tol.max(0.25) } else { tol };
-        if best > fit_tol {
+        if best > opts.fit_tolerance(tol) {
             return Err(format!("mismatch {}", num(best)));
         }
         let cands: Vec<(Rot<D>, [f64; D])> = all
@@ -447,9 +453,11 @@ mod tests {
             };
             let topo = Topology::build(&map).expect("topology");
             assert_eq!(topo.adj[0][0], 1);
-            for round in [false, true] {
+            // strict (no rounding: errors are frequent), default, round
+            for (round, round_limit) in [(false, 0.0), (false, 0.1), (true, 0.1)] {
                 let opts = TransitionOptions {
                     round,
+                    round_limit,
                     ..Default::default()
                 };
                 let got = fit_facet(&map, &topo, 0, 0, &all, &opts);
@@ -468,7 +476,8 @@ mod tests {
                         }
                     }
                     (Err(g), Err(w)) => {
-                        assert!(g.message.ends_with(&format!("({w})")), "{g} vs {w}");
+                        // the message may go on with a hint
+                        assert!(g.message.contains(&format!("({w})")), "{g} vs {w}");
                         errors += 1;
                     }
                     (g, w) => panic!("{:?} vs {w:?} on {map:?}", g.map(|f| f.rot)),

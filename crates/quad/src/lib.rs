@@ -27,6 +27,7 @@ pub mod stats;
 pub mod trace;
 
 use dualex_graph::{Node, NodeGraph, Side};
+pub use dualex_map::grid_offset::GridOffset;
 use dualex_map::timing::Laps;
 use dualex_map::{InputError, QuadMesh, Stars, Topology, TransitionOptions, Transitions, TriMap};
 pub use stats::QuadStats;
@@ -40,6 +41,8 @@ pub struct QuadOptions {
     pub transitions: TransitionOptions,
     /// Seed of the sanitization perturbations.
     pub seed: u64,
+    /// Where the dual grid sits (`--grid-offset`).
+    pub grid_offset: GridOffset,
 }
 
 impl Default for QuadOptions {
@@ -48,6 +51,7 @@ impl Default for QuadOptions {
             fairing: true,
             transitions: TransitionOptions::default(),
             seed: 1,
+            grid_offset: GridOffset::Auto,
         }
     }
 }
@@ -62,6 +66,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     st.reverted_triangles = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
     let mut owned;
     let mut map = map;
+    let mut grid = None;
     let (topo, stars, mut local, singular_snap) = loop {
         let topo = Topology::build(map)?;
         let (trans, trep) = Transitions::derive(map, &topo, &opts.transitions)?;
@@ -69,9 +74,13 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         st.snapped_transitions = trep.snapped;
         let stars = Stars::build(map, &topo, &trans);
         st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
-        // 1
+        // 1: the offset is chosen once (splits add no singular vertex)
+        let choice = *grid.get_or_insert_with(|| {
+            dualex_map::grid_offset::choose(map, &topo, &stars, opts.grid_offset)
+        });
+        st.grid_offset = choice;
         // the local map takes over the transitions (no second copy)
-        let mut local = local::LocalMap::from_transitions(map, &topo, trans);
+        let mut local = local::LocalMap::with_grid(map, &topo, trans, choice.offset);
         // singular vertices exactly on their fixed points before any test
         let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
         let edges = split::edges_to_split(map, &topo, &stars, &local);

@@ -3,7 +3,7 @@
 
 use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
-use dualex_map::sanitize_report::{histogram_json, times_json};
+use dualex_map::sanitize_report::{histogram_json, offset_json, times_json};
 use dualex_map::QuadMesh;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -17,7 +17,9 @@ pub struct QuadStats {
     pub reverted_triangles: usize,
     /// Largest residual of a transition translation.
     pub max_transition_residual: f64,
-    /// Transitions snapped by `--round-transitions`.
+    /// Transitions rounded (residual above the tolerance: up to 0.1 by
+    /// default, any with `--round-transitions`); `transitions_rounded` in
+    /// the JSON.
     pub snapped_transitions: usize,
     /// Vertices whose star rotations are inconsistent.
     pub singular_vertices: usize,
@@ -25,6 +27,9 @@ pub struct QuadStats {
     pub singularities: BTreeMap<String, usize>,
     /// Edges joining two singular vertices through a grid point, split.
     pub split_edges: usize,
+    /// The grid offset used, and the singular vertices on the grid under
+    /// each choice (`Auto`).
+    pub grid_offset: dualex_map::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
     /// Nodes found.
@@ -116,9 +121,12 @@ impl QuadStats {
                 "reverted_triangles": self.reverted_triangles,
                 "max_transition_residual": self.max_transition_residual,
                 "snapped_transitions": self.snapped_transitions,
+                "transitions_rounded": self.snapped_transitions,
                 "singular_vertices": self.singular_vertices,
                 "singularities": self.singularities,
             },
+            "grid_offset": self.grid_offset.offset.name(),
+            "grid_offset_choice": offset_json(&self.grid_offset),
             "sanitize": sanitize,
             "nodes": self.nodes,
             "reverted_nodes": self.reverted_nodes,

@@ -103,36 +103,6 @@ pub fn expected_quad(mesh: &QuadMesh) -> Expected {
     }
 }
 
-/// The counts for a half-shifted map (see the parent module docs): the
-/// dual of `M_k`, split once linearly when some vertex of `M_k` has a
-/// valence other than 4. Unknown with a boundary.
-pub(crate) fn expected_half_shift(mesh: &QuadMesh) -> Expected {
-    let faces: Vec<Vec<u32>> = mesh.cells.iter().map(|c| c.to_vec()).collect();
-    let s = surface(mesh.positions.len(), &faces);
-    if !s.boundary.is_empty() {
-        return Expected::unknown();
-    }
-    let hist = s.interior_valence();
-    let regular = hist.keys().all(|&v| v == 4);
-    let (quads, valence) = if regular {
-        // the dual: a quad per vertex, a valence-4 vertex per quad
-        (s.vertices, BTreeMap::from([(4, s.faces)]))
-    } else {
-        // each n-gon of the dual into n quads: the old dual vertices
-        // (faces of M_k) and edge midpoints have valence 4, the n-gon
-        // centres (vertices of M_k) keep their valence
-        let mut h = hist.clone();
-        *h.entry(4).or_insert(0) += s.faces + s.edges;
-        (2 * s.edges, h)
-    };
-    Expected {
-        quads: Some(quads),
-        interior_valence: Some(valence),
-        euler: Some(s.euler()),
-        boundary_loops: Some(0),
-    }
-}
-
 /// The counts of the hex mesh `M_k`.
 pub fn expected_hex(mesh: &HexMesh) -> ExpectedHex {
     const FACES: [[usize; 4]; 6] = [

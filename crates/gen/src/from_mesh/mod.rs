@@ -28,12 +28,11 @@
 //!
 //! Without `half_shift` the mesh vertices sit on integer grid points and
 //! the expected extraction is `M_k`. With `half_shift` (2D only) every
-//! vertex, singular ones included, sits on a cell centre (a dual node):
-//! the integer-grid preimage is then the *dual* of `M_k` (an `n`-gon per
-//! vertex of valence `n`), and the expected all-quad mesh is that dual,
-//! split once linearly (each `n`-gon into `n` quads) when some face is not
-//! a quad — on a closed surface that is `M_2k`. Half-shifted meshes with a
-//! boundary have no expectation (`Expected::unknown`).
+//! vertex, singular ones included, sits on a cell centre (on a dual node
+//! under the usual ½ shift of the extraction); the map still carries
+//! `M_k`, which an extraction that chooses its grid offset (0 instead of
+//! ½: the singular vertices then sit on grid points again) gives exactly:
+//! the expected mesh is `M_k` too.
 
 mod classify;
 mod count;
@@ -244,11 +243,7 @@ pub fn from_quads(mesh: &QuadMesh, opts: &FromMeshOptions) -> Result<FromQuads, 
     if let Some(j) = &opts.jitter {
         messy::jitter(&mut map, &classes, j, opts.seed);
     }
-    let expected = if opts.half_shift {
-        count::expected_half_shift(&refined)
-    } else {
-        expected_quad(&refined)
-    };
+    let expected = expected_quad(&refined);
     Ok(FromQuads {
         map,
         refined,

@@ -1,0 +1,240 @@
+//! The topology of an output compared with its input's, for the CLI's last
+//! check before writing (an extraction must not silently change it).
+//!
+//! Input: the input simplices (triangles, or tets and their boundary
+//! triangles) and the output's [`crate::QuadReport`] / [`crate::HexReport`].
+//! Output: a [`Shape`] per side and a [`Comparison`] (match flag, JSON).
+//!
+//! The counts use the checker's own definitions on both sides, so that they
+//! compare like with like: components through shared vertices, Euler
+//! characteristic `V_used − E + F` of a surface, boundary components as the
+//! components of the boundary edges. A volume's shape is (cell components,
+//! Euler characteristic and components of its boundary surface).
+
+use crate::union_find::UnionFind;
+use serde_json::{json, Value};
+use std::collections::HashMap;
+
+/// The topology compared between input and output.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Shape {
+    /// Connected components (of the faces, or of the cells of a volume).
+    pub components: usize,
+    /// Euler characteristic of the surface (of a volume: of its boundary).
+    pub euler: i64,
+    /// Boundary loops of a surface; boundary surfaces of a volume.
+    pub boundary_components: usize,
+}
+
+impl Shape {
+    fn to_json(self) -> Value {
+        json!({
+            "components": self.components,
+            "euler": self.euler,
+            "boundary_components": self.boundary_components,
+        })
+    }
+}
+
+/// Components of cells joined through shared vertices (indices
+/// `>= n_vertices` ignored).
+pub fn cell_components<const K: usize>(n_vertices: usize, cells: &[[u32; K]]) -> usize {
+    let mut uf = UnionFind::new(n_vertices);
+    let mut used = vec![false; n_vertices];
+    for c in cells
+        .iter()
+        .filter(|c| c.iter().all(|&v| (v as usize) < n_vertices))
+    {
+        for &v in c {
+            used[v as usize] = true;
+            uf.union(c[0] as usize, v as usize);
+        }
+    }
+    uf.count_sets((0..n_vertices).filter(|&v| used[v]))
+}
+
+/// The shape of a polygon surface (faces of `K` corners, indices
+/// `>= n_vertices` ignored).
+pub fn surface_shape<const K: usize>(n_vertices: usize, faces: &[[u32; K]]) -> Shape {
+    let good: Vec<&[u32; K]> = faces
+        .iter()
+        .filter(|f| f.iter().all(|&v| (v as usize) < n_vertices))
+        .collect();
+    let mut edges: HashMap<(u32, u32), usize> = HashMap::new();
+    let mut used = vec![false; n_vertices];
+    for f in &good {
+        for k in 0..K {
+            let (a, b) = (f[k], f[(k + 1) % K]);
+            used[a as usize] = true;
+            *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+        }
+    }
+    let mut uf = UnionFind::new(n_vertices);
+    let mut on_boundary = vec![false; n_vertices];
+    for (&(a, b), _) in edges.iter().filter(|(_, &n)| n == 1) {
+        uf.union(a as usize, b as usize);
+        on_boundary[a as usize] = true;
+        on_boundary[b as usize] = true;
+    }
+    let v = used.iter().filter(|&&u| u).count() as i64;
+    Shape {
+        components: cell_components(n_vertices, faces),
+        euler: v - edges.len() as i64 + good.len() as i64,
+        boundary_components: uf.count_sets((0..n_vertices).filter(|&v| on_boundary[v])),
+    }
+}
+
+/// The boundary triangles of a tet mesh (faces of exactly one tet).
+pub fn tet_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
+    let mut count: HashMap<[u32; 3], (usize, [u32; 3])> = HashMap::new();
+    for t in tets {
+        for f in 0..4 {
+            let tri = [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]];
+            let mut key = tri;
+            key.sort_unstable();
+            count.entry(key).or_insert((0, tri)).0 += 1;
+        }
+    }
+    let mut out: Vec<[u32; 3]> = count
+        .into_values()
+        .filter(|(n, _)| *n == 1)
+        .map(|(_, t)| t)
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// The shape of a tet mesh: its components, and its boundary surface's
+/// Euler characteristic and components.
+pub fn tet_shape(n_vertices: usize, tets: &[[u32; 4]]) -> Shape {
+    let b = surface_shape(n_vertices, &tet_boundary(tets));
+    Shape {
+        components: cell_components(n_vertices, tets),
+        euler: b.euler,
+        boundary_components: b.components,
+    }
+}
+
+/// The shape of a checked quad mesh.
+pub fn quad_shape(r: &crate::QuadReport) -> Shape {
+    Shape {
+        components: r.components,
+        euler: r.euler,
+        boundary_components: r.boundary_loops,
+    }
+}
+
+/// The shape of a checked hex mesh.
+pub fn hex_shape(r: &crate::HexReport) -> Shape {
+    Shape {
+        components: r.components,
+        euler: r.boundary.euler,
+        boundary_components: r.boundary.components,
+    }
+}
+
+/// Input and output shapes side by side.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Comparison {
+    /// The input's.
+    pub input: Shape,
+    /// The output's.
+    pub output: Shape,
+}
+
+impl Comparison {
+    /// Whether the output has the input's topology.
+    pub fn matches(&self) -> bool {
+        self.input == self.output
+    }
+
+    /// One line naming what differs (`None` when nothing does).
+    pub fn mismatch(&self) -> Option<String> {
+        let (i, o) = (self.input, self.output);
+        let mut diffs = Vec::new();
+        for (name, a, b) in [
+            ("components", i.components as i64, o.components as i64),
+            ("Euler characteristic", i.euler, o.euler),
+            (
+                "boundary components",
+                i.boundary_components as i64,
+                o.boundary_components as i64,
+            ),
+        ] {
+            if a != b {
+                diffs.push(format!("{name} {b} (input {a})"));
+            }
+        }
+        (!diffs.is_empty()).then(|| diffs.join(", "))
+    }
+
+    /// `{"matches_input", "input": {..}, "output": {..}}`.
+    pub fn to_json(&self) -> Value {
+        json!({
+            "matches_input": self.matches(),
+            "input": self.input.to_json(),
+            "output": self.output.to_json(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn square_annulus_and_tet_shapes() {
+        // a 3×3 grid of quads, then without its centre quad (an annulus)
+        let q = |i: u32, j: u32| {
+            let v = |a: u32, b: u32| a + 4 * b;
+            [v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)]
+        };
+        let full: Vec<[u32; 4]> = (0..3).flat_map(|j| (0..3).map(move |i| q(i, j))).collect();
+        let disk = surface_shape(16, &full);
+        assert_eq!(
+            disk,
+            Shape {
+                components: 1,
+                euler: 1,
+                boundary_components: 1
+            }
+        );
+        let ring: Vec<[u32; 4]> = full.iter().copied().filter(|f| *f != q(1, 1)).collect();
+        let annulus = surface_shape(16, &ring);
+        assert_eq!(
+            annulus,
+            Shape {
+                components: 1,
+                euler: 0,
+                boundary_components: 2
+            }
+        );
+        let c = Comparison {
+            input: annulus,
+            output: disk,
+        };
+        assert!(!c.matches());
+        assert_eq!(
+            c.mismatch().as_deref(),
+            Some("Euler characteristic 1 (input 0), boundary components 1 (input 2)")
+        );
+        assert_eq!(c.to_json()["matches_input"], false);
+        // two disjoint tets: 2 components, two spheres
+        let tets = [[0, 1, 2, 3], [4, 5, 6, 7]];
+        assert_eq!(tet_boundary(&tets).len(), 8);
+        let s = tet_shape(8, &tets);
+        assert_eq!(
+            s,
+            Shape {
+                components: 2,
+                euler: 4,
+                boundary_components: 2
+            }
+        );
+        let same = Comparison {
+            input: s,
+            output: s,
+        };
+        assert!(same.matches() && same.mismatch().is_none());
+    }
+}

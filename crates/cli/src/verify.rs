@@ -1,0 +1,149 @@
+//! The last check before writing a quad or hex mesh: never a silent wrong
+//! mesh.
+//!
+//! Input: the map, the extracted mesh's cell count, node count and
+//! topology [`Comparison`] with the input, and `--strict`. Output: `Ok`
+//! with the warnings printed (and the comparison to add to the stats), or
+//! an error line (nothing is written then).
+//!
+//! Rules:
+//! - an empty output is an error when nodes were found (every cell lost:
+//!   all sides unmatched) or when the map covers at least one grid cell's
+//!   worth of map area/volume (`Σ |det| / D!` ≥ 1: on average over grid
+//!   offsets a region holds as many nodes as its measure) and no node was
+//!   found; a map smaller than one cell gives an empty mesh with a warning;
+//! - more components than the input is an error (an extraction can lose a
+//!   component smaller than a cell, never create one);
+//! - any other topology difference (components, Euler characteristic,
+//!   boundary components) is a warning printed even with `-q` (the output
+//!   is suspect, so it is not chatter), and an error with `--strict`.
+
+use dualex_check::topology::Comparison;
+use dualex_map::SimplexMap;
+
+/// Map measure (area in 2D, volume in 3D, unsigned) in grid cells.
+pub fn measure<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> f64 {
+    let fact: f64 = (1..=D).map(|k| k as f64).product();
+    (0..map.len()).map(|s| map.map_det(s).abs()).sum::<f64>() / fact
+}
+
+/// What the extraction gave, for [`last_check`].
+pub struct Output<'a> {
+    /// `"quad"` or `"hex"` (names the cells in messages).
+    pub cell: &'a str,
+    /// Cells written.
+    pub cells: usize,
+    /// Nodes the extraction found.
+    pub nodes: usize,
+    /// The map's measure in cells ([`measure`]).
+    pub measure: f64,
+    /// Input and output topology.
+    pub topology: Comparison,
+}
+
+/// Applies the rules of the module docs; prints the warnings.
+pub fn last_check(name: &str, out: &Output, strict: bool, quiet: bool) -> Result<(), String> {
+    let (i, o) = (out.topology.input, out.topology.output);
+    if out.cells == 0 {
+        if out.nodes > 0 {
+            return Err(format!(
+                "{name}: empty output: {} nodes found but no {} survived (all sides unmatched); nothing written",
+                out.nodes, out.cell
+            ));
+        }
+        if out.measure >= 1.0 {
+            return Err(format!(
+                "{name}: empty output: no node found although the map covers {:.3} grid cells (try --grid-offset); nothing written",
+                out.measure
+            ));
+        }
+        if !quiet {
+            eprintln!(
+                "dualex: warning: {name}: the map covers less than one grid cell ({:.3}): no node, empty mesh",
+                out.measure
+            );
+        }
+        return Ok(());
+    }
+    if o.components > i.components {
+        return Err(format!(
+            "{name}: the output has {} components, the input {}: a wrong mesh; nothing written — please report this input",
+            o.components, i.components
+        ));
+    }
+    if let Some(what) = out.topology.mismatch() {
+        if strict {
+            return Err(format!(
+                "{name}: the output's topology differs from the input's: {what} (--strict); nothing written"
+            ));
+        }
+        // loud: printed even with -q
+        eprintln!(
+            "dualex: WARNING: {name}: the output's topology differs from the input's: {what}; see \"topology\" in the stats (--strict makes this an error)"
+        );
+    }
+    Ok(())
+}
+
+/// Adds the comparison to the stats JSON (`topology_matches_input`,
+/// `topology`).
+pub fn add_to_stats(json: &mut serde_json::Value, c: &Comparison) {
+    if let Some(obj) = json.as_object_mut() {
+        obj.insert("topology_matches_input".into(), c.matches().into());
+        obj.insert("topology".into(), c.to_json());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_check::topology::Shape;
+
+    fn out(
+        cells: usize,
+        nodes: usize,
+        measure: f64,
+        input: Shape,
+        output: Shape,
+    ) -> Output<'static> {
+        Output {
+            cell: "quad",
+            cells,
+            nodes,
+            measure,
+            topology: Comparison { input, output },
+        }
+    }
+
+    #[test]
+    fn the_last_check_refuses_wrong_meshes() {
+        let disk = Shape {
+            components: 1,
+            euler: 1,
+            boundary_components: 1,
+        };
+        let two = Shape {
+            components: 2,
+            euler: 2,
+            boundary_components: 2,
+        };
+        let empty = Shape::default();
+        let e = last_check("m", &out(0, 5, 0.5, disk, empty), false, true).expect_err("lost cells");
+        assert!(e.contains("all sides unmatched"), "{e}");
+        let e = last_check("m", &out(0, 0, 3.0, disk, empty), false, true).expect_err("no node");
+        assert!(e.contains("no node found"), "{e}");
+        last_check("m", &out(0, 0, 0.5, disk, empty), true, true).expect("smaller than a cell");
+        let e = last_check("m", &out(9, 9, 9.0, disk, two), false, true).expect_err("components");
+        assert!(e.contains("2 components, the input 1"), "{e}");
+        last_check("m", &out(9, 9, 9.0, two, disk), false, true).expect("a warning");
+        let e = last_check("m", &out(9, 9, 9.0, two, disk), true, true).expect_err("strict");
+        assert!(e.contains("components 1 (input 2)"), "{e}");
+        last_check("m", &out(9, 9, 9.0, disk, disk), true, true).expect("same topology");
+    }
+
+    #[test]
+    fn measure_counts_cells() {
+        let (map, _) = dualex_gen::by_name("square_identity", 1).expect("generator");
+        assert!((measure(&map) - 49.0).abs() < 1e-9, "{}", measure(&map));
+    }
+}

@@ -1,0 +1,200 @@
+//! The grid offset: where the dual grid sits relative to the map's integer
+//! grid (both dimensions, one piece of code).
+//!
+//! Input: a map and its vertex stars (singular flags). Output: the chosen
+//! [`GridOffset`] (`Half` or `Zero`) and the counts it was chosen on
+//! ([`OffsetChoice`]).
+//!
+//! The local coordinates of [`crate::local::LocalMap`] are the map shifted
+//! by `h` and the dual grid's nodes are their integer points. Both
+//! `h = (½, …, ½)` (`Half`, the default of the literature: nodes at
+//! half-integers of the map, output vertices at its integer points) and
+//! `h = 0` (`Zero`) keep every transition grid-preserving: `h − R·h` is
+//! integral for every grid rotation `R`.
+//!
+//! A singular vertex on a node (a 90° singularity exactly at a cell centre,
+//! e.g. every chart of a valid map offset by ½) makes a 3-sided face, and
+//! one on an iso makes walks through it inconsistent; sanitization cannot
+//! move singular vertices. [`GridOffset::Auto`] therefore counts, for both
+//! offsets, the singular vertices on a node (every coordinate within
+//! [`ON_GRID`] of an integer after the shift) and those on an iso (some
+//! coordinate within [`ON_GRID`] of an integer), and picks the offset with
+//! fewer on nodes, then fewer on isos; then fewer boundary facets lying in
+//! an iso (a mesh's boundary runs along its edges or faces, which the dual
+//! grid's isos must not: a map shifted by ½ has its boundary in isos under
+//! `Half`, a map from a real pipeline has it there under `Zero`). Regular
+//! interior vertices do not count: where they sit says nothing about which
+//! mesh the map carries (MC3D's maps have tet vertices at the hex
+//! centres), and sanitization moves them. A full tie keeps `Half`, so
+//! that maps that do not care extract exactly as before. A vertex is read
+//! at its reference corner (first star entry) in that simplex's chart.
+
+use crate::{SimplexMap, Stars, Topology};
+
+/// Distance to an integer below which a singular vertex's coordinate counts
+/// as on the grid, in map units. Looser than [`crate::grid::EPS`] (which
+/// judges local coordinates after snapping) so that a vertex a float's
+/// jitter away from a node, as written by another tool, still counts.
+pub const ON_GRID: f64 = 1e-6;
+
+/// Where the dual grid's nodes sit (`--grid-offset`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GridOffset {
+    /// Choose `Half` or `Zero` from the singular vertices (module docs).
+    #[default]
+    Auto,
+    /// Map shifted by (½, …, ½): nodes at the map's half-integers.
+    Half,
+    /// No shift: nodes at the map's integer points.
+    Zero,
+}
+
+impl GridOffset {
+    /// The shift added to every coordinate (`Auto` counts as `Half`).
+    pub fn shift(self) -> f64 {
+        match self {
+            GridOffset::Zero => 0.0,
+            GridOffset::Auto | GridOffset::Half => 0.5,
+        }
+    }
+
+    /// The name used by the CLI and the stats (`auto`, `half`, `zero`).
+    pub fn name(self) -> &'static str {
+        match self {
+            GridOffset::Auto => "auto",
+            GridOffset::Half => "half",
+            GridOffset::Zero => "zero",
+        }
+    }
+
+    /// Parses [`Self::name`].
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "auto" => Some(GridOffset::Auto),
+            "half" => Some(GridOffset::Half),
+            "zero" => Some(GridOffset::Zero),
+            _ => None,
+        }
+    }
+}
+
+/// Vertices on the dual grid under one offset.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OnGrid {
+    /// Singular vertices on a node (every coordinate on an iso).
+    pub on_node: usize,
+    /// Singular vertices on an iso (some coordinate integral), nodes
+    /// included.
+    pub on_iso: usize,
+    /// Boundary facets lying in an iso (all their corners share one
+    /// integral coordinate).
+    pub boundary_on_iso: usize,
+}
+
+/// The offset used and what it was chosen on.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OffsetChoice {
+    /// `Half` or `Zero`, never `Auto`.
+    pub offset: GridOffset,
+    /// Counts under `Half` (zero unless `Auto`).
+    pub half: OnGrid,
+    /// Counts under `Zero` (zero unless `Auto`).
+    pub zero: OnGrid,
+}
+
+/// Whether `x + shift` is within [`ON_GRID`] of an integer (`x − floor(x)`
+/// is exact, so large coordinates are judged like small ones).
+fn on_iso(x: f64, shift: f64) -> bool {
+    let f = x - crate::grid::floor(x) + shift;
+    (f - crate::grid::round(f)).abs() < ON_GRID
+}
+
+/// Counts the singular vertices on the grid under both offsets.
+pub fn count_on_grid<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+) -> (OnGrid, OnGrid) {
+    let (mut half, mut zero) = (OnGrid::default(), OnGrid::default());
+    for (s, c) in map.coords.iter().enumerate() {
+        for f in (0..N).filter(|&f| topo.neighbour(s, f).is_none()) {
+            let mut corners = (0..N).filter(|&k| k != f).map(|k| &c[k]);
+            let Some(first) = corners.next() else {
+                continue;
+            };
+            let rest: Vec<&[f64; D]> = corners.collect();
+            for (count, shift) in [(&mut half, 0.5), (&mut zero, 0.0)] {
+                let flat = (0..D).any(|k| {
+                    on_iso(first[k], shift)
+                        && rest.iter().all(|p| (p[k] - first[k]).abs() < ON_GRID)
+                });
+                count.boundary_on_iso += usize::from(flat);
+            }
+        }
+    }
+    for v in (0..stars.singular.len()).filter(|&v| stars.singular[v]) {
+        let Some(e) = stars.of(v).first() else {
+            continue;
+        };
+        let Some(p) = map
+            .coords
+            .get(e.simplex as usize)
+            .and_then(|c| c.get(e.corner as usize))
+        else {
+            continue;
+        };
+        for (count, shift) in [(&mut half, 0.5), (&mut zero, 0.0)] {
+            let on = p.iter().filter(|&&x| on_iso(x, shift)).count();
+            count.on_node += usize::from(on == D);
+            count.on_iso += usize::from(on > 0);
+        }
+    }
+    (half, zero)
+}
+
+/// Resolves `opt`: `Half` and `Zero` as given, `Auto` by the counts.
+pub fn choose<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+    opt: GridOffset,
+) -> OffsetChoice {
+    if opt != GridOffset::Auto {
+        return OffsetChoice {
+            offset: opt,
+            ..Default::default()
+        };
+    }
+    let (half, zero) = count_on_grid(map, topo, stars);
+    let key = |c: OnGrid| (c.on_node, c.on_iso, c.boundary_on_iso);
+    OffsetChoice {
+        offset: if key(zero) < key(half) {
+            GridOffset::Zero
+        } else {
+            GridOffset::Half
+        },
+        half,
+        zero,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for g in [GridOffset::Auto, GridOffset::Half, GridOffset::Zero] {
+            assert_eq!(GridOffset::parse(g.name()), Some(g));
+        }
+        assert_eq!(GridOffset::parse("quarter"), None);
+    }
+
+    #[test]
+    fn on_iso_judges_the_fraction() {
+        assert!(on_iso(3.0, 0.0) && on_iso(-2.5, 0.5) && on_iso(2.5 + 1e-9, 0.5));
+        assert!(!on_iso(3.0, 0.5) && !on_iso(2.5, 0.0) && !on_iso(0.25, 0.5));
+        let big = (1u64 << 40) as f64;
+        assert!(on_iso(big + 0.5, 0.5) && !on_iso(big + 0.5, 0.0));
+    }
+}
