@@ -95,7 +95,8 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
                 .iter()
                 .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
                 .collect();
-            let faces = split::faces_to_split(&map, &stars, &pairs, &local);
+            let free = split::free_axes(&topo, &stars, &local);
+            let faces = split::faces_to_split(&map, &stars, &free, &pairs, &local);
             if faces.is_empty() || st.split_faces >= st.input_tets {
                 owned = map;
                 break (&*owned, topo, stars, local, snap);

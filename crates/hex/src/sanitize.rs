@@ -177,7 +177,7 @@ fn holonomies(
 /// The axis (of `v`'s reference chart) that every holonomy around `v`
 /// fixes with its sign, if exactly one does: moving along it is consistent
 /// in every chart.
-fn singular_free_axis(
+pub(crate) fn singular_free_axis(
     topo: &Topology<4>,
     stars: &Stars<3>,
     trans: &Transitions<4, 3>,

@@ -8,9 +8,12 @@
 //! - every edge whose two ends are singular (they lie on singular edges:
 //!   at most one free axis each) and which passes through an iso-line of
 //!   the dual grid away from its ends, unless the edge is itself a
-//!   singular edge (its midpoint would be as stuck as its ends);
+//!   singular edge (its midpoint would be as stuck as its ends) or one of
+//!   its ends can move across that iso-line (its free axis is one of the
+//!   two axes the iso-line is integral on: sanitization moves it);
 //! - every triangle of three singular vertices that holds a node strictly
-//!   inside.
+//!   inside, unless one of them can move off the triangle's plane (its
+//!   free axis is not parallel to the plane).
 //!
 //! The split itself is the dimension-generic `dualex_map::split`: the new
 //! vertex is inside the edge or face, so it is not singular and
@@ -18,16 +21,54 @@
 //! is left (each pass splits at most one face per tet).
 
 use crate::local::LocalMap;
-use crate::near::{segment_near_iso_line, triangle_near_grid_point, EDGES};
+use crate::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
 use crate::simplex::face_corners;
-use dualex_map::{Stars, TetMap};
+use dualex_map::{Stars, TetMap, Topology};
 use std::collections::HashSet;
 
+/// The free axis of singular vertex `v` in the chart of tet `s` (`None`:
+/// it cannot move, or `s` is not in its star).
+fn free_axis_in(stars: &Stars<3>, free: &[Option<usize>], v: u32, s: usize) -> Option<usize> {
+    let a = free[v as usize]?;
+    let e = stars
+        .of(v as usize)
+        .iter()
+        .find(|e| e.simplex as usize == s)?;
+    Some(e.rot.apply_dir(2 * a) >> 1)
+}
+
+/// Whether segment `a`–`b` passes through an iso-line (integral on the two
+/// axes `pair`) away from its ends, for some pair no end can move across.
+fn crosses_stuck(a: &[f64; 3], b: &[f64; 3], axes: [Option<usize>; 2]) -> bool {
+    [[0, 1], [0, 2], [1, 2]].into_iter().any(|[i, j]| {
+        let (pa, pb) = ([a[i], a[j]], [b[i], b[j]]);
+        let Some(g) = grid_point_near_segment(&pa, &pb) else {
+            return false;
+        };
+        let near = |p: &[f64; 2]| dualex_map::grid::dist2d(&g, p) < dualex_map::grid::EPS;
+        let movable = axes.iter().flatten().any(|&k| k == i || k == j);
+        !near(&pa) && !near(&pb) && !movable
+    })
+}
+
+/// The free axis (reference chart) of every singular vertex that has one.
+pub fn free_axes(topo: &Topology<4>, stars: &Stars<3>, local: &LocalMap) -> Vec<Option<usize>> {
+    (0..stars.singular.len())
+        .map(|v| {
+            stars.singular[v]
+                .then(|| crate::sanitize::singular_free_axis(topo, stars, &local.trans, v))
+                .flatten()
+        })
+        .collect()
+}
+
 /// The edges (2 vertex ids, sorted) and faces (3, sorted) to split, edges
-/// first, each once, in the order of their first tet.
+/// first, each once, in the order of their first tet; `free` as
+/// [`free_axes`].
 pub fn faces_to_split(
     map: &TetMap,
     stars: &Stars<3>,
+    free: &[Option<usize>],
     singular_edges: &HashSet<(u32, u32)>,
     local: &LocalMap,
 ) -> Vec<Vec<u32>> {
@@ -45,12 +86,11 @@ pub fn faces_to_split(
             if !(sing(a) && sing(b)) || singular_edges.contains(&(a.min(b), a.max(b))) {
                 continue;
             }
-            if let Some((at_a, at_b)) = segment_near_iso_line(&c[k], &c[l]) {
-                if !at_a && !at_b {
-                    let key = vec![a.min(b), a.max(b)];
-                    if seen.insert(key.clone()) {
-                        edges.push(key);
-                    }
+            let axes = [a, b].map(|v| free_axis_in(stars, free, v, s));
+            if crosses_stuck(&c[k], &c[l], axes) {
+                let key = vec![a.min(b), a.max(b)];
+                if seen.insert(key.clone()) {
+                    edges.push(key);
                 }
             }
         }
@@ -62,7 +102,12 @@ pub fn faces_to_split(
             if !corners.iter().all(|&k| sing(tet[k])) {
                 continue;
             }
-            if triangle_near_grid_point(&corners.map(|k| c[k])) {
+            let t = corners.map(|k| c[k]);
+            let n = normal(&t);
+            let movable = corners
+                .iter()
+                .any(|&k| free_axis_in(stars, free, tet[k], s).is_some_and(|a| n[a] != 0.0));
+            if !movable && triangle_near_grid_point(&t) {
                 let mut key: Vec<u32> = corners.iter().map(|&k| tet[k]).collect();
                 key.sort_unstable();
                 if seen.insert(key.clone()) {
@@ -73,4 +118,17 @@ pub fn faces_to_split(
     }
     edges.extend(faces);
     edges
+}
+
+/// A normal of triangle `t` (not normalized).
+fn normal(t: &[[f64; 3]; 3]) -> [f64; 3] {
+    let (u, v) = (
+        std::array::from_fn::<f64, 3, _>(|k| t[1][k] - t[0][k]),
+        std::array::from_fn::<f64, 3, _>(|k| t[2][k] - t[0][k]),
+    );
+    [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ]
 }
