@@ -132,3 +132,79 @@ fn normal(t: &[[f64; 3]; 3]) -> [f64; 3] {
         u[0] * v[1] - u[1] * v[0],
     ]
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_gen::from_mesh::{from_hexes, meshes, FromMeshOptions, TetSplit};
+    use dualex_map::Transitions;
+
+    /// What the driver's first pass finds on a map.
+    fn to_split(map: &TetMap) -> Vec<Vec<u32>> {
+        let topo = Topology::build(map).unwrap_or_else(|e| panic!("{e}"));
+        let (trans, _) =
+            Transitions::derive(map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+        let stars = Stars::build(map, &topo, &trans);
+        let singular: HashSet<(u32, u32)> =
+            dualex_map::singularity::edge_singularities_with_stars(map, &topo, &trans, &stars)
+                .iter()
+                .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
+                .collect();
+        let mut local = LocalMap::new(map, &topo, &trans);
+        dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+        let free = free_axes(&topo, &stars, &local);
+        faces_to_split(map, &stars, &free, &singular, &local)
+    }
+
+    /// The cubed ball at k = 1: every hex's main diagonal joins two
+    /// vertices that cannot move across the node at its centre (the inner
+    /// cube's corners are fixed; the outer corners move only along their
+    /// radial singular edge, parallel to the iso-line): 7 diagonals are
+    /// split, and the split map has nothing left to split.
+    #[test]
+    fn cubed_ball_diagonals_through_nodes_are_split() {
+        let o = FromMeshOptions {
+            scale: 1,
+            ..Default::default()
+        };
+        let map = from_hexes(&meshes::cubed_ball(), &o)
+            .unwrap_or_else(|e| panic!("{e:?}"))
+            .map;
+        let first = to_split(&map);
+        assert!(first.iter().all(|f| f.len() == 2), "{first:?}");
+        assert!(first.len() >= 7, "{first:?}");
+        let mut m = map;
+        for _ in 0..8 {
+            let faces = to_split(&m);
+            if faces.is_empty() {
+                break;
+            }
+            let (next, applied) = dualex_map::split::split_faces(&m, &faces);
+            assert!(applied > 0);
+            m = next;
+        }
+        assert!(to_split(&m).is_empty());
+        m.validate().unwrap_or_else(|e| panic!("{e}"));
+    }
+
+    /// A refined block with no singular vertex splits nothing; the cubed
+    /// ball at k = 2 with the centre split (nodes are tet vertices, not on
+    /// edges between fixed vertices) splits nothing either.
+    #[test]
+    fn nothing_to_split_without_stuck_crossings() {
+        for (mesh, split) in [
+            (meshes::polycube_l(), TetSplit::LeastVertex),
+            (meshes::cubed_ball(), TetSplit::Centre),
+        ] {
+            let o = FromMeshOptions {
+                scale: 2,
+                tet_split: split,
+                ..Default::default()
+            };
+            let map = from_hexes(&mesh, &o)
+                .unwrap_or_else(|e| panic!("{e:?}"))
+                .map;
+            assert_eq!(to_split(&map), Vec::<Vec<u32>>::new(), "{split:?}");
+        }
+    }
+}
