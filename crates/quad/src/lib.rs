@@ -9,12 +9,15 @@
 //! 5. untangling (pleat removal, `dualex_graph`);
 //! 6. index fairing (`dualex_graph`, optional);
 //! 7. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
-//!    diagonal tracing.
+//!    diagonal tracing;
+//! 8. [`repair`]: holes closed, faces quads cannot represent subdivided;
+//! 9. [`doublets`]: interior valence-2 vertices left by fairing dissolved.
 //!
 //! Input: a validated [`TriMap`]. Output: a [`QuadMesh`] and [`QuadStats`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod doublets;
 mod fairing;
 pub mod geometry;
 pub mod local;
@@ -146,6 +149,15 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         st.boundary_loops -= (collapsed + fill.len()).min(st.boundary_loops);
         mesh = rep.mesh;
         st.finish_mesh(&mesh);
+    }
+    // 9: doublets that fairing found no partner for
+    if opts.fairing {
+        let (dissolved, rep) = doublets::dissolve(&mesh);
+        st.doublets = rep;
+        if rep.dissolved > 0 {
+            mesh = dissolved;
+            st.finish_mesh(&mesh);
+        }
     }
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();

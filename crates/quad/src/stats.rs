@@ -61,6 +61,9 @@ pub struct QuadStats {
     /// Whether the whole mesh was subdivided once (a triangle, or a hole
     /// that is not a quad, could not be made a quad otherwise).
     pub subdivided: bool,
+    /// Interior valence-2 vertices dissolved after gluing
+    /// ([`crate::doublets`]) and those left (preconditions not met).
+    pub doublets: crate::doublets::Doublets,
     /// Output: quads.
     pub quads: usize,
     /// Output: vertices.
@@ -141,6 +144,8 @@ impl QuadStats {
                 "triangles": self.repair_triangles,
                 "subdivided": self.subdivided,
                 "dropped_cells": self.repair_dropped,
+                "doublets_dissolved": self.doublets.dissolved,
+                "doublets_left": self.doublets.left,
             },
             "output": {
                 "quads": self.quads,

@@ -1,0 +1,233 @@
+//! Step 9: doublet removal — interior vertices of valence 2 that index
+//! fairing found no partner for are dissolved (issue: clean output).
+//!
+//! A valence-2 interior vertex `v` lies in exactly two quads that share
+//! the two edges at `v`:
+//!
+//! ```text
+//!   X = [v, a, x, b]        Y = [v, b, y, a]     →     [a, x, b, y]
+//! ```
+//!
+//! Dissolving `v` replaces `X` and `Y` by the one quad `[a, x, b, y]`: it
+//! uses the four outer edges of the pair, which exist already, so no edge
+//! is created and manifoldness and orientation are kept; `v` and the edges
+//! `v–a`, `v–b` disappear (V − 1, E − 2, F − 1: the Euler characteristic is
+//! unchanged). `a` and `b` lose one edge each and may become doublets
+//! themselves: they are queued.
+//!
+//! Input: a valid all-quad mesh. Output: the same surface without interior
+//! valence-2 vertices, and the number dissolved. Preconditions are checked
+//! per vertex before any write: exactly two quads, each with `v` once,
+//! sharing both edges at `v` in opposite directions, and `x ≠ y` (a pair
+//! sharing three vertices is a closed two-quad pillow, left alone and
+//! counted in [`Doublets::left`]). Unused vertices are removed at the end
+//! and the others renumbered in order.
+
+use dualex_map::QuadMesh;
+use std::collections::VecDeque;
+
+/// What [`dissolve`] did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Doublets {
+    /// Valence-2 interior vertices dissolved.
+    pub dissolved: usize,
+    /// Interior vertices of valence ≤ 2 left (preconditions not met).
+    pub left: usize,
+}
+
+/// The quads around each vertex (alive ones, by index into `cells`).
+fn incidence(nv: usize, cells: &[[u32; 4]], alive: &[bool]) -> Vec<Vec<usize>> {
+    let mut around = vec![Vec::new(); nv];
+    for (c, q) in cells.iter().enumerate().filter(|&(c, _)| alive[c]) {
+        for &v in q {
+            around[v as usize].push(c);
+        }
+    }
+    around
+}
+
+/// Position of `v` in `q`.
+fn at(q: &[u32; 4], v: u32) -> Option<usize> {
+    q.iter().position(|&w| w == v)
+}
+
+/// Whether `v` is an interior vertex: every edge at it is shared by two
+/// alive quads.
+fn is_interior(v: u32, around: &[Vec<usize>], cells: &[[u32; 4]], alive: &[bool]) -> bool {
+    // v is interior when each of its edges is shared by two quads
+    let mut count: std::collections::HashMap<u32, usize> = Default::default();
+    for &c in &around[v as usize] {
+        if !alive[c] {
+            continue;
+        }
+        let q = &cells[c];
+        if let Some(k) = at(q, v) {
+            *count.entry(q[(k + 1) % 4]).or_default() += 1;
+            *count.entry(q[(k + 3) % 4]).or_default() += 1;
+        }
+    }
+    !count.is_empty() && count.values().all(|&n| n == 2)
+}
+
+/// The merged quad of doublet `v`, if its preconditions hold.
+fn merged(v: u32, pair: [usize; 2], cells: &[[u32; 4]]) -> Option<[u32; 4]> {
+    let (qx, qy) = (&cells[pair[0]], &cells[pair[1]]);
+    let (kx, ky) = (at(qx, v)?, at(qy, v)?);
+    let (a, x, b) = (qx[(kx + 1) % 4], qx[(kx + 2) % 4], qx[(kx + 3) % 4]);
+    // Y = [v, b, y, a]: opposite traversal of both shared edges
+    let (b2, y, a2) = (qy[(ky + 1) % 4], qy[(ky + 2) % 4], qy[(ky + 3) % 4]);
+    if (a, b) != (a2, b2) || x == y {
+        return None;
+    }
+    Some([a, x, b, y])
+}
+
+/// Dissolves the interior valence-2 vertices of `mesh` (module docs).
+pub fn dissolve(mesh: &QuadMesh) -> (QuadMesh, Doublets) {
+    let nv = mesh.positions.len();
+    let mut cells = mesh.cells.clone();
+    let mut alive = vec![true; cells.len()];
+    let mut around = incidence(nv, &cells, &alive);
+    let mut rep = Doublets::default();
+    let mut queue: VecDeque<u32> = (0..nv as u32)
+        .filter(|&v| around[v as usize].len() == 2)
+        .collect();
+    let mut removed = vec![false; nv];
+    while let Some(v) = queue.pop_front() {
+        let list: Vec<usize> = around[v as usize]
+            .iter()
+            .copied()
+            .filter(|&c| alive[c])
+            .collect();
+        if removed[v as usize] || list.len() != 2 || !is_interior(v, &around, &cells, &alive) {
+            continue;
+        }
+        let Some(q) = merged(v, [list[0], list[1]], &cells) else {
+            continue;
+        };
+        alive[list[1]] = false;
+        cells[list[0]] = q;
+        removed[v as usize] = true;
+        around[v as usize].clear();
+        // y gains cell list[0]; a and b lose one cell (list[1] dies)
+        around[q[3] as usize].push(list[0]);
+        rep.dissolved += 1;
+        for w in [q[0], q[2]] {
+            let n = around[w as usize].iter().filter(|&&c| alive[c]).count();
+            if n == 2 {
+                queue.push_back(w);
+            }
+        }
+    }
+    // renumber the vertices still used
+    let mut used = vec![false; nv];
+    for (q, _) in cells.iter().zip(&alive).filter(|(_, &a)| a) {
+        for &v in q {
+            used[v as usize] = true;
+        }
+    }
+    let mut new_id = vec![u32::MAX; nv];
+    let mut out = QuadMesh::default();
+    for v in (0..nv).filter(|&v| used[v]) {
+        new_id[v] = out.positions.len() as u32;
+        out.positions.push(mesh.positions[v]);
+    }
+    out.cells = cells
+        .iter()
+        .zip(&alive)
+        .filter(|(_, &a)| a)
+        .map(|(q, _)| q.map(|v| new_id[v as usize]))
+        .collect();
+    let final_around = incidence(
+        out.positions.len(),
+        &out.cells,
+        &vec![true; out.cells.len()],
+    );
+    let all = vec![true; out.cells.len()];
+    rep.left = (0..out.positions.len() as u32)
+        .filter(|&v| {
+            final_around[v as usize].len() <= 2 && is_interior(v, &final_around, &out.cells, &all)
+        })
+        .count();
+    (out, rep)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 3×3 grid whose centre cell is split into two quads by a vertex of
+    /// valence 2: dissolving it gives the 3×3 grid back (9 quads, one
+    /// vertex less), valid.
+    #[test]
+    fn a_doublet_in_a_grid_is_dissolved() {
+        let mut m = QuadMesh::default();
+        for j in 0..4 {
+            for i in 0..4 {
+                m.positions.push([i as f64, j as f64, 0.0]);
+            }
+        }
+        let id = |i: u32, j: u32| j * 4 + i;
+        for j in 0..3 {
+            for i in 0..3 {
+                if (i, j) != (1, 1) {
+                    m.cells
+                        .push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+                }
+            }
+        }
+        // the centre cell [5, 6, 10, 9] as two quads around v = 16 that
+        // share the edges 16–5 and 16–10: X = [16, 5, 6, 10], Y = [16, 10, 9, 5]
+        m.positions.push([1.5, 1.5, 0.0]);
+        m.cells.push([16, 5, 6, 10]);
+        m.cells.push([16, 10, 9, 5]);
+        let before = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
+        assert!(before.is_valid(), "{:?}", before.errors());
+        assert_eq!(before.interior_valence.get(&2), Some(&1));
+        let (out, rep) = dissolve(&m);
+        assert_eq!(
+            rep,
+            Doublets {
+                dissolved: 1,
+                left: 0
+            }
+        );
+        assert_eq!((out.cells.len(), out.positions.len()), (9, 16));
+        let after = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
+        assert!(after.is_valid(), "{:?}", after.errors());
+        assert_eq!(after.euler, before.euler);
+        assert_eq!(after.interior_valence.get(&4), Some(&4));
+    }
+
+    /// A closed pillow of two quads sharing all four vertices: every
+    /// vertex has valence 2 and `x = y`; nothing is dissolved, all 4 are
+    /// reported as left.
+    #[test]
+    fn a_pillow_is_left_alone() {
+        let m = QuadMesh {
+            positions: vec![[0.0; 3]; 4],
+            cells: vec![[0, 1, 2, 3], [0, 3, 2, 1]],
+        };
+        let (out, rep) = dissolve(&m);
+        assert_eq!(
+            rep,
+            Doublets {
+                dissolved: 0,
+                left: 4
+            }
+        );
+        assert_eq!(out.cells, m.cells);
+    }
+
+    /// Boundary corners of valence 2 are not doublets.
+    #[test]
+    fn boundary_corners_stay() {
+        let m = QuadMesh {
+            positions: vec![[0.0; 3]; 6],
+            cells: vec![[0, 1, 4, 3], [1, 2, 5, 4]],
+        };
+        let (out, rep) = dissolve(&m);
+        assert_eq!(rep, Doublets::default());
+        assert_eq!(out.cells, m.cells);
+    }
+}
