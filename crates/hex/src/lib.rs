@@ -13,6 +13,8 @@
 //! 6. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
 //!    diagonal tracing.
 //!
+//! 7. [`doublets`]: chains of valence-2 interior edges dissolved.
+//!
 //! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`].
 //! Walks that leave the mesh leave their side unmatched: free boundaries
 //! become boundary faces of the hex mesh.
@@ -20,6 +22,7 @@
 #![warn(missing_docs)]
 
 pub mod clusters;
+pub mod doublets;
 pub mod geometry;
 pub mod local;
 pub mod near;
@@ -129,10 +132,17 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     laps.lap("untangle");
     // 6
     let glued = graph.glue();
-    let mesh = place_vertices(map, &local, &topo, &nodes, &glued);
+    let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
     st.finish_output(&graph, &glued, &mesh);
     // cracks: unmatched sides that are not on the input's boundary
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
+    // 7: doublet chains (the extrusion of 2D doublet removal)
+    let (dissolved, chains) = doublets::dissolve(&mesh);
+    st.doublets = chains;
+    if chains.dissolved > 0 {
+        mesh = dissolved;
+        st.finish_mesh(&mesh);
+    }
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
     Ok((mesh, st))

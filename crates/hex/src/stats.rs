@@ -35,6 +35,8 @@ pub struct HexStats {
     pub grid_offset: dualex_map::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
+    /// Doublet chains (valence-2 interior edges) dissolved after gluing.
+    pub doublets: crate::doublets::Chains,
     /// Nodes found.
     pub nodes: usize,
     /// Nodes in reverted tets.
@@ -94,6 +96,22 @@ impl HexStats {
             .collect();
     }
 
+    /// Recounts the output after a change of the mesh alone (doublet
+    /// chains dissolved): cells, vertices, Euler characteristic, edge
+    /// valences and boundary faces from the validity checker.
+    pub fn finish_mesh(&mut self, mesh: &HexMesh) {
+        self.hexes = mesh.cells.len();
+        self.vertices = mesh.positions.len();
+        let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+        self.euler = c.euler;
+        self.unmatched_sides = c.boundary_faces;
+        self.edge_valence_interior = c
+            .interior_edge_valence
+            .iter()
+            .map(|(&k, &v)| (k as usize, v))
+            .collect();
+    }
+
     /// The stats as one JSON object.
     pub fn to_json(&self) -> Value {
         let mut sanitize = self.sanitize.to_json();
@@ -129,6 +147,9 @@ impl HexStats {
                 "edge_valence_interior": histogram_json(&self.edge_valence_interior),
                 "open_interior_faces": self.open_interior_faces,
                 "holes": self.open_interior_faces,
+                "doublet_chains_dissolved": self.doublets.dissolved,
+                "doublet_edges_dissolved": self.doublets.edges,
+                "doublet_edges_left": self.doublets.left,
             },
             "time_ms": times_json(&self.time_ms),
         })

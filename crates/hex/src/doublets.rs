@@ -1,0 +1,227 @@
+//! Step 7: doublet chains — the 3D analogue of the 2D doublet removal
+//! (`dualex_quad::doublets`), and its extrusion.
+//!
+//! An interior edge `e = p–q` in exactly two hexes `H1`, `H2` (valence 2)
+//! means the two hexes share both faces that contain `e`. Dissolving `e`
+//! keeps `H1`, replaces in it `p` and `q` by the corners `y_p`, `y_q` of
+//! `H2` diagonally opposite them in `H2`'s faces across `e`, and deletes
+//! `H2`: in every layer across `e` it is the 2D merge
+//! `[p, a, x, b] + [p, b, y, a] → [y, a, x, b]`. No face is created.
+//!
+//! One edge alone would leave `p` and `q` in the hexes of the next layer,
+//! so edges are dissolved by **chains**: connected sets of valence-2
+//! interior edges whose every vertex lies only in the hexes of the chain's
+//! pairs (an inner vertex of a chain in 4 hexes, an end on the boundary in
+//! 2), each hex in at most one pair. A chain runs between boundary faces
+//! or closes on itself; then every vertex of the chain disappears and the
+//! replacements agree across layers (two kept hexes meeting at `p` share
+//! the face at `p`'s level, whose diagonal corner is the same vertex).
+//! A chain that breaks a precondition, or where `y_p` would be a corner of
+//! `H1` already (a pillow), is left whole and counted.
+//!
+//! Input: a valid hex mesh (VTK corner order). Output: the mesh without
+//! the dissolved chains' vertices and hexes, vertices renumbered in order.
+
+use dualex_map::HexMesh;
+use std::collections::{HashMap, HashSet};
+
+/// What [`dissolve`] did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Chains {
+    /// Chains dissolved.
+    pub dissolved: usize,
+    /// Hex pairs merged (valence-2 edges dissolved).
+    pub edges: usize,
+    /// Valence-2 interior edges left (their chain broke a precondition).
+    pub left: usize,
+}
+
+/// Cube corner code (bit 0: u, bit 1: v, bit 2: w) of each VTK corner.
+const CODE: [usize; 8] = [0, 1, 3, 2, 4, 5, 7, 6];
+/// VTK corner of each cube corner code.
+const VTK: [usize; 8] = [0, 1, 3, 2, 4, 5, 7, 6];
+/// The 6 faces of a hex, as VTK corners.
+const FACES: [[usize; 4]; 6] = [
+    [0, 3, 2, 1],
+    [4, 5, 6, 7],
+    [0, 1, 5, 4],
+    [1, 2, 6, 5],
+    [2, 3, 7, 6],
+    [3, 0, 4, 7],
+];
+
+fn key2(a: u32, b: u32) -> (u32, u32) {
+    (a.min(b), a.max(b))
+}
+
+/// The 12 edges of hex `h`.
+fn edges(h: &[u32; 8]) -> impl Iterator<Item = (u32, u32)> + '_ {
+    (0..8).flat_map(move |c| {
+        (0..3)
+            .map(move |k| CODE[c] ^ (1 << k))
+            .filter(move |&d| d > CODE[c])
+            .map(move |d| key2(h[c], h[VTK[d]]))
+    })
+}
+
+/// `y_p`: the corner of `h` diagonally opposite `p` in `h`'s face through
+/// `p` perpendicular to edge `p–q`.
+fn across(h: &[u32; 8], p: u32, q: u32) -> Option<u32> {
+    let cp = CODE[h.iter().position(|&v| v == p)?];
+    let cq = CODE[h.iter().position(|&v| v == q)?];
+    let axis = cp ^ cq;
+    (axis.count_ones() == 1).then(|| h[VTK[cp ^ (7 ^ axis)]])
+}
+
+/// Dissolves the doublet chains of `mesh` (module docs).
+pub fn dissolve(mesh: &HexMesh) -> (HexMesh, Chains) {
+    let cells = &mesh.cells;
+    let mut rep = Chains::default();
+    // edges → hexes, faces → count (boundary faces have one hex)
+    let mut by_edge: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+    let mut by_face: HashMap<[u32; 4], usize> = HashMap::new();
+    let mut by_vertex: HashMap<u32, Vec<usize>> = HashMap::new();
+    for (i, h) in cells.iter().enumerate() {
+        for e in edges(h) {
+            by_edge.entry(e).or_default().push(i);
+        }
+        for f in FACES {
+            let mut k = f.map(|c| h[c]);
+            k.sort_unstable();
+            *by_face.entry(k).or_default() += 1;
+        }
+        for &v in h {
+            by_vertex.entry(v).or_default().push(i);
+        }
+    }
+    let mut boundary_edges: HashSet<(u32, u32)> = HashSet::new();
+    for h in cells {
+        for f in FACES {
+            let mut k = f.map(|c| h[c]);
+            k.sort_unstable();
+            if by_face.get(&k) == Some(&1) {
+                for j in 0..4 {
+                    boundary_edges.insert(key2(h[f[j]], h[f[(j + 1) % 4]]));
+                }
+            }
+        }
+    }
+    let mut doublets: Vec<(u32, u32)> = by_edge
+        .iter()
+        .filter(|(e, hs)| hs.len() == 2 && !boundary_edges.contains(e))
+        .map(|(&e, _)| e)
+        .collect();
+    doublets.sort_unstable();
+    if doublets.is_empty() {
+        return (mesh.clone(), rep);
+    }
+    // chains: connected components of doublet edges through shared vertices
+    let mut at_vertex: HashMap<u32, Vec<usize>> = HashMap::new();
+    for (i, &(a, b)) in doublets.iter().enumerate() {
+        at_vertex.entry(a).or_default().push(i);
+        at_vertex.entry(b).or_default().push(i);
+    }
+    let mut seen = vec![false; doublets.len()];
+    let mut new_cells: Vec<Option<[u32; 8]>> = cells.iter().map(|&h| Some(h)).collect();
+    for start in 0..doublets.len() {
+        if seen[start] {
+            continue;
+        }
+        let mut chain = vec![start];
+        seen[start] = true;
+        let mut k = 0;
+        while k < chain.len() {
+            let (a, b) = doublets[chain[k]];
+            for v in [a, b] {
+                for &j in &at_vertex[&v] {
+                    if !seen[j] {
+                        seen[j] = true;
+                        chain.push(j);
+                    }
+                }
+            }
+            k += 1;
+        }
+        match plan(&chain, &doublets, &by_edge, &by_vertex, cells) {
+            Some(changes) => {
+                for (keep, h, dead) in changes {
+                    new_cells[keep] = Some(h);
+                    new_cells[dead] = None;
+                }
+                rep.dissolved += 1;
+                rep.edges += chain.len();
+            }
+            None => rep.left += chain.len(),
+        }
+    }
+    (compact(mesh, &new_cells), rep)
+}
+
+/// The merges of one chain (kept hex, its new corners, deleted hex), or
+/// `None` when a precondition fails (module docs).
+fn plan(
+    chain: &[usize],
+    doublets: &[(u32, u32)],
+    by_edge: &HashMap<(u32, u32), Vec<usize>>,
+    by_vertex: &HashMap<u32, Vec<usize>>,
+    cells: &[[u32; 8]],
+) -> Option<Vec<(usize, [u32; 8], usize)>> {
+    let mut in_pairs: HashSet<usize> = HashSet::new();
+    let mut verts: HashSet<u32> = HashSet::new();
+    let mut out = Vec::with_capacity(chain.len());
+    for &i in chain {
+        let (p, q) = doublets[i];
+        let pair = by_edge.get(&(p, q))?;
+        let (keep, dead) = (pair[0].min(pair[1]), pair[0].max(pair[1]));
+        if !in_pairs.insert(keep) || !in_pairs.insert(dead) {
+            return None; // a hex in two pairs
+        }
+        verts.extend([p, q]);
+        let (yp, yq) = (across(&cells[dead], p, q)?, across(&cells[dead], q, p)?);
+        let mut h = cells[keep];
+        if h.contains(&yp) || h.contains(&yq) {
+            return None; // a pillow: the merged hex would repeat a corner
+        }
+        for v in h.iter_mut() {
+            if *v == p {
+                *v = yp;
+            } else if *v == q {
+                *v = yq;
+            }
+        }
+        out.push((keep, h, dead));
+    }
+    // every hex at a chain vertex is in one of the chain's pairs
+    let closed = verts.iter().all(|v| {
+        by_vertex
+            .get(v)
+            .is_some_and(|hs| hs.iter().all(|h| in_pairs.contains(h)))
+    });
+    closed.then_some(out)
+}
+
+/// The live cells, with the vertices they use renumbered in order.
+fn compact(mesh: &HexMesh, cells: &[Option<[u32; 8]>]) -> HexMesh {
+    let mut new_id = vec![u32::MAX; mesh.positions.len()];
+    for h in cells.iter().flatten() {
+        for &v in h {
+            new_id[v as usize] = 0;
+        }
+    }
+    let mut out = HexMesh::default();
+    for (v, id) in new_id.iter_mut().enumerate() {
+        if *id == 0 {
+            *id = out.positions.len() as u32;
+            out.positions.push(mesh.positions[v]);
+        }
+    }
+    out.cells = cells
+        .iter()
+        .flatten()
+        .map(|h| h.map(|v| new_id[v as usize]))
+        .collect();
+    out
+}
+
+#[cfg(test)]
+mod tests;

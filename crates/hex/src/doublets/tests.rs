@@ -1,0 +1,72 @@
+use super::*;
+use dualex_gen::from_mesh::meshes::extrude;
+use dualex_map::QuadMesh;
+
+/// The 3×3 grid with its centre cell as two quads around a valence-2
+/// vertex (16), as in `dualex_quad::doublets`.
+fn grid_with_doublet() -> QuadMesh {
+    let mut m = QuadMesh::default();
+    for j in 0..4 {
+        for i in 0..4 {
+            m.positions.push([i as f64, j as f64, 0.0]);
+        }
+    }
+    let id = |i: u32, j: u32| j * 4 + i;
+    for j in 0..3 {
+        for i in 0..3 {
+            if (i, j) != (1, 1) {
+                m.cells
+                    .push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+            }
+        }
+    }
+    m.positions.push([1.5, 1.5, 0.0]);
+    m.cells.push([16, 5, 6, 10]);
+    m.cells.push([16, 10, 9, 5]);
+    m
+}
+
+fn check(m: &HexMesh) -> dualex_check::HexReport {
+    let r = dualex_check::check_hex_mesh(m.positions.len(), &m.cells, None);
+    assert!(r.is_valid(), "{:?}", r.errors());
+    r
+}
+
+/// The extruded doublet is a chain of valence-2 edges from the bottom to
+/// the top boundary: dissolving it gives the extruded 3×3 grid, layer by
+/// layer (9·L hexes, 16·(L+1) vertices), valid, Euler kept.
+#[test]
+fn an_extruded_doublet_column_is_dissolved() {
+    for layers in [1, 3] {
+        let m = extrude(&grid_with_doublet(), layers);
+        let before = check(&m);
+        let (out, rep) = dissolve(&m);
+        assert_eq!(
+            rep,
+            Chains {
+                dissolved: 1,
+                edges: layers,
+                left: 0
+            },
+            "L = {layers}"
+        );
+        assert_eq!(out.cells.len(), 9 * layers);
+        assert_eq!(out.positions.len(), 16 * (layers + 1));
+        let after = check(&out);
+        assert_eq!(after.euler, before.euler);
+        assert_eq!(after.boundary_faces, 2 * 9 + 4 * 3 * layers);
+    }
+}
+
+/// A mesh without valence-2 edges is returned as it is.
+#[test]
+fn nothing_to_do_on_a_block() {
+    let mut g = grid_with_doublet();
+    g.cells.truncate(8);
+    g.positions.truncate(16);
+    g.cells.push([5, 6, 10, 9]);
+    let m = extrude(&g, 2);
+    let (out, rep) = dissolve(&m);
+    assert_eq!(rep, Chains::default());
+    assert_eq!(out.cells, m.cells);
+}
