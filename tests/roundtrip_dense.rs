@@ -36,36 +36,59 @@ fn dense_cases() -> Vec<(String, String, FromMeshOptions)> {
     if std::env::var("DUALEX_DENSE_FULL").is_ok_and(|v| v == "1") {
         names.extend(["ball_cutout_full", "ball_centre_full"].map(String::from));
     }
+    // by hand: more seeds (`DUALEX_DENSE_SEEDS=N`), a subset of the cases
+    // (`DUALEX_DENSE_ONLY=substring`)
+    let seeds: u64 = std::env::var("DUALEX_DENSE_SEEDS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    let only = std::env::var("DUALEX_DENSE_ONLY").unwrap_or_default();
     let mut out = Vec::new();
     for m in names {
         for k in 1..=2 {
             for noise in [0.0, 0.3, 0.6] {
                 for folds in [false, true] {
                     for tet_split in [TetSplit::LeastVertex, TetSplit::Centre] {
-                        let o = FromMeshOptions {
-                            scale: k,
-                            noise,
-                            folds,
-                            seed: 7,
-                            tet_split,
-                            ..Default::default()
-                        };
-                        let name = format!(
-                            "{m}/k{k}/n{noise}{}{}",
-                            if folds { "/folds" } else { "" },
-                            if tet_split == TetSplit::Centre {
-                                "/centre"
-                            } else {
-                                ""
+                        for seed in 7..7 + seeds {
+                            let o = FromMeshOptions {
+                                scale: k,
+                                noise,
+                                folds,
+                                seed,
+                                tet_split,
+                                ..Default::default()
+                            };
+                            let name = case_name(&m, &o);
+                            if name.contains(&only) {
+                                out.push((name, m.clone(), o));
                             }
-                        );
-                        out.push((name, m.clone(), o));
+                        }
                     }
                 }
             }
         }
     }
     out
+}
+
+/// `mesh/kK/nNOISE[/folds][/centre][/sSEED]` (the seed only when not 7).
+fn case_name(m: &str, o: &FromMeshOptions) -> String {
+    format!(
+        "{m}/k{}/n{}{}{}{}",
+        o.scale,
+        o.noise,
+        if o.folds { "/folds" } else { "" },
+        if o.tet_split == TetSplit::Centre {
+            "/centre"
+        } else {
+            ""
+        },
+        if o.seed == 7 {
+            String::new()
+        } else {
+            format!("/s{}", o.seed)
+        }
+    )
 }
 
 /// The stats that name the failing stage, in one line.

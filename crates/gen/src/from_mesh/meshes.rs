@@ -43,9 +43,15 @@ pub fn quad_mesh_by_name(name: &str) -> Option<QuadMesh> {
 
 /// Names of the hex meshes of [`hex_mesh_by_name`], in a stable order.
 pub fn hex_mesh_names() -> Vec<String> {
-    ["cubed_ball", "cylinder3", "cylinder5", "cylinder6", "polycube_l"]
-        .map(String::from)
-        .to_vec()
+    [
+        "cubed_ball",
+        "cylinder3",
+        "cylinder5",
+        "cylinder6",
+        "polycube_l",
+    ]
+    .map(String::from)
+    .to_vec()
 }
 
 /// The hex mesh called `name` (see [`hex_mesh_names`]; also the dense
