@@ -36,6 +36,15 @@ pub fn quad_case(name: &str, o: &FromMeshOptions) -> Outcome {
 pub fn check_quads(g: &from_mesh::FromQuads, o: &FromMeshOptions) -> Outcome {
     let (out, _) =
         dualex_quad::extract(&g.map, &Default::default()).map_err(|e| format!("refused: {e}"))?;
+    compare_quads(g, o, &out)
+}
+
+/// Compares an extracted quad mesh with `g`'s expectation.
+pub fn compare_quads(
+    g: &from_mesh::FromQuads,
+    o: &FromMeshOptions,
+    out: &dualex_map::QuadMesh,
+) -> Outcome {
     let got = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
     let mut bad = Vec::new();
     if !got.is_valid() {
@@ -97,8 +106,20 @@ pub fn hex_case(name: &str, o: &FromMeshOptions) -> Outcome {
 
 /// Extracts `g.map` and compares with the refined mesh's counts.
 pub fn check_hexes(g: &from_mesh::FromHexes) -> Outcome {
-    let (out, _) =
-        dualex_hex::extract(&g.map, &Default::default()).map_err(|e| format!("refused: {e}"))?;
+    check_hexes_stats(g).0
+}
+
+/// [`check_hexes`], with the extraction's stats (`HexStats::to_json`) when
+/// it ran.
+pub fn check_hexes_stats(g: &from_mesh::FromHexes) -> (Outcome, Option<serde_json::Value>) {
+    match dualex_hex::extract(&g.map, &Default::default()) {
+        Err(e) => (Err(format!("refused: {e}")), None),
+        Ok((out, st)) => (compare_hexes(g, &out), Some(st.to_json())),
+    }
+}
+
+/// Compares an extracted hex mesh with the refined mesh's counts.
+pub fn compare_hexes(g: &from_mesh::FromHexes, out: &dualex_map::HexMesh) -> Outcome {
     let got = dualex_check::check_hex_mesh(out.positions.len(), &out.cells, None);
     let want = dualex_check::check_hex_mesh(g.refined.positions.len(), &g.refined.cells, None);
     let mut bad = Vec::new();

@@ -11,7 +11,8 @@
 //! Hexes (VTK order, positive Jacobian at corner 0):
 //! - [`cubed_ball`]: an inner cube and 6 frustums: 12 interior edges of
 //!   valence 3 meeting 3 by 3 at the 8 inner corners;
-//! - [`cylinder`]: [`ngon_disk`] extruded: an interior axis of valence `n`;
+//! - [`cylinder`]: [`ngon_disk`] extruded: an interior axis of valence `n`
+//!   (`cylinder6`: 6 hexes around the axis);
 //! - [`polycube_l`]: 3 cubes in an L: a concave boundary edge of valence 3.
 
 use dualex_map::{HexMesh, QuadMesh};
@@ -42,19 +43,27 @@ pub fn quad_mesh_by_name(name: &str) -> Option<QuadMesh> {
 
 /// Names of the hex meshes of [`hex_mesh_by_name`], in a stable order.
 pub fn hex_mesh_names() -> Vec<String> {
-    ["cubed_ball", "cylinder3", "cylinder5", "polycube_l"]
-        .map(String::from)
-        .to_vec()
+    [
+        "cubed_ball",
+        "cylinder3",
+        "cylinder5",
+        "cylinder6",
+        "polycube_l",
+    ]
+    .map(String::from)
+    .to_vec()
 }
 
-/// The hex mesh called `name` (see [`hex_mesh_names`]).
+/// The hex mesh called `name` (see [`hex_mesh_names`]; also the dense
+/// meshes of [`super::dense::dense_mesh_names`]).
 pub fn hex_mesh_by_name(name: &str) -> Option<HexMesh> {
     match name {
         "cubed_ball" => Some(cubed_ball()),
         "cylinder3" => Some(cylinder(3, 2)),
         "cylinder5" => Some(cylinder(5, 2)),
+        "cylinder6" => Some(cylinder(6, 2)),
         "polycube_l" => Some(polycube_l()),
-        _ => None,
+        _ => super::dense::dense_mesh_by_name(name),
     }
 }
 

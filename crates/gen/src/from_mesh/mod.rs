@@ -36,6 +36,7 @@
 
 mod classify;
 mod count;
+pub mod dense;
 pub mod meshes;
 mod messy;
 mod perturb;
