@@ -200,6 +200,91 @@ fn plan(
     closed.then_some(out)
 }
 
+/// Whether hex `h` is folded along one axis: in each of its two faces
+/// across that axis (one per layer) a pair of diagonal corners is one
+/// vertex (`[v, a, x, a]`), and its other corners are distinct. Returns,
+/// per layer, the two corners `v`, `x` next to the pair: one of them is
+/// the apex of the fold, which no unfolded hex holds.
+pub fn folded(h: &[u32; 8]) -> Option<[[u32; 2]; 2]> {
+    let mut distinct = h.to_vec();
+    distinct.sort_unstable();
+    distinct.dedup();
+    if distinct.len() != 6 {
+        return None;
+    }
+    // the two pairs of equal corners, by cube code
+    let mut pairs = Vec::new();
+    for c in 0..8 {
+        for d in c + 1..8 {
+            if h[VTK[c]] == h[VTK[d]] {
+                pairs.push((c, d));
+            }
+        }
+    }
+    let [(c1, d1), (c2, d2)] = pairs[..] else {
+        return None;
+    };
+    let (m1, m2) = (c1 ^ d1, c2 ^ d2);
+    let across = 7 ^ m1;
+    if m1 != m2 || m1.count_ones() != 2 || c1 ^ c2 != across {
+        return None;
+    }
+    // the other two corners of each pair's face: c with one bit of the
+    // pair's mask flipped
+    let bits: Vec<usize> = (0..3).map(|k| 1 << k).filter(|b| m1 & b != 0).collect();
+    let others = |c: usize| [h[VTK[c ^ bits[0]]], h[VTK[c ^ bits[1]]]];
+    Some([others(c1), others(c2)])
+}
+
+/// Collapses the folded hexes of `mesh` (see [`folded`]) whose apex
+/// vertices are held by folded hexes only — the 3D analogue of the 2D
+/// collapse of folded quads (a valence-1 vertex): the hex and its apexes
+/// disappear, the two cells glued to its two far faces (which are one face
+/// of the folded hex) become neighbours. Returns the new mesh and the
+/// number of hexes collapsed; the mesh is returned unchanged when the
+/// result would not be a valid hex mesh.
+pub fn collapse_folded(mesh: &HexMesh) -> (HexMesh, usize) {
+    let apexes: Vec<Option<[[u32; 2]; 2]>> = mesh.cells.iter().map(folded).collect();
+    if apexes.iter().all(Option::is_none) {
+        return (mesh.clone(), 0);
+    }
+    let mut holders = vec![0u32; mesh.positions.len()];
+    for (h, a) in mesh.cells.iter().zip(&apexes) {
+        if a.is_none() {
+            let mut seen = h.to_vec();
+            seen.sort_unstable();
+            seen.dedup();
+            for v in seen {
+                holders[v as usize] += 1;
+            }
+        }
+    }
+    let cells: Vec<Option<[u32; 8]>> = mesh
+        .cells
+        .iter()
+        .zip(&apexes)
+        .map(|(&h, a)| match a {
+            // one corner per layer held by no unfolded hex: the apex
+            Some(ap)
+                if ap
+                    .iter()
+                    .all(|l| l.iter().filter(|&&v| holders[v as usize] == 0).count() == 1) =>
+            {
+                None
+            }
+            _ => Some(h),
+        })
+        .collect();
+    let n = cells.iter().filter(|c| c.is_none()).count();
+    let out = compact(mesh, &cells);
+    let r = dualex_check::check_hex_mesh(out.positions.len(), &out.cells, None);
+    if r.is_valid() {
+        (out, n)
+    } else {
+        (mesh.clone(), 0)
+    }
+}
+
 /// The live cells, with the vertices they use renumbered in order.
 fn compact(mesh: &HexMesh, cells: &[Option<[u32; 8]>]) -> HexMesh {
     let mut new_id = vec![u32::MAX; mesh.positions.len()];

@@ -13,7 +13,8 @@
 //! 6. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
 //!    diagonal tracing.
 //!
-//! 7. [`doublets`]: chains of valence-2 interior edges dissolved.
+//! 7. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
+//!    edges dissolved.
 //!
 //! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`].
 //! Walks that leave the mesh leave their side unmatched: free boundaries
@@ -136,10 +137,13 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     st.finish_output(&graph, &glued, &mesh);
     // cracks: unmatched sides that are not on the input's boundary
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
-    // 7: doublet chains (the extrusion of 2D doublet removal)
-    let (dissolved, chains) = doublets::dissolve(&mesh);
+    // 7: folded hexes collapsed, doublet chains dissolved (the extrusions
+    // of the 2D collapse of folded quads and of doublet removal)
+    let (collapsed, folded) = doublets::collapse_folded(&mesh);
+    let (dissolved, chains) = doublets::dissolve(&collapsed);
+    st.folded_collapsed = folded;
     st.doublets = chains;
-    if chains.dissolved > 0 {
+    if folded + chains.edges > 0 {
         mesh = dissolved;
         st.finish_mesh(&mesh);
     }

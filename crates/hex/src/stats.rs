@@ -37,6 +37,8 @@ pub struct HexStats {
     pub sanitize: SanitizeReport,
     /// Doublet chains (valence-2 interior edges) dissolved after gluing.
     pub doublets: crate::doublets::Chains,
+    /// Folded hexes collapsed after gluing.
+    pub folded_collapsed: usize,
     /// Nodes found.
     pub nodes: usize,
     /// Nodes in reverted tets.
@@ -147,6 +149,7 @@ impl HexStats {
                 "edge_valence_interior": histogram_json(&self.edge_valence_interior),
                 "open_interior_faces": self.open_interior_faces,
                 "holes": self.open_interior_faces,
+                "folded_collapsed": self.folded_collapsed,
                 "doublet_chains_dissolved": self.doublets.dissolved,
                 "doublet_edges_dissolved": self.doublets.edges,
                 "doublet_edges_left": self.doublets.left,

@@ -70,3 +70,33 @@ fn nothing_to_do_on_a_block() {
     assert_eq!(rep, Chains::default());
     assert_eq!(out.cells, m.cells);
 }
+
+/// A strip of two quads with a folded quad glued between them along the
+/// edge 1–4 (`[v, 1, 4, 1]`, `v` held by it alone), extruded: the folded
+/// hexes of every layer are collapsed and the strip's extrusion is left,
+/// valid.
+#[test]
+fn an_extruded_folded_quad_is_collapsed() {
+    let mut m = QuadMesh::default();
+    for j in 0..2 {
+        for i in 0..3 {
+            m.positions.push([i as f64, j as f64, 0.0]);
+        }
+    }
+    m.positions.push([1.2, 0.5, 0.0]); // v = 6
+    m.cells = vec![[0, 1, 4, 3], [1, 2, 5, 4], [6, 1, 4, 1]];
+    for layers in [1, 3] {
+        let h = extrude(&m, layers);
+        assert!(h.cells.iter().all(|c| {
+            let mut s = c.to_vec();
+            s.sort_unstable();
+            s.dedup();
+            s.len() == 8 || folded(c).is_some()
+        }));
+        let (out, n) = collapse_folded(&h);
+        assert_eq!(n, layers, "L = {layers}");
+        assert_eq!(out.cells.len(), 2 * layers);
+        assert_eq!(out.positions.len(), 6 * (layers + 1));
+        check(&out);
+    }
+}
