@@ -27,9 +27,9 @@ use crate::near::{
 use crate::rng::SplitMix;
 use crate::simplex::face_corners;
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
-use std::collections::HashSet;
+use std::collections::{BTreeSet, HashSet};
 
-use dualex_map::sanitize_report::ROUNDS;
+use dualex_map::sanitize_report::{amplitude, ROUNDS};
 pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
 
 /// Sanitizes `local` in place.
@@ -61,22 +61,28 @@ pub fn sanitize(
         touched: Vec::new(),
         done_epoch: vec![0; map.positions.len()],
         epoch: 0,
+        stuck: BTreeSet::new(),
+        apart: BTreeSet::new(),
     };
-    let mut amp = AMPLITUDE;
     let mut scan = BadScan::new(map, stars, &local.coords);
     let mut bad = scan.list();
-    for round in 0..ROUNDS {
+    let mut executed: usize = 0;
+    for round in 0.. {
+        let Some(amp) = amplitude(round) else {
+            break;
+        };
         rep.rounds = round;
         mv.touched.clear();
-        if !mv.round(local, &bad, amp, &mut rep) {
+        if !mv.round(local, &bad, amp, round >= ROUNDS) {
             break;
         }
-        if round % 8 == 7 {
-            amp *= 2.0;
-        }
+        executed += 1;
         scan.update(map, stars, &local.coords, &mv.touched);
         bad = scan.list();
     }
+    rep.extra_rounds = executed.saturating_sub(ROUNDS);
+    rep.stuck_clusters = mv.stuck.len();
+    rep.clusters_moved_apart = mv.apart.len();
     rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
     rep.singular_on_iso = bad
         .into_iter()
@@ -101,20 +107,26 @@ struct Mover<'a> {
     /// Per cluster root: the last round (epoch) in which it moved.
     done_epoch: Vec<u32>,
     epoch: u32,
+    /// Roots of the clusters that could not move as one.
+    stuck: BTreeSet<u32>,
+    /// Roots of the stuck clusters whose members moved one by one.
+    apart: BTreeSet<u32>,
 }
 
 impl Mover<'_> {
     /// Moves every movable vertex of `bad` (its whole cluster, once) by a
-    /// random vector of length `amp`; `false` when none is movable.
-    fn round(
-        &mut self,
-        local: &mut LocalMap,
-        bad: &[u32],
-        amp: f64,
-        rep: &mut SanitizeReport,
-    ) -> bool {
-        let movable =
-            |v: &&u32| !self.stars.singular[**v as usize] || self.free_axis[**v as usize].is_some();
+    /// random vector of length `amp`; `false` when none is movable. With
+    /// `last_resort` (the extra rounds), the members of a stuck cluster
+    /// move one by one (each is non-singular: consistent in its own
+    /// charts).
+    fn round(&mut self, local: &mut LocalMap, bad: &[u32], amp: f64, last_resort: bool) -> bool {
+        // the extra rounds are for non-singular vertices only: a singular
+        // vertex still on the grid after the ordinary rounds is on an iso
+        // its free axis does not cross
+        let movable = |v: &&u32| {
+            !self.stars.singular[**v as usize]
+                || (!last_resort && self.free_axis[**v as usize].is_some())
+        };
         let todo: Vec<u32> = bad.iter().filter(movable).copied().collect();
         self.epoch += 1;
         for &v in &todo {
@@ -127,20 +139,28 @@ impl Mover<'_> {
                 continue;
             }
             let root = self.clusters.root(v);
+            let members = self.clusters.members_rot(root);
+            if members.is_none() && last_resort {
+                self.apart.insert(root);
+                let d = self.rng.direction().map(|x| x * amp);
+                self.moved[v as usize] = true;
+                self.touched.push(v);
+                local.move_vertex(self.stars, v as usize, &d);
+                continue;
+            }
             if self.done_epoch[root as usize] == self.epoch {
                 continue;
             }
             self.done_epoch[root as usize] = self.epoch;
             let delta = self.rng.direction().map(|x| x * amp);
-            match self.clusters.members_rot(root) {
-                Some(members) => {
-                    for (w, r) in members {
-                        self.moved[w as usize] = true;
-                        self.touched.push(w);
-                        local.move_vertex(self.stars, w as usize, &r.apply(&delta));
-                    }
-                }
-                None => rep.stuck_clusters += 1,
+            let Some(members) = members else {
+                self.stuck.insert(root);
+                continue;
+            };
+            for (w, r) in members {
+                self.moved[w as usize] = true;
+                self.touched.push(w);
+                local.move_vertex(self.stars, w as usize, &r.apply(&delta));
             }
         }
         !todo.is_empty()
