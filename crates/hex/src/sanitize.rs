@@ -17,6 +17,10 @@
 //! clears an iso-surface across the edge. What remains is reported in
 //! [`SanitizeReport::singular_on_iso`]; the tracer stops the walks that
 //! meet them ("inconsistent") and leaves those sides unmatched.
+//!
+//! The rounds and the last resort for stuck clusters are those of the 2D
+//! sanitizer (`dualex_quad::sanitize`): extra rounds of growing amplitude
+//! for non-singular vertices only, stuck clusters moved apart in them.
 
 use crate::clusters::Clusters;
 use crate::local::LocalMap;
@@ -403,5 +407,84 @@ mod scan_tests {
             assert!(!full.is_empty() || round % 2 == 1);
             assert_eq!(scan.list(), full, "round {round}");
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_map::TetMap;
+
+    /// Two fans of `k` tets around the vertical edges A–M and M–B (A, M, B
+    /// = vertices 0, 1, 2, then the rim), each tet right-angled at the
+    /// edge in its own chart: for `k ≠ 4` one singular edge A–M–B through
+    /// the inner vertex M (whose link, `A`, `B` and the rim, is a sphere).
+    /// Map coordinates `w` shifted by ½: under the offset ½ (local
+    /// coordinates + ½) M lies on the iso-surface `w = 1` across the edge,
+    /// off the isos along it.
+    fn double_fan(k: u32) -> TetMap {
+        let mut m = TetMap::default();
+        m.positions
+            .extend([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, 2.0]]);
+        for i in 0..k {
+            let a = std::f64::consts::TAU * f64::from(i) / f64::from(k);
+            m.positions.push([a.cos(), a.sin(), 1.0]);
+        }
+        let (u, v) = ([1.0, 0.0, 0.5], [0.0, 1.0, 0.5]);
+        for i in 0..k {
+            let (r, s) = (i + 3, (i + 1) % k + 3);
+            m.simplices.push([0, 1, r, s]);
+            m.coords.push([[0.0, 0.0, -0.5], [0.0, 0.0, 0.5], u, v]);
+            m.simplices.push([1, 2, r, s]);
+            m.coords.push([[0.0, 0.0, 0.5], [0.0, 0.0, 1.5], u, v]);
+        }
+        m
+    }
+
+    /// A vertex inside a singular edge, on an iso-surface across it, moves
+    /// along the edge's axis only: its other coordinates are bit-identical
+    /// in every chart, and it leaves the iso.
+    #[test]
+    fn singular_vertex_moves_along_its_edge_only() {
+        let map = double_fan(3);
+        let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
+        let (trans, _) =
+            Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+        let stars = Stars::build(&map, &topo, &trans);
+        let mut local = LocalMap::new(&map, &topo, &trans);
+        let m = 1;
+        assert!(stars.singular[m]);
+        assert_eq!(singular_free_axis(&topo, &stars, &local.trans, m), Some(2));
+        let corners = |local: &LocalMap| -> Vec<[f64; 3]> {
+            stars
+                .of(m)
+                .iter()
+                .map(|e| local.coords[e.simplex as usize][e.corner as usize])
+                .collect()
+        };
+        let before = corners(&local);
+        assert_eq!(before.len(), 6);
+        assert!(before
+            .iter()
+            .all(|x| near_int(x[2]) && !near_int(x[0]) && !near_int(x[1])));
+        let rep = sanitize(&map, &topo, &stars, &mut local, 3);
+        let after = corners(&local);
+        for (b, a) in before.iter().zip(&after) {
+            assert_eq!(a[0].to_bits(), b[0].to_bits(), "{b:?} → {a:?}");
+            assert_eq!(a[1].to_bits(), b[1].to_bits(), "{b:?} → {a:?}");
+            assert!(a[2] != b[2] && !near_int(a[2]), "{b:?} → {a:?}");
+        }
+        // the same move in every chart (the charts' w axes agree; charts
+        // differ by integer offsets, so up to rounding)
+        let dw = after[0][2] - before[0][2];
+        let same = |(b, a): (&[f64; 3], &[f64; 3])| (a[2] - b[2] - dw).abs() < 1e-12;
+        assert!(
+            before.iter().zip(&after).all(same),
+            "{before:?} → {after:?}"
+        );
+        assert!(rep.singular_moved >= 1, "{rep:?}");
+        assert!(rep.singular_on_iso.is_empty(), "{rep:?}");
+        assert_eq!(rep.unresolved, 0, "{rep:?}");
+        assert_eq!(rep.leftovers(), None, "{rep:?}");
     }
 }

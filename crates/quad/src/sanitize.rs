@@ -12,6 +12,15 @@
 //!   rotations (translations untouched: no transition changes). Vertices
 //!   joined by zero-length map edges (collapsed regions) move as one cluster.
 //!
+//! The amplitude follows [`dualex_map::sanitize_report::amplitude`]: 40
+//! ordinary rounds, then extra rounds of growing amplitude (up to 0.1) while
+//! a non-singular vertex is still on the grid. A stuck cluster (its
+//! rotations disagree: it surrounds a singularity) waits for the extra
+//! rounds, where its members move one by one (the last resort: each is
+//! non-singular, so consistent in its own charts; the collapsed region
+//! opens into slivers). Whatever is left is in
+//! [`SanitizeReport::leftovers`].
+//!
 //! Singular vertices cannot move (their charts disagree around them, so no
 //! single vector moves all their corners consistently); in an exactly GP map
 //! a 90° singularity sits on a grid point or on a node, a 180° one possibly
