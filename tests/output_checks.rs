@@ -226,3 +226,65 @@ fn small_residuals_are_rounded_with_a_warning() {
         "{err}"
     );
 }
+
+/// A disk with a 180° cone at its centre, every chart translated by
+/// `(0, ½)`: the cone (a half-integer point, exactly GP: the seam's
+/// translation becomes `(0, 1)`) lies on one iso under either grid offset
+/// and cannot move.
+fn half_cone_on_iso_obj(dir: &Scratch) -> String {
+    let (mut map, _) = dualex_gen::singular_disk(2, false, 4, 16, 4.0).expect("disk");
+    for tri in &mut map.coords {
+        for c in tri {
+            c[1] += 0.5;
+        }
+    }
+    let path = dir.path("cone.obj");
+    dualex_io::write_tri_map(&path, &map).expect("write map");
+    path.display().to_string()
+}
+
+#[test]
+fn sanitization_leftovers_warn_under_q_and_fail_with_strict() {
+    let dir = Scratch::new("leftovers");
+    let map = half_cone_on_iso_obj(&dir);
+    for offset in ["zero", "half"] {
+        let stats = dir.arg(&format!("{offset}.json"));
+        let out = dualex(&[
+            "quad",
+            &map,
+            "-o",
+            &dir.arg("q.obj"),
+            "--grid-offset",
+            offset,
+            "--stats",
+            &stats,
+            "-q",
+        ]);
+        assert!(out.status.success(), "{}", text(&out));
+        let st = json(&dir.path(&format!("{offset}.json")));
+        let san = &st["sanitize"];
+        assert_eq!(san["singular_on_iso"], 1, "{offset}: {san}");
+        assert_eq!(
+            san["singular_on_iso_kinds"]["180_iso"], 1,
+            "{offset}: {san}"
+        );
+        assert_eq!(san["unresolved"], 0, "{offset}: {san}");
+        assert_eq!(san["singular_left_unsnapped"], 0, "{offset}: {san}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("warning")
+                && err.contains("sanitization left vertices on the dual grid")
+                && err.contains("1 singular on an iso, which cannot move"),
+            "printed even with -q: {err}"
+        );
+    }
+    let out = dualex(&["quad", &map, "-o", &dir.arg("s.obj"), "--strict", "-q"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("sanitization left") && err.contains("--strict"),
+        "{err}"
+    );
+    assert!(!dir.path("s.obj").exists(), "nothing written");
+}

@@ -177,6 +177,13 @@ fn singular_configurations_extract_exactly() {
                 }
             }
         }
+        if wanted > 0 && seed % 20 == 0 {
+            // progress of long runs (a killed run still has its totals)
+            eprintln!(
+                "progress: seed {seed}: {run_} run, {exact} exact, {refused} refused, {} wrong, {skipped} skipped",
+                wrong.len()
+            );
+        }
         seed += 1;
         if run_ >= wanted {
             break;

@@ -140,6 +140,7 @@ fn quad(args: &Args) -> Result<(), String> {
         topology,
     };
     verify::last_check(&name, &summary, args.strict, args.quiet)?;
+    verify::sanitize_check(&name, &stats.sanitize, args.strict)?;
     progress.stage("writing");
     dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
     laps.lap("write");
@@ -229,6 +230,7 @@ fn hex(args: &Args) -> Result<(), String> {
         topology,
     };
     verify::last_check(&name, &summary, args.strict, args.quiet)?;
+    verify::sanitize_check(&name, &stats.sanitize, args.strict)?;
     progress.stage("writing");
     dualex_io::write_hex_mesh(out, &mesh).map_err(|e| e.to_string())?;
     laps.lap("write");

@@ -16,9 +16,14 @@
 //!   component smaller than a cell, never create one);
 //! - any other topology difference (components, Euler characteristic,
 //!   boundary components) is a warning printed even with `-q` (the output
-//!   is suspect, so it is not chatter), and an error with `--strict`.
+//!   is suspect, so it is not chatter), and an error with `--strict`;
+//! - so is anything sanitization left on the dual grid
+//!   ([`SanitizeReport::leftovers`]: non-singular vertices still on an iso
+//!   after every round, singular vertices on an iso, singular vertices not
+//!   snapped): the mesh near them may be wrong ([`sanitize_check`]).
 
 use dualex_check::topology::Comparison;
+use dualex_map::sanitize_report::SanitizeReport;
 use dualex_map::SimplexMap;
 
 /// Map measure (area in 2D, volume in 3D, unsigned) in grid cells.
@@ -85,6 +90,24 @@ pub fn last_check(name: &str, out: &Output, strict: bool, quiet: bool) -> Result
     Ok(())
 }
 
+/// What sanitization left on the dual grid: a warning printed even with
+/// `-q`, an error with `--strict` (nothing written then).
+pub fn sanitize_check(name: &str, rep: &SanitizeReport, strict: bool) -> Result<(), String> {
+    let Some(what) = rep.leftovers() else {
+        return Ok(());
+    };
+    if strict {
+        return Err(format!(
+            "{name}: sanitization left vertices on the dual grid ({what}) (--strict); nothing written"
+        ));
+    }
+    // loud: printed even with -q
+    eprintln!(
+        "dualex: warning: {name}: sanitization left vertices on the dual grid ({what}); the mesh near them may be wrong (see \"sanitize\" in the stats; --strict makes this an error)"
+    );
+    Ok(())
+}
+
 /// Adds the comparison to the stats JSON (`topology_matches_input`,
 /// `topology`).
 pub fn add_to_stats(json: &mut serde_json::Value, c: &Comparison) {
@@ -139,6 +162,24 @@ mod tests {
         let e = last_check("m", &out(9, 9, 9.0, two, disk), true, true).expect_err("strict");
         assert!(e.contains("components 1 (input 2)"), "{e}");
         last_check("m", &out(9, 9, 9.0, disk, disk), true, true).expect("same topology");
+    }
+
+    #[test]
+    fn sanitization_leftovers_warn_or_fail_with_strict() {
+        let mut rep = SanitizeReport::default();
+        sanitize_check("m", &rep, true).expect("nothing left");
+        rep.unresolved = 3;
+        rep.extra_rounds = 2;
+        rep.singular_on_iso = vec![7];
+        rep.singular_snap.left = 1;
+        sanitize_check("m", &rep, false).expect("a warning");
+        let e = sanitize_check("m", &rep, true).expect_err("strict");
+        assert!(
+            e.contains("3 non-singular on an iso after 42 rounds")
+                && e.contains("1 singular on an iso")
+                && e.contains("1 singular not snapped"),
+            "{e}"
+        );
     }
 
     #[test]

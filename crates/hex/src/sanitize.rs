@@ -17,6 +17,10 @@
 //! clears an iso-surface across the edge. What remains is reported in
 //! [`SanitizeReport::singular_on_iso`]; the tracer stops the walks that
 //! meet them ("inconsistent") and leaves those sides unmatched.
+//!
+//! The rounds and the last resort for stuck clusters are those of the 2D
+//! sanitizer (`dualex_quad::sanitize`): extra rounds of growing amplitude
+//! for non-singular vertices only, stuck clusters moved apart in them.
 
 use crate::clusters::Clusters;
 use crate::local::LocalMap;
@@ -27,9 +31,9 @@ use crate::near::{
 use crate::rng::SplitMix;
 use crate::simplex::face_corners;
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
-use std::collections::HashSet;
+use std::collections::{BTreeSet, HashSet};
 
-use dualex_map::sanitize_report::ROUNDS;
+use dualex_map::sanitize_report::{amplitude, ROUNDS};
 pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
 
 /// Sanitizes `local` in place.
@@ -61,22 +65,28 @@ pub fn sanitize(
         touched: Vec::new(),
         done_epoch: vec![0; map.positions.len()],
         epoch: 0,
+        stuck: BTreeSet::new(),
+        apart: BTreeSet::new(),
     };
-    let mut amp = AMPLITUDE;
     let mut scan = BadScan::new(map, stars, &local.coords);
     let mut bad = scan.list();
-    for round in 0..ROUNDS {
+    let mut executed: usize = 0;
+    for round in 0.. {
+        let Some(amp) = amplitude(round) else {
+            break;
+        };
         rep.rounds = round;
         mv.touched.clear();
-        if !mv.round(local, &bad, amp, &mut rep) {
+        if !mv.round(local, &bad, amp, round >= ROUNDS) {
             break;
         }
-        if round % 8 == 7 {
-            amp *= 2.0;
-        }
+        executed += 1;
         scan.update(map, stars, &local.coords, &mv.touched);
         bad = scan.list();
     }
+    rep.extra_rounds = executed.saturating_sub(ROUNDS);
+    rep.stuck_clusters = mv.stuck.len();
+    rep.clusters_moved_apart = mv.apart.len();
     rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
     rep.singular_on_iso = bad
         .into_iter()
@@ -101,20 +111,26 @@ struct Mover<'a> {
     /// Per cluster root: the last round (epoch) in which it moved.
     done_epoch: Vec<u32>,
     epoch: u32,
+    /// Roots of the clusters that could not move as one.
+    stuck: BTreeSet<u32>,
+    /// Roots of the stuck clusters whose members moved one by one.
+    apart: BTreeSet<u32>,
 }
 
 impl Mover<'_> {
     /// Moves every movable vertex of `bad` (its whole cluster, once) by a
-    /// random vector of length `amp`; `false` when none is movable.
-    fn round(
-        &mut self,
-        local: &mut LocalMap,
-        bad: &[u32],
-        amp: f64,
-        rep: &mut SanitizeReport,
-    ) -> bool {
-        let movable =
-            |v: &&u32| !self.stars.singular[**v as usize] || self.free_axis[**v as usize].is_some();
+    /// random vector of length `amp`; `false` when none is movable. With
+    /// `last_resort` (the extra rounds), the members of a stuck cluster
+    /// move one by one (each is non-singular: consistent in its own
+    /// charts).
+    fn round(&mut self, local: &mut LocalMap, bad: &[u32], amp: f64, last_resort: bool) -> bool {
+        // the extra rounds are for non-singular vertices only: a singular
+        // vertex still on the grid after the ordinary rounds is on an iso
+        // its free axis does not cross
+        let movable = |v: &&u32| {
+            !self.stars.singular[**v as usize]
+                || (!last_resort && self.free_axis[**v as usize].is_some())
+        };
         let todo: Vec<u32> = bad.iter().filter(movable).copied().collect();
         self.epoch += 1;
         for &v in &todo {
@@ -127,20 +143,28 @@ impl Mover<'_> {
                 continue;
             }
             let root = self.clusters.root(v);
+            let members = self.clusters.members_rot(root);
+            if members.is_none() && last_resort {
+                self.apart.insert(root);
+                let d = self.rng.direction().map(|x| x * amp);
+                self.moved[v as usize] = true;
+                self.touched.push(v);
+                local.move_vertex(self.stars, v as usize, &d);
+                continue;
+            }
             if self.done_epoch[root as usize] == self.epoch {
                 continue;
             }
             self.done_epoch[root as usize] = self.epoch;
             let delta = self.rng.direction().map(|x| x * amp);
-            match self.clusters.members_rot(root) {
-                Some(members) => {
-                    for (w, r) in members {
-                        self.moved[w as usize] = true;
-                        self.touched.push(w);
-                        local.move_vertex(self.stars, w as usize, &r.apply(&delta));
-                    }
-                }
-                None => rep.stuck_clusters += 1,
+            let Some(members) = members else {
+                self.stuck.insert(root);
+                continue;
+            };
+            for (w, r) in members {
+                self.moved[w as usize] = true;
+                self.touched.push(w);
+                local.move_vertex(self.stars, w as usize, &r.apply(&delta));
             }
         }
         !todo.is_empty()
@@ -383,5 +407,84 @@ mod scan_tests {
             assert!(!full.is_empty() || round % 2 == 1);
             assert_eq!(scan.list(), full, "round {round}");
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_map::TetMap;
+
+    /// Two fans of `k` tets around the vertical edges A–M and M–B (A, M, B
+    /// = vertices 0, 1, 2, then the rim), each tet right-angled at the
+    /// edge in its own chart: for `k ≠ 4` one singular edge A–M–B through
+    /// the inner vertex M (whose link, `A`, `B` and the rim, is a sphere).
+    /// Map coordinates `w` shifted by ½: under the offset ½ (local
+    /// coordinates + ½) M lies on the iso-surface `w = 1` across the edge,
+    /// off the isos along it.
+    fn double_fan(k: u32) -> TetMap {
+        let mut m = TetMap::default();
+        m.positions
+            .extend([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, 2.0]]);
+        for i in 0..k {
+            let a = std::f64::consts::TAU * f64::from(i) / f64::from(k);
+            m.positions.push([a.cos(), a.sin(), 1.0]);
+        }
+        let (u, v) = ([1.0, 0.0, 0.5], [0.0, 1.0, 0.5]);
+        for i in 0..k {
+            let (r, s) = (i + 3, (i + 1) % k + 3);
+            m.simplices.push([0, 1, r, s]);
+            m.coords.push([[0.0, 0.0, -0.5], [0.0, 0.0, 0.5], u, v]);
+            m.simplices.push([1, 2, r, s]);
+            m.coords.push([[0.0, 0.0, 0.5], [0.0, 0.0, 1.5], u, v]);
+        }
+        m
+    }
+
+    /// A vertex inside a singular edge, on an iso-surface across it, moves
+    /// along the edge's axis only: its other coordinates are bit-identical
+    /// in every chart, and it leaves the iso.
+    #[test]
+    fn singular_vertex_moves_along_its_edge_only() {
+        let map = double_fan(3);
+        let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
+        let (trans, _) =
+            Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+        let stars = Stars::build(&map, &topo, &trans);
+        let mut local = LocalMap::new(&map, &topo, &trans);
+        let m = 1;
+        assert!(stars.singular[m]);
+        assert_eq!(singular_free_axis(&topo, &stars, &local.trans, m), Some(2));
+        let corners = |local: &LocalMap| -> Vec<[f64; 3]> {
+            stars
+                .of(m)
+                .iter()
+                .map(|e| local.coords[e.simplex as usize][e.corner as usize])
+                .collect()
+        };
+        let before = corners(&local);
+        assert_eq!(before.len(), 6);
+        assert!(before
+            .iter()
+            .all(|x| near_int(x[2]) && !near_int(x[0]) && !near_int(x[1])));
+        let rep = sanitize(&map, &topo, &stars, &mut local, 3);
+        let after = corners(&local);
+        for (b, a) in before.iter().zip(&after) {
+            assert_eq!(a[0].to_bits(), b[0].to_bits(), "{b:?} → {a:?}");
+            assert_eq!(a[1].to_bits(), b[1].to_bits(), "{b:?} → {a:?}");
+            assert!(a[2] != b[2] && !near_int(a[2]), "{b:?} → {a:?}");
+        }
+        // the same move in every chart (the charts' w axes agree; charts
+        // differ by integer offsets, so up to rounding)
+        let dw = after[0][2] - before[0][2];
+        let same = |(b, a): (&[f64; 3], &[f64; 3])| (a[2] - b[2] - dw).abs() < 1e-12;
+        assert!(
+            before.iter().zip(&after).all(same),
+            "{before:?} → {after:?}"
+        );
+        assert!(rep.singular_moved >= 1, "{rep:?}");
+        assert!(rep.singular_on_iso.is_empty(), "{rep:?}");
+        assert_eq!(rep.unresolved, 0, "{rep:?}");
+        assert_eq!(rep.leftovers(), None, "{rep:?}");
     }
 }

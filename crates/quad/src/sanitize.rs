@@ -12,6 +12,15 @@
 //!   rotations (translations untouched: no transition changes). Vertices
 //!   joined by zero-length map edges (collapsed regions) move as one cluster.
 //!
+//! The amplitude follows [`dualex_map::sanitize_report::amplitude`]: 40
+//! ordinary rounds, then extra rounds of growing amplitude (up to 0.1) while
+//! a non-singular vertex is still on the grid. A stuck cluster (its
+//! rotations disagree: it surrounds a singularity) waits for the extra
+//! rounds, where its members move one by one (the last resort: each is
+//! non-singular, so consistent in its own charts; the collapsed region
+//! opens into slivers). Whatever is left is in
+//! [`SanitizeReport::leftovers`].
+//!
 //! Singular vertices cannot move (their charts disagree around them, so no
 //! single vector moves all their corners consistently); in an exactly GP map
 //! a 90° singularity sits on a grid point or on a node, a 180° one possibly
@@ -29,7 +38,7 @@ use dualex_map::{Stars, Topology, TriMap};
 type Clusters = dualex_map::cluster::Clusters<2>;
 
 pub use dualex_map::grid::EPS;
-use dualex_map::sanitize_report::ROUNDS;
+use dualex_map::sanitize_report::{amplitude, ROUNDS};
 pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
 
 /// Sanitizes `local` in place.
@@ -46,56 +55,70 @@ pub fn sanitize(
     rep.clusters = clusters.count_nontrivial();
     let mut rng = SplitMix::new(seed);
     let mut moved = vec![false; map.positions.len()];
-    let mut amp = AMPLITUDE;
     let mut scan = BadScan::new(map, stars, local);
     let mut touched = Vec::new();
     // the last round in which each cluster root moved
     let mut done_round = vec![usize::MAX; map.positions.len()];
-    for round in 0..ROUNDS {
-        let bad = scan.list();
+    let mut stuck = std::collections::BTreeSet::new();
+    let mut apart = std::collections::BTreeSet::new();
+    let mut bad = scan.list();
+    let mut executed: usize = 0;
+    for round in 0.. {
         let movable: Vec<u32> = bad
             .iter()
             .copied()
             .filter(|&v| !stars.singular[v as usize])
             .collect();
-        rep.rounds = round;
         if movable.is_empty() {
-            rep.singular_on_iso = bad;
+            rep.rounds = round;
             break;
         }
+        let Some(amp) = amplitude(round) else {
+            break;
+        };
+        rep.rounds = round;
+        executed += 1;
         for v in movable {
             let root = clusters.root(v);
+            let members = clusters.members_rot(root);
+            if members.is_none() && round >= ROUNDS {
+                // the last resort for a stuck cluster: its members one by
+                // one (each is non-singular: consistent in its own charts)
+                apart.insert(root);
+                let a = rng.angle();
+                moved[v as usize] = true;
+                touched.push(v);
+                local.move_vertex(stars, v as usize, &[amp * a.cos(), amp * a.sin()]);
+                continue;
+            }
             if done_round[root as usize] == round {
                 continue;
             }
             done_round[root as usize] = round;
             let a = rng.angle();
             let delta = [amp * a.cos(), amp * a.sin()];
-            match clusters.members_rot(root) {
-                Some(members) => {
-                    for (w, r) in members {
-                        moved[w as usize] = true;
-                        touched.push(w);
-                        local.move_vertex(stars, w as usize, &r.apply(&delta));
-                    }
-                }
-                None => rep.stuck_clusters += 1,
+            let Some(members) = members else {
+                stuck.insert(root);
+                continue;
+            };
+            for (w, r) in members {
+                moved[w as usize] = true;
+                touched.push(w);
+                local.move_vertex(stars, w as usize, &r.apply(&delta));
             }
-        }
-        if round % 8 == 7 {
-            amp *= 2.0;
         }
         scan.update(map, stars, local, &touched);
         touched.clear();
-        if round + 1 == ROUNDS {
-            let bad = scan.list();
-            rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
-            rep.singular_on_iso = bad
-                .into_iter()
-                .filter(|&v| stars.singular[v as usize])
-                .collect();
-        }
+        bad = scan.list();
     }
+    rep.extra_rounds = executed.saturating_sub(ROUNDS);
+    rep.stuck_clusters = stuck.len();
+    rep.clusters_moved_apart = apart.len();
+    rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
+    rep.singular_on_iso = bad
+        .into_iter()
+        .filter(|&v| stars.singular[v as usize])
+        .collect();
     rep.singular_kinds = classify(topo, stars, local, &rep.singular_on_iso);
     rep.perturbed_vertices = moved.iter().filter(|&&m| m).count();
     rep
@@ -313,6 +336,55 @@ mod tests {
                 let fast = box_spans(box_bounds(a[axis]), box_bounds(b[axis]));
                 assert_eq!(fast, spans_integer(&a, &b, axis), "{a:?} {b:?}");
             }
+        }
+    }
+
+    /// A stuck cluster (the first ring of a 90° cone disk collapsed onto
+    /// the cone, a node: its collapsed edges go once around the cone, so
+    /// their rotations disagree) cannot move as one; the extra rounds move
+    /// its members one by one, and nothing non-singular is left on the grid.
+    #[test]
+    fn extra_rounds_move_a_stuck_cluster_apart() {
+        use dualex_map::grid_offset::GridOffset;
+        use dualex_map::Transitions;
+        let (map, _) = dualex_gen::singular_disk(1, false, 3, 8, 3.0).expect("disk");
+        let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
+        let (trans, _) =
+            Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+        let stars = Stars::build(&map, &topo, &trans);
+        let mut local = LocalMap::with_grid(&map, &topo, trans, GridOffset::Zero);
+        let radius = |v: u32| {
+            let p = map.positions[v as usize];
+            (p[0] * p[0] + p[1] * p[1]).sqrt()
+        };
+        let ring: Vec<bool> = (0..map.positions.len() as u32)
+            .map(|v| (0.1..0.5).contains(&radius(v)))
+            .collect();
+        assert_eq!(ring.iter().filter(|&&r| r).count(), 8);
+        for (s, tri) in map.simplices.iter().enumerate() {
+            // the cone (map origin) in this chart
+            let shift = [0, 1].map(|a| local.coords[s][0][a] - map.coords[s][0][a]);
+            for k in 0..3 {
+                if ring[tri[k] as usize] {
+                    local.coords[s][k] = shift;
+                }
+            }
+        }
+        let rep = sanitize(&map, &topo, &stars, &mut local, 7);
+        assert_eq!(rep.clusters, 1, "{rep:?}");
+        assert_eq!(rep.stuck_clusters, 1, "{rep:?}");
+        assert_eq!(rep.clusters_moved_apart, 1, "{rep:?}");
+        assert!(rep.extra_rounds >= 1, "{rep:?}");
+        assert_eq!(rep.unresolved, 0, "{rep:?}");
+        // the cone itself stays on its node
+        assert_eq!(rep.singular_on_iso.len(), 1, "{rep:?}");
+        assert_eq!(rep.singular_kinds.get("90_node"), Some(&1), "{rep:?}");
+        assert!(rep.leftovers().is_some_and(|l| l.contains("1 singular")));
+        // every ring vertex moved off the node, consistently in its charts
+        for v in (0..ring.len()).filter(|&v| ring[v]) {
+            let first = stars.of(v)[0];
+            let x = local.coords[first.simplex as usize][first.corner as usize];
+            assert!(!near_int(x[0]) && !near_int(x[1]), "{v}: {x:?}");
         }
     }
 
