@@ -21,6 +21,7 @@
 
 pub mod chart;
 pub mod label;
+pub mod offset;
 pub mod plc;
 pub mod slab;
 pub mod split;
