@@ -5,18 +5,19 @@
 //! and a [`Method`] with a one-line [`Outcome::note`] saying why TetGen's
 //! first answer was not kept (`None` when it was).
 //!
-//! The chain, when TetGen refuses the slab (it aborts on intersecting input
-//! triangles):
-//! 1. TetGen's own check (`-d`) on the *base surface* alone: when the
-//!    surface's triangles intersect each other (QEx's ducks: 8 triangles
-//!    around vertices 99 and 4605; Directional's dragon), no slab over it is
-//!    free of intersections, whatever its thickness (measured: the ducks
-//!    abort down to 1e-4 × the default), so the built-in split follows at
-//!    once;
-//! 2. otherwise the slab halved up to [`MAX_HALVINGS`] times (offset
+//! The chain:
+//! 0. a surface whose own triangles cross ([`crate::intersect`], a few
+//!    ms) goes straight to the split: TetGen aborts on any slab over it
+//!    (QEx's ducks: 6 pairs of triangles around vertices 99 and 4605;
+//!    Directional's dragon: 23 pairs; the ducks abort down to 1e-4 × the
+//!    default thickness);
+//! 1. TetGen on the slab;
+//! 2. when it refuses, TetGen's own check (`-d`) on the base surface alone
+//!    catches crossings the cheap check missed (then the split);
+//! 3. otherwise the slab halved up to [`MAX_HALVINGS`] times (offset
 //!    surfaces meet where the thickness exceeds the local feature size:
 //!    fandisk at 0.5 × the mean edge is refused, accepted at a quarter);
-//! 3. the built-in 3-tet split of every prism ([`crate::split`]), which
+//! 4. the built-in 3-tet split of every prism ([`crate::split`]), which
 //!    needs no geometry: its tets take their orientation from their
 //!    triangle, so an inverted or intersecting slab still gives a valid
 //!    map.
@@ -25,7 +26,7 @@
 
 use crate::slab::Slab;
 use crate::tetgen::{self, TetgenMesh};
-use crate::{plc, split, ExtrudeError, ExtrudeOptions};
+use crate::{intersect, plc, split, ExtrudeError, ExtrudeOptions};
 use dualex_map::TriMap;
 
 /// Thinner slabs tried after a refusal: thickness / 2, / 4, / 8.
@@ -80,6 +81,25 @@ pub fn tetrahedralize(map: &TriMap, opts: &ExtrudeOptions) -> Result<Outcome, Ex
         intersecting_triangles,
     };
     let prog = &opts.program;
+    let crossing = if slab.planar {
+        Vec::new()
+    } else {
+        intersect::crossing_pairs(&slab.points[..slab.nv], &slab.tris)
+    };
+    if let Some(&(i, j)) = crossing.first() {
+        let mesh = split::prism_split(&slab);
+        let note = format!(
+            "the surface itself self-intersects ({} pairs of triangles cross, e.g. {i} and {j}), so TetGen would refuse any slab over it: TetGen not run; built-in prism split used",
+            crossing.len()
+        );
+        return Ok(outcome(
+            slab,
+            mesh,
+            Method::Split,
+            Some(note),
+            crossing.len(),
+        ));
+    }
     let refusal = match tetgen::run(prog, &plc::poly_text(&slab), &slab, opts.quality) {
         Ok(mesh) => return Ok(outcome(slab, mesh, Method::TetGen, None, 0)),
         Err(e @ ExtrudeError::TetgenMissing(_)) if opts.fallback => {

@@ -5,14 +5,16 @@
 //! integer at the layer interfaces (`0..=L`), so the dual has exactly `L`
 //! layers of hexes (nodes at `w = k + ½`). Steps of [`extrude`]:
 //! 1. [`slab`]: the layered points (planar maps offset along ±z, surfaces
-//!    along area-weighted vertex normals) and prisms;
+//!    along area-weighted vertex normals, turned where those do not see
+//!    an incident triangle from above: [`offset`]) and prisms;
 //! 2. [`plc`]: the prism walls as constraint facets, one region per prism;
 //! 3. [`chain`]: [`tetgen`], TetGen run as an external program (`tetgen -pYzQFN`,
 //!    each tet's prism from its nodes by [`label`]; `-pYzQAF` when that
 //!    fails or TetGen added points; `-pzQAFq` with quality); when TetGen
-//!    refuses the slab, a thinner one unless the surface itself
-//!    self-intersects, then the built-in 3-tet prism split ([`split`]),
-//!    also used when asked (`fallback`) and TetGen is absent;
+//!    refuses the slab, a thinner one, then the built-in 3-tet prism split
+//!    ([`split`]), also used straight away when the surface itself
+//!    self-intersects ([`intersect`]) and, when asked (`fallback`), when
+//!    TetGen is absent;
 //! 4. [`chart`]: each tet gets its prism's triangle chart plus `w`;
 //!    Steiner points get the map of their preimage in the prism.
 //!
@@ -22,6 +24,7 @@
 
 pub mod chain;
 pub mod chart;
+pub mod intersect;
 pub mod label;
 pub mod offset;
 pub mod plc;
@@ -107,7 +110,8 @@ pub struct ExtrudeReport {
     pub planar: bool,
     /// Whether `w` runs downward (map with negative total area).
     pub w_reversed: bool,
-    /// Wall time in TetGen (or the split), milliseconds.
+    /// Wall time of [`chain`] (the slab, the crossing check, TetGen and its
+    /// retries, or the split), milliseconds.
     pub tetrahedralize_ms: f64,
     /// Total wall time, milliseconds.
     pub total_ms: f64,
