@@ -56,8 +56,8 @@ pub struct Outcome {
     pub method: Method,
     /// Why not TetGen on the first slab (one line), if so.
     pub note: Option<String>,
-    /// Base triangles that TetGen's `-d` found intersecting (0 when not
-    /// checked: TetGen accepted the slab, or is missing).
+    /// Base triangles that cross another one ([`intersect`], else TetGen's
+    /// `-d` after a refusal; 0 when TetGen accepted the slab).
     pub intersecting_triangles: usize,
 }
 
@@ -92,13 +92,10 @@ pub fn tetrahedralize(map: &TriMap, opts: &ExtrudeOptions) -> Result<Outcome, Ex
             "the surface itself self-intersects ({} pairs of triangles cross, e.g. {i} and {j}), so TetGen would refuse any slab over it: TetGen not run; built-in prism split used",
             crossing.len()
         );
-        return Ok(outcome(
-            slab,
-            mesh,
-            Method::Split,
-            Some(note),
-            crossing.len(),
-        ));
+        let mut tris: Vec<u32> = crossing.iter().flat_map(|&(i, j)| [i, j]).collect();
+        tris.sort_unstable();
+        tris.dedup();
+        return Ok(outcome(slab, mesh, Method::Split, Some(note), tris.len()));
     }
     let refusal = match tetgen::run(prog, &plc::poly_text(&slab), &slab, opts.quality) {
         Ok(mesh) => return Ok(outcome(slab, mesh, Method::TetGen, None, 0)),

@@ -83,8 +83,8 @@ pub struct ExtrudeReport {
     /// refusing the slab and what followed), e.g. "TetGen refused the slab
     /// (…); thinner slab (T = …) accepted".
     pub note: Option<String>,
-    /// Base triangles that intersect another one (TetGen's `-d`, checked
-    /// only after a refusal).
+    /// Base triangles that cross another one ([`intersect`] before TetGen,
+    /// TetGen's `-d` after a refusal).
     pub intersecting_triangles: usize,
     /// Vertices whose offset direction was turned away from the
     /// area-weighted normal ([`offset`]).
