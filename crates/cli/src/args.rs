@@ -16,7 +16,10 @@ usage:
                         (prisms over every triangle, tetrahedralized by TetGen
                         found at run time (`tetgen`, or $DUALEX_TETGEN);
                         T default: 0.05 × the mean edge length on a surface,
-                        0.5 × on a planar map)
+                        0.5 × on a planar map; a slab TetGen refuses is retried
+                        at T/2, T/4, T/8, then each prism split into 3 tets, as
+                        is a self-intersecting surface at once (said on stderr);
+                        --fallback: that split also when TetGen is missing)
   dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`;
                                                 2D maps → .obj/.ply, 3D maps → .hexex)
   dualex generate --from-mesh MESH -o MAP [--scale K] [--noise A] [--folds] [--seed N] [--half-shift]

@@ -427,18 +427,19 @@ fn extrude(args: &Args) -> Result<(), String> {
     };
     let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|e| format!("{name}: {e}"))?;
     dualex_io::write_tet_map(out, &tets).map_err(|e| e.to_string())?;
-    if !rep.tetgen && !args.quiet {
-        eprintln!(
-            "dualex: used the built-in prism split (3 tets per prism): {}",
-            rep.fallback_reason.as_deref().unwrap_or("TetGen not used")
-        );
+    if let Some(note) = rep.note.as_deref().filter(|_| !args.quiet) {
+        eprintln!("dualex: {name}: {note}");
     }
     if !args.quiet {
         println!(
             "done: {} prisms -> {} tets ({}, {} Steiner points, {} flat, {} reverted), thickness {:.3e}, {:.0} ms ({:.0} ms tetrahedralizing) -> {}",
             rep.prisms,
             rep.tets,
-            if rep.tetgen { "TetGen" } else { "prism split" },
+            match rep.method {
+                dualex_extrude::Method::TetGen => "TetGen",
+                dualex_extrude::Method::Thinner { .. } => "TetGen, thinner slab",
+                dualex_extrude::Method::Split => "prism split",
+            },
             rep.steiner_points,
             rep.flat_tets,
             rep.reverted_tets,

@@ -5,13 +5,16 @@
 //! integer at the layer interfaces (`0..=L`), so the dual has exactly `L`
 //! layers of hexes (nodes at `w = k + ½`). Steps of [`extrude`]:
 //! 1. [`slab`]: the layered points (planar maps offset along ±z, surfaces
-//!    along area-weighted vertex normals) and prisms;
+//!    along area-weighted vertex normals, turned where those do not see
+//!    an incident triangle from above: [`offset`]) and prisms;
 //! 2. [`plc`]: the prism walls as constraint facets, one region per prism;
-//! 3. [`tetgen`]: TetGen run as an external program (`tetgen -pYzQFN`,
+//! 3. [`chain`]: [`tetgen`], TetGen run as an external program (`tetgen -pYzQFN`,
 //!    each tet's prism from its nodes by [`label`]; `-pYzQAF` when that
-//!    fails or TetGen added points; `-pzQAFq` with quality) — or, when
-//!    asked and TetGen is absent, the built-in 3-tet prism split
-//!    ([`split`]);
+//!    fails or TetGen added points; `-pzQAFq` with quality); when TetGen
+//!    refuses the slab, a thinner one, then the built-in 3-tet prism split
+//!    ([`split`]), also used straight away when the surface itself
+//!    self-intersects ([`intersect`]) and, when asked (`fallback`), when
+//!    TetGen is absent;
 //! 4. [`chart`]: each tet gets its prism's triangle chart plus `w`;
 //!    Steiner points get the map of their preimage in the prism.
 //!
@@ -19,8 +22,11 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod chain;
 pub mod chart;
+pub mod intersect;
 pub mod label;
+pub mod offset;
 pub mod plc;
 pub mod slab;
 pub mod split;
@@ -35,6 +41,7 @@ use dualex_map::{InputError, TetMap, TriMap};
 use std::path::PathBuf;
 use std::time::Instant;
 
+pub use chain::Method;
 pub use slab::{Slab, DEFAULT_THICKNESS_FRACTION};
 
 /// How to extrude.
@@ -48,7 +55,8 @@ pub struct ExtrudeOptions {
     pub quality: bool,
     /// The TetGen program (looked up on `PATH` when not a path).
     pub program: PathBuf,
-    /// Use the built-in prism split when the program is not found.
+    /// Use the built-in prism split when the program is not found (when
+    /// TetGen refuses the slab, [`chain`] always ends with the split).
     pub fallback: bool,
 }
 
@@ -69,9 +77,21 @@ impl Default for ExtrudeOptions {
 pub struct ExtrudeReport {
     /// `true`: TetGen made the tets; `false`: the built-in prism split.
     pub tetgen: bool,
-    /// Why the built-in split was used (`--fallback`): TetGen missing, or
-    /// TetGen refusing the slab (e.g. a self-intersecting input surface).
-    pub fallback_reason: Option<String>,
+    /// How the tets were made ([`chain`]).
+    pub method: Method,
+    /// Why not TetGen on the requested slab, one line (TetGen missing, or
+    /// refusing the slab and what followed), e.g. "TetGen refused the slab
+    /// (…); thinner slab (T = …) accepted".
+    pub note: Option<String>,
+    /// Base triangles that cross another one ([`intersect`] before TetGen,
+    /// TetGen's `-d` after a refusal).
+    pub intersecting_triangles: usize,
+    /// Vertices whose offset direction was turned away from the
+    /// area-weighted normal ([`offset`]).
+    pub turned_vertices: usize,
+    /// Vertices where no offset direction sees every incident triangle from
+    /// above ([`offset`]).
+    pub folded_vertices: usize,
     /// Prisms (triangles × layers).
     pub prisms: usize,
     /// Tets written.
@@ -90,7 +110,8 @@ pub struct ExtrudeReport {
     pub planar: bool,
     /// Whether `w` runs downward (map with negative total area).
     pub w_reversed: bool,
-    /// Wall time in TetGen (or the split), milliseconds.
+    /// Wall time of [`chain`] (the slab, the crossing check, TetGen and its
+    /// retries, or the split), milliseconds.
     pub tetrahedralize_ms: f64,
     /// Total wall time, milliseconds.
     pub total_ms: f64,
@@ -141,25 +162,23 @@ pub fn extrude(
     opts: &ExtrudeOptions,
 ) -> Result<(TetMap, ExtrudeReport), ExtrudeError> {
     let start = Instant::now();
-    let slab = Slab::new(map, opts.layers, opts.thickness)?;
     let t0 = Instant::now();
-    let mut fallback_reason = None;
-    let poly = plc::poly_text(&slab);
-    let (mesh, used_tetgen) = match tetgen::run(&opts.program, &poly, &slab, opts.quality) {
-        Ok(m) => (m, true),
-        Err(e @ (ExtrudeError::TetgenMissing(_) | ExtrudeError::TetgenFailed(_)))
-            if opts.fallback =>
-        {
-            fallback_reason = Some(e.to_string());
-            (split::prism_split(&slab), false)
-        }
-        Err(e) => return Err(e),
-    };
+    let chain::Outcome {
+        slab,
+        mesh,
+        method,
+        note,
+        intersecting_triangles,
+    } = chain::tetrahedralize(map, opts)?;
     let tetrahedralize_ms = t0.elapsed().as_secs_f64() * 1e3;
     let (tets, steiner_points) = chart::tet_map(&slab, &mesh)?;
     let report = ExtrudeReport {
-        tetgen: used_tetgen,
-        fallback_reason,
+        tetgen: method != Method::Split,
+        method,
+        note,
+        intersecting_triangles,
+        turned_vertices: slab.turned,
+        folded_vertices: slab.folded,
         prisms: slab.prisms(),
         tets: tets.len(),
         steiner_points,

@@ -75,6 +75,25 @@ pub fn poly_text(slab: &Slab) -> Vec<u8> {
     s
 }
 
+/// The `.poly` of the base surface alone (level 0's points and triangles,
+/// no region), for TetGen's self-intersection check (`-d`, see
+/// [`crate::tetgen::intersecting_triangles`]).
+pub fn surface_poly_text(slab: &Slab) -> Vec<u8> {
+    let mut s = Vec::with_capacity(64 * slab.nv + 24 * slab.tris.len());
+    push_record(&mut s, &[slab.nv as u64, 3, 0, 0], &[], &[]);
+    for (i, p) in slab.points[..slab.nv].iter().enumerate() {
+        push_record(&mut s, &[i as u64], p, &[]);
+    }
+    push_record(&mut s, &[slab.tris.len() as u64, 0], &[], &[]);
+    for t in &slab.tris {
+        push_record(&mut s, &[1], &[], &[]);
+        push_record(&mut s, &[3], &[], &t.map(u64::from));
+    }
+    push_record(&mut s, &[0], &[], &[]);
+    push_record(&mut s, &[0], &[], &[]);
+    s
+}
+
 /// Appends one line: the integers `head` (at least one), the floats `x`,
 /// the integers `tail`, separated by single spaces.
 fn push_record(s: &mut Vec<u8>, head: &[u64], x: &[f64], tail: &[u64]) {

@@ -9,13 +9,15 @@
 //!   prism (t, l): bottom tri[t] at level l, top tri[t] at level l + 1
 //! ```
 //! Offsets: planar maps (every z equal) move along ±z, surfaces along the
-//! area-weighted vertex normals; the sign follows the triangles' orientation
+//! area-weighted vertex normals (turned where those point nearly along or
+//! below an incident triangle, [`crate::offset`]); the sign follows the triangles' orientation
 //! so that every prism has positive geometric volume. `w` is the level
 //! (`w = level`, integer at every layer interface), reversed (`w = L −
 //! level`) when the map's total signed area is negative, so that prisms of
 //! non-reverted triangles have a positive map determinant. The dual nodes of
 //! a layer `[k, k+1]` are at `w = k + ½`: exactly `L` layers of hexes.
 
+use crate::offset::{surface_offsets, Offsets};
 use dualex_map::{InputError, TriMap};
 
 /// Default total thickness as a fraction of the mean triangle edge length.
@@ -50,6 +52,12 @@ pub struct Slab {
     pub thickness: f64,
     /// Whether the map was planar (offset along ±z).
     pub planar: bool,
+    /// Vertices whose offset direction was turned from the area-weighted
+    /// normal ([`crate::offset`]).
+    pub turned: usize,
+    /// Vertices where no offset direction sees every incident triangle from
+    /// above (the surface folds back there; [`crate::offset`]).
+    pub folded: usize,
 }
 
 impl Slab {
@@ -68,7 +76,12 @@ impl Slab {
             None if planar => PLANAR_THICKNESS_FRACTION * mean_edge_length(&base, &tris),
             None => DEFAULT_THICKNESS_FRACTION * mean_edge_length(&base, &tris),
         };
-        let dirs = offset_directions(&base, &tris, planar)?;
+        let offsets = if planar {
+            planar_offsets(&base, &tris)
+        } else {
+            surface_offsets(&base, &tris)?
+        };
+        let dirs = &offsets.dirs;
         let nv = base.len();
         let step = thickness / layers as f64;
         let mut points = Vec::with_capacity(nv * (layers + 1));
@@ -76,7 +89,7 @@ impl Slab {
             let h = step * level as f64;
             points.extend(
                 base.iter()
-                    .zip(&dirs)
+                    .zip(dirs)
                     .map(|(p, d)| [p[0] + h * d[0], p[1] + h * d[1], p[2] + h * d[2]]),
             );
         }
@@ -90,6 +103,8 @@ impl Slab {
             w_sign: if area < 0.0 { -1.0 } else { 1.0 },
             thickness,
             planar,
+            turned: offsets.turned,
+            folded: offsets.folded,
         })
     }
 
@@ -182,41 +197,20 @@ fn mean_edge_length(p: &[[f64; 3]], tris: &[[u32; 3]]) -> f64 {
     sum / (3 * tris.len()) as f64
 }
 
-/// Unit offset direction per vertex (module docs); an error names a vertex
-/// whose area-weighted normal vanishes.
-fn offset_directions(
-    p: &[[f64; 3]],
-    tris: &[[u32; 3]],
-    planar: bool,
-) -> Result<Vec<[f64; 3]>, InputError> {
-    let mut n = vec![[0.0; 3]; p.len()];
-    for t in tris {
-        let [a, b, c] = t.map(|v| p[v as usize]);
-        let fnorm = cross(sub(b, a), sub(c, a));
-        for &v in t {
-            for k in 0..3 {
-                n[v as usize][k] += fnorm[k];
-            }
-        }
-    }
-    if planar {
-        let z: f64 = n.iter().map(|x| x[2]).sum();
-        let s = if z < 0.0 { -1.0 } else { 1.0 };
-        return Ok(vec![[0.0, 0.0, s]; p.len()]);
-    }
-    n.iter()
-        .enumerate()
-        .map(|(v, x)| {
-            let l = norm(*x);
-            if l > 0.0 && l.is_finite() {
-                Ok([x[0] / l, x[1] / l, x[2] / l])
-            } else {
-                Err(InputError::new(format!(
-                    "vertex {v}: its area-weighted normal vanishes: cannot offset the surface there"
-                )))
-            }
+/// ±z for every vertex of a planar map: the side its triangles face.
+fn planar_offsets(p: &[[f64; 3]], tris: &[[u32; 3]]) -> Offsets {
+    let z: f64 = tris
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|v| p[v as usize]);
+            cross(sub(b, a), sub(c, a))[2]
         })
-        .collect()
+        .sum();
+    let s = if z < 0.0 { -1.0 } else { 1.0 };
+    Offsets {
+        dirs: vec![[0.0, 0.0, s]; p.len()],
+        ..Default::default()
+    }
 }
 
 #[cfg(test)]

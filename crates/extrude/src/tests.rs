@@ -174,3 +174,56 @@ fn missing_tetgen_is_an_error_without_fallback() {
     let e = extrude(&grid(2, 2.0, false), &opts).expect_err("missing");
     assert!(matches!(e, ExtrudeError::TetgenMissing(_)), "{e}");
 }
+
+/// A stand-in TetGen that refuses every slab (exits 1 on `-p…`, finds no
+/// crossing on `-d…`): the chain tries T/2, T/4, T/8, then splits, and
+/// says so; a surface whose triangles cross is split without running it.
+#[cfg(unix)]
+#[test]
+fn a_refusing_tetgen_ends_in_the_prism_split() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = std::env::temp_dir().join(format!("dualex-chain-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let fake = dir.join("refusing-tetgen");
+    let log = dir.join("calls");
+    let script = format!(
+        "#!/bin/sh\necho \"$1\" >> '{}'\ncase \"$1\" in -d*) exit 0;; esac\necho 'terminate called' >&2\nexit 1\n",
+        log.display()
+    );
+    std::fs::write(&fake, script).expect("script");
+    std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).expect("chmod");
+    let opts = ExtrudeOptions {
+        program: fake.clone(),
+        ..Default::default()
+    };
+    let map = grid(3, 2.0, true);
+    let (m, r) = extrude(&map, &opts).expect("split");
+    assert_eq!((r.method, r.tetgen, r.tets), (Method::Split, false, 3 * 18));
+    let note = r.note.clone().unwrap_or_default();
+    assert!(
+        note.starts_with("TetGen refused the slab (T = ")
+            && note.contains("thinner slabs down to")
+            && note.ends_with("built-in prism split used"),
+        "{note}"
+    );
+    assert_valid_extrusion(&m, &r, "refused bump");
+    let calls = std::fs::read_to_string(&log).unwrap_or_default();
+    assert_eq!(
+        calls.lines().collect::<Vec<_>>(),
+        ["-pYzQFN", "-dzQ", "-pYzQFN", "-pYzQFN", "-pYzQFN"]
+    );
+    // a fold through the surface: triangle 0 pierced by a new one
+    let mut crossing = map.clone();
+    let n = crossing.positions.len() as u32;
+    crossing
+        .positions
+        .extend([[0.1, 0.1, -1.0], [0.2, 0.15, 1.0], [0.3, 0.05, 1.0]]);
+    crossing.simplices.push([n, n + 1, n + 2]);
+    crossing.coords.push([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+    std::fs::write(&log, "").expect("log");
+    let (_, r) = extrude(&crossing, &opts).expect("split");
+    assert_eq!((r.method, r.intersecting_triangles), (Method::Split, 2));
+    assert!(r.note.unwrap_or_default().contains("TetGen not run"));
+    assert_eq!(std::fs::read_to_string(&log).unwrap_or_default(), "");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -115,9 +115,44 @@ pub fn run_poly(program: &Path, poly: &[u8], flags: &str) -> Result<TetgenMesh, 
     })
 }
 
-/// Runs TetGen with `flags` on `poly` written to `slab.poly` in a fresh
-/// temporary directory, which holds its output files.
-fn run_in_dir(program: &Path, poly: &[u8], flags: &str) -> Result<TempDir, ExtrudeError> {
+/// The triangles (vertex ids) of the surface `.poly` text `poly` (see
+/// [`crate::plc::surface_poly_text`]) that intersect another one, by
+/// TetGen's check (`-d`: it writes them to `.1.face`, nothing when there
+/// are none). Costs about half an aborted tetrahedralization (0.22 s on
+/// duck_miq_4's 19 720 triangles).
+pub fn intersecting_triangles(program: &Path, poly: &[u8]) -> Result<Vec<[u32; 3]>, ExtrudeError> {
+    let (dir, out) = spawn(program, poly, "-dzQ")?;
+    let path = dir.0.join("slab.1.face");
+    if !out.status.success() {
+        return Err(ExtrudeError::TetgenFailed(format!(
+            "{} -dzQ exited with {}",
+            program.display(),
+            out.status
+        )));
+    }
+    if !path.is_file() {
+        return Ok(Vec::new());
+    }
+    let text = dir.read("face")?;
+    let mut recs = records(&text);
+    let head = recs.next().ok_or_else(|| bad("face", "empty".into()))?;
+    let n: usize = head.reader("face").next()?;
+    let mut out = Vec::with_capacity(n.min(1 << 20));
+    for r in recs.take(n) {
+        let mut f = r.reader("face");
+        f.next::<u64>()?;
+        out.push([f.next()?, f.next()?, f.next()?]);
+    }
+    Ok(out)
+}
+
+/// Writes `poly` to `slab.poly` in a fresh temporary directory and runs
+/// TetGen there with `flags`.
+fn spawn(
+    program: &Path,
+    poly: &[u8],
+    flags: &str,
+) -> Result<(TempDir, std::process::Output), ExtrudeError> {
     let dir = TempDir::new()?;
     let input = dir.0.join("slab.poly");
     std::fs::write(&input, poly)
@@ -131,6 +166,13 @@ fn run_in_dir(program: &Path, poly: &[u8], flags: &str) -> Result<TempDir, Extru
             std::io::ErrorKind::NotFound => ExtrudeError::TetgenMissing(program.into()),
             _ => ExtrudeError::Io(format!("cannot run {}: {e}", program.display())),
         })?;
+    Ok((dir, out))
+}
+
+/// Runs TetGen with `flags` on `poly` written to `slab.poly` in a fresh
+/// temporary directory, which holds its output files.
+fn run_in_dir(program: &Path, poly: &[u8], flags: &str) -> Result<TempDir, ExtrudeError> {
+    let (dir, out) = spawn(program, poly, flags)?;
     let written = |ext: &str| dir.0.join(format!("slab.1.{ext}")).is_file();
     let wants_node = !flags.contains('N');
     if out.status.success() && written("ele") && (written("node") || !wants_node) {
