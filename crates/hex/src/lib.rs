@@ -72,7 +72,7 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     map.check_not_reflected()?;
     st.input_tets = map.len();
     let owned;
-    let (map, topo, stars, mut local, singular_snap) = {
+    let (map, topo, stars, mut local, singular_snap, free) = {
         let mut map = std::borrow::Cow::Borrowed(map);
         loop {
             let topo = Topology::build(&map)?;
@@ -99,11 +99,11 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
                 .iter()
                 .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
                 .collect();
-            let free = split::free_axes(&topo, &stars, &local);
+            let free = sanitize::free_axes(&topo, &stars, &local);
             let faces = split::faces_to_split(&map, &stars, &free, &pairs, &local);
             if faces.is_empty() || st.split_faces >= st.input_tets {
                 owned = map;
-                break (&*owned, topo, stars, local, snap);
+                break (&*owned, topo, stars, local, snap, free);
             }
             let (next, applied) = dualex_map::split::split_faces(&map, &faces);
             st.split_faces += applied;
@@ -112,7 +112,7 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     };
     laps.lap("map");
     // 2
-    st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    st.sanitize = sanitize::sanitize(map, &stars, &free, &mut local, opts.seed);
     st.sanitize.singular_snap = singular_snap;
     drop(stars);
     laps.lap("sanitize");
@@ -139,13 +139,21 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
     // 7: folded hexes collapsed, doublet chains dissolved (the extrusions
     // of the 2D collapse of folded quads and of doublet removal)
-    let (collapsed, folded) = doublets::collapse_folded(&mesh);
-    let (dissolved, chains) = doublets::dissolve(&collapsed);
-    st.folded_collapsed = folded;
-    st.doublets = chains;
-    if folded + chains.edges > 0 {
-        mesh = dissolved;
-        st.finish_mesh(&mesh);
+    // (only when the checker's counts show a repeated corner or an
+    // interior edge of valence 2: both passes hash every edge)
+    let repeated = mesh
+        .cells
+        .iter()
+        .any(|h| (0..8).any(|i| (i + 1..8).any(|j| h[i] == h[j])));
+    if repeated || st.edge_valence_interior.contains_key(&2) {
+        let (collapsed, folded) = doublets::collapse_folded(&mesh);
+        let (dissolved, chains) = doublets::dissolve(&collapsed);
+        st.folded_collapsed = folded;
+        st.doublets = chains;
+        if folded + chains.edges > 0 {
+            mesh = dissolved;
+            st.finish_mesh(&mesh);
+        }
     }
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();

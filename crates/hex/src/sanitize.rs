@@ -36,11 +36,24 @@ use std::collections::{BTreeSet, HashSet};
 use dualex_map::sanitize_report::{amplitude, ROUNDS};
 pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
 
-/// Sanitizes `local` in place.
+/// The free axis (reference chart) of every singular vertex that has one
+/// ([`singular_free_axis`]; `None` for the others).
+pub fn free_axes(topo: &Topology<4>, stars: &Stars<3>, local: &LocalMap) -> Vec<Option<usize>> {
+    (0..stars.singular.len())
+        .map(|v| {
+            stars.singular[v]
+                .then(|| singular_free_axis(topo, stars, &local.trans, v))
+                .flatten()
+        })
+        .collect()
+}
+
+/// Sanitizes `local` in place; `free_axis` as [`free_axes`] (the driver
+/// computes it once for the split and for this step).
 pub fn sanitize(
     map: &TetMap,
-    topo: &Topology<4>,
     stars: &Stars<3>,
+    free_axis: &[Option<usize>],
     local: &mut LocalMap,
     seed: u64,
 ) -> SanitizeReport {
@@ -48,17 +61,10 @@ pub fn sanitize(
     (rep.snapped_vertices, rep.max_snap) = local.snap(stars);
     let clusters = Clusters::build(map, stars, &local.coords);
     rep.clusters = clusters.count_nontrivial();
-    let free_axis: Vec<Option<usize>> = (0..stars.singular.len())
-        .map(|v| {
-            stars.singular[v]
-                .then(|| singular_free_axis(topo, stars, &local.trans, v))
-                .flatten()
-        })
-        .collect();
     let mut mv = Mover {
         stars,
         clusters: &clusters,
-        free_axis: &free_axis,
+        free_axis,
         rng: SplitMix::new(seed),
         moved: vec![false; map.positions.len()],
         moved_singular: HashSet::new(),
@@ -467,7 +473,8 @@ mod tests {
         assert!(before
             .iter()
             .all(|x| near_int(x[2]) && !near_int(x[0]) && !near_int(x[1])));
-        let rep = sanitize(&map, &topo, &stars, &mut local, 3);
+        let free = free_axes(&topo, &stars, &local);
+        let rep = sanitize(&map, &stars, &free, &mut local, 3);
         let after = corners(&local);
         for (b, a) in before.iter().zip(&after) {
             assert_eq!(a[0].to_bits(), b[0].to_bits(), "{b:?} → {a:?}");

@@ -11,9 +11,10 @@
 //!   singular edge (its midpoint would be as stuck as its ends) or one of
 //!   its ends can move across that iso-line (its free axis is one of the
 //!   two axes the iso-line is integral on: sanitization moves it);
-//! - every triangle of three singular vertices that holds a node strictly
-//!   inside, unless one of them can move off the triangle's plane (its
-//!   free axis is not parallel to the plane).
+//! - every triangle of three singular vertices, one of them at least where
+//!   singular edges meet (it cannot move at all), that holds a node
+//!   strictly inside, unless one of them can move off the triangle's plane
+//!   (its free axis is not parallel to the plane).
 //!
 //! The split itself is the dimension-generic `dualex_map::split`: the new
 //! vertex is inside the edge or face, so it is not singular and
@@ -23,7 +24,7 @@
 use crate::local::LocalMap;
 use crate::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
 use crate::simplex::face_corners;
-use dualex_map::{Stars, TetMap, Topology};
+use dualex_map::{Stars, TetMap};
 use std::collections::HashSet;
 
 /// The free axis of singular vertex `v` in the chart of tet `s` (`None`:
@@ -51,20 +52,9 @@ fn crosses_stuck(a: &[f64; 3], b: &[f64; 3], axes: [Option<usize>; 2]) -> bool {
     })
 }
 
-/// The free axis (reference chart) of every singular vertex that has one.
-pub fn free_axes(topo: &Topology<4>, stars: &Stars<3>, local: &LocalMap) -> Vec<Option<usize>> {
-    (0..stars.singular.len())
-        .map(|v| {
-            stars.singular[v]
-                .then(|| crate::sanitize::singular_free_axis(topo, stars, &local.trans, v))
-                .flatten()
-        })
-        .collect()
-}
-
 /// The edges (2 vertex ids, sorted) and faces (3, sorted) to split, edges
 /// first, each once, in the order of their first tet; `free` as
-/// [`free_axes`].
+/// [`crate::sanitize::free_axes`].
 pub fn faces_to_split(
     map: &TetMap,
     stars: &Stars<3>,
@@ -102,12 +92,17 @@ pub fn faces_to_split(
             if !corners.iter().all(|&k| sing(tet[k])) {
                 continue;
             }
+            // (only faces with a vertex where singular edges meet: the
+            // test is costly on large triangles, and a face spanned by
+            // vertices inside singular edges alone can move with them)
+            let axes = corners.map(|k| free_axis_in(stars, free, tet[k], s));
+            if axes.iter().all(Option::is_some) {
+                continue;
+            }
             let t = corners.map(|k| c[k]);
             let n = normal(&t);
-            let movable = corners
-                .iter()
-                .any(|&k| free_axis_in(stars, free, tet[k], s).is_some_and(|a| n[a] != 0.0));
-            if !movable && triangle_near_grid_point(&t) {
+            let movable = axes.iter().flatten().any(|&a| n[a] != 0.0);
+            if !movable && box_holds_grid_point(&t) && triangle_near_grid_point(&t) {
                 let mut key: Vec<u32> = corners.iter().map(|&k| tet[k]).collect();
                 key.sort_unstable();
                 if seen.insert(key.clone()) {
@@ -118,6 +113,16 @@ pub fn faces_to_split(
     }
     edges.extend(faces);
     edges
+}
+
+/// Whether the box of `t`, grown by `EPS`, holds an integer on every axis
+/// (else no grid point is near the triangle: a cheap prefilter).
+fn box_holds_grid_point(t: &[[f64; 3]; 3]) -> bool {
+    (0..3).all(|k| {
+        let lo = t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
+        let hi = t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
+        (lo - dualex_map::grid::EPS).ceil() <= hi + dualex_map::grid::EPS
+    })
 }
 
 /// A normal of triangle `t` (not normalized).
@@ -137,7 +142,7 @@ fn normal(t: &[[f64; 3]; 3]) -> [f64; 3] {
 mod tests {
     use super::*;
     use dualex_gen::from_mesh::{from_hexes, meshes, FromMeshOptions, TetSplit};
-    use dualex_map::Transitions;
+    use dualex_map::{Topology, Transitions};
 
     /// What the driver's first pass finds on a map.
     fn to_split(map: &TetMap) -> Vec<Vec<u32>> {
@@ -152,7 +157,7 @@ mod tests {
                 .collect();
         let mut local = LocalMap::new(map, &topo, &trans);
         dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
-        let free = free_axes(&topo, &stars, &local);
+        let free = crate::sanitize::free_axes(&topo, &stars, &local);
         faces_to_split(map, &stars, &free, &singular, &local)
     }
 

@@ -135,13 +135,10 @@ fn fixed_corners<const N: usize, const D: usize>(
 /// The integer matrix of a grid rotation (`m[row][col]`).
 fn matrix<const D: usize>(r: &Rot<D>) -> [[i64; D]; D] {
     let mut m = [[0i64; D]; D];
-    for col in 0..D {
-        let mut e = [0i64; D];
-        e[col] = 1;
-        let img = r.apply_i(&e);
-        for row in 0..D {
-            m[row][col] = img[row];
-        }
+    // column `col` is the image of axis `col`: direction `d` = axis d/2,
+    // negative when odd
+    for (col, d) in r.images().into_iter().enumerate() {
+        m[(d >> 1) as usize][col] = if d & 1 == 1 { -1 } else { 1 };
     }
     m
 }
