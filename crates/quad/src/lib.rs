@@ -151,7 +151,8 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         st.finish_mesh(&mesh);
     }
     // 9: doublets that fairing found no partner for
-    if opts.fairing {
+    // (only when the counts show an interior vertex of valence 2)
+    if opts.fairing && st.valence_interior.contains_key(&2) {
         let (dissolved, rep) = doublets::dissolve(&mesh);
         st.doublets = rep;
         if rep.dissolved > 0 {
