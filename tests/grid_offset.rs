@@ -68,10 +68,18 @@ fn cube_surface_offset_by_half_picks_zero() {
         assert_eq!(got.euler, want.euler, "{name}");
         assert_eq!(st["repair"]["subdivided"], false, "{name}: {st}");
 
-        // forcing ½ on the shifted map puts the 8 corners on nodes
-        let (_, st) = quads(&shifted, GridOffset::Half);
+        // forcing ½ on the shifted map puts the 8 corners on nodes: 8
+        // triangles, paired by the local repair (4 paths), no subdivision;
+        // the 8 valence-3 vertices and the sphere's Euler characteristic
+        // stay
+        let (mesh, st) = quads(&shifted, GridOffset::Half);
         assert_eq!(st["grid_offset"], "half");
-        assert_eq!(st["repair"]["subdivided"], true, "{name}: {st}");
+        assert_eq!(st["repair"]["subdivided"], false, "{name}: {st}");
+        assert_eq!(st["repair"]["local_paths"], 4, "{name}: {st}");
+        let got = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+        assert!(got.is_valid(), "{name}: {:?}", got.errors());
+        assert_eq!(got.euler, 2, "{name}");
+        assert_eq!(got.interior_valence.get(&3), Some(&8), "{name}: {st}");
     }
 }
 

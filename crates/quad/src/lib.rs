@@ -23,6 +23,7 @@ pub mod geometry;
 pub mod local;
 pub mod nodes;
 pub mod repair;
+pub mod repair_local;
 use dualex_map::rng;
 pub mod sanitize;
 pub mod split;
@@ -141,6 +142,7 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         st.holes_filled = fill.len();
         st.repair_dropped = rep.dropped;
         st.subdivided = rep.subdivided;
+        st.repair_paths = rep.local_paths;
         // the collapsed sides of the triangles were unmatched sides whose
         // two corners are one vertex, and the filled holes' sides are glued
         // to the new faces: neither is boundary

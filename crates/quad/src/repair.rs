@@ -6,20 +6,22 @@
 //! singular vertex and finds no partner, and its two corners are the same
 //! vertex. No perturbation can move such a vertex (its charts disagree
 //! around it) and no local gluing of quads can close a 3-sided face (the
-//! sides around it are odd in number). What is left is to make the mesh
-//! all-quad by one step of linear subdivision — each quad into 4, each
-//! triangle into 3 quads (face centroid, edge midpoints) — which keeps the
-//! surface, the singularities and the topology, and is reported.
+//! sides around it are odd in number). Such faces are paired up and made
+//! quads along a path of faces between them (`crate::repair_local`); where
+//! that does not apply, what is left is to make the mesh all-quad by one
+//! step of linear subdivision — each quad into 4, each triangle into 3
+//! quads (face centroid, edge midpoints) — which keeps the surface, the
+//! singularities and the topology. Both are reported.
 //!
 //! Input: the glued cells and positions. Output: `None` when every cell has
 //! four distinct corners in cyclic order (nothing to do), else the
-//! subdivided all-quad mesh.
+//! repaired all-quad mesh.
 
 use dualex_map::QuadMesh;
 use std::collections::HashMap;
 
 /// The cell without consecutive repeated corners (cyclically).
-fn polygon(cell: &[u32; 4]) -> Vec<u32> {
+pub(crate) fn polygon(cell: &[u32; 4]) -> Vec<u32> {
     let mut p: Vec<u32> = Vec::with_capacity(4);
     for &v in cell {
         if p.last() != Some(&v) {
@@ -45,8 +47,11 @@ pub struct Repaired {
     /// Cells of fewer than 3 distinct corners dropped.
     pub dropped: usize,
     /// Whether every cell was subdivided (else the quads of `extra` were
-    /// only added).
+    /// only added, or the local repair did it).
     pub subdivided: bool,
+    /// Paths of the local repair (`crate::repair_local`): pairs of faces
+    /// quads cannot represent, made quads along a path between them.
+    pub local_paths: usize,
 }
 
 /// Subdivides every cell once when some cell is a triangle or some polygon
@@ -65,8 +70,27 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
             mesh: out,
             dropped: 0,
             subdivided: false,
+            local_paths: 0,
         });
     }
+    // first choice: the local repair, kept when its result is a valid
+    // all-quad mesh
+    if let Some((out, paths)) = crate::repair_local::repair(mesh, extra) {
+        if dualex_check::check_quad_mesh(out.positions.len(), &out.cells).is_valid() {
+            return Some(Repaired {
+                mesh: out,
+                dropped: 0,
+                subdivided: false,
+                local_paths: paths,
+            });
+        }
+    }
+    Some(subdivide(mesh, extra))
+}
+
+/// One step of linear subdivision of the cells and the polygons of
+/// `extra` (module docs); cells of fewer than 3 distinct corners dropped.
+pub fn subdivide(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Repaired {
     let polygons = mesh.cells.iter().map(polygon).chain(extra.iter().cloned());
     let mut out = QuadMesh {
         positions: mesh.positions.clone(),
@@ -102,11 +126,12 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
             out.cells.push([v, e_next, f, e_prev]);
         }
     }
-    Some(Repaired {
+    Repaired {
         mesh: out,
         dropped,
         subdivided: true,
-    })
+        local_paths: 0,
+    }
 }
 
 #[cfg(test)]
@@ -127,7 +152,10 @@ mod tests {
             cells: vec![[0, 1, 2, 3], [1, 4, 4, 2]],
         };
         assert_eq!(odd_cells(&mesh), 1);
-        let rep = subdivide_if_odd(&mesh, &[]).expect("subdivided");
+        // the local repair pairs the triangle with the boundary
+        let local = subdivide_if_odd(&mesh, &[]).expect("repaired");
+        assert!(!local.subdivided && local.local_paths == 1);
+        let rep = subdivide(&mesh, &[]);
         assert!(rep.subdivided);
         let (out, dropped) = (rep.mesh, rep.dropped);
         assert_eq!(dropped, 0);

@@ -61,6 +61,8 @@ pub struct QuadStats {
     /// Whether the whole mesh was subdivided once (a triangle, or a hole
     /// that is not a quad, could not be made a quad otherwise).
     pub subdivided: bool,
+    /// Paths of the local repair of faces quads cannot represent.
+    pub repair_paths: usize,
     /// Interior valence-2 vertices dissolved after gluing
     /// ([`crate::doublets`]) and those left (preconditions not met).
     pub doublets: crate::doublets::Doublets,
@@ -143,6 +145,7 @@ impl QuadStats {
                 "holes_left_open": self.holes_left_open,
                 "triangles": self.repair_triangles,
                 "subdivided": self.subdivided,
+                "local_paths": self.repair_paths,
                 "dropped_cells": self.repair_dropped,
                 "doublets_dissolved": self.doublets.dissolved,
                 "doublets_left": self.doublets.left,

@@ -1,0 +1,51 @@
+use super::*;
+
+/// A 1×4 strip whose two end cells are triangles (a cell with a repeated
+/// corner): one path through the two quads between them, straight; every
+/// cell a quad afterwards, valid, Euler kept.
+#[test]
+fn two_triangles_joined_by_a_straight_path() {
+    // bottom 0..=4, top 5..=9; the end cells collapse one side each
+    let mut m = QuadMesh::default();
+    for j in 0..2 {
+        for i in 0..5 {
+            m.positions.push([i as f64, j as f64, 0.0]);
+        }
+    }
+    m.cells = vec![[0, 1, 6, 6], [1, 2, 7, 6], [2, 3, 8, 7], [3, 4, 8, 8]];
+    let before = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
+    let (out, paths) = repair(&m, &[]).expect("repaired");
+    assert_eq!(paths, 1);
+    let after = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
+    assert!(after.is_valid(), "{:?}", after.errors());
+    assert_eq!(after.euler, before.euler);
+    // 2 end quads + 2 × 2 split quads; 3 new edge points
+    assert_eq!((out.cells.len(), out.positions.len()), (6, 13));
+}
+
+/// A triangle next to the boundary pairs with the boundary: one point on
+/// the boundary edge.
+#[test]
+fn a_triangle_pairs_with_the_boundary() {
+    let m = QuadMesh {
+        positions: vec![[0.0; 3]; 5],
+        cells: vec![[0, 1, 2, 2], [1, 3, 4, 2]],
+    };
+    let (out, paths) = repair(&m, &[]).expect("repaired");
+    assert_eq!(paths, 1);
+    let r = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
+    assert!(r.is_valid(), "{:?}", r.errors());
+    assert_eq!(out.cells.len(), 2);
+}
+
+/// An even hole polygon (a hexagon) becomes two quads without any path.
+#[test]
+fn a_hexagon_is_split() {
+    let m = QuadMesh {
+        positions: vec![[0.0; 3]; 6],
+        cells: vec![],
+    };
+    let (out, paths) = repair(&m, &[vec![0, 1, 2, 3, 4, 5]]).expect("repaired");
+    assert_eq!(paths, 0);
+    assert_eq!(out.cells, vec![[0, 1, 2, 3], [0, 3, 4, 5]]);
+}
