@@ -155,11 +155,14 @@ pub fn write_text(path: &Path, text: &str) -> Result<(), OutputError> {
 mod tests {
     use super::*;
 
-    /// `name` in a directory of its own (tests run in parallel).
-    pub(crate) fn scratch(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("dualex-io-{}-{name}", std::process::id()));
-        fs::create_dir_all(&dir).unwrap();
-        dir.join(name)
+    use crate::test_scratch::ScratchDir;
+
+    /// `name` in a directory of its own (tests run in parallel), removed
+    /// with the returned guard.
+    fn scratch(name: &str) -> (ScratchDir, PathBuf) {
+        let dir = ScratchDir::new(name);
+        let file = dir.join(name);
+        (dir, file)
     }
 
     fn leftovers(dir: &Path) -> usize {
@@ -177,7 +180,7 @@ mod tests {
 
     #[test]
     fn failure_keeps_the_old_file_and_removes_the_temp() {
-        let p = scratch("atomic.txt");
+        let (_dir, p) = scratch("atomic.txt");
         write_text(&p, "old").unwrap();
         let e = write_atomic(&p, |w| {
             w.write_all(b"half")?;
@@ -196,7 +199,7 @@ mod tests {
 
     #[test]
     fn rename_over_a_directory_fails_cleanly() {
-        let p = scratch("is_a_dir.obj");
+        let (_dir, p) = scratch("is_a_dir.obj");
         fs::create_dir_all(&p).unwrap();
         assert!(matches!(
             write_text(&p, "x").unwrap_err().kind,
