@@ -82,3 +82,22 @@ fn the_test_command_is_ci_run_which_tests_the_workspace() {
         "`.ci/run` no longer installs TetGen"
     );
 }
+
+#[test]
+fn the_rust_snippet_is_the_compiled_example() {
+    let readme = read("../../README.md");
+    let example = read("../dualex/examples/quad.rs");
+    let section = readme
+        .split("## Use from Rust")
+        .nth(1)
+        .unwrap_or_else(|| panic!("README has no \"Use from Rust\" section"));
+    let snippet = section
+        .split("```rust\n")
+        .nth(1)
+        .and_then(|s| s.split("```").next())
+        .unwrap_or_else(|| panic!("\"Use from Rust\" has no ```rust block"));
+    assert_eq!(
+        snippet, example,
+        "README's Rust snippet differs from crates/dualex/examples/quad.rs"
+    );
+}

@@ -183,7 +183,7 @@ fn file_writers_check_before_writing() {
     for ext in ["mesh", "vtk"] {
         write_hex_mesh(&dir.join(format!("h.{ext}")), &tower()).unwrap();
     }
-    let names: Vec<String> = std::fs::read_dir(&dir)
+    let names: Vec<String> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();

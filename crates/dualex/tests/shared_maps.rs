@@ -1,0 +1,46 @@
+//! The facade on real maps of `../shared/data` (beside the checkout; listed
+//! as ignored with the reason when absent, see `build.rs`): welding by
+//! default is what makes Directional's cut dragon one closed mesh.
+
+use std::path::{Path, PathBuf};
+
+fn data(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/data")
+        .join(rel)
+}
+
+#[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
+fn the_dragon_is_welded_by_default() {
+    let map = dualex::read_tri_map(data("directional/dragon-param-full-seamless.obj")).unwrap();
+    let out = dualex::quad(&map, &dualex::QuadOptions::default()).unwrap();
+    let s = &out.stats;
+    assert!(s.welded_vertices > 0);
+    assert_eq!(
+        (s.quads, s.components, s.euler, s.boundary_loops),
+        (5084, 1, 2, 0)
+    );
+    assert!(s.topology.matches());
+    let apart = dualex::QuadOptions {
+        weld: false,
+        ..Default::default()
+    };
+    let out = dualex::quad(&map, &apart).unwrap();
+    assert_eq!(out.stats.components, 46);
+}
+
+#[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
+fn hexex_hand_gives_the_reference_count() {
+    let map = dualex::read_tet_map(data("hexex/hand_q.hexex")).unwrap();
+    let out = dualex::hex(&map, &dualex::HexOptions::default()).unwrap();
+    assert_eq!(out.stats.hexes, 956);
+    assert_eq!(out.stats.components, 1);
+}
