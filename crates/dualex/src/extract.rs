@@ -88,6 +88,12 @@ pub struct QuadOutput {
     pub mesh: QuadMesh,
     /// Its counts.
     pub stats: QuadStats,
+    /// For each quad, the input triangle that holds its node (an index
+    /// into the map's triangles, welded or not); `None` for a face that
+    /// closes a hole. After a subdivision (`stats.repairs.subdivided`) the
+    /// four quads of a cell name its triangle; a quad merged from two
+    /// (doublet removal) names the first one's.
+    pub sources: Vec<Option<u32>>,
 }
 
 /// The result of [`hex`](crate::hex()).
@@ -97,6 +103,9 @@ pub struct HexOutput {
     pub mesh: HexMesh,
     /// Its counts.
     pub stats: HexStats,
+    /// For each hex, the input tet that holds its node (an index into the
+    /// map's tets); a hex merged from a pair names the first one's.
+    pub sources: Vec<u32>,
 }
 
 /// Welds `map` when asked; the number of vertices merged.
@@ -137,7 +146,7 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
         seed: opts.seed,
         grid_offset: opts.grid_offset,
     };
-    let (mesh, stats) = dualex_quad::extract(&map, &inner)?;
+    let (mesh, stats, sources) = dualex_quad::extract_traced(&map, &inner)?;
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
     if !rep.is_valid() {
         return Err(Error::InvalidOutput(rep.errors().join("; ")));
@@ -147,9 +156,14 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
         output: topo::quad_shape(&rep).into(),
     };
     topology_check(&t, opts.strict)?;
+    let sources = sources
+        .into_iter()
+        .map(|s| (s != dualex_quad::NO_SOURCE).then_some(s))
+        .collect();
     Ok(QuadOutput {
         stats: QuadStats::new(&stats, welded, t),
         mesh,
+        sources,
     })
 }
 
@@ -171,6 +185,8 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
 /// let map = dualex::tet_map_from_slices(&positions, &tets, &uvw)?;
 /// let out = dualex::hex(&map, &dualex::HexOptions::default())?;
 /// assert_eq!(out.stats.hexes, 8);
+/// // the tet holding each hex's node (the hex's centre)
+/// assert_eq!(out.sources.len(), 8);
 /// assert_eq!(out.mesh.cells.len(), 8);
 /// assert!(out.stats.topology.matches());
 /// # Ok::<(), dualex::Error>(())
@@ -182,7 +198,7 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
         seed: opts.seed,
         grid_offset: opts.grid_offset,
     };
-    let (mesh, stats) = dualex_hex::extract(&map, &inner)?;
+    let (mesh, stats, sources) = dualex_hex::extract_traced(&map, &inner)?;
     let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
     if !rep.is_valid() {
         return Err(Error::InvalidOutput(rep.errors().join("; ")));
@@ -195,5 +211,6 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
     Ok(HexOutput {
         stats: HexStats::new(&stats, welded, t),
         mesh,
+        sources,
     })
 }

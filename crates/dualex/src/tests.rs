@@ -108,3 +108,98 @@ fn meshes_are_written_and_read_back() {
     assert_eq!(back.unwrap().faces.len(), 4);
     assert!(matches!(bad, Err(Error::Output(_))));
 }
+
+/// Whether `p` lies in triangle `t` of a flat map (z = 0), with a margin
+/// (nodes on an edge are moved off it by a tiny perturbation).
+fn in_triangle(map: &TriMap, t: u32, p: [f64; 2]) -> bool {
+    let c = map.simplices[t as usize].map(|v| map.positions[v as usize]);
+    (0..3).all(|i| {
+        let (a, b) = (c[i], c[(i + 1) % 3]);
+        (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) >= -1e-4
+    })
+}
+
+#[test]
+fn each_quad_names_the_triangle_holding_its_node() {
+    // identity map scaled by 3: the node of a quad is its centre
+    for cut in [false, true] {
+        let map = square(4, 3.0, cut);
+        let out = quad(&map, &QuadOptions::default()).unwrap();
+        assert_eq!(out.sources.len(), out.mesh.cells.len());
+        for (q, s) in out.mesh.cells.iter().zip(&out.sources) {
+            let c = q.map(|v| out.mesh.positions[v as usize]);
+            let centre = [0, 1].map(|k| c.iter().map(|p| p[k]).sum::<f64>() / 4.0);
+            let t = s.expect("a source");
+            assert!(
+                in_triangle(&map, t, centre),
+                "quad {q:?} centre {centre:?} not in triangle {t}"
+            );
+        }
+    }
+}
+
+#[test]
+fn each_hex_names_the_tet_holding_its_node() {
+    // 6 tets per unit cube (around its diagonal), identity map scaled by 2
+    let n = 2u32;
+    let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
+    let mut positions = Vec::new();
+    for k in 0..=n {
+        for j in 0..=n {
+            for i in 0..=n {
+                positions.push([i as f64, j as f64, k as f64]);
+            }
+        }
+    }
+    let mut tets = Vec::new();
+    for k in 0..n {
+        for j in 0..n {
+            for i in 0..n {
+                let c = |b: u32| id(i + (b & 1), j + (b >> 1 & 1), k + (b >> 2 & 1));
+                for [a, b, d] in [
+                    [1, 3, 7],
+                    [3, 2, 7],
+                    [2, 6, 7],
+                    [6, 4, 7],
+                    [4, 5, 7],
+                    [5, 1, 7],
+                ] {
+                    tets.push([c(0), c(a), c(b), c(d)]);
+                }
+            }
+        }
+    }
+    let uvw: Vec<[[f64; 3]; 4]> = tets
+        .iter()
+        .map(|t| t.map(|v| positions[v as usize].map(|x| 2.0 * x)))
+        .collect();
+    let map = tet_map_from_slices(&positions, &tets, &uvw).unwrap();
+    let out = hex(&map, &HexOptions::default()).unwrap();
+    assert_eq!(out.stats.hexes, 64);
+    assert_eq!(out.sources.len(), 64);
+    let det = |a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]| {
+        let (u, v, w) = (
+            [0, 1, 2].map(|i| b[i] - a[i]),
+            [0, 1, 2].map(|i| c[i] - a[i]),
+            [0, 1, 2].map(|i| d[i] - a[i]),
+        );
+        u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
+            + u[2] * (v[0] * w[1] - v[1] * w[0])
+    };
+    for (h, &s) in out.mesh.cells.iter().zip(&out.sources) {
+        let p = [0, 1, 2].map(|k| {
+            h.iter()
+                .map(|&v| out.mesh.positions[v as usize][k])
+                .sum::<f64>()
+                / 8.0
+        });
+        let c = map.simplices[s as usize].map(|v| map.positions[v as usize]);
+        let whole = det(c[0], c[1], c[2], c[3]);
+        let inside = (0..4).all(|i| {
+            let mut q = c;
+            q[i] = p;
+            det(q[0], q[1], q[2], q[3]) * whole >= -1e-4 * whole.abs()
+        });
+        assert!(inside, "hex {h:?} centre {p:?} not in tet {s}");
+    }
+}

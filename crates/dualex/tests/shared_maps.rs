@@ -25,6 +25,12 @@ fn the_dragon_is_welded_by_default() {
         (5084, 1, 2, 0)
     );
     assert!(s.topology.matches());
+    // split edges (knight, dragon) keep the input's triangle numbers
+    assert_eq!(out.sources.len(), s.quads);
+    assert!(out
+        .sources
+        .iter()
+        .all(|t| t.is_some_and(|t| (t as usize) < map.len())));
     let apart = dualex::QuadOptions {
         weld: false,
         ..Default::default()
@@ -43,4 +49,29 @@ fn hexex_hand_gives_the_reference_count() {
     let out = dualex::hex(&map, &dualex::HexOptions::default()).unwrap();
     assert_eq!(out.stats.hexes, 956);
     assert_eq!(out.stats.components, 1);
+}
+
+#[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
+fn subdivided_quads_name_their_parents_triangle() {
+    let map = dualex::read_tri_map(data("directional/horsers-param-full-seamless.obj")).unwrap();
+    let out = dualex::quad(&map, &dualex::QuadOptions::default()).unwrap();
+    assert!(out.stats.repairs.subdivided);
+    assert_eq!(out.sources.len(), out.stats.quads);
+    let known = out.sources.iter().flatten().count();
+    assert!(out
+        .sources
+        .iter()
+        .flatten()
+        .all(|&t| (t as usize) < map.len()));
+    // only the faces closing holes (a k-gon: k quads) have no node
+    let holes = out.stats.repairs.holes_filled;
+    let unknown = out.stats.quads - known;
+    assert!(
+        holes > 0 && unknown >= 3 * holes && unknown <= 12 * holes,
+        "{unknown} quads without a node, {holes} holes"
+    );
 }

@@ -47,6 +47,9 @@ pub struct Repaired {
     /// Whether every cell was subdivided (else the quads of `extra` were
     /// only added).
     pub subdivided: bool,
+    /// For each cell of `mesh`, the polygon it comes from: an index into
+    /// the input cells followed by `extra`.
+    pub origin: Vec<u32>,
 }
 
 /// Subdivides every cell once when some cell is a triangle or some polygon
@@ -62,6 +65,7 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
         out.cells
             .extend(extra.iter().map(|p| [p[0], p[1], p[2], p[3]]));
         return Some(Repaired {
+            origin: (0..out.cells.len() as u32).collect(),
             mesh: out,
             dropped: 0,
             subdivided: false,
@@ -74,7 +78,8 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
     };
     let mut edge_point: HashMap<(u32, u32), u32> = HashMap::new();
     let mut dropped = 0;
-    for p in polygons {
+    let mut origin = Vec::with_capacity(4 * mesh.cells.len());
+    for (polygon_id, p) in polygons.enumerate() {
         if p.len() < 3 {
             dropped += 1;
             continue;
@@ -100,12 +105,14 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
             let e_next = mid(v, next, &mut out.positions);
             let e_prev = mid(prev, v, &mut out.positions);
             out.cells.push([v, e_next, f, e_prev]);
+            origin.push(polygon_id as u32);
         }
     }
     Some(Repaired {
         mesh: out,
         dropped,
         subdivided: true,
+        origin,
     })
 }
 
@@ -129,6 +136,8 @@ mod tests {
         assert_eq!(odd_cells(&mesh), 1);
         let rep = subdivide_if_odd(&mesh, &[]).expect("subdivided");
         assert!(rep.subdivided);
+        // the quad's 4 pieces, then the triangle's 3
+        assert_eq!(rep.origin, [0, 0, 0, 0, 1, 1, 1]);
         let (out, dropped) = (rep.mesh, rep.dropped);
         assert_eq!(dropped, 0);
         assert_eq!(out.cells.len(), 7);
