@@ -155,14 +155,10 @@ pub fn write_text(path: &Path, text: &str) -> Result<(), OutputError> {
 mod tests {
     use super::*;
 
-    use crate::test_scratch::ScratchDir;
-
-    /// `name` in a directory of its own (tests run in parallel), removed
-    /// with the returned guard.
-    fn scratch(name: &str) -> (ScratchDir, PathBuf) {
-        let dir = ScratchDir::new(name);
-        let file = dir.join(name);
-        (dir, file)
+    /// `name` in a directory of its own (tests run in parallel); the
+    /// directory is removed when the returned path is dropped.
+    pub(crate) fn scratch(name: &str) -> crate::test_scratch::ScratchFile {
+        crate::test_scratch::ScratchFile::new(name)
     }
 
     fn leftovers(dir: &Path) -> usize {
@@ -180,7 +176,7 @@ mod tests {
 
     #[test]
     fn failure_keeps_the_old_file_and_removes_the_temp() {
-        let (_dir, p) = scratch("atomic.txt");
+        let p = scratch("atomic.txt");
         write_text(&p, "old").unwrap();
         let e = write_atomic(&p, |w| {
             w.write_all(b"half")?;
@@ -199,7 +195,7 @@ mod tests {
 
     #[test]
     fn rename_over_a_directory_fails_cleanly() {
-        let (_dir, p) = scratch("is_a_dir.obj");
+        let p = scratch("is_a_dir.obj");
         fs::create_dir_all(&p).unwrap();
         assert!(matches!(
             write_text(&p, "x").unwrap_err().kind,

@@ -1,4 +1,4 @@
-//! A scratch directory for the unit tests, removed when dropped (even when
+//! Scratch directories for the unit tests, removed when dropped (even when
 //! the test fails), so that test runs leave nothing in the temp folder.
 
 use std::path::{Path, PathBuf};
@@ -29,5 +29,36 @@ impl ScratchDir {
 impl Drop for ScratchDir {
     fn drop(&mut self) {
         let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// A file path `$TMP/dualex-io-<pid>-<name>/<name>` used as a `&Path`;
+/// its directory is removed on drop.
+pub(crate) struct ScratchFile {
+    file: PathBuf,
+    _dir: ScratchDir,
+}
+
+impl ScratchFile {
+    /// A fresh directory named after `name`, and `name` inside it.
+    pub(crate) fn new(name: &str) -> Self {
+        let dir = ScratchDir::new(name);
+        ScratchFile {
+            file: dir.join(name),
+            _dir: dir,
+        }
+    }
+}
+
+impl std::ops::Deref for ScratchFile {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.file
+    }
+}
+
+impl AsRef<Path> for ScratchFile {
+    fn as_ref(&self) -> &Path {
+        &self.file
     }
 }
