@@ -184,6 +184,10 @@ fn hexex_broken_files() {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn shared_broken_hexex_files() {
     let Some(root) = shared_data("hexex") else {
         return;

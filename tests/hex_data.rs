@@ -37,6 +37,10 @@ fn read_medit(path: &std::path::Path) -> (Vec<[f64; 3]>, Vec<[u32; 8]>) {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn hexex_maps_give_the_reference_hex_counts() {
     let Some(root) = shared_data("hexex") else {
         return;
@@ -69,6 +73,10 @@ fn hexex_maps_give_the_reference_hex_counts() {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn broken_minimal_files_are_refused() {
     let Some(root) = shared_data("hexex") else {
         return;

@@ -14,6 +14,10 @@ fn inspect(path: &str, extra: &[&str]) -> serde_json::Value {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn shared_data_reverted_counts_match_the_readme() {
     let Some(root) = shared_data("") else { return };
     let cases = [
@@ -49,6 +53,10 @@ fn shared_data_reverted_counts_match_the_readme() {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn cut_meshes_are_welded_and_reported() {
     let Some(root) = shared_data("directional") else {
         return;

@@ -157,6 +157,10 @@ fn run_all(root: &std::path::Path) -> Vec<((String, f64), String)> {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn noisy_shared_maps_extract_like_the_clean_ones() {
     let Some(root) = shared_data("") else {
         return;

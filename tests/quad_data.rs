@@ -124,6 +124,10 @@ impl Nearest {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn qex_maps_give_qex_reference_meshes() {
     let Some(root) = shared_data("qex") else {
         return;
@@ -171,6 +175,10 @@ fn qex_maps_give_qex_reference_meshes() {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn directional_cut_meshes_give_valid_meshes() {
     let Some(root) = shared_data("directional") else {
         return;

@@ -198,6 +198,10 @@ fn quad_unusable(m: &dualex_map::QuadMesh) -> Option<String> {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn own_outputs_extract_back_to_themselves_refined() {
     let (Some(qex), Some(hexex)) = (shared_data("qex"), shared_data("hexex")) else {
         return;

@@ -201,6 +201,10 @@ fn random_messy_3d_maps_give_valid_meshes_or_clean_errors() {
 /// absent), with random noise of growing amplitude carried through their
 /// transitions: `DUALEX_STRESS_CASES / 20` cases (at least 6).
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn random_noise_on_real_maps_gives_valid_meshes_or_clean_errors() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data");
     if !root.is_dir() {

@@ -75,6 +75,20 @@ fn across(h: &[u32; 8], p: u32, q: u32) -> Option<u32> {
 
 /// Dissolves the doublet chains of `mesh` (module docs).
 pub fn dissolve(mesh: &HexMesh) -> (HexMesh, Chains) {
+    let (out, rep, _) = dissolve_traced(mesh);
+    (out, rep)
+}
+
+/// The input cell index of each live cell.
+fn kept(cells: &[Option<[u32; 8]>]) -> Vec<u32> {
+    (0..cells.len() as u32)
+        .filter(|&i| cells[i as usize].is_some())
+        .collect()
+}
+
+/// [`dissolve`], also returning for each output hex the input hex it is
+/// (a merged hex takes the place of the first of its pair).
+pub fn dissolve_traced(mesh: &HexMesh) -> (HexMesh, Chains, Vec<u32>) {
     let cells = &mesh.cells;
     let mut rep = Chains::default();
     // edges → hexes, faces → count (boundary faces have one hex)
@@ -113,7 +127,7 @@ pub fn dissolve(mesh: &HexMesh) -> (HexMesh, Chains) {
         .collect();
     doublets.sort_unstable();
     if doublets.is_empty() {
-        return (mesh.clone(), rep);
+        return (mesh.clone(), rep, (0..cells.len() as u32).collect());
     }
     // chains: connected components of doublet edges through shared vertices
     let mut at_vertex: HashMap<u32, Vec<usize>> = HashMap::new();
@@ -154,7 +168,7 @@ pub fn dissolve(mesh: &HexMesh) -> (HexMesh, Chains) {
             None => rep.left += chain.len(),
         }
     }
-    (compact(mesh, &new_cells), rep)
+    (compact(mesh, &new_cells), rep, kept(&new_cells))
 }
 
 /// The merges of one chain (kept hex, its new corners, deleted hex), or
@@ -244,9 +258,17 @@ pub fn folded(h: &[u32; 8]) -> Option<[[u32; 2]; 2]> {
 /// number of hexes collapsed; the mesh is returned unchanged when the
 /// result would not be a valid hex mesh.
 pub fn collapse_folded(mesh: &HexMesh) -> (HexMesh, usize) {
+    let (out, n, _) = collapse_folded_traced(mesh);
+    (out, n)
+}
+
+/// [`collapse_folded`], also returning for each output hex the input hex
+/// it is.
+pub fn collapse_folded_traced(mesh: &HexMesh) -> (HexMesh, usize, Vec<u32>) {
+    let unchanged = || (mesh.clone(), 0, (0..mesh.cells.len() as u32).collect());
     let apexes: Vec<Option<[[u32; 2]; 2]>> = mesh.cells.iter().map(folded).collect();
     if apexes.iter().all(Option::is_none) {
-        return (mesh.clone(), 0);
+        return unchanged();
     }
     let mut holders = vec![0u32; mesh.positions.len()];
     for (h, a) in mesh.cells.iter().zip(&apexes) {
@@ -279,9 +301,9 @@ pub fn collapse_folded(mesh: &HexMesh) -> (HexMesh, usize) {
     let out = compact(mesh, &cells);
     let r = dualex_check::check_hex_mesh(out.positions.len(), &out.cells, None);
     if r.is_valid() {
-        (out, n)
+        (out, n, kept(&cells))
     } else {
-        (mesh.clone(), 0)
+        unchanged()
     }
 }
 

@@ -16,7 +16,8 @@
 //! 7. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
 //!    edges dissolved.
 //!
-//! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`].
+//! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`]
+//! ([`extract_traced`]: also the input tet holding each hex's node).
 //! Walks that leave the mesh leave their side unmatched: free boundaries
 //! become boundary faces of the hex mesh.
 #![forbid(unsafe_code)]
@@ -65,6 +66,15 @@ impl Default for HexOptions {
 
 /// Extracts the hex mesh of `map`.
 pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), InputError> {
+    extract_traced(map, opts).map(|(mesh, st, _)| (mesh, st))
+}
+
+/// [`extract`], also returning for each hex the tet of `map` that holds
+/// its node (a hex merged from a pair, step 7, names the first one's).
+pub fn extract_traced(
+    map: &TetMap,
+    opts: &HexOptions,
+) -> Result<(HexMesh, HexStats, Vec<u32>), InputError> {
     let mut st = HexStats::default();
     let mut laps = Laps::start();
     map.validate()?;
@@ -72,6 +82,8 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     map.check_not_reflected()?;
     st.input_tets = map.len();
     let owned;
+    // the input tet of each tet of the (split) map
+    let mut parent: Vec<u32> = (0..map.len() as u32).collect();
     let (map, topo, stars, mut local, singular_snap, free) = {
         let mut map = std::borrow::Cow::Borrowed(map);
         loop {
@@ -105,7 +117,8 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
                 owned = map;
                 break (&*owned, topo, stars, local, snap, free);
             }
-            let (next, applied) = dualex_map::split::split_faces(&map, &faces);
+            let (next, applied, pieces) = dualex_map::split::split_faces_traced(&map, &faces);
+            parent = pieces.iter().map(|&p| parent[p as usize]).collect();
             st.split_faces += applied;
             map = std::borrow::Cow::Owned(next);
         }
@@ -134,6 +147,10 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
     // 6
     let glued = graph.glue();
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
+    let mut source: Vec<u32> = glued
+        .cells()
+        .map(|(node, _)| parent[nodes.tet[node.idx()] as usize])
+        .collect();
     st.finish_output(&graph, &glued, &mesh);
     // cracks: unmatched sides that are not on the input's boundary
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
@@ -146,18 +163,22 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
         .iter()
         .any(|h| (0..8).any(|i| (i + 1..8).any(|j| h[i] == h[j])));
     if repeated || st.edge_valence_interior.contains_key(&2) {
-        let (collapsed, folded) = doublets::collapse_folded(&mesh);
-        let (dissolved, chains) = doublets::dissolve(&collapsed);
+        let (collapsed, folded, kept_folded) = doublets::collapse_folded_traced(&mesh);
+        let (dissolved, chains, kept_chains) = doublets::dissolve_traced(&collapsed);
         st.folded_collapsed = folded;
         st.doublets = chains;
         if folded + chains.edges > 0 {
             mesh = dissolved;
+            source = kept_chains
+                .iter()
+                .map(|&k| source[kept_folded[k as usize] as usize])
+                .collect();
             st.finish_mesh(&mesh);
         }
     }
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
-    Ok((mesh, st))
+    Ok((mesh, st, source))
 }
 
 /// Positions of the glued vertices by diagonal tracing (corner code bits:

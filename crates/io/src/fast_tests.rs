@@ -90,6 +90,10 @@ fn corrupted_files_never_pass_the_fast_path_alone() {
 }
 
 #[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
 fn shared_data_reads_the_same() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data");
     let Ok(walk) = std::fs::read_dir(&dir) else {

@@ -45,6 +45,8 @@ mod fast_tests;
 mod fuzz_tests;
 #[cfg(test)]
 mod roundtrip_tests;
+#[cfg(test)]
+mod test_scratch;
 
 pub use hexex::parse_hexex;
 pub use medit::parse_medit_hex;

@@ -155,11 +155,10 @@ pub fn write_text(path: &Path, text: &str) -> Result<(), OutputError> {
 mod tests {
     use super::*;
 
-    /// `name` in a directory of its own (tests run in parallel).
-    pub(crate) fn scratch(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("dualex-io-{}-{name}", std::process::id()));
-        fs::create_dir_all(&dir).unwrap();
-        dir.join(name)
+    /// `name` in a directory of its own (tests run in parallel); the
+    /// directory is removed when the returned path is dropped.
+    pub(crate) fn scratch(name: &str) -> crate::test_scratch::ScratchFile {
+        crate::test_scratch::ScratchFile::new(name)
     }
 
     fn leftovers(dir: &Path) -> usize {

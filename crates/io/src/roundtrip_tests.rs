@@ -114,8 +114,8 @@ fn tet_map_hexex_is_exact() {
 
 #[test]
 fn files_round_trip_and_name_the_file() {
-    let dir = std::env::temp_dir().join(format!("dualex-io-{}-maps", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = crate::test_scratch::ScratchDir::new("maps");
+    let dir = scratch.path();
     let m = tri_map(3);
     for ext in ["obj", "ply"] {
         let p = dir.join(format!("m.{ext}"));

@@ -140,8 +140,8 @@ fn medit_round_trip() {
 
 #[test]
 fn file_writers_check_before_writing() {
-    let dir = std::env::temp_dir().join(format!("dualex-io-{}-cells", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = crate::test_scratch::ScratchDir::new("cells");
+    let dir = scratch.path();
     let mut bad = strip();
     bad.cells[1][2] = 6;
     let p = dir.join("bad.obj");
@@ -183,7 +183,7 @@ fn file_writers_check_before_writing() {
     for ext in ["mesh", "vtk"] {
         write_hex_mesh(&dir.join(format!("h.{ext}")), &tower()).unwrap();
     }
-    let names: Vec<String> = std::fs::read_dir(&dir)
+    let names: Vec<String> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();

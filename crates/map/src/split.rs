@@ -29,6 +29,16 @@ pub fn split_faces<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     faces: &[Vec<u32>],
 ) -> (SimplexMap<N, D>, usize) {
+    let (out, applied, _) = split_faces_traced(map, faces);
+    (out, applied)
+}
+
+/// [`split_faces`], also returning for each simplex of the new map the
+/// simplex of `map` it is (a piece of): a non-decreasing list.
+pub fn split_faces_traced<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    faces: &[Vec<u32>],
+) -> (SimplexMap<N, D>, usize, Vec<u32>) {
     // the simplices around each vertex of a face
     let mut around: HashMap<u32, Vec<usize>> = HashMap::new();
     for f in faces {
@@ -74,15 +84,17 @@ pub fn split_faces<const N: usize, const D: usize>(
         applied += 1;
     }
     if applied == 0 {
-        return (out, 0);
+        return (out, 0, (0..map.len() as u32).collect());
     }
     out.simplices.clear();
     out.coords.clear();
+    let mut parent = Vec::with_capacity(map.len() + N * applied);
     for (s, cut_s) in cut.iter().enumerate() {
         let (simplex, uv) = (map.simplices[s], map.coords[s]);
         let Some((m, in_face)) = *cut_s else {
             out.simplices.push(simplex);
             out.coords.push(uv);
+            parent.push(s as u32);
             continue;
         };
         let k = in_face.iter().filter(|&&b| b).count() as f64;
@@ -106,9 +118,10 @@ pub fn split_faces<const N: usize, const D: usize>(
             u[c] = um;
             out.simplices.push(t);
             out.coords.push(u);
+            parent.push(s as u32);
         }
     }
-    (out, applied)
+    (out, applied, parent)
 }
 
 #[cfg(test)]
@@ -133,6 +146,25 @@ mod tests {
         assert!((volume(&out) - volume(&m)).abs() < 1e-12);
         assert!((0..out.len()).all(|s| out.map_det(s) > 0.0));
         out.validate().unwrap_or_else(|e| panic!("{e}"));
+    }
+
+    /// Each piece names the simplex it came from; the others keep their
+    /// own index shifted by the pieces before them.
+    #[test]
+    fn pieces_name_their_parent() {
+        let m = tet_cube(2);
+        let t = m.simplices[3];
+        let (out, n, parent) = split_faces_traced(&m, &[vec![t[0], t[1], t[2]]]);
+        assert_eq!((n, parent.len()), (1, out.len()));
+        assert!(parent.windows(2).all(|w| w[0] <= w[1]));
+        for (piece, &p) in out.simplices.iter().zip(&parent) {
+            let old = m.simplices[p as usize];
+            let same = (0..4).filter(|&c| piece[c] == old[c]).count();
+            assert!(same >= 3, "piece {piece:?} of {old:?}");
+        }
+        assert_eq!(parent.iter().filter(|&&p| p == 3).count(), 3);
+        let (_, _, id) = split_faces_traced(&m, &[]);
+        assert_eq!(id, (0..m.len() as u32).collect::<Vec<_>>());
     }
 
     /// A tet edge and a tet face: every tet around the edge in two, both

@@ -84,6 +84,13 @@ fn merged(v: u32, pair: [usize; 2], cells: &[[u32; 4]]) -> Option<[u32; 4]> {
 
 /// Dissolves the interior valence-2 vertices of `mesh` (module docs).
 pub fn dissolve(mesh: &QuadMesh) -> (QuadMesh, Doublets) {
+    let (out, rep, _) = dissolve_traced(mesh);
+    (out, rep)
+}
+
+/// [`dissolve`], also returning for each output cell the input cell it
+/// is (a merged quad takes the place of the first of its two cells).
+pub fn dissolve_traced(mesh: &QuadMesh) -> (QuadMesh, Doublets, Vec<u32>) {
     let nv = mesh.positions.len();
     let mut cells = mesh.cells.clone();
     let mut alive = vec![true; cells.len()];
@@ -149,7 +156,10 @@ pub fn dissolve(mesh: &QuadMesh) -> (QuadMesh, Doublets) {
             final_around[v as usize].len() <= 2 && is_interior(v, &final_around, &out.cells, &all)
         })
         .count();
-    (out, rep)
+    let kept = (0..cells.len() as u32)
+        .filter(|&c| alive[c as usize])
+        .collect();
+    (out, rep, kept)
 }
 
 #[cfg(test)]
@@ -184,7 +194,7 @@ mod tests {
         let before = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
         assert!(before.is_valid(), "{:?}", before.errors());
         assert_eq!(before.interior_valence.get(&2), Some(&1));
-        let (out, rep) = dissolve(&m);
+        let (out, rep, kept) = dissolve_traced(&m);
         assert_eq!(
             rep,
             Doublets {
@@ -193,6 +203,8 @@ mod tests {
             }
         );
         assert_eq!((out.cells.len(), out.positions.len()), (9, 16));
+        // the merged quad takes the place of X (cell 8), Y (cell 9) is gone
+        assert_eq!(kept, (0..9).collect::<Vec<u32>>());
         let after = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
         assert!(after.is_valid(), "{:?}", after.errors());
         assert_eq!(after.euler, before.euler);

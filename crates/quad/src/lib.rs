@@ -13,7 +13,8 @@
 //! 8. [`repair`]: holes closed, faces quads cannot represent subdivided;
 //! 9. [`doublets`]: interior valence-2 vertices left by fairing dissolved.
 //!
-//! Input: a validated [`TriMap`]. Output: a [`QuadMesh`] and [`QuadStats`].
+//! Input: a validated [`TriMap`]. Output: a [`QuadMesh`] and [`QuadStats`]
+//! ([`extract_traced`]: also the input triangle holding each quad's node).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -62,6 +63,21 @@ impl Default for QuadOptions {
 
 /// Extracts the quad mesh of `map`.
 pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats), InputError> {
+    extract_traced(map, opts).map(|(mesh, st, _)| (mesh, st))
+}
+
+/// In [`extract_traced`]'s sources: a cell that closes a hole (step 8),
+/// held by no node.
+pub const NO_SOURCE: u32 = u32::MAX;
+
+/// [`extract`], also returning for each quad the triangle of `map` that
+/// holds its node ([`NO_SOURCE`] for a face closing a hole). Quads of a
+/// subdivision (step 8) name their parent's triangle; a quad merged from
+/// two (step 9) names the first one's.
+pub fn extract_traced(
+    map: &TriMap,
+    opts: &QuadOptions,
+) -> Result<(QuadMesh, QuadStats, Vec<u32>), InputError> {
     let mut st = QuadStats::default();
     let mut laps = Laps::start();
     map.validate()?;
@@ -70,6 +86,8 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
     st.reverted_triangles = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
     let mut owned;
     let mut map = map;
+    // the input triangle of each triangle of the (split) map
+    let mut parent: Vec<u32> = (0..map.len() as u32).collect();
     let mut grid = None;
     let (topo, stars, mut local, singular_snap) = loop {
         let topo = Topology::build(map)?;
@@ -91,8 +109,9 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         if edges.is_empty() || st.split_edges >= map.len() {
             break (topo, stars, local, snap);
         }
-        let applied;
-        (owned, applied) = split::split_edges(map, &edges);
+        let (applied, pieces);
+        (owned, applied, pieces) = split::split_edges_traced(map, &edges);
+        parent = pieces.iter().map(|&p| parent[p as usize]).collect();
         st.split_edges += applied;
         map = &owned;
     };
@@ -132,6 +151,10 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         glued = graph.glue();
     }
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
+    let mut source: Vec<u32> = glued
+        .cells()
+        .map(|(node, _)| parent[nodes.tri[node.idx()] as usize])
+        .collect();
     st.finish_output(&graph, &glued, &mesh);
     // 8
     let holes = hole_edges(&graph, &glued, &ends, topo.boundary_facets == 0);
@@ -150,21 +173,27 @@ pub fn extract(map: &TriMap, opts: &QuadOptions) -> Result<(QuadMesh, QuadStats)
         st.unmatched_sides -= (collapsed + holes.len()).min(st.unmatched_sides);
         st.boundary_loops -= (collapsed + fill.len()).min(st.boundary_loops);
         mesh = rep.mesh;
+        source = rep
+            .origin
+            .iter()
+            .map(|&o| source.get(o as usize).copied().unwrap_or(NO_SOURCE))
+            .collect();
         st.finish_mesh(&mesh);
     }
     // 9: doublets that fairing found no partner for
     // (only when the counts show an interior vertex of valence 2)
     if opts.fairing && st.valence_interior.contains_key(&2) {
-        let (dissolved, rep) = doublets::dissolve(&mesh);
+        let (dissolved, rep, kept) = doublets::dissolve_traced(&mesh);
         st.doublets = rep;
         if rep.dissolved > 0 {
             mesh = dissolved;
+            source = kept.iter().map(|&k| source[k as usize]).collect();
             st.finish_mesh(&mesh);
         }
     }
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
-    Ok((mesh, st))
+    Ok((mesh, st, source))
 }
 
 /// The two corners (vertex ids) of side `d` of `node`, in the order of the

@@ -52,6 +52,9 @@ pub struct Repaired {
     /// Paths of the local repair (`crate::repair_local`): pairs of faces
     /// quads cannot represent, made quads along a path between them.
     pub local_paths: usize,
+    /// For each cell of `mesh`, the polygon it comes from: an index into
+    /// the input cells followed by `extra`.
+    pub origin: Vec<u32>,
 }
 
 /// Subdivides every cell once when some cell is a triangle or some polygon
@@ -67,6 +70,7 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
         out.cells
             .extend(extra.iter().map(|p| [p[0], p[1], p[2], p[3]]));
         return Some(Repaired {
+            origin: (0..out.cells.len() as u32).collect(),
             mesh: out,
             dropped: 0,
             subdivided: false,
@@ -75,13 +79,15 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
     }
     // first choice: the local repair, kept when its result is a valid
     // all-quad mesh
-    if let Some((out, paths)) = crate::repair_local::repair(mesh, extra) {
+    if let Some(local) = crate::repair_local::repair(mesh, extra) {
+        let out = &local.mesh;
         if dualex_check::check_quad_mesh(out.positions.len(), &out.cells).is_valid() {
             return Some(Repaired {
-                mesh: out,
+                mesh: local.mesh,
                 dropped: 0,
                 subdivided: false,
-                local_paths: paths,
+                local_paths: local.paths,
+                origin: local.origin,
             });
         }
     }
@@ -98,7 +104,8 @@ pub fn subdivide(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Repaired {
     };
     let mut edge_point: HashMap<(u32, u32), u32> = HashMap::new();
     let mut dropped = 0;
-    for p in polygons {
+    let mut origin = Vec::with_capacity(4 * mesh.cells.len());
+    for (polygon_id, p) in polygons.enumerate() {
         if p.len() < 3 {
             dropped += 1;
             continue;
@@ -124,6 +131,7 @@ pub fn subdivide(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Repaired {
             let e_next = mid(v, next, &mut out.positions);
             let e_prev = mid(prev, v, &mut out.positions);
             out.cells.push([v, e_next, f, e_prev]);
+            origin.push(polygon_id as u32);
         }
     }
     Repaired {
@@ -131,6 +139,7 @@ pub fn subdivide(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Repaired {
         dropped,
         subdivided: true,
         local_paths: 0,
+        origin,
     }
 }
 
@@ -157,6 +166,8 @@ mod tests {
         assert!(!local.subdivided && local.local_paths == 1);
         let rep = subdivide(&mesh, &[]);
         assert!(rep.subdivided);
+        // the quad's 4 pieces, then the triangle's 3
+        assert_eq!(rep.origin, [0, 0, 0, 0, 1, 1, 1]);
         let (out, dropped) = (rep.mesh, rep.dropped);
         assert_eq!(dropped, 0);
         assert_eq!(out.cells.len(), 7);

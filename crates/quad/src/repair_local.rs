@@ -50,6 +50,10 @@ fn insert_on(p: &mut Vec<u32>, e: (u32, u32), m: u32) -> Option<()> {
     Some(())
 }
 
+/// A path: its faces and the edges between consecutive ones (and a last
+/// boundary edge when it ends on the boundary).
+type Path = (Vec<usize>, Vec<(u32, u32)>);
+
 /// A path from odd face `s` to the nearest other odd face, or with
 /// `to_boundary` to the nearest odd face or boundary edge: the faces and,
 /// between consecutive faces, the edge they share; a last edge without a
@@ -59,7 +63,7 @@ fn path_from(
     polys: &[Vec<u32>],
     by_edge: &HashMap<(u32, u32), Vec<usize>>,
     to_boundary: bool,
-) -> Option<(Vec<usize>, Vec<(u32, u32)>)> {
+) -> Option<Path> {
     let mut prev: HashMap<usize, (usize, (u32, u32))> = HashMap::new();
     let mut queue = VecDeque::from([s]);
     let mut seen = vec![false; polys.len()];
@@ -146,13 +150,25 @@ fn split_quad(
     }
 }
 
+/// What [`repair`] made.
+pub struct Local {
+    /// The all-quad mesh.
+    pub mesh: QuadMesh,
+    /// Paths repaired (pairs of odd faces, or an odd face and the
+    /// boundary).
+    pub paths: usize,
+    /// For each cell, the polygon it comes from: an index into the input
+    /// cells followed by `extra`.
+    pub origin: Vec<u32>,
+}
+
 /// The local repair (module docs): `None` when it does not apply.
-pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<(QuadMesh, usize)> {
+pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
     let mut positions = mesh.positions.clone();
     let mut polys: Vec<Vec<u32>> = mesh
         .cells
         .iter()
-        .map(|c| crate::repair::polygon(c))
+        .map(crate::repair::polygon)
         .chain(extra.iter().cloned())
         .collect();
     for p in &polys {
@@ -163,6 +179,7 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<(QuadMesh, usize)> 
             return None;
         }
     }
+    let mut origin: Vec<u32> = (0..polys.len() as u32).collect();
     let mut paths = 0;
     let midpoint = |pos: &mut Vec<[f64; 3]>, pts: &[u32]| -> u32 {
         let k = pts.len() as f64;
@@ -204,27 +221,41 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<(QuadMesh, usize)> 
             }
         }
         let mut next: Vec<Vec<u32>> = Vec::with_capacity(polys.len() + 2 * faces.len());
+        let mut next_origin = Vec::with_capacity(next.capacity());
         let mut repl: HashMap<usize, Vec<Vec<u32>>> = replaced.into_iter().collect();
         for (f, p) in polys.into_iter().enumerate() {
             match repl.remove(&f) {
-                Some(list) => next.extend(list),
-                None => next.push(p),
+                Some(list) => {
+                    next_origin.extend(std::iter::repeat_n(origin[f], list.len()));
+                    next.extend(list);
+                }
+                None => {
+                    next_origin.push(origin[f]);
+                    next.push(p);
+                }
             }
         }
         polys = next;
+        origin = next_origin;
         paths += 1;
         if paths > mesh.cells.len() + extra.len() {
             return None;
         }
     }
     let mut cells = Vec::with_capacity(polys.len());
-    for p in &polys {
+    let mut cell_origin = Vec::with_capacity(polys.len());
+    for (p, &o) in polys.iter().zip(&origin) {
         // fan of quads from corner 0 (even polygons)
         for i in (1..p.len() - 1).step_by(2) {
             cells.push([p[0], p[i], p[i + 1], p[(i + 2) % p.len()]]);
+            cell_origin.push(o);
         }
     }
-    Some((QuadMesh { positions, cells }, paths))
+    Some(Local {
+        mesh: QuadMesh { positions, cells },
+        paths,
+        origin: cell_origin,
+    })
 }
 
 #[cfg(test)]

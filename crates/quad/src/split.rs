@@ -52,6 +52,13 @@ pub fn edges_to_split(
 /// edges split (an edge sharing a triangle with an earlier one waits for
 /// the next pass).
 pub fn split_edges(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, usize) {
+    let (out, applied, _) = split_edges_traced(map, edges);
+    (out, applied)
+}
+
+/// [`split_edges`], also returning the triangle of `map` each triangle of
+/// the new map comes from (`dualex_map::split::split_faces_traced`).
+pub fn split_edges_traced(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, usize, Vec<u32>) {
     let faces: Vec<Vec<u32>> = edges
         .iter()
         .map(|&(s, f)| {
@@ -59,5 +66,5 @@ pub fn split_edges(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, usize) {
             vec![tri[(f + 1) % 3], tri[(f + 2) % 3]]
         })
         .collect();
-    dualex_map::split::split_faces(map, &faces)
+    dualex_map::split::split_faces_traced(map, &faces)
 }

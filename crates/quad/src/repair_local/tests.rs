@@ -14,8 +14,13 @@ fn two_triangles_joined_by_a_straight_path() {
     }
     m.cells = vec![[0, 1, 6, 6], [1, 2, 7, 6], [2, 3, 8, 7], [3, 4, 8, 8]];
     let before = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
-    let (out, paths) = repair(&m, &[]).expect("repaired");
+    let Local {
+        mesh: out,
+        paths,
+        origin,
+    } = repair(&m, &[]).expect("repaired");
     assert_eq!(paths, 1);
+    assert_eq!(origin, [0, 1, 1, 2, 2, 3]);
     let after = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
     assert!(after.is_valid(), "{:?}", after.errors());
     assert_eq!(after.euler, before.euler);
@@ -31,7 +36,9 @@ fn a_triangle_pairs_with_the_boundary() {
         positions: vec![[0.0; 3]; 5],
         cells: vec![[0, 1, 2, 2], [1, 3, 4, 2]],
     };
-    let (out, paths) = repair(&m, &[]).expect("repaired");
+    let Local {
+        mesh: out, paths, ..
+    } = repair(&m, &[]).expect("repaired");
     assert_eq!(paths, 1);
     let r = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
     assert!(r.is_valid(), "{:?}", r.errors());
@@ -45,7 +52,9 @@ fn a_hexagon_is_split() {
         positions: vec![[0.0; 3]; 6],
         cells: vec![],
     };
-    let (out, paths) = repair(&m, &[vec![0, 1, 2, 3, 4, 5]]).expect("repaired");
+    let Local {
+        mesh: out, paths, ..
+    } = repair(&m, &[vec![0, 1, 2, 3, 4, 5]]).expect("repaired");
     assert_eq!(paths, 0);
     assert_eq!(out.cells, vec![[0, 1, 2, 3], [0, 3, 4, 5]]);
 }

@@ -1,0 +1,216 @@
+//! The two extractions as the CLI runs them: weld (by default), extract,
+//! check the output, compare its topology with the input's.
+//!
+//! Input: a map (not modified) and options. Output: the mesh and its typed
+//! stats, or an [`Error`]: [`Error::Input`] for a map the extraction
+//! refuses, [`Error::InvalidOutput`] when no valid mesh could be made (as
+//! the CLI, which then writes nothing), [`Error::TopologyChanged`] when
+//! `strict` is set and the output's topology differs from the input's.
+//!
+//! Welding merges boundary vertices at exactly the same position (the
+//! seams of a cut mesh, see `dualex_map::weld`); without it a cut mesh is
+//! extracted chart by chart (Directional's dragon: 46 components instead
+//! of 1). It keeps the simplices and their order, so simplex indices in
+//! the output refer to the caller's map either way.
+
+use crate::stats::{GridOffset, HexStats, QuadStats, TopologyComparison};
+use crate::{Error, HexMesh, QuadMesh, TetMap, TriMap};
+use dualex_check::topology as topo;
+use dualex_map::{SimplexMap, TransitionOptions};
+use std::borrow::Cow;
+
+/// Options of [`quad`](crate::quad()).
+#[derive(Clone, Debug)]
+pub struct QuadOptions {
+    /// Merge coincident boundary vertices (cut meshes) first. Default: on.
+    pub weld: bool,
+    /// Index fairing after untangling. Default: on.
+    pub fairing: bool,
+    /// Round transition translations of any residual instead of refusing
+    /// the map (residuals up to 0.1 are always rounded). Default: off.
+    pub round_transitions: bool,
+    /// Where the dual grid sits. Default: [`GridOffset::Auto`].
+    pub grid_offset: GridOffset,
+    /// Seed of the sanitization perturbations. Default: 1.
+    pub seed: u64,
+    /// An output whose topology differs from the input's is an error
+    /// instead of being reported in the stats. Default: off.
+    pub strict: bool,
+}
+
+impl Default for QuadOptions {
+    fn default() -> Self {
+        let d = dualex_quad::QuadOptions::default();
+        QuadOptions {
+            weld: true,
+            fairing: d.fairing,
+            round_transitions: false,
+            grid_offset: d.grid_offset,
+            seed: d.seed,
+            strict: false,
+        }
+    }
+}
+
+/// Options of [`hex`](crate::hex()).
+#[derive(Clone, Debug)]
+pub struct HexOptions {
+    /// Merge coincident boundary vertices (cut meshes) first. Default: on.
+    pub weld: bool,
+    /// As [`QuadOptions::round_transitions`].
+    pub round_transitions: bool,
+    /// Where the dual grid sits. Default: [`GridOffset::Auto`].
+    pub grid_offset: GridOffset,
+    /// Seed of the sanitization perturbations. Default: 1.
+    pub seed: u64,
+    /// As [`QuadOptions::strict`].
+    pub strict: bool,
+}
+
+impl Default for HexOptions {
+    fn default() -> Self {
+        let d = dualex_hex::HexOptions::default();
+        HexOptions {
+            weld: true,
+            round_transitions: false,
+            grid_offset: d.grid_offset,
+            seed: d.seed,
+            strict: false,
+        }
+    }
+}
+
+/// The result of [`quad`](crate::quad()).
+#[derive(Clone, Debug)]
+pub struct QuadOutput {
+    /// The quad mesh: positions and cells (4 vertex indices, counter-
+    /// clockwise seen from the side the map's orientation makes the front).
+    pub mesh: QuadMesh,
+    /// Its counts.
+    pub stats: QuadStats,
+    /// For each quad, the input triangle that holds its node (an index
+    /// into the map's triangles, welded or not); `None` for a face that
+    /// closes a hole. After a subdivision (`stats.repairs.subdivided`) the
+    /// four quads of a cell name its triangle; a quad merged from two
+    /// (doublet removal) names the first one's.
+    pub sources: Vec<Option<u32>>,
+}
+
+/// The result of [`hex`](crate::hex()).
+#[derive(Clone, Debug)]
+pub struct HexOutput {
+    /// The hex mesh: positions and cells (8 vertex indices, VTK order).
+    pub mesh: HexMesh,
+    /// Its counts.
+    pub stats: HexStats,
+    /// For each hex, the input tet that holds its node (an index into the
+    /// map's tets); a hex merged from a pair names the first one's.
+    pub sources: Vec<u32>,
+}
+
+/// Welds `map` when asked; the number of vertices merged.
+fn welded<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    weld: bool,
+) -> (Cow<'_, SimplexMap<N, D>>, usize) {
+    if !weld {
+        return (Cow::Borrowed(map), 0);
+    }
+    let (m, rep) = dualex_map::weld::weld(map);
+    (Cow::Owned(m), rep.welded_vertices)
+}
+
+fn transitions(round: bool) -> TransitionOptions {
+    TransitionOptions {
+        round,
+        ..Default::default()
+    }
+}
+
+fn topology_check(t: &TopologyComparison, strict: bool) -> Result<(), Error> {
+    if strict && !t.matches() {
+        return Err(Error::TopologyChanged {
+            input: t.input,
+            output: t.output,
+        });
+    }
+    Ok(())
+}
+
+/// Extracts the quad mesh of a triangle map (see the [crate] example).
+pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
+    let (map, welded) = welded(map, opts.weld);
+    let inner = dualex_quad::QuadOptions {
+        fairing: opts.fairing,
+        transitions: transitions(opts.round_transitions),
+        seed: opts.seed,
+        grid_offset: opts.grid_offset,
+    };
+    let (mesh, stats, sources) = dualex_quad::extract_traced(&map, &inner)?;
+    let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    if !rep.is_valid() {
+        return Err(Error::InvalidOutput(rep.errors().join("; ")));
+    }
+    let t = TopologyComparison {
+        input: topo::surface_shape(map.positions.len(), &map.simplices).into(),
+        output: topo::quad_shape(&rep).into(),
+    };
+    topology_check(&t, opts.strict)?;
+    let sources = sources
+        .into_iter()
+        .map(|s| (s != dualex_quad::NO_SOURCE).then_some(s))
+        .collect();
+    Ok(QuadOutput {
+        stats: QuadStats::new(&stats, welded, t),
+        mesh,
+        sources,
+    })
+}
+
+/// Extracts the hex mesh of a tet map.
+///
+/// ```
+/// // a unit cube of 6 tets around the diagonal 0–7, mapped onto [0, 2]³
+/// let positions: Vec<[f64; 3]> = (0..8)
+///     .map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2 & 1) as f64])
+///     .collect();
+/// let tets = [
+///     [0, 1, 3, 7], [0, 3, 2, 7], [0, 2, 6, 7],
+///     [0, 6, 4, 7], [0, 4, 5, 7], [0, 5, 1, 7],
+/// ];
+/// let uvw: Vec<[[f64; 3]; 4]> = tets
+///     .iter()
+///     .map(|t| t.map(|v| positions[v as usize].map(|x| 2.0 * x)))
+///     .collect();
+/// let map = dualex::tet_map_from_slices(&positions, &tets, &uvw)?;
+/// let out = dualex::hex(&map, &dualex::HexOptions::default())?;
+/// assert_eq!(out.stats.hexes, 8);
+/// // the tet holding each hex's node (the hex's centre)
+/// assert_eq!(out.sources.len(), 8);
+/// assert_eq!(out.mesh.cells.len(), 8);
+/// assert!(out.stats.topology.matches());
+/// # Ok::<(), dualex::Error>(())
+/// ```
+pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
+    let (map, welded) = welded(map, opts.weld);
+    let inner = dualex_hex::HexOptions {
+        transitions: transitions(opts.round_transitions),
+        seed: opts.seed,
+        grid_offset: opts.grid_offset,
+    };
+    let (mesh, stats, sources) = dualex_hex::extract_traced(&map, &inner)?;
+    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    if !rep.is_valid() {
+        return Err(Error::InvalidOutput(rep.errors().join("; ")));
+    }
+    let t = TopologyComparison {
+        input: topo::tet_shape(map.positions.len(), &map.simplices).into(),
+        output: topo::hex_shape(&rep).into(),
+    };
+    topology_check(&t, opts.strict)?;
+    Ok(HexOutput {
+        stats: HexStats::new(&stats, welded, t),
+        mesh,
+        sources,
+    })
+}

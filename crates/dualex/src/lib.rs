@@ -1,0 +1,129 @@
+//! # dualex — quad and hex meshes from messy grid-preserving maps
+//!
+//! The one crate a Rust user needs: build or read a map, extract, write.
+//! The pipeline crates (`dualex-map`, `dualex-quad`, `dualex-hex`,
+//! `dualex-io`, …) stay behind it.
+//!
+//! | step | 2D (triangles → quads) | 3D (tets → hexes) |
+//! |---|---|---|
+//! | a map from slices | [`tri_map_from_slices`] | [`tet_map_from_slices`] |
+//! | a map from a file | [`read_tri_map`] (`.obj`, `.ply`) | [`read_tet_map`] (`.hexex`) |
+//! | extraction (welds cut meshes first) | [`quad()`] → [`QuadOutput`] | [`hex()`] → [`HexOutput`] |
+//! | typed counts | [`QuadStats`] | [`HexStats`] |
+//! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`) |
+//!
+//! Errors are one [`Error`] enum; input errors name the file and the
+//! element (`triangle 17: …`). Nothing panics on bad input.
+//!
+//! ```
+//! // a 1×1 square of 2 triangles whose map covers [0, 3]²: 3×3 quads
+//! let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+//! let triangles = [[0, 1, 2], [0, 2, 3]];
+//! let uv = triangles.map(|t| t.map(|v| {
+//!     let p = positions[v as usize];
+//!     [3.0 * p[0], 3.0 * p[1]]
+//! }));
+//! let map = dualex::tri_map_from_slices(&positions, &triangles, &uv)?;
+//! let out = dualex::quad(&map, &dualex::QuadOptions::default())?;
+//! assert_eq!(out.mesh.cells.len(), 9);
+//! assert_eq!((out.stats.quads, out.stats.components, out.stats.boundary_loops), (9, 1, 1));
+//! assert_eq!(out.stats.valence_interior.get(&4), Some(&4));
+//! # Ok::<(), dualex::Error>(())
+//! ```
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod extract;
+mod map;
+pub mod stats;
+
+pub use dualex_io::OutputError;
+pub use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
+pub use extract::{hex, quad, HexOptions, HexOutput, QuadOptions, QuadOutput};
+pub use map::{tet_map_from_slices, tri_map_from_slices};
+pub use stats::{GridOffset, HexStats, QuadStats, Topology};
+
+use std::fmt;
+use std::path::Path;
+
+/// Everything that can go wrong, each kind with its own variant.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum Error {
+    /// The input: an unreadable or malformed file, an invalid map, a map
+    /// the extraction refuses. The message names the file (when there is
+    /// one) and the element.
+    Input(InputError),
+    /// Writing an output file.
+    Output(OutputError),
+    /// The extraction could not make a valid mesh (the checker's findings);
+    /// please report the input.
+    InvalidOutput(String),
+    /// With `strict`: the output's topology differs from the input's.
+    TopologyChanged {
+        /// The input's topology.
+        input: Topology,
+        /// The output's.
+        output: Topology,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Input(e) => write!(f, "{e}"),
+            Error::Output(e) => write!(f, "{e}"),
+            Error::InvalidOutput(e) => write!(f, "could not make a valid mesh: {e}"),
+            Error::TopologyChanged { input, output } => write!(
+                f,
+                "the output's topology differs from the input's: components {} → {}, Euler characteristic {} → {}, boundary components {} → {}",
+                input.components,
+                output.components,
+                input.euler,
+                output.euler,
+                input.boundary_components,
+                output.boundary_components
+            ),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl From<InputError> for Error {
+    fn from(e: InputError) -> Self {
+        Error::Input(e)
+    }
+}
+
+impl From<OutputError> for Error {
+    fn from(e: OutputError) -> Self {
+        Error::Output(e)
+    }
+}
+
+/// Reads a triangle map from `.obj` (`f v/vt`) or `.ply` (per-face
+/// `texcoord`), chosen by extension.
+pub fn read_tri_map(path: impl AsRef<Path>) -> Result<TriMap, Error> {
+    Ok(dualex_io::read_tri_map(path.as_ref())?)
+}
+
+/// Reads a tet map from HexEx's `.hexex`.
+pub fn read_tet_map(path: impl AsRef<Path>) -> Result<TetMap, Error> {
+    Ok(dualex_io::read_tet_map(path.as_ref())?)
+}
+
+/// Writes a quad mesh as `.obj`, `.ply` (binary) or `.vtk`, chosen by
+/// extension, through a temporary file renamed over the target.
+pub fn write_quad_mesh(path: impl AsRef<Path>, mesh: &QuadMesh) -> Result<(), Error> {
+    Ok(dualex_io::write_quad_mesh(path.as_ref(), mesh)?)
+}
+
+/// Writes a hex mesh as `.mesh` (MEDIT) or `.vtk`, chosen by extension,
+/// through a temporary file renamed over the target.
+pub fn write_hex_mesh(path: impl AsRef<Path>, mesh: &HexMesh) -> Result<(), Error> {
+    Ok(dualex_io::write_hex_mesh(path.as_ref(), mesh)?)
+}
+
+#[cfg(test)]
+mod tests;

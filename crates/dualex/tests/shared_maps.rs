@@ -1,0 +1,79 @@
+//! The facade on real maps of `../shared/data` (beside the checkout; listed
+//! as ignored with the reason when absent, see `build.rs`): welding by
+//! default is what makes Directional's cut dragon one closed mesh.
+
+use std::path::{Path, PathBuf};
+
+fn data(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/data")
+        .join(rel)
+}
+
+#[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
+fn the_dragon_is_welded_by_default() {
+    let map = dualex::read_tri_map(data("directional/dragon-param-full-seamless.obj")).unwrap();
+    let out = dualex::quad(&map, &dualex::QuadOptions::default()).unwrap();
+    let s = &out.stats;
+    assert!(s.welded_vertices > 0);
+    assert_eq!(
+        (s.quads, s.components, s.euler, s.boundary_loops),
+        (5084, 1, 2, 0)
+    );
+    assert!(s.topology.matches());
+    // split edges (knight, dragon) keep the input's triangle numbers
+    assert_eq!(out.sources.len(), s.quads);
+    assert!(out
+        .sources
+        .iter()
+        .all(|t| t.is_some_and(|t| (t as usize) < map.len())));
+    let apart = dualex::QuadOptions {
+        weld: false,
+        ..Default::default()
+    };
+    let out = dualex::quad(&map, &apart).unwrap();
+    assert_eq!(out.stats.components, 46);
+}
+
+#[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
+fn hexex_hand_gives_the_reference_count() {
+    let map = dualex::read_tet_map(data("hexex/hand_q.hexex")).unwrap();
+    let out = dualex::hex(&map, &dualex::HexOptions::default()).unwrap();
+    assert_eq!(out.stats.hexes, 956);
+    assert_eq!(out.stats.components, 1);
+}
+
+#[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
+fn repaired_quads_name_their_parents_triangle() {
+    let map = dualex::read_tri_map(data("directional/horsers-param-full-seamless.obj")).unwrap();
+    let out = dualex::quad(&map, &dualex::QuadOptions::default()).unwrap();
+    // its faces that quads cannot represent are repaired locally
+    assert!(!out.stats.repairs.subdivided);
+    assert_eq!(out.sources.len(), out.stats.quads);
+    let known = out.sources.iter().flatten().count();
+    assert!(out
+        .sources
+        .iter()
+        .flatten()
+        .all(|&t| (t as usize) < map.len()));
+    // only the faces closing holes (a k-gon, plus at most one point of a
+    // repair path: ⌈k/2⌉ quads) have no node
+    let holes = out.stats.repairs.holes_filled;
+    let unknown = out.stats.quads - known;
+    assert!(
+        holes > 0 && unknown >= holes && unknown <= 6 * holes,
+        "{unknown} quads without a node, {holes} holes"
+    );
+}
