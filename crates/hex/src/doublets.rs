@@ -40,15 +40,7 @@ pub struct Chains {
 const CODE: [usize; 8] = [0, 1, 3, 2, 4, 5, 7, 6];
 /// VTK corner of each cube corner code.
 const VTK: [usize; 8] = [0, 1, 3, 2, 4, 5, 7, 6];
-/// The 6 faces of a hex, as VTK corners.
-const FACES: [[usize; 4]; 6] = [
-    [0, 3, 2, 1],
-    [4, 5, 6, 7],
-    [0, 1, 5, 4],
-    [1, 2, 6, 5],
-    [2, 3, 7, 6],
-    [3, 0, 4, 7],
-];
+use dualex_map::cells::HEX_FACES as FACES;
 
 fn key2(a: u32, b: u32) -> (u32, u32) {
     (a.min(b), a.max(b))

@@ -19,16 +19,7 @@ use crate::valence::{check_quads, valence_classes};
 
 const VIEWER_JS: &str = include_str!("viewer.js");
 
-/// The faces of a hex in VTK order, each counter-clockwise seen from
-/// outside (see [`dualex_map::cells`]).
-const HEX_FACES: [[usize; 4]; 6] = [
-    [0, 3, 2, 1],
-    [4, 5, 6, 7],
-    [0, 1, 5, 4],
-    [1, 2, 6, 5],
-    [2, 3, 7, 6],
-    [3, 0, 4, 7],
-];
+use dualex_map::cells::HEX_FACES;
 
 /// The page showing `mesh` (see the module docs). Errors: a quad refers to
 /// a missing vertex, or a position is not finite.

@@ -15,6 +15,7 @@
 //! cone of a whole number of turns (valence 8: trivial holonomy), hence
 //! the combinatorial test.
 
+use dualex_map::cells::{HEX_EDGES, HEX_FACES};
 use dualex_map::{HexMesh, QuadMesh, Rot, SimplexMap};
 use std::collections::HashMap;
 
@@ -261,27 +262,3 @@ pub(crate) fn from_hex_mesh(mesh: &HexMesh) -> Vec<VertexClass> {
         })
         .collect()
 }
-
-/// The 12 edges and 6 faces (cyclic) of a hex in VTK order.
-const HEX_EDGES: [[usize; 2]; 12] = [
-    [0, 1],
-    [1, 2],
-    [2, 3],
-    [3, 0],
-    [4, 5],
-    [5, 6],
-    [6, 7],
-    [7, 4],
-    [0, 4],
-    [1, 5],
-    [2, 6],
-    [3, 7],
-];
-const HEX_FACES: [[usize; 4]; 6] = [
-    [0, 3, 2, 1],
-    [4, 5, 6, 7],
-    [0, 1, 5, 4],
-    [1, 2, 6, 5],
-    [2, 3, 7, 6],
-    [3, 0, 4, 7],
-];

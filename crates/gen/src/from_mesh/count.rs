@@ -105,17 +105,9 @@ pub fn expected_quad(mesh: &QuadMesh) -> Expected {
 
 /// The counts of the hex mesh `M_k`.
 pub fn expected_hex(mesh: &HexMesh) -> ExpectedHex {
-    const FACES: [[usize; 4]; 6] = [
-        [0, 3, 2, 1],
-        [4, 5, 6, 7],
-        [0, 1, 5, 4],
-        [1, 2, 6, 5],
-        [2, 3, 7, 6],
-        [3, 0, 4, 7],
-    ];
     let mut count: HashMap<[u32; 4], (usize, Vec<u32>)> = HashMap::new();
     for h in &mesh.cells {
-        for f in FACES {
+        for f in dualex_map::cells::HEX_FACES {
             let cyc: Vec<u32> = f.iter().map(|&i| h[i]).collect();
             let mut key = [cyc[0], cyc[1], cyc[2], cyc[3]];
             key.sort_unstable();

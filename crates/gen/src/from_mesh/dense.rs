@@ -36,31 +36,7 @@ use super::refine::Refined;
 use dualex_map::HexMesh;
 use std::collections::{BTreeMap, HashMap};
 
-/// The 6 faces of a VTK hex, each outward for a positive hex.
-pub const HEX_FACES: [[usize; 4]; 6] = [
-    [0, 3, 2, 1],
-    [4, 5, 6, 7],
-    [0, 1, 5, 4],
-    [1, 2, 6, 5],
-    [2, 3, 7, 6],
-    [3, 0, 4, 7],
-];
-
-/// The 12 edges of a VTK hex.
-pub const HEX_EDGES: [[usize; 2]; 12] = [
-    [0, 1],
-    [1, 2],
-    [2, 3],
-    [3, 0],
-    [4, 5],
-    [5, 6],
-    [6, 7],
-    [7, 4],
-    [0, 4],
-    [1, 5],
-    [2, 6],
-    [3, 7],
-];
+pub use dualex_map::cells::{HEX_EDGES, HEX_FACES};
 
 /// The unit cells `(i, j, l)`, `0 <= i, j, l < n`, for which `keep` holds,
 /// as hexes with corners at integer points shifted by `-n/2` (the box is
