@@ -176,7 +176,11 @@ fn extrude_path(out: &std::process::Output) -> &'static str {
         String::from_utf8_lossy(&out.stderr),
         String::from_utf8_lossy(&out.stderr),
     );
-    assert!(out.stdout.is_empty(), "stdout is for data only: {}", text(out));
+    assert!(
+        out.stdout.is_empty(),
+        "stdout is for data only: {}",
+        text(out)
+    );
     let path = if so.contains("tets (TetGen, thinner slab,") {
         assert!(
             se.contains("TetGen refused the slab (T = ") && se.contains("thinner slab (T = "),

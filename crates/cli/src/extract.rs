@@ -86,7 +86,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
         measure: verify::measure(&map),
         topology,
     };
-    verify::last_check(&name, &summary, x.strict, g.quiet)?;
+    verify::last_check(&name, &summary, x.strict)?;
     verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
     let png = match (&a.png, mesh.cells.is_empty()) {
         (Some(_), false) => Some(
@@ -113,10 +113,11 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
     if stats.subdivided {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(
-            "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) were made quads by one step of subdivision of the whole mesh",
+            "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads by one step of subdivision of the whole mesh",
             count(stats.repair_triangles + stats.holes_filled, "face", "faces"),
             count(stats.repair_triangles, "triangle", "triangles"),
             count(stats.holes_filled, "hole", "holes"),
+            summary::plural(stats.repair_triangles + stats.holes_filled, "was", "were"),
         );
     }
     if !g.quiet {
@@ -180,7 +181,7 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
         measure: verify::measure(&map),
         topology,
     };
-    verify::last_check(&name, &summary, x.strict, g.quiet)?;
+    verify::last_check(&name, &summary, x.strict)?;
     verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
     progress.stage("writing");
     dualex_io::write_hex_mesh(&a.output, &mesh).map_err(|e| e.to_string())?;

@@ -24,6 +24,9 @@ pub fn count(n: usize, one: &str, many: &str) -> String {
 /// holes, rounded transitions.
 pub fn quad_problems(st: &dualex_quad::QuadStats) -> Vec<String> {
     let mut p = Vec::new();
+    if st.quads == 0 {
+        p.push("empty mesh: the map covers less than one grid cell".into());
+    }
     let low: usize = st.valence_interior.range(..=2).map(|(_, n)| n).sum();
     if low > 0 {
         p.push(format!(
