@@ -173,9 +173,9 @@ pub struct ExtrudeArgs {
     pub thickness: Option<f64>,
     /// Ask TetGen for quality tets (`-q`: bounded radius-edge ratio, which
     /// adds Steiner points inside the prisms). Bounded: TetGen may add at
-    /// most 64 Steiner points per prism (`-S`), and a run that would pass
-    /// that is refused with a message. Without it, no Steiner point is
-    /// added (`-Y`), which is all `dualex hex` needs.
+    /// most 8 Steiner points per prism (`-S`); when it reaches the cap a
+    /// warning says so (the tets are valid, less refined). Without it, no
+    /// Steiner point is added (`-Y`), which is all `dualex hex` needs.
     #[arg(long)]
     pub quality: bool,
     /// Without TetGen, split each prism into 3 tets (vertex-index rule)
