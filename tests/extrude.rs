@@ -176,13 +176,18 @@ fn hex_side(cells: &[[u32; 8]]) -> (BTreeMap<usize, usize>, usize) {
     (h, f.values().filter(|&&n| n == 1).count())
 }
 
-/// Which tetrahedralization `dualex extrude` reports on stdout ("done: …
-/// (TetGen, …" / "(TetGen, thinner slab, …" / "(prism split, …"), checked
-/// against its stderr note.
+/// Which tetrahedralization `dualex extrude` reports in its summary line
+/// on stderr ("done: … (TetGen, …" / "(TetGen, thinner slab, …" /
+/// "(prism split, …"), checked against its stderr note; stdout stays empty.
 fn extrude_path(out: &std::process::Output) -> &'static str {
     let (so, se) = (
-        String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert!(
+        out.stdout.is_empty(),
+        "stdout is for data only: {}",
+        text(out)
     );
     let path = if so.contains("tets (TetGen, thinner slab,") {
         assert!(
@@ -227,7 +232,7 @@ fn compare_on(
     let l = layers.to_string();
     let mut args = vec!["extrude", input.to_str().expect("utf-8 path"), "-o"];
     let hexex = dir.arg("e.hexex");
-    // not quiet: the path taken is on stdout, why on stderr
+    // not quiet: the path taken and why are on stderr
     args.extend([hexex.as_str(), "--layers", &l]);
     args.extend(extra);
     if quality {
@@ -479,7 +484,7 @@ fn missing_tetgen_is_a_clear_error_or_the_reported_fallback() {
         text(&r)
     );
     assert!(
-        String::from_utf8_lossy(&r.stdout).contains("784 prisms -> 2352 tets"),
+        String::from_utf8_lossy(&r.stderr).contains("784 prisms -> 2352 tets"),
         "{}",
         text(&r)
     );

@@ -1,210 +1,320 @@
-//! Command-line parsing (hand-written: four subcommands and a few flags do
-//! not justify a parser dependency; every error is one line).
+//! The command line (clap derive): one struct per subcommand, so an option
+//! that does not apply to a subcommand is a usage error (exit 2), and
+//! `dualex SUBCOMMAND --help` describes every option it takes. Values are
+//! checked here (`--layers 0`, `--noise 2`): a bad value is a usage error
+//! naming the option, never the input file.
 
+use clap::{Args, Parser, Subcommand};
+use dualex_map::grid_offset::GridOffset;
 use std::path::PathBuf;
 
-/// Global usage text.
-pub const USAGE: &str = "\
-dualex — quad meshes from messy grid-preserving maps
+/// dualex — quad and hex meshes from messy grid-preserving maps.
+#[derive(Debug, Parser)]
+#[command(
+    name = "dualex",
+    version,
+    propagate_version = true,
+    arg_required_else_help = true,
+    after_help = "Exit code 0 on success, 1 on bad input (one line naming the file and the element), \
+                  2 on a usage error. `dualex SUBCOMMAND --help` describes each subcommand's options."
+)]
+pub struct Cli {
+    /// Options every subcommand takes.
+    #[command(flatten)]
+    pub global: Global,
+    /// The subcommand.
+    #[command(subcommand)]
+    pub command: Command,
+}
 
-usage:
-  dualex quad    [INPUT] -o OUTPUT [--stats STATS.json] [--png QUADS.png] [--no-fairing] [options]
-  dualex hex     INPUT.hexex -o OUTPUT [--stats STATS.json] [options]
-  dualex inspect INPUT [--json] [--png MAP.png] [options]
-  dualex view    MESH -o PAGE.html                (MESH: quads .obj/.ply, hexes .mesh)
-  dualex extrude INPUT -o OUT.hexex [--layers L] [--thickness T] [--quality] [--fallback]
-                        (prisms over every triangle, tetrahedralized by TetGen
-                        found at run time (`tetgen`, or $DUALEX_TETGEN);
-                        T default: 0.05 × the mean edge length on a surface,
-                        0.5 × on a planar map; a slab TetGen refuses is retried
-                        at T/2, T/4, T/8, then each prism split into 3 tets, as
-                        is a self-intersecting surface at once (said on stderr);
-                        --fallback: that split also when TetGen is missing)
-  dualex generate NAME -o OUTPUT [--seed N]     (NAME: see `dualex generate --list`;
-                                                2D maps → .obj/.ply, 3D maps → .hexex)
-  dualex generate --from-mesh MESH -o MAP [--scale K] [--noise A] [--folds] [--seed N] [--half-shift]
-                        (MESH: quads .obj/.ply or hexes .mesh, each element one chart
-                        [0,K]^D; noise A in [0,1] grid units, exactly GP; writes MAP and
-                        MAP.expected.json + the refined mesh MAP.expected.obj/.mesh;
-                        NAME may also be a built-in mesh of `--list`, e.g. cubed_ball)
-
-INPUT:   triangle mesh with per-corner map: .obj (f v/vt) or .ply (face texcoord);
-         tet mesh with 3D map: .hexex
-OUTPUT:  quads: .obj .ply .vtk; hexes: .mesh (MEDIT) .vtk
-options:
-  --no-weld             keep coincident boundary vertices of cut meshes apart
-  --round-transitions   snap non-integer transition translations of any residual
-                        (residuals up to 0.1 are rounded by default, with a warning)
-  --grid-offset G       quad, hex: where the dual grid sits: auto (default), half
-                        (nodes at the map's half-integers, output vertices at its
-                        integer points) or zero (the reverse); auto takes zero only
-                        when fewer singular vertices then sit on nodes (then isos)
-  --strict              quad, hex: an output whose topology (components, Euler
-                        characteristic, boundary components) differs from the
-                        input's is an error (nothing written) instead of a warning
-  --png FILE            quad: picture of the mesh colored by valence (3 blue, 4 grey,
-                        5 red, other green); inspect: the map in the plane, reverted
-                        triangles purple, singularities marked
-  --seed N              seed of the sanitization perturbations (default 1)
-  -j, --threads N       worker threads (default: all cores); the output is
-                        byte-identical whatever N
-  -v, --verbose         per-stage counts and timings on stderr
-  -q, --quiet           print nothing but errors and the warnings about the output
-                        itself (open interior faces, topology unlike the input's)
-  -h, --help            this text";
-
-/// Parsed command line.
-#[derive(Debug, Default)]
-pub struct Args {
-    /// Subcommand.
-    pub command: String,
-    /// Positional argument (input file or generator name).
-    pub input: Option<PathBuf>,
-    /// `-o`.
-    pub output: Option<PathBuf>,
-    /// `--stats`.
-    pub stats: Option<PathBuf>,
-    /// `--json`.
-    pub json: bool,
-    /// `--no-fairing`.
-    pub no_fairing: bool,
-    /// `--no-weld`.
-    pub no_weld: bool,
-    /// `--round-transitions`.
-    pub round: bool,
-    /// `--grid-offset` (quad, hex).
-    pub grid_offset: dualex_map::grid_offset::GridOffset,
-    /// `--strict` (quad, hex): a topology mismatch is an error.
-    pub strict: bool,
-    /// `--seed`.
-    pub seed: u64,
-    /// `--png`.
-    pub png: Option<PathBuf>,
-    /// `--list`.
-    pub list: bool,
-    /// `--layers` (extrude).
-    pub layers: Option<usize>,
-    /// `--thickness` (extrude).
-    pub thickness: Option<f64>,
-    /// `--quality` (extrude).
-    pub quality: bool,
-    /// `--fallback` (extrude).
-    pub fallback: bool,
-    /// `-j` / `--threads` (None: all cores).
+/// Options every subcommand takes.
+#[derive(Debug, Args)]
+pub struct Global {
+    /// Worker threads (default: all cores); the output is byte-identical
+    /// whatever N.
+    #[arg(short = 'j', long = "threads", value_name = "N", global = true, value_parser = positive)]
     pub threads: Option<usize>,
-    /// `-v`.
+    /// Per-stage counts and timings on stderr (a table).
+    #[arg(short, long, global = true)]
     pub verbose: bool,
-    /// `-q`.
+    /// Print nothing but errors and the warnings about the output itself
+    /// (open interior faces, topology unlike the input's, subdivision).
+    #[arg(short, long, global = true)]
     pub quiet: bool,
-    /// `--from-mesh` (generate).
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Quad mesh of a 2D map (triangles with a per-corner map).
+    Quad(QuadArgs),
+    /// Hex mesh of a 3D map (tets with a per-corner map, `.hexex`).
+    Hex(HexArgs),
+    /// A 3D map from a 2D one: prisms over every triangle, tetrahedralized.
+    Extrude(ExtrudeArgs),
+    /// A self-contained HTML page to orbit a quad or hex mesh.
+    View(ViewArgs),
+    /// Map report: counts, reverted simplices, transitions, singularities.
+    Inspect(InspectArgs),
+    /// Writes a generated test map, or a map made from a mesh (an oracle).
+    Generate(GenerateArgs),
+}
+
+/// Welding of cut meshes (2D inputs).
+#[derive(Debug, Args)]
+pub struct WeldArgs {
+    /// Keep coincident boundary vertices of cut meshes apart (by default
+    /// they are welded and the count reported).
+    #[arg(long)]
+    pub no_weld: bool,
+}
+
+/// Transition rounding.
+#[derive(Debug, Args)]
+pub struct RoundArgs {
+    /// Snap non-integer transition translations of any residual instead of
+    /// failing (residuals up to 0.1 map units are rounded by default, with
+    /// a warning giving the largest).
+    #[arg(long = "round-transitions")]
+    pub round: bool,
+}
+
+/// Options shared by `quad` and `hex`.
+#[derive(Debug, Args)]
+pub struct ExtractArgs {
+    /// Write the stats (one JSON object: input counts, sanitization,
+    /// nodes, tracing, untangling, output counts and valences, topology,
+    /// time per stage) to this file; `-` writes them to stdout.
+    #[arg(long, value_name = "STATS.json")]
+    pub stats: Option<PathBuf>,
+    /// Where the dual grid sits: `half` puts the nodes at the map's
+    /// half-integers (output vertices at its integer points), `zero` the
+    /// reverse; `auto` takes `zero` only when fewer singular vertices then
+    /// sit on nodes (then on isos, then fewer boundary facets in an iso).
+    #[arg(long, value_name = "auto|half|zero", default_value = "auto", value_parser = grid_offset)]
+    pub grid_offset: GridOffset,
+    /// An output whose topology (components, Euler characteristic, boundary
+    /// components) differs from the input's, or vertices that
+    /// sanitization left on the dual grid, are an error (nothing written)
+    /// instead of a warning.
+    #[arg(long)]
+    pub strict: bool,
+    /// Seed of the sanitization perturbations.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub seed: u64,
+    #[command(flatten)]
+    pub round: RoundArgs,
+}
+
+/// `dualex quad`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "INPUT: .obj (`f v/vt`, per-corner texture coordinates) or .ply \
+                        (face `texcoord` list of 6). OUTPUT: .obj, .ply or .vtk."
+)]
+pub struct QuadArgs {
+    /// The 2D map (.obj / .ply); without it, the embedded messy map (a
+    /// folded, noisy cube surface) is used, and said.
+    pub input: Option<PathBuf>,
+    /// The quad mesh (.obj, .ply or .vtk).
+    #[arg(short, long, value_name = "OUTPUT")]
+    pub output: PathBuf,
+    /// A picture of the mesh, vertices colored by valence (3 blue, 4 grey,
+    /// 5 red, other green).
+    #[arg(long, value_name = "QUADS.png")]
+    pub png: Option<PathBuf>,
+    /// Skip index fairing (the merging of degenerate valence-1/2 vertices
+    /// with strongly negative singularities by saddle lifts).
+    #[arg(long)]
+    pub no_fairing: bool,
+    #[command(flatten)]
+    pub extract: ExtractArgs,
+    #[command(flatten)]
+    pub weld: WeldArgs,
+}
+
+/// `dualex hex`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "INPUT: .hexex (HexEx's format). OUTPUT: .mesh (MEDIT) or .vtk. \
+                        Free boundaries are supported (hexes whose centres lie inside the volume)."
+)]
+pub struct HexArgs {
+    /// The 3D map (.hexex).
+    pub input: PathBuf,
+    /// The hex mesh (.mesh or .vtk).
+    #[arg(short, long, value_name = "OUTPUT")]
+    pub output: PathBuf,
+    #[command(flatten)]
+    pub extract: ExtractArgs,
+}
+
+/// `dualex extrude`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "TetGen (1.5, `apt-get install tetgen`) is found at run time as `tetgen` \
+                        or $DUALEX_TETGEN. A slab TetGen refuses is retried at T/2, T/4, T/8, \
+                        then each prism is split into 3 tets, as is a self-intersecting surface \
+                        at once (said on stderr). `dualex hex` of the result has L layers of the \
+                        `dualex quad` mesh."
+)]
+pub struct ExtrudeArgs {
+    /// The 2D map (.obj / .ply).
+    pub input: PathBuf,
+    /// The 3D map (.hexex).
+    #[arg(short, long, value_name = "OUT.hexex")]
+    pub output: PathBuf,
+    /// Layers: `w` runs from 0 to L (at least 1).
+    #[arg(long, value_name = "L", default_value_t = 1, value_parser = at_least_one)]
+    pub layers: usize,
+    /// Slab thickness in model units (positive); default 0.05 × the mean
+    /// edge length on a surface, 0.5 × on a planar map.
+    #[arg(long, value_name = "T", value_parser = positive_number)]
+    pub thickness: Option<f64>,
+    /// Ask TetGen for quality tets (`-q`: bounded radius-edge ratio, which
+    /// adds Steiner points inside the prisms). Bounded: TetGen may add at
+    /// most 8 Steiner points per prism (`-S`); when it reaches the cap a
+    /// warning says so (the tets are valid, less refined). Without it, no
+    /// Steiner point is added (`-Y`), which is all `dualex hex` needs.
+    #[arg(long)]
+    pub quality: bool,
+    /// Without TetGen, split each prism into 3 tets (vertex-index rule)
+    /// instead of failing with the install hint.
+    #[arg(long)]
+    pub fallback: bool,
+    #[command(flatten)]
+    pub weld: WeldArgs,
+}
+
+/// `dualex view`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "MESH: quads .obj/.ply/.vtk, hexes .mesh/.vtk (as `dualex quad`/`hex` \
+                        write them). The page is self-contained (own WebGL viewer, no network)."
+)]
+pub struct ViewArgs {
+    /// The mesh to show.
+    pub mesh: PathBuf,
+    /// The HTML page.
+    #[arg(short, long, value_name = "PAGE.html")]
+    pub output: PathBuf,
+}
+
+/// `dualex inspect`.
+#[derive(Debug, Args)]
+pub struct InspectArgs {
+    /// The map (.obj / .ply 2D, .hexex 3D).
+    pub input: PathBuf,
+    /// The report as one JSON object on stdout instead of text.
+    #[arg(long)]
+    pub json: bool,
+    /// A picture of a 2D map in the (u, v) plane: reverted triangles
+    /// purple, singularities marked by index, with a legend.
+    #[arg(long, value_name = "MAP.png")]
+    pub png: Option<PathBuf>,
+    #[command(flatten)]
+    pub weld: WeldArgs,
+    #[command(flatten)]
+    pub round: RoundArgs,
+}
+
+/// `dualex generate`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "2D maps are written as .obj/.ply, 3D maps as .hexex. With --from-mesh \
+                        (or NAME a built-in mesh), each element becomes its own chart [0,K]^D; \
+                        the expected extraction is written beside the map as MAP.expected.json \
+                        and MAP.expected.obj/.mesh."
+)]
+pub struct GenerateArgs {
+    /// The generated map or built-in mesh (see --list).
+    #[arg(required_unless_present_any = ["list", "from_mesh"], conflicts_with = "from_mesh")]
+    pub name: Option<String>,
+    /// The map to write.
+    #[arg(short, long, value_name = "OUT", required_unless_present = "list")]
+    pub output: Option<PathBuf>,
+    /// List the generated maps and built-in meshes, with sizes and what
+    /// they are.
+    #[arg(long, exclusive = true)]
+    pub list: bool,
+    /// Seed of the generator (noise, folds).
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub seed: u64,
+    /// Size parameter of the sizeable generated maps (cells per side of
+    /// the grid; see --list): large maps for timing.
+    #[arg(long, value_name = "N", value_parser = at_least_one)]
+    pub size: Option<usize>,
+    /// A quad mesh (.obj/.ply) or hex mesh (.mesh) to turn into a map.
+    #[arg(long, value_name = "MESH")]
     pub from_mesh: Option<PathBuf>,
-    /// `--scale` (generate --from-mesh).
+    /// Mesh maps: each element is the chart [0,K]^D (at least 1; default 2).
+    #[arg(long, value_name = "K", value_parser = at_least_one)]
     pub scale: Option<usize>,
-    /// `--noise` (generate --from-mesh).
+    /// Mesh maps: move every vertex once in map space by up to A grid
+    /// units (0 ≤ A ≤ 1); the map stays exactly grid-preserving.
+    #[arg(long, value_name = "A", value_parser = unit_interval)]
     pub noise: Option<f64>,
-    /// `--folds` (generate --from-mesh).
+    /// Mesh maps: add folds.
+    #[arg(long)]
     pub folds: bool,
-    /// `--half-shift` (generate --from-mesh).
+    /// Mesh maps (quads): put every vertex, singular ones included, at a
+    /// cell centre.
+    #[arg(long)]
     pub half_shift: bool,
 }
 
-/// Parses `argv[1..]`.
-pub fn parse(argv: &[String]) -> Result<Args, String> {
-    let mut a = Args {
-        seed: 1,
-        ..Default::default()
-    };
-    let mut it = argv.iter();
-    let Some(cmd) = it.next() else {
-        return Err("missing subcommand (quad, hex, inspect, generate); see --help".into());
-    };
-    if cmd == "-h" || cmd == "--help" {
-        a.command = "help".into();
-        return Ok(a);
+impl GenerateArgs {
+    /// Whether an option of mesh maps was given.
+    pub fn mesh_options(&self) -> bool {
+        self.scale.is_some() || self.noise.is_some() || self.folds || self.half_shift
     }
-    a.command = cmd.clone();
-    while let Some(x) = it.next() {
-        let mut value = |name: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| format!("option {name} needs a value"))
-        };
-        match x.as_str() {
-            "-o" | "--output" => a.output = Some(value(x)?.into()),
-            "--stats" => a.stats = Some(value(x)?.into()),
-            "--png" => a.png = Some(value(x)?.into()),
-            "--seed" => {
-                let v = value(x)?;
-                a.seed = v
-                    .parse()
-                    .map_err(|_| format!("--seed: not an integer: {v}"))?;
-            }
-            "--json" => a.json = true,
-            "--no-fairing" => a.no_fairing = true,
-            "--no-weld" => a.no_weld = true,
-            "--round-transitions" => a.round = true,
-            "--strict" => a.strict = true,
-            "--grid-offset" => {
-                let v = value(x)?;
-                a.grid_offset =
-                    dualex_map::grid_offset::GridOffset::parse(&v).ok_or_else(|| {
-                        format!("--grid-offset: expected auto, half or zero, not {v:?}")
-                    })?;
-            }
-            "--list" => a.list = true,
-            "--layers" => {
-                let v = value(x)?;
-                a.layers = Some(
-                    v.parse()
-                        .map_err(|_| format!("--layers: not a count: {v}"))?,
-                );
-            }
-            "--thickness" => {
-                let v = value(x)?;
-                a.thickness = Some(
-                    v.parse()
-                        .map_err(|_| format!("--thickness: not a number: {v}"))?,
-                );
-            }
-            "-j" | "--threads" => {
-                let v = value(x)?;
-                a.threads = Some(
-                    v.parse()
-                        .ok()
-                        .filter(|&n: &usize| n > 0)
-                        .ok_or_else(|| format!("{x}: not a positive count: {v}"))?,
-                );
-            }
-            "--from-mesh" => a.from_mesh = Some(value(x)?.into()),
-            "--scale" => {
-                let v = value(x)?;
-                a.scale = Some(
-                    v.parse()
-                        .map_err(|_| format!("--scale: not a count: {v}"))?,
-                );
-            }
-            "--noise" => {
-                let v = value(x)?;
-                a.noise = Some(
-                    v.parse()
-                        .map_err(|_| format!("--noise: not a number: {v}"))?,
-                );
-            }
-            "--folds" => a.folds = true,
-            "--half-shift" => a.half_shift = true,
-            "--quality" => a.quality = true,
-            "--fallback" => a.fallback = true,
-            "-v" | "--verbose" => a.verbose = true,
-            "-q" | "--quiet" => a.quiet = true,
-            "-h" | "--help" => a.command = "help".into(),
-            s if s.starts_with('-') && s.len() > 1 => return Err(format!("unknown option {s}")),
-            s => {
-                if a.input.is_some() {
-                    return Err(format!("unexpected argument {s}"));
-                }
-                a.input = Some(s.into());
-            }
-        }
+}
+
+fn positive(s: &str) -> Result<usize, String> {
+    match s.parse::<usize>() {
+        Ok(n) if n > 0 => Ok(n),
+        _ => Err(format!("expected a positive count, not {s:?}")),
     }
-    Ok(a)
+}
+
+fn at_least_one(s: &str) -> Result<usize, String> {
+    positive(s).map_err(|_| format!("must be a whole number of at least 1, not {s:?}"))
+}
+
+fn positive_number(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
+        _ => Err(format!("expected a positive number, not {s:?}")),
+    }
+}
+
+fn unit_interval(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if (0.0..=1.0).contains(&x) => Ok(x),
+        _ => Err(format!("expected a number from 0 to 1, not {s:?}")),
+    }
+}
+
+fn grid_offset(s: &str) -> Result<GridOffset, String> {
+    GridOffset::parse(s).ok_or_else(|| format!("expected auto, half or zero, not {s:?}"))
+}
+
+/// A usage error found after parsing (e.g. an option that does not apply
+/// to the chosen NAME): printed like clap's, exit code 2.
+pub fn usage_error(msg: &str) -> ! {
+    use clap::CommandFactory;
+    Cli::command()
+        .error(clap::error::ErrorKind::ArgumentConflict, msg)
+        .exit()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn the_command_line_is_consistent() {
+        Cli::command().debug_assert();
+    }
 }

@@ -4,7 +4,8 @@
 //! refined mesh `MAP.expected.obj` (quads) / `MAP.expected.mesh` (hexes).
 //! Every file is written atomically; errors are one line naming the file.
 
-use crate::args::Args;
+use crate::args::{GenerateArgs, Global};
+use crate::summary::plural;
 use dualex_gen::from_mesh::{from_hexes, from_quads, FromMeshOptions};
 use dualex_map::{HexMesh, QuadMesh};
 use std::path::Path;
@@ -49,7 +50,7 @@ pub fn read(path: &Path) -> Result<Input, String> {
     ))
 }
 
-fn options(args: &Args) -> FromMeshOptions {
+fn options(args: &GenerateArgs) -> FromMeshOptions {
     FromMeshOptions {
         scale: args.scale.unwrap_or(2),
         noise: args.noise.unwrap_or(0.0),
@@ -69,13 +70,24 @@ fn json_of(pairs: impl Iterator<Item = (u32, usize)>) -> serde_json::Value {
 }
 
 /// Generates and writes (module docs).
-pub fn run(args: &Args, input: Input, out: &Path) -> Result<(), String> {
+pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<(), String> {
     let o = options(args);
     let json_path = out.with_extension("expected.json");
+    let (map_exts, refined): (&'static [&'static str], _) = match &input {
+        Input::Quads(..) => (
+            dualex_io::TRI_MAP_EXTENSIONS,
+            out.with_extension("expected.obj"),
+        ),
+        Input::Hexes(..) => (
+            dualex_io::TET_MAP_EXTENSIONS,
+            out.with_extension("expected.mesh"),
+        ),
+    };
+    crate::outputs::check_all(&[(out, Some(map_exts)), (&json_path, None), (&refined, None)])?;
     let (what, count, json) = match &input {
         Input::Quads(m, name) => {
-            let g = from_quads(m, &o).map_err(|e| format!("{name}: {e}"))?;
-            let e = &g.expected;
+            let gen = from_quads(m, &o).map_err(|e| format!("{name}: {e}"))?;
+            let e = &gen.expected;
             let json = serde_json::json!({
                 "dimension": 2,
                 "scale": o.scale,
@@ -86,14 +98,17 @@ pub fn run(args: &Args, input: Input, out: &Path) -> Result<(), String> {
                 "euler": e.euler,
                 "boundary_loops": e.boundary_loops,
             });
-            dualex_io::write_tri_map(out, &g.map).map_err(|e| e.to_string())?;
-            let refined = out.with_extension("expected.obj");
-            dualex_io::write_quad_mesh(&refined, &g.refined).map_err(|e| e.to_string())?;
-            ("triangles", g.map.len(), json)
+            dualex_io::write_tri_map(out, &gen.map).map_err(|e| e.to_string())?;
+            dualex_io::write_quad_mesh(&refined, &gen.refined).map_err(|e| e.to_string())?;
+            (
+                plural(gen.map.len(), "triangle", "triangles"),
+                gen.map.len(),
+                json,
+            )
         }
         Input::Hexes(m, name) => {
-            let g = from_hexes(m, &o).map_err(|e| format!("{name}: {e}"))?;
-            let e = &g.expected;
+            let gen = from_hexes(m, &o).map_err(|e| format!("{name}: {e}"))?;
+            let e = &gen.expected;
             let json = serde_json::json!({
                 "dimension": 3,
                 "scale": o.scale,
@@ -101,17 +116,16 @@ pub fn run(args: &Args, input: Input, out: &Path) -> Result<(), String> {
                 "boundary_components": e.boundary_components,
                 "boundary_euler": e.boundary_euler,
             });
-            dualex_io::write_tet_map(out, &g.map).map_err(|e| e.to_string())?;
-            let refined = out.with_extension("expected.mesh");
-            dualex_io::write_hex_mesh(&refined, &g.refined).map_err(|e| e.to_string())?;
-            ("tets", g.map.len(), json)
+            dualex_io::write_tet_map(out, &gen.map).map_err(|e| e.to_string())?;
+            dualex_io::write_hex_mesh(&refined, &gen.refined).map_err(|e| e.to_string())?;
+            (plural(gen.map.len(), "tet", "tets"), gen.map.len(), json)
         }
     };
     let text = serde_json::to_string_pretty(&json).map_err(|e| format!("bug: {e}"))?;
     dualex_io::write_text(&json_path, &text).map_err(|e| e.to_string())?;
-    if !args.quiet {
-        println!(
-            "{count} {what} -> {} (expected: {})",
+    if !g.quiet {
+        eprintln!(
+            "dualex: {count} {what} -> {} (expected: {})",
             out.display(),
             json_path.display()
         );

@@ -1,14 +1,25 @@
-//! `dualex`: the command-line tool. Each subcommand is one function; errors
-//! are printed as one line and give exit code 1 (2 for usage errors).
+//! `dualex`: the command-line tool. The command line is parsed by clap
+//! ([`args`]); each subcommand is one function in its own module.
+//!
+//! Streams: stdout carries data only (`inspect`'s report, `generate
+//! --list`, `--stats -`); the summary line ("done: …"), warnings and
+//! errors go to stderr. Exit codes: 0 success, 1 bad input or a refused
+//! output (one line on stderr), 2 usage error (clap's message).
 #![forbid(unsafe_code)]
 
 mod args;
+mod commands;
+mod extract;
+mod generate;
 mod generate_from_mesh;
+mod outputs;
 mod progress;
+mod summary;
 mod timing;
 mod verify;
 
-use args::{Args, USAGE};
+use args::{Cli, Command, Global, WeldArgs};
+use clap::Parser;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -21,15 +32,9 @@ const EMBEDDED: &[u8] = include_bytes!("../../../data/embedded.obj");
 const PNG_SIZE: u32 = 1000;
 
 fn main() -> ExitCode {
-    let argv: Vec<String> = std::env::args().skip(1).collect();
-    let args = match args::parse(&argv) {
-        Ok(a) => a,
-        Err(e) => {
-            eprintln!("dualex: {e}");
-            return ExitCode::from(2);
-        }
-    };
-    if let Some(n) = args.threads {
+    // help and version: stdout, exit 0; usage errors: stderr, exit 2
+    let cli = Cli::try_parse().unwrap_or_else(|e| e.exit());
+    if let Some(n) = cli.global.threads {
         if let Err(e) = rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build_global()
@@ -38,21 +43,14 @@ fn main() -> ExitCode {
             return ExitCode::from(1);
         }
     }
-    let result = match args.command.as_str() {
-        "help" => {
-            println!("{USAGE}");
-            Ok(())
-        }
-        "quad" => quad(&args),
-        "hex" => hex(&args),
-        "view" => view(&args),
-        "inspect" => inspect(&args),
-        "generate" => generate(&args),
-        "extrude" => extrude(&args),
-        other => {
-            eprintln!("dualex: unknown subcommand {other:?}; see --help");
-            return ExitCode::from(2);
-        }
+    let g = &cli.global;
+    let result = match &cli.command {
+        Command::Quad(a) => extract::quad(a, g),
+        Command::Hex(a) => extract::hex(a, g),
+        Command::View(a) => commands::view(a, g),
+        Command::Inspect(a) => commands::inspect(a, g),
+        Command::Generate(a) => generate::generate(a, g),
+        Command::Extrude(a) => commands::extrude(a, g),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -63,391 +61,34 @@ fn main() -> ExitCode {
     }
 }
 
+/// Reads a 2D map and welds it unless `--no-weld`.
 fn read_2d(
     path: &Path,
-    args: &Args,
+    weld: &WeldArgs,
+    g: &Global,
     laps: &mut timing::Laps,
 ) -> Result<dualex_map::TriMap, String> {
     let map = dualex_io::read_tri_map(path).map_err(|e| e.to_string())?;
     laps.lap("read");
-    let map = weld_if(map, args, &path.display().to_string())?;
+    let map = weld_if(map, weld, g, &path.display().to_string());
     laps.lap("weld");
     Ok(map)
 }
 
-fn weld_if(map: dualex_map::TriMap, args: &Args, name: &str) -> Result<dualex_map::TriMap, String> {
-    if args.no_weld {
-        return Ok(map);
+fn weld_if(map: dualex_map::TriMap, weld: &WeldArgs, g: &Global, name: &str) -> dualex_map::TriMap {
+    if weld.no_weld {
+        return map;
     }
     let (map, rep) = dualex_map::weld::weld_owned(map);
-    if rep.welded_vertices > 0 && !args.quiet {
+    if rep.welded_vertices > 0 && !g.quiet {
         eprintln!(
-            "dualex: {name}: welded {} coincident boundary vertices (cut mesh); --no-weld keeps them",
-            rep.welded_vertices
-        );
-    }
-    Ok(map)
-}
-
-fn quad(args: &Args) -> Result<(), String> {
-    let out = args.output.as_ref().ok_or("quad: missing -o OUTPUT")?;
-    let mut laps = timing::Laps::start();
-    let (map, name) = match &args.input {
-        Some(p) => (read_2d(p, args, &mut laps)?, p.display().to_string()),
-        None => {
-            if !args.quiet {
-                eprintln!("dualex: no INPUT given: running on the embedded map (a folded, noisy cube surface)");
-            }
-            let m = dualex_io::parse_obj(EMBEDDED).map_err(|e| format!("embedded map: {e}"))?;
-            (
-                weld_if(m, args, "embedded map")?,
-                "embedded map".to_string(),
+            "dualex: {name}: welded {} (cut mesh); --no-weld keeps them",
+            summary::count(
+                rep.welded_vertices,
+                "coincident boundary vertex",
+                "coincident boundary vertices"
             )
-        }
-    };
-    let opts = dualex_quad::QuadOptions {
-        fairing: !args.no_fairing,
-        transitions: dualex_map::TransitionOptions {
-            round: args.round,
-            ..Default::default()
-        },
-        seed: args.seed,
-        grid_offset: args.grid_offset,
-    };
-    let progress = progress::Progress::new(map.len(), args.quiet);
-    progress.stage("extracting quads");
-    let (mesh, stats) =
-        dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
-    laps.lap("extract");
-    let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
-    laps.lap("check");
-    if !rep.is_valid() {
-        return Err(format!(
-            "{name}: could not make a valid quad mesh ({}); nothing written — please report this input",
-            rep.errors().join("; ")
-        ));
-    }
-    use dualex_check::topology as topo;
-    let topology = topo::Comparison {
-        input: topo::surface_shape(map.positions.len(), &map.simplices),
-        output: topo::quad_shape(&rep),
-    };
-    let summary = verify::Output {
-        cell: "quad",
-        cells: mesh.cells.len(),
-        nodes: stats.nodes,
-        measure: verify::measure(&map),
-        topology,
-    };
-    verify::last_check(&name, &summary, args.strict, args.quiet)?;
-    verify::sanitize_check(&name, &stats.sanitize, args.strict)?;
-    progress.stage("writing");
-    dualex_io::write_quad_mesh(out, &mesh).map_err(|e| e.to_string())?;
-    laps.lap("write");
-    drop(progress);
-    if args.verbose {
-        eprintln!("{}", timing::line(&laps));
-    }
-    let mut json = stats.to_json();
-    verify::add_to_stats(&mut json, &topology);
-    write_stats(args, &json)?;
-    if let Some(png) = &args.png {
-        dualex_render::quad_png(&mesh, png, PNG_SIZE)
-            .map_err(|e| format!("{}: {e}", png.display()))?;
-    }
-    warn_rounded(
-        args,
-        stats.snapped_transitions,
-        stats.max_transition_residual,
-    );
-    if stats.subdivided {
-        // printed under -q too: the output is not the map's own mesh
-        eprintln!(
-            "dualex: warning: {} faces that quads cannot represent ({} triangles at singular vertices on dual nodes, {} holes closed by polygons) were made quads by one step of subdivision of the whole mesh",
-            stats.repair_triangles + stats.holes_filled,
-            stats.repair_triangles,
-            stats.holes_filled
         );
     }
-    if !args.quiet {
-        println!(
-            "{}: {} quads, {} vertices, {} boundary loops, {} components -> {}",
-            if args.input.is_some() {
-                "done"
-            } else {
-                "embedded map"
-            },
-            stats.quads,
-            stats.vertices,
-            stats.boundary_loops,
-            stats.components,
-            out.display()
-        );
-    }
-    Ok(())
-}
-
-fn hex(args: &Args) -> Result<(), String> {
-    let input = args.input.as_ref().ok_or("hex: missing INPUT (.hexex)")?;
-    let out = args.output.as_ref().ok_or("hex: missing -o OUTPUT")?;
-    let name = input.display().to_string();
-    let mut laps = timing::Laps::start();
-    let map = dualex_io::read_tet_map(input).map_err(|e| e.to_string())?;
-    laps.lap("read");
-    let opts = dualex_hex::HexOptions {
-        transitions: dualex_map::TransitionOptions {
-            round: args.round,
-            ..Default::default()
-        },
-        seed: args.seed,
-        grid_offset: args.grid_offset,
-    };
-    let progress = progress::Progress::new(map.len(), args.quiet);
-    progress.stage("extracting hexs");
-    let (mesh, stats) =
-        dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
-    laps.lap("extract");
-    // combinatorial validity (hexes of a messy map may be geometrically
-    // inverted: vertices sit on noisy preimages)
-    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
-    laps.lap("check");
-    if !rep.is_valid() {
-        return Err(format!(
-            "{name}: could not make a valid hex mesh ({}); nothing written",
-            rep.errors().join("; ")
-        ));
-    }
-    use dualex_check::topology as topo;
-    let topology = topo::Comparison {
-        input: topo::tet_shape(map.positions.len(), &map.simplices),
-        output: topo::hex_shape(&rep),
-    };
-    let summary = verify::Output {
-        cell: "hex",
-        cells: mesh.cells.len(),
-        nodes: stats.nodes,
-        measure: verify::measure(&map),
-        topology,
-    };
-    verify::last_check(&name, &summary, args.strict, args.quiet)?;
-    verify::sanitize_check(&name, &stats.sanitize, args.strict)?;
-    progress.stage("writing");
-    dualex_io::write_hex_mesh(out, &mesh).map_err(|e| e.to_string())?;
-    laps.lap("write");
-    drop(progress);
-    if args.verbose {
-        eprintln!("{}", timing::line(&laps));
-    }
-    let mut json = stats.to_json();
-    verify::add_to_stats(&mut json, &topology);
-    write_stats(args, &json)?;
-    warn_rounded(
-        args,
-        stats.snapped_transitions,
-        stats.max_transition_residual,
-    );
-    if stats.open_interior_faces > 0 {
-        // loud: printed even with -q (a crack is a wrong mesh, not noise)
-        eprintln!(
-            "dualex: WARNING: {} interior faces left open (walks lost at singular edges: cracks, not input boundary); see \"holes\" in the stats",
-            stats.open_interior_faces
-        );
-    }
-    if !args.quiet {
-        println!(
-            "done: {} hexes, {} vertices -> {}",
-            mesh.cells.len(),
-            mesh.positions.len(),
-            out.display()
-        );
-    }
-    Ok(())
-}
-
-/// The warning for transitions rounded without `--round-transitions`
-/// (or with it): how many, and the largest residual.
-fn warn_rounded(args: &Args, rounded: usize, max_residual: f64) {
-    if rounded > 0 && !args.quiet {
-        eprintln!(
-            "dualex: warning: rounded {rounded} transition translations that were not integral (largest residual {max_residual:.3e}); the map is not exactly grid-preserving"
-        );
-    }
-}
-
-fn view(args: &Args) -> Result<(), String> {
-    let input = args
-        .input
-        .as_ref()
-        .ok_or("view: missing MESH (.obj/.ply quads or .mesh hexes)")?;
-    let out = args.output.as_ref().ok_or("view: missing -o PAGE.html")?;
-    let name = input.display().to_string();
-    let title = input
-        .file_name()
-        .map_or(name.clone(), |f| f.to_string_lossy().to_string());
-    let ext = input
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    let page = if ext == "mesh" {
-        let mesh = dualex_io::read_hex_mesh(input).map_err(|e| e.to_string())?;
-        dualex_render::view_html_hex(&mesh, &title)
-    } else {
-        let poly = dualex_io::read_polygon_mesh(input).map_err(|e| e.to_string())?;
-        let mut mesh = dualex_map::QuadMesh {
-            positions: poly.positions,
-            cells: Vec::with_capacity(poly.faces.len()),
-        };
-        for (i, f) in poly.faces.iter().enumerate() {
-            let [a, b, c, d] = f[..] else {
-                return Err(format!(
-                    "{name}: face {i} has {} vertices; view shows quad meshes",
-                    f.len()
-                ));
-            };
-            mesh.cells.push([a, b, c, d]);
-        }
-        dualex_render::view_html(&mesh, &title)
-    }
-    .map_err(|e| format!("{name}: {e}"))?;
-    dualex_io::write_text(out, &page).map_err(|e| e.to_string())?;
-    if !args.quiet {
-        println!("view: {} -> {}", name, out.display());
-    }
-    Ok(())
-}
-
-fn write_stats(args: &Args, json: &serde_json::Value) -> Result<(), String> {
-    let text = serde_json::to_string_pretty(json).map_err(|e| format!("bug: stats: {e}"))?;
-    if let Some(s) = &args.stats {
-        dualex_io::write_text(s, &text).map_err(|e| e.to_string())?;
-    }
-    if args.verbose {
-        eprintln!("{text}");
-    }
-    Ok(())
-}
-
-fn inspect(args: &Args) -> Result<(), String> {
-    let path = args.input.as_ref().ok_or("inspect: missing INPUT")?;
-    let name = path.display().to_string();
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    let opts = dualex_map::report::InspectOptions {
-        weld: !args.no_weld,
-        round: args.round,
-        ..Default::default()
-    };
-    if args.png.is_some() && ext == "hexex" {
-        return Err("inspect --png: pictures of 3D maps are not supported; use a 2D map".into());
-    }
-    let report = if ext == "hexex" {
-        let m = dualex_io::read_tet_map(path).map_err(|e| e.to_string())?;
-        dualex_map::report::inspect(&m, &opts)
-    } else {
-        let m = dualex_io::read_tri_map(path).map_err(|e| e.to_string())?;
-        if let Some(png) = &args.png {
-            dualex_render::map_png(&m, png, PNG_SIZE)
-                .map_err(|e| format!("{}: {e}", png.display()))?;
-        }
-        dualex_map::report::inspect(&m, &opts)
-    }
-    .map_err(|e| e.in_file(name).to_string())?;
-    if args.json {
-        println!("{}", report.to_json());
-    } else {
-        println!("{report}");
-    }
-    Ok(())
-}
-
-fn generate(args: &Args) -> Result<(), String> {
-    use dualex_gen::from_mesh::meshes;
-    if args.list {
-        for n in dualex_gen::names()
-            .into_iter()
-            .chain(dualex_gen::names_3d())
-            .chain(meshes::quad_mesh_names())
-            .chain(meshes::hex_mesh_names())
-        {
-            println!("{n}");
-        }
-        return Ok(());
-    }
-    let out = args.output.as_ref().ok_or("generate: missing -o OUTPUT")?;
-    if let Some(path) = &args.from_mesh {
-        return generate_from_mesh::run(args, generate_from_mesh::read(path)?, out);
-    }
-    let name = args
-        .input
-        .as_ref()
-        .ok_or("generate: missing NAME (see --list)")?;
-    let name = name.display().to_string();
-    if let Some(m) = meshes::quad_mesh_by_name(&name) {
-        return generate_from_mesh::run(args, generate_from_mesh::Input::Quads(m, name), out);
-    }
-    if let Some(m) = meshes::hex_mesh_by_name(&name) {
-        return generate_from_mesh::run(args, generate_from_mesh::Input::Hexes(m, name), out);
-    }
-    if let Some((map, _)) = dualex_gen::by_name(&name, args.seed) {
-        dualex_io::write_tri_map(out, &map).map_err(|e| e.to_string())?;
-        if !args.quiet {
-            println!("{name}: {} triangles -> {}", map.len(), out.display());
-        }
-        return Ok(());
-    }
-    let (map, _) = dualex_gen::by_name_3d(&name, args.seed)
-        .ok_or_else(|| format!("generate: unknown map {name:?} (see --list)"))?;
-    dualex_io::write_tet_map(out, &map).map_err(|e| e.to_string())?;
-    if !args.quiet {
-        println!("{name}: {} tets -> {}", map.len(), out.display());
-    }
-    Ok(())
-}
-
-/// `dualex extrude`: a 2D map into a 3D one (prisms tetrahedralized by
-/// TetGen, run as an external program; see dualex-extrude).
-fn extrude(args: &Args) -> Result<(), String> {
-    let input = args.input.as_ref().ok_or("extrude: missing INPUT")?;
-    let out = args
-        .output
-        .as_ref()
-        .ok_or("extrude: missing -o OUT.hexex")?;
-    let name = input.display().to_string();
-    let map = read_2d(input, args, &mut timing::Laps::start())?;
-    let opts = dualex_extrude::ExtrudeOptions {
-        layers: args.layers.unwrap_or(1),
-        thickness: args.thickness,
-        quality: args.quality,
-        program: std::env::var_os("DUALEX_TETGEN").map_or("tetgen".into(), Into::into),
-        fallback: args.fallback,
-    };
-    let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|e| format!("{name}: {e}"))?;
-    dualex_io::write_tet_map(out, &tets).map_err(|e| e.to_string())?;
-    if let Some(note) = rep.note.as_deref().filter(|_| !args.quiet) {
-        eprintln!("dualex: {name}: {note}");
-    }
-    if !args.quiet {
-        println!(
-            "done: {} prisms -> {} tets ({}, {} Steiner points, {} flat, {} reverted), thickness {:.3e}, {:.0} ms ({:.0} ms tetrahedralizing) -> {}",
-            rep.prisms,
-            rep.tets,
-            match rep.method {
-                dualex_extrude::Method::TetGen => "TetGen",
-                dualex_extrude::Method::Thinner { .. } => "TetGen, thinner slab",
-                dualex_extrude::Method::Split => "prism split",
-            },
-            rep.steiner_points,
-            rep.flat_tets,
-            rep.reverted_tets,
-            rep.thickness,
-            rep.total_ms,
-            rep.tetrahedralize_ms,
-            out.display()
-        );
-    }
-    Ok(())
+    map
 }

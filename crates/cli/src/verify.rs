@@ -11,7 +11,8 @@
 //!   all sides unmatched) or when the map covers at least one grid cell's
 //!   worth of map area/volume (`Σ |det| / D!` ≥ 1: on average over grid
 //!   offsets a region holds as many nodes as its measure) and no node was
-//!   found; a map smaller than one cell gives an empty mesh with a warning;
+//!   found; a map smaller than one cell gives an empty mesh with a warning
+//!   (printed even with `-q`: an empty file is not an ordinary result);
 //! - more components than the input is an error (an extraction can lose a
 //!   component smaller than a cell, never create one);
 //! - any other topology difference (components, Euler characteristic,
@@ -47,7 +48,7 @@ pub struct Output<'a> {
 }
 
 /// Applies the rules of the module docs; prints the warnings.
-pub fn last_check(name: &str, out: &Output, strict: bool, quiet: bool) -> Result<(), String> {
+pub fn last_check(name: &str, out: &Output, strict: bool) -> Result<(), String> {
     let (i, o) = (out.topology.input, out.topology.output);
     if out.cells == 0 {
         if out.nodes > 0 {
@@ -62,12 +63,10 @@ pub fn last_check(name: &str, out: &Output, strict: bool, quiet: bool) -> Result
                 out.measure
             ));
         }
-        if !quiet {
-            eprintln!(
-                "dualex: warning: {name}: the map covers less than one grid cell ({:.3}): no node, empty mesh",
-                out.measure
-            );
-        }
+        eprintln!(
+            "dualex: warning: {name}: the map covers less than one grid cell ({:.3}): no node, empty mesh",
+            out.measure
+        );
         return Ok(());
     }
     if o.components > i.components {
@@ -151,17 +150,17 @@ mod tests {
             boundary_components: 2,
         };
         let empty = Shape::default();
-        let e = last_check("m", &out(0, 5, 0.5, disk, empty), false, true).expect_err("lost cells");
+        let e = last_check("m", &out(0, 5, 0.5, disk, empty), false).expect_err("lost cells");
         assert!(e.contains("all sides unmatched"), "{e}");
-        let e = last_check("m", &out(0, 0, 3.0, disk, empty), false, true).expect_err("no node");
+        let e = last_check("m", &out(0, 0, 3.0, disk, empty), false).expect_err("no node");
         assert!(e.contains("no node found"), "{e}");
-        last_check("m", &out(0, 0, 0.5, disk, empty), true, true).expect("smaller than a cell");
-        let e = last_check("m", &out(9, 9, 9.0, disk, two), false, true).expect_err("components");
+        last_check("m", &out(0, 0, 0.5, disk, empty), true).expect("smaller than a cell");
+        let e = last_check("m", &out(9, 9, 9.0, disk, two), false).expect_err("components");
         assert!(e.contains("2 components, the input 1"), "{e}");
-        last_check("m", &out(9, 9, 9.0, two, disk), false, true).expect("a warning");
-        let e = last_check("m", &out(9, 9, 9.0, two, disk), true, true).expect_err("strict");
+        last_check("m", &out(9, 9, 9.0, two, disk), false).expect("a warning");
+        let e = last_check("m", &out(9, 9, 9.0, two, disk), true).expect_err("strict");
         assert!(e.contains("components 1 (input 2)"), "{e}");
-        last_check("m", &out(9, 9, 9.0, disk, disk), true, true).expect("same topology");
+        last_check("m", &out(9, 9, 9.0, disk, disk), true).expect("same topology");
     }
 
     #[test]

@@ -97,6 +97,7 @@ pub fn extract_traced(
                 // the input's own counts, not those of the split map
                 st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
                 st.singular_edges = singular.len();
+                st.singular_edge_angles = dualex_map::report::singular_edge_histogram(&singular);
                 (st.reverted_tets, st.degenerate_tets) = quality(&map);
                 // the offset is chosen once (splits add no singular vertex)
                 st.grid_offset =

@@ -28,6 +28,8 @@ pub struct HexStats {
     pub singular_vertices: usize,
     /// Singular interior edges.
     pub singular_edges: usize,
+    /// Singular interior edges by angle label (`"+90°"` → count).
+    pub singular_edge_angles: BTreeMap<String, usize>,
     /// Tet edges and faces split before sanitization (`crate::split`).
     pub split_faces: usize,
     /// The grid offset used, and the singular vertices on the grid under
@@ -129,6 +131,7 @@ impl HexStats {
                 "transitions_rounded": self.snapped_transitions,
                 "singular_vertices": self.singular_vertices,
                 "singular_edges": self.singular_edges,
+                "singularities": self.singular_edge_angles,
             },
             "grid_offset": self.grid_offset.offset.name(),
             "grid_offset_choice": offset_json(&self.grid_offset),

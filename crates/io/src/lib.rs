@@ -32,6 +32,7 @@ mod ply;
 mod ply_header;
 mod ply_out;
 mod scan;
+mod vtk;
 
 pub mod output;
 pub mod write_cells;
@@ -51,9 +52,21 @@ mod test_scratch;
 pub use hexex::parse_hexex;
 pub use medit::parse_medit_hex;
 pub use obj::{parse_obj, parse_polygon_obj};
-pub use output::{write_text, OutputError, OutputErrorKind};
+pub use output::{
+    check_output, check_writable, write_bytes, write_text, OutputError, OutputErrorKind,
+};
+
+/// Extensions [`write_quad_mesh`] accepts.
+pub const QUAD_MESH_EXTENSIONS: &[&str] = &["obj", "ply", "vtk"];
+/// Extensions [`write_hex_mesh`] accepts.
+pub const HEX_MESH_EXTENSIONS: &[&str] = &["mesh", "vtk"];
+/// Extensions [`write_tri_map`] accepts.
+pub const TRI_MAP_EXTENSIONS: &[&str] = &["obj", "ply"];
+/// Extensions [`write_tet_map`] accepts.
+pub const TET_MAP_EXTENSIONS: &[&str] = &["hexex"];
 pub use ply::{parse_ply, parse_polygon_ply};
 pub use ply_header::PlyFormat;
+pub use vtk::{parse_vtk, VtkMesh};
 
 use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
 use output::{extension, write_atomic};
@@ -115,6 +128,13 @@ pub fn read_hex_mesh(path: &Path) -> Result<HexMesh, InputError> {
     parse_medit_hex(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
 }
 
+/// Reads a quad or hex mesh from a legacy ASCII `.vtk` (as written by
+/// [`write_quad_mesh`] / [`write_hex_mesh`]).
+pub fn read_vtk(path: &Path) -> Result<VtkMesh, InputError> {
+    input_extension(path, &["vtk"])?;
+    parse_vtk(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+}
+
 /// Reads a polygon mesh from `.obj`.
 pub fn read_polygon_obj(path: &Path) -> Result<PolyMesh, InputError> {
     parse_polygon_obj(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
@@ -135,7 +155,7 @@ fn invalid(path: &Path, message: String) -> OutputError {
 
 /// Writes a quad mesh as `.obj`, `.ply` (binary little endian) or `.vtk`.
 pub fn write_quad_mesh(path: &Path, mesh: &QuadMesh) -> Result<(), OutputError> {
-    let ext = extension(path, &["obj", "ply", "vtk"])?;
+    let ext = extension(path, QUAD_MESH_EXTENSIONS)?;
     write_cells::check_cells(mesh).map_err(|m| invalid(path, m))?;
     write_atomic(path, |w| match ext.as_str() {
         "obj" => write_cells::quad_obj(w, mesh),
@@ -146,7 +166,7 @@ pub fn write_quad_mesh(path: &Path, mesh: &QuadMesh) -> Result<(), OutputError> 
 
 /// Writes a hex mesh as `.mesh` (MEDIT) or `.vtk`.
 pub fn write_hex_mesh(path: &Path, mesh: &HexMesh) -> Result<(), OutputError> {
-    let ext = extension(path, &["mesh", "vtk"])?;
+    let ext = extension(path, HEX_MESH_EXTENSIONS)?;
     write_cells::check_cells(mesh).map_err(|m| invalid(path, m))?;
     write_atomic(path, |w| match ext.as_str() {
         "mesh" => write_cells::hex_medit(w, mesh),
@@ -156,7 +176,7 @@ pub fn write_hex_mesh(path: &Path, mesh: &HexMesh) -> Result<(), OutputError> {
 
 /// Writes a triangle map as `.obj` or `.ply` (binary little endian).
 pub fn write_tri_map(path: &Path, map: &TriMap) -> Result<(), OutputError> {
-    let ext = extension(path, &["obj", "ply"])?;
+    let ext = extension(path, TRI_MAP_EXTENSIONS)?;
     map.validate().map_err(|e| invalid(path, e.to_string()))?;
     write_atomic(path, |w| match ext.as_str() {
         "obj" => write_map::tri_map_obj(w, map),
@@ -166,7 +186,7 @@ pub fn write_tri_map(path: &Path, map: &TriMap) -> Result<(), OutputError> {
 
 /// Writes a tet map as `.hexex`.
 pub fn write_tet_map(path: &Path, map: &TetMap) -> Result<(), OutputError> {
-    extension(path, &["hexex"])?;
+    extension(path, TET_MAP_EXTENSIONS)?;
     map.validate().map_err(|e| invalid(path, e.to_string()))?;
     write_atomic(path, |w| write_map::tet_map_hexex(w, map))
 }

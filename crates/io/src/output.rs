@@ -5,6 +5,15 @@
 //! synced and then renamed over the target. On any error the temporary file
 //! is removed, so a failed write leaves the target untouched (absent or as it
 //! was before).
+//!
+//! Only regular files are replaced that way. A symbolic link is written
+//! through: its target file is replaced (atomically, beside the target), the
+//! link stays. Devices, pipes and anything under `/dev/` or `/proc/`
+//! (`/dev/stdout`, `/dev/null`) are opened and written directly.
+//!
+//! [`check_writable`] tells before any work whether a path can be written:
+//! its folder exists and accepts a new file (probed by creating and
+//! removing a temporary file), it is not a folder.
 
 use std::fmt;
 use std::fs::{self, File, OpenOptions};
@@ -109,17 +118,105 @@ pub(crate) fn write_atomic(
     body: impl FnOnce(&mut BufWriter<File>) -> io::Result<()>,
 ) -> Result<(), OutputError> {
     let err = |e: io::Error| OutputError::new(path, OutputErrorKind::Io(e));
-    let (tmp, file) = create_temp(path).map_err(err)?;
+    let target = match target(path) {
+        Target::Direct => return write_direct(path, body).map_err(err),
+        Target::Replace(t) => t,
+    };
+    let (tmp, file) = create_temp(&target).map_err(err)?;
     let mut w = BufWriter::new(file);
     let result = body(&mut w)
         .and_then(|()| w.into_inner().map_err(|e| e.into_error()))
         .and_then(|file| file.sync_all())
-        .and_then(|()| fs::rename(&tmp, path));
+        .and_then(|()| fs::rename(&tmp, &target));
     if let Err(e) = result {
         let _ = fs::remove_file(&tmp);
         return Err(err(e));
     }
     Ok(())
+}
+
+/// How a path is written.
+enum Target {
+    /// Opened and written in place (devices, pipes, `/dev/…`, `/proc/…`).
+    Direct,
+    /// A regular file (or none yet) replaced through a temporary file.
+    Replace(PathBuf),
+}
+
+/// Where the bytes for `path` go (module docs).
+fn target(path: &Path) -> Target {
+    if path.starts_with("/dev") || path.starts_with("/proc") {
+        return Target::Direct;
+    }
+    let Ok(meta) = fs::symlink_metadata(path) else {
+        return Target::Replace(path.to_path_buf());
+    };
+    if meta.file_type().is_symlink() {
+        return match (fs::metadata(path), fs::canonicalize(path)) {
+            (Ok(m), Ok(real)) if m.is_file() => Target::Replace(real),
+            _ => Target::Direct,
+        };
+    }
+    if meta.is_file() || meta.is_dir() {
+        // a folder fails at the rename, naming the path
+        Target::Replace(path.to_path_buf())
+    } else {
+        Target::Direct
+    }
+}
+
+fn write_direct(
+    path: &Path,
+    body: impl FnOnce(&mut BufWriter<File>) -> io::Result<()>,
+) -> io::Result<()> {
+    let file = OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(true)
+        .open(path)?;
+    let mut w = BufWriter::new(file);
+    body(&mut w)?;
+    w.flush()
+}
+
+/// Whether `path` can be written, checked before any work (module docs):
+/// the folder exists and takes a new file, and `path` is not a folder.
+pub fn check_writable(path: &Path) -> Result<(), OutputError> {
+    let err = |e: io::Error| OutputError::new(path, OutputErrorKind::Io(e));
+    let target = match target(path) {
+        Target::Direct => {
+            OpenOptions::new().write(true).open(path).map_err(err)?;
+            return Ok(());
+        }
+        Target::Replace(t) => t,
+    };
+    if target.is_dir() {
+        return Err(err(io::Error::new(
+            io::ErrorKind::IsADirectory,
+            "is a directory",
+        )));
+    }
+    let (tmp, file) = create_temp(&target).map_err(|e| match e.kind() {
+        io::ErrorKind::NotFound => err(io::Error::new(
+            io::ErrorKind::NotFound,
+            "the folder does not exist",
+        )),
+        _ => err(e),
+    })?;
+    drop(file);
+    fs::remove_file(&tmp).map_err(err)
+}
+
+/// Whether `path` has one of the `allowed` extensions (lower-cased), and
+/// can be written ([`check_writable`]).
+pub fn check_output(path: &Path, allowed: &'static [&'static str]) -> Result<(), OutputError> {
+    extension(path, allowed)?;
+    check_writable(path)
+}
+
+/// Writes raw bytes (a PNG, …) like every other writer (module docs).
+pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    write_atomic(path, |w| w.write_all(bytes))
 }
 
 /// A new file `.NAME.PID.K.tmp` beside `path` (never an existing one).
@@ -204,6 +301,45 @@ mod tests {
         assert_eq!(leftovers(p.parent().unwrap()), 0);
         let missing = p.join("no/such/dir.obj");
         assert!(write_text(&missing, "x").is_err());
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn symlinks_and_devices_are_written_through() {
+        use std::os::unix::fs::FileTypeExt;
+        let p = scratch("real.txt");
+        write_text(&p, "old").unwrap();
+        let link = p.with_file_name("link.txt");
+        let _ = fs::remove_file(&link);
+        std::os::unix::fs::symlink(&p, &link).unwrap();
+        write_text(&link, "new").unwrap();
+        assert!(fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        assert_eq!(fs::read_to_string(&p).unwrap(), "new");
+        write_text(Path::new("/dev/null"), "x").unwrap();
+        assert!(fs::metadata("/dev/null")
+            .unwrap()
+            .file_type()
+            .is_char_device());
+        assert_eq!(leftovers(p.parent().unwrap()), 0);
+    }
+
+    #[test]
+    fn writability_is_checked_up_front() {
+        let p = scratch("probe.obj");
+        check_output(&p, &["obj"]).unwrap();
+        assert!(!p.exists());
+        assert_eq!(leftovers(p.parent().unwrap()), 0);
+        let e = check_writable(&p.with_file_name("nodir/x.obj")).unwrap_err();
+        assert!(
+            e.to_string()
+                .ends_with("nodir/x.obj: cannot write: the folder does not exist"),
+            "{e}"
+        );
+        assert!(check_writable(p.parent().unwrap()).is_err());
+        assert!(check_output(&p.with_extension("stl"), &["obj"]).is_err());
     }
 
     #[test]

@@ -152,22 +152,43 @@ pub fn quarters(q: i64) -> String {
     }
 }
 
+/// Singular vertices of a 2D map by index (`"1/4"` → count), and those
+/// whose integer part is unknown by index modulo 1 (module docs).
+pub fn singularity_histogram(
+    map: &TriMap,
+    topo: &Topology<3>,
+    trans: &Transitions<3, 2>,
+) -> (BTreeMap<String, usize>, BTreeMap<String, usize>) {
+    let (mut known, mut unknown) = (BTreeMap::new(), BTreeMap::new());
+    for s in vertex_singularities(map, topo, trans) {
+        match s.index_quarters {
+            Some(q) => *known.entry(quarters(q)).or_default() += 1,
+            None => *unknown.entry(quarters(s.turns)).or_default() += 1,
+        }
+    }
+    (known, unknown)
+}
+
+/// Singular edges of a 3D map by angle label (`"+90°"` → count).
+pub fn singular_edge_histogram<'a>(
+    edges: impl IntoIterator<Item = &'a crate::singularity::EdgeSingularity>,
+) -> BTreeMap<String, usize> {
+    let mut h = BTreeMap::new();
+    for e in edges {
+        *h.entry(e.angle.label().to_string()).or_default() += 1;
+    }
+    h
+}
+
 impl Inspect for TriMap {
     fn inspect_map(&self, opts: &InspectOptions) -> Result<MapReport, InputError> {
         let a = analyse(self, opts)?;
         let mut report = a.report;
         report.boundary_loops = Some(a.topo.boundary_loops(&a.map));
-        for s in vertex_singularities(&a.map, &a.topo, &a.trans) {
-            match s.index_quarters {
-                Some(q) => *report.singularities.entry(quarters(q)).or_default() += 1,
-                None => {
-                    *report
-                        .singularities_integer_part_unknown
-                        .entry(quarters(s.turns))
-                        .or_default() += 1
-                }
-            }
-        }
+        (
+            report.singularities,
+            report.singularities_integer_part_unknown,
+        ) = singularity_histogram(&a.map, &a.topo, &a.trans);
         Ok(report)
     }
 }
@@ -178,12 +199,8 @@ impl Inspect for TetMap {
         self.check_not_reflected()?;
         let a = analyse(self, opts)?;
         let mut report = a.report;
-        for e in edge_singularities(&a.map, &a.topo, &a.trans) {
-            *report
-                .singular_edges
-                .entry(e.angle.label().to_string())
-                .or_default() += 1;
-        }
+        report.singular_edges =
+            singular_edge_histogram(&edge_singularities(&a.map, &a.topo, &a.trans));
         Ok(report)
     }
 }

@@ -96,6 +96,13 @@ pub fn extract_traced(
         st.snapped_transitions = trep.snapped;
         let stars = Stars::build(map, &topo, &trans);
         st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
+        if grid.is_none() {
+            // the input's singularities (integer part unknown: "k/4 mod 1")
+            let (known, unknown) = dualex_map::report::singularity_histogram(map, &topo, &trans);
+            st.singularities = known;
+            st.singularities
+                .extend(unknown.into_iter().map(|(k, n)| (format!("{k} mod 1"), n)));
+        }
         // 1: the offset is chosen once (splits add no singular vertex)
         let choice = *grid.get_or_insert_with(|| {
             dualex_map::grid_offset::choose(map, &topo, &stars, opts.grid_offset)

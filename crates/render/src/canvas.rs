@@ -89,6 +89,12 @@ pub fn bbox(points: impl Iterator<Item = [f64; 2]>) -> Option<([f64; 2], [f64; 2
     })
 }
 
+/// Encodes `pix` as PNG.
+pub fn encode(pix: &Pixmap) -> Result<Vec<u8>, String> {
+    pix.encode_png()
+        .map_err(|e| format!("cannot encode PNG: {e}"))
+}
+
 /// Encodes `pix` as PNG and writes it to `path` through a temporary file
 /// and a rename.
 pub fn write_png(pix: &Pixmap, path: &Path) -> Result<(), String> {

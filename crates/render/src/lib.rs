@@ -35,7 +35,7 @@ mod gallery;
 #[cfg(test)]
 mod test_png;
 
-pub use map_png::{map_png, map_png_marked, MapMark};
-pub use quad_png::quad_png;
+pub use map_png::{map_png, map_png_bytes, map_png_marked, MapMark};
+pub use quad_png::{quad_png, quad_png_bytes};
 pub use valence::{valence_classes, ValenceClass};
 pub use view::{hex_boundary, view_html, view_html_hex};

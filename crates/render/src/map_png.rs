@@ -25,7 +25,7 @@ use dualex_map::weld::weld;
 use dualex_map::{Topology, TransitionOptions, Transitions, TriMap};
 use tiny_skia::{FillRule, PathBuilder, Pixmap, Stroke, Transform};
 
-use crate::canvas::{bbox, paint, white, write_png, Fit};
+use crate::canvas::{bbox, encode, paint, white, write_png, Fit};
 use crate::valence::ValenceClass;
 
 /// A vertex to mark, with the class of the quad vertex it becomes.
@@ -68,6 +68,15 @@ pub fn map_png(map: &TriMap, path: &Path, size: u32) -> Result<(), String> {
     let (welded, _) = weld(map);
     let marks = singular_marks(&welded);
     map_png_marked(&welded, &marks, path, size)
+}
+
+/// The PNG bytes of [`map_png`], for the caller to write (errors name no
+/// file).
+pub fn map_png_bytes(map: &TriMap, size: u32) -> Result<Vec<u8>, String> {
+    map.validate().map_err(|e| e.to_string())?;
+    let (welded, _) = weld(map);
+    let marks = singular_marks(&welded);
+    encode(&draw_map(&welded, &marks, size)?)
 }
 
 /// The marks of [`map_png`] on a (welded) map; empty when its topology

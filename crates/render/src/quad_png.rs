@@ -28,6 +28,12 @@ pub fn quad_png(mesh: &QuadMesh, path: &Path, size: u32) -> Result<(), String> {
     write_png(&pix, path)
 }
 
+/// The PNG bytes of [`quad_png`], for the caller to write (errors name no
+/// file).
+pub fn quad_png_bytes(mesh: &QuadMesh, size: u32) -> Result<Vec<u8>, String> {
+    crate::canvas::encode(&draw_quads(mesh, size)?)
+}
+
 /// Quads in view coordinates with their paint order.
 struct Scene {
     view: Vec<[f64; 3]>,

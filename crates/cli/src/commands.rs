@@ -1,0 +1,144 @@
+//! `dualex view`, `dualex inspect` and `dualex extrude`.
+
+use crate::args::{ExtrudeArgs, Global, InspectArgs, ViewArgs};
+use crate::summary::count;
+use crate::{outputs, timing, PNG_SIZE};
+
+/// `dualex view`: a quad (`.obj`/`.ply`/`.vtk`) or hex (`.mesh`/`.vtk`)
+/// mesh as a self-contained HTML page.
+pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
+    outputs::check(&a.output, None)?;
+    let input = &a.mesh;
+    let name = input.display().to_string();
+    let title = input
+        .file_name()
+        .map_or(name.clone(), |f| f.to_string_lossy().to_string());
+    let ext = input
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    let page = match ext.as_str() {
+        "mesh" => {
+            let mesh = dualex_io::read_hex_mesh(input).map_err(|e| e.to_string())?;
+            dualex_render::view_html_hex(&mesh, &title)
+        }
+        "vtk" => match dualex_io::read_vtk(input).map_err(|e| e.to_string())? {
+            dualex_io::VtkMesh::Quads(m) => dualex_render::view_html(&m, &title),
+            dualex_io::VtkMesh::Hexes(m) => dualex_render::view_html_hex(&m, &title),
+        },
+        _ => {
+            let poly = dualex_io::read_polygon_mesh(input).map_err(|e| e.to_string())?;
+            let mut mesh = dualex_map::QuadMesh {
+                positions: poly.positions,
+                cells: Vec::with_capacity(poly.faces.len()),
+            };
+            for (i, f) in poly.faces.iter().enumerate() {
+                let [a, b, c, d] = f[..] else {
+                    return Err(format!(
+                        "{name}: face {i} has {} vertices; view shows quad meshes",
+                        f.len()
+                    ));
+                };
+                mesh.cells.push([a, b, c, d]);
+            }
+            dualex_render::view_html(&mesh, &title)
+        }
+    }
+    .map_err(|e| format!("{name}: {e}"))?;
+    dualex_io::write_text(&a.output, &page).map_err(|e| e.to_string())?;
+    if !g.quiet {
+        eprintln!("dualex: view: {} -> {}", name, a.output.display());
+    }
+    Ok(())
+}
+
+/// `dualex inspect`: the map report on stdout (text or `--json`).
+pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
+    let path = &a.input;
+    let name = path.display().to_string();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    let opts = dualex_map::report::InspectOptions {
+        weld: !a.weld.no_weld,
+        round: a.round.round,
+        ..Default::default()
+    };
+    if let Some(png) = &a.png {
+        if ext == "hexex" {
+            crate::args::usage_error(
+                "inspect --png: pictures of 3D maps are not supported; use a 2D map",
+            );
+        }
+        outputs::check(png, None)?;
+    }
+    let report = if ext == "hexex" {
+        let m = dualex_io::read_tet_map(path).map_err(|e| e.to_string())?;
+        dualex_map::report::inspect(&m, &opts)
+    } else {
+        let m = dualex_io::read_tri_map(path).map_err(|e| e.to_string())?;
+        if let Some(png) = &a.png {
+            let bytes =
+                dualex_render::map_png_bytes(&m, PNG_SIZE).map_err(|e| format!("{name}: {e}"))?;
+            outputs::write_png(png, &bytes)?;
+        }
+        dualex_map::report::inspect(&m, &opts)
+    }
+    .map_err(|e| e.in_file(name).to_string())?;
+    if a.json {
+        println!("{}", report.to_json());
+    } else {
+        println!("{report}");
+    }
+    Ok(())
+}
+
+/// `dualex extrude`: a 2D map into a 3D one (prisms tetrahedralized by
+/// TetGen, run as an external program; see dualex-extrude).
+pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), String> {
+    outputs::check(&a.output, Some(dualex_io::TET_MAP_EXTENSIONS))?;
+    let name = a.input.display().to_string();
+    let map = crate::read_2d(&a.input, &a.weld, g, &mut timing::Laps::start())?;
+    let opts = dualex_extrude::ExtrudeOptions {
+        layers: a.layers,
+        thickness: a.thickness,
+        quality: a.quality,
+        program: std::env::var_os("DUALEX_TETGEN").map_or("tetgen".into(), Into::into),
+        fallback: a.fallback,
+    };
+    let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|e| format!("{name}: {e}"))?;
+    dualex_io::write_tet_map(&a.output, &tets).map_err(|e| e.to_string())?;
+    if let Some(note) = rep.note.as_deref().filter(|_| !g.quiet) {
+        eprintln!("dualex: {name}: {note}");
+    }
+    let cap = dualex_extrude::tetgen::steiner_cap(rep.prisms);
+    if a.quality && rep.steiner_points >= cap {
+        eprintln!(
+            "dualex: warning: {name}: --quality stopped at its cap of {cap} Steiner points ({} per prism): the tets are valid but not all of TetGen's quality",
+            dualex_extrude::tetgen::STEINER_PER_PRISM
+        );
+    }
+    if !g.quiet {
+        eprintln!(
+            "dualex: done: {} -> {} ({}, {}, {} flat, {} reverted), thickness {:.3e}, {:.0} ms ({:.0} ms tetrahedralizing) -> {}",
+            count(rep.prisms, "prism", "prisms"),
+            count(rep.tets, "tet", "tets"),
+            match rep.method {
+                dualex_extrude::Method::TetGen => "TetGen",
+                dualex_extrude::Method::Thinner { .. } => "TetGen, thinner slab",
+                dualex_extrude::Method::Split => "prism split",
+            },
+            count(rep.steiner_points, "Steiner point", "Steiner points"),
+            rep.flat_tets,
+            rep.reverted_tets,
+            rep.thickness,
+            rep.total_ms,
+            rep.tetrahedralize_ms,
+            a.output.display()
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,243 @@
+//! `dualex quad` and `dualex hex`: read, extract, check, write.
+//!
+//! Order: every output path is checked first ([`crate::outputs`]); then
+//! read, extract, the last check ([`crate::verify`]), the picture rendered
+//! in memory; only then are the files written (mesh, stats, picture), so a
+//! refused or failed run writes nothing. The summary line goes to stderr
+//! and names the quality problems left ([`crate::summary`]).
+
+use crate::args::{ExtractArgs, Global, HexArgs, QuadArgs};
+use crate::summary::{count, problems_suffix};
+use crate::{outputs, progress, summary, timing, verify, EMBEDDED, PNG_SIZE};
+use dualex_check::topology as topo;
+use std::path::Path;
+
+/// Checks the outputs of an extraction (mesh, stats, picture).
+fn check_outputs(
+    mesh: &Path,
+    exts: &'static [&'static str],
+    x: &ExtractArgs,
+    png: Option<&Path>,
+) -> Result<(), String> {
+    let mut all = vec![(mesh, Some(exts))];
+    if let Some(s) = &x.stats {
+        all.push((s.as_path(), None));
+    }
+    if let Some(p) = png {
+        all.push((p, None));
+    }
+    outputs::check_all(&all)
+}
+
+/// `dualex quad`.
+pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
+    let x = &a.extract;
+    check_outputs(
+        &a.output,
+        dualex_io::QUAD_MESH_EXTENSIONS,
+        x,
+        a.png.as_deref(),
+    )?;
+    let mut laps = timing::Laps::start();
+    let (map, name) = match &a.input {
+        Some(p) => (
+            crate::read_2d(p, &a.weld, g, &mut laps)?,
+            p.display().to_string(),
+        ),
+        None => {
+            if !g.quiet {
+                eprintln!("dualex: no INPUT given: running on the embedded map (a folded, noisy cube surface)");
+            }
+            let m = dualex_io::parse_obj(EMBEDDED).map_err(|e| format!("embedded map: {e}"))?;
+            let name = "embedded map".to_string();
+            (crate::weld_if(m, &a.weld, g, &name), name)
+        }
+    };
+    let opts = dualex_quad::QuadOptions {
+        fairing: !a.no_fairing,
+        transitions: dualex_map::TransitionOptions {
+            round: x.round.round,
+            ..Default::default()
+        },
+        seed: x.seed,
+        grid_offset: x.grid_offset,
+    };
+    let progress = progress::Progress::new(map.len(), g.quiet);
+    progress.stage("extracting quads");
+    let (mesh, stats) =
+        dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    laps.lap("extract");
+    let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    laps.lap("check");
+    if !rep.is_valid() {
+        return Err(format!(
+            "{name}: could not make a valid quad mesh ({}); nothing written — please report this input",
+            rep.errors().join("; ")
+        ));
+    }
+    let topology = topo::Comparison {
+        input: topo::surface_shape(map.positions.len(), &map.simplices),
+        output: topo::quad_shape(&rep),
+    };
+    let summary = verify::Output {
+        cell: "quad",
+        cells: mesh.cells.len(),
+        nodes: stats.nodes,
+        measure: verify::measure(&map),
+        topology,
+    };
+    verify::last_check(&name, &summary, x.strict)?;
+    verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
+    let png = match (&a.png, mesh.cells.is_empty()) {
+        (Some(_), false) => Some(
+            dualex_render::quad_png_bytes(&mesh, PNG_SIZE).map_err(|e| format!("{name}: {e}"))?,
+        ),
+        _ => None,
+    };
+    progress.stage("writing");
+    dualex_io::write_quad_mesh(&a.output, &mesh).map_err(|e| e.to_string())?;
+    laps.lap("write");
+    drop(progress);
+    let mut json = stats.to_json();
+    verify::add_to_stats(&mut json, &topology);
+    finish_stats(x, g, &json, &laps, &stats.time_ms)?;
+    if let (Some(path), Some(bytes)) = (&a.png, &png) {
+        outputs::write_png(path, bytes)?;
+    } else if let Some(path) = &a.png {
+        eprintln!(
+            "dualex: warning: {}: not written: the mesh is empty",
+            path.display()
+        );
+    }
+    warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    if stats.subdivided {
+        // printed under -q too: the output is not the map's own mesh
+        eprintln!(
+            "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads by one step of subdivision of the whole mesh",
+            count(stats.repair_triangles + stats.holes_filled, "face", "faces"),
+            count(stats.repair_triangles, "triangle", "triangles"),
+            count(stats.holes_filled, "hole", "holes"),
+            summary::plural(stats.repair_triangles + stats.holes_filled, "was", "were"),
+        );
+    }
+    if !g.quiet {
+        eprintln!(
+            "dualex: {}: {}, {}, {}, {} -> {}{}",
+            if a.input.is_some() {
+                "done"
+            } else {
+                "embedded map"
+            },
+            count(stats.quads, "quad", "quads"),
+            count(stats.vertices, "vertex", "vertices"),
+            count(stats.boundary_loops, "boundary loop", "boundary loops"),
+            count(stats.components, "component", "components"),
+            a.output.display(),
+            problems_suffix(&summary::quad_problems(&stats)),
+        );
+    }
+    Ok(())
+}
+
+/// `dualex hex`.
+pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
+    let x = &a.extract;
+    check_outputs(&a.output, dualex_io::HEX_MESH_EXTENSIONS, x, None)?;
+    let name = a.input.display().to_string();
+    let mut laps = timing::Laps::start();
+    let map = dualex_io::read_tet_map(&a.input).map_err(|e| e.to_string())?;
+    laps.lap("read");
+    let opts = dualex_hex::HexOptions {
+        transitions: dualex_map::TransitionOptions {
+            round: x.round.round,
+            ..Default::default()
+        },
+        seed: x.seed,
+        grid_offset: x.grid_offset,
+    };
+    let progress = progress::Progress::new(map.len(), g.quiet);
+    progress.stage("extracting hexes");
+    let (mesh, stats) =
+        dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    laps.lap("extract");
+    // combinatorial validity (hexes of a messy map may be geometrically
+    // inverted: vertices sit on noisy preimages)
+    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    laps.lap("check");
+    if !rep.is_valid() {
+        return Err(format!(
+            "{name}: could not make a valid hex mesh ({}); nothing written",
+            rep.errors().join("; ")
+        ));
+    }
+    let topology = topo::Comparison {
+        input: topo::tet_shape(map.positions.len(), &map.simplices),
+        output: topo::hex_shape(&rep),
+    };
+    let summary = verify::Output {
+        cell: "hex",
+        cells: mesh.cells.len(),
+        nodes: stats.nodes,
+        measure: verify::measure(&map),
+        topology,
+    };
+    verify::last_check(&name, &summary, x.strict)?;
+    verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
+    progress.stage("writing");
+    dualex_io::write_hex_mesh(&a.output, &mesh).map_err(|e| e.to_string())?;
+    laps.lap("write");
+    drop(progress);
+    let mut json = stats.to_json();
+    verify::add_to_stats(&mut json, &topology);
+    finish_stats(x, g, &json, &laps, &stats.time_ms)?;
+    warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    if stats.open_interior_faces > 0 {
+        // loud: printed even with -q (a crack is a wrong mesh, not noise)
+        eprintln!(
+            "dualex: WARNING: {} left open (walks lost at singular edges: cracks, not input boundary); see \"holes\" in the stats",
+            count(stats.open_interior_faces, "interior face", "interior faces")
+        );
+    }
+    if !g.quiet {
+        eprintln!(
+            "dualex: done: {}, {} -> {}{}",
+            count(mesh.cells.len(), "hex", "hexes"),
+            count(mesh.positions.len(), "vertex", "vertices"),
+            a.output.display(),
+            problems_suffix(&summary::hex_problems(&stats)),
+        );
+    }
+    Ok(())
+}
+
+/// Writes `--stats`, and prints the `-v` table.
+fn finish_stats(
+    x: &ExtractArgs,
+    g: &Global,
+    json: &serde_json::Value,
+    laps: &timing::Laps,
+    stages: &[(String, f64)],
+) -> Result<(), String> {
+    if let Some(s) = &x.stats {
+        outputs::write_stats(s, json)?;
+    }
+    if g.verbose {
+        eprintln!(
+            "{}",
+            summary::verbose_table(laps.laps(), stages, laps.total_ms(), json)
+        );
+    }
+    Ok(())
+}
+
+/// The warning for transitions rounded without `--round-transitions`
+/// (or with it): how many, and the largest residual.
+fn warn_rounded(g: &Global, rounded: usize, max_residual: f64) {
+    if rounded > 0 && !g.quiet {
+        eprintln!(
+            "dualex: warning: rounded {} that {} not integral (largest residual {max_residual:.3e}); the map is not exactly grid-preserving",
+            count(rounded, "transition translation", "transition translations"),
+            summary::plural(rounded, "was", "were"),
+        );
+    }
+}
