@@ -315,9 +315,10 @@ fn results_are_said_where_people_look() {
 }
 
 #[test]
-fn the_subdivision_warning_survives_q() {
+fn the_repair_warning_survives_q() {
     let dir = Scratch::new("subdiv");
-    // disk_p1 under the offset 0: a hole only polygons close, subdivided
+    // disk_p1 under the offset 0: a hole only polygons close, made quads
+    // by the local repair (a path to the boundary), not by subdividing
     let p = generated(&dir, "disk_p1", "d.obj");
     let q = dir.arg("q.obj");
     let st = dir.arg("s.json");
@@ -333,20 +334,22 @@ fn the_subdivision_warning_survives_q() {
     ];
     let out = dualex(&[&args[..], &["-q"]].concat());
     assert!(out.status.success(), "{}", text(&out));
-    assert_eq!(json(&dir.path("s.json"))["repair"]["subdivided"], true);
+    let st = json(&dir.path("s.json"));
+    assert_eq!(st["repair"]["subdivided"], false, "{st}");
+    assert_eq!(st["repair"]["local_paths"], 1, "{st}");
     assert!(
         stderr(&out).contains("1 face that quads cannot represent"),
         "{}",
         text(&out)
     );
     assert!(
-        stderr(&out).contains("was made quads by one step of subdivision"),
+        stderr(&out).contains("was made quads along 1 path between them (local repair)"),
         "{}",
         text(&out)
     );
     let out = dualex(&args);
     assert!(
-        stderr(&out).contains("(check: subdivided once"),
+        stderr(&out).contains("(check: repaired locally along 1 path"),
         "{}",
         text(&out)
     );

@@ -110,6 +110,17 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
         );
     }
     warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    if stats.repair_paths > 0 {
+        // printed under -q too: the output is not the map's own mesh
+        eprintln!(
+            "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads along {} between them (local repair)",
+            count(stats.repair_triangles + stats.holes_filled, "face", "faces"),
+            count(stats.repair_triangles, "triangle", "triangles"),
+            count(stats.holes_filled, "hole", "holes"),
+            summary::plural(stats.repair_triangles + stats.holes_filled, "was", "were"),
+            count(stats.repair_paths, "path", "paths"),
+        );
+    }
     if stats.subdivided {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(

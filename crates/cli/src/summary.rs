@@ -37,6 +37,12 @@ pub fn quad_problems(st: &dualex_quad::QuadStats) -> Vec<String> {
     if st.subdivided {
         p.push("subdivided once (quads could not represent the map)".into());
     }
+    if st.repair_paths > 0 {
+        p.push(format!(
+            "repaired locally along {} (quads could not represent the map)",
+            count(st.repair_paths, "path", "paths")
+        ));
+    }
     if st.repair_dropped > 0 {
         p.push(format!(
             "{} dropped",
