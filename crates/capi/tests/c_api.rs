@@ -218,3 +218,111 @@ fn c_program_gets_the_reference_counts_on_shared_maps() {
     let out = run(&exe, &[path.to_str().unwrap_or_default(), "956"]);
     assert!(out.contains("956 hexes"), "{out}");
 }
+
+/// `dualex.pc.in`, installed into a scratch prefix, gives the flags that
+/// compile and link the C test (shared and, with `--static`, static).
+#[test]
+fn pkg_config_file_links_the_c_test() {
+    let dir = Scratch::new("pkg-config");
+    let prefix = dir.0.join("prefix");
+    let (inc, lib, pc) = (
+        prefix.join("include"),
+        prefix.join("lib"),
+        prefix.join("lib/pkgconfig"),
+    );
+    for d in [&inc, &pc] {
+        std::fs::create_dir_all(d).expect("create the prefix");
+    }
+    let copy = |from: &Path, to: &Path| std::fs::copy(from, to).expect("install a file");
+    copy(&manifest().join("include/dualex.h"), &inc.join("dualex.h"));
+    for name in ["libdualex_capi.so", "libdualex_capi.a"] {
+        copy(&lib_dir().join(name), &lib.join(name));
+    }
+    let template =
+        std::fs::read_to_string(manifest().join("dualex.pc.in")).expect("read dualex.pc.in");
+    let text = template
+        .replace("@PREFIX@", &prefix.display().to_string())
+        .replace("@VERSION@", env!("CARGO_PKG_VERSION"));
+    std::fs::write(pc.join("dualex.pc"), text).expect("write dualex.pc");
+    for stat in [false, true] {
+        let mut args = vec!["--cflags", "--libs", "dualex"];
+        if stat {
+            args.insert(0, "--static");
+        }
+        let flags = match Command::new("pkg-config")
+            .args(&args)
+            .env("PKG_CONFIG_PATH", &pc)
+            .output()
+        {
+            Ok(o) if o.status.success() => String::from_utf8_lossy(&o.stdout).into_owned(),
+            Ok(o) => panic!("pkg-config failed: {}", String::from_utf8_lossy(&o.stderr)),
+            Err(e) => {
+                eprintln!("NOTICE: no pkg-config ({e}): dualex.pc is not checked");
+                return;
+            }
+        };
+        let exe = dir.0.join(if stat { "static" } else { "shared" });
+        let mut cc = Command::new("cc");
+        cc.arg(manifest().join("tests/c/test_quad_hex.c"))
+            .arg("-o")
+            .arg(&exe);
+        if stat {
+            // the static library ahead of -ldualex_capi resolves every symbol
+            cc.arg(lib.join("libdualex_capi.a"));
+        }
+        cc.args(flags.split_whitespace());
+        let out = cc.output().expect("run cc");
+        assert!(
+            out.status.success(),
+            "cc {flags}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let run = Command::new(&exe)
+            .env("LD_LIBRARY_PATH", &lib)
+            .output()
+            .expect("run");
+        assert!(
+            run.status.success(),
+            "{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+    }
+}
+
+/// The README's C snippet ("Use from C/C++") compiles and runs.
+#[test]
+fn the_readme_c_snippet_runs() {
+    let readme = std::fs::read_to_string(manifest().join("../../README.md")).expect("read README");
+    let section = readme
+        .split("## Use from C/C++")
+        .nth(1)
+        .expect("README has a \"Use from C/C++\" section");
+    let code = section
+        .split("```c\n")
+        .nth(1)
+        .and_then(|s| s.split("```").next())
+        .expect("the section has a ```c block");
+    let dir = Scratch::new("readme");
+    let src = dir.0.join("readme.c");
+    std::fs::write(&src, code).expect("write readme.c");
+    let exe = dir.0.join("readme");
+    let lib = lib_dir();
+    let out = Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-I"])
+        .arg(manifest().join("include"))
+        .arg(&src)
+        .arg("-o")
+        .arg(&exe)
+        .arg("-L")
+        .arg(&lib)
+        .arg("-ldualex_capi")
+        .arg(format!("-Wl,-rpath,{}", lib.display()))
+        .output()
+        .expect("run cc");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(run(&exe, &[]), "16 quads, 25 vertices\n");
+}
