@@ -68,14 +68,14 @@ pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
         ..Default::default()
     };
     if let Some(png) = &a.png {
-        if ext == "hexex" {
+        if ext == "hexex" || ext == "ovm" {
             crate::args::usage_error(
                 "inspect --png: pictures of 3D maps are not supported; use a 2D map",
             );
         }
         outputs::check(png, None)?;
     }
-    let report = if ext == "hexex" {
+    let report = if ext == "hexex" || ext == "ovm" {
         let m = dualex_io::read_tet_map(path).map_err(|e| e.to_string())?;
         dualex_map::report::inspect(&m, &opts)
     } else {

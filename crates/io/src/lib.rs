@@ -5,10 +5,10 @@
 //! | data | read | write |
 //! |---|---|---|
 //! | triangle map ([`TriMap`]) | `.obj` (`f v/vt`), `.ply` (face `texcoord`) | `.obj`, `.ply` (binary LE) |
-//! | tet map ([`TetMap`]) | `.hexex` | `.hexex` |
+//! | tet map ([`TetMap`]) | `.hexex`, `.ovm` (HexHex's `HexHex::Parametrization`) | `.hexex`, `.ovm` |
 //! | polygon mesh ([`PolyMesh`]) | `.obj`, `.ply` | — |
 //! | quad mesh ([`QuadMesh`]) | (as a polygon mesh) | `.obj`, `.ply` (binary LE), `.vtk` |
-//! | hex mesh ([`HexMesh`]) | — | `.mesh` (MEDIT), `.vtk` |
+//! | hex mesh ([`HexMesh`]) | — | `.mesh` (MEDIT), `.vtk`, `.ovm` |
 //!
 //! Readers: `parse_*` take bytes (for fuzzers and embedded data), `read_*`
 //! take a path, choose the format by extension and attach the file name to
@@ -28,6 +28,8 @@ mod fmt;
 mod hexex;
 mod medit;
 mod obj;
+mod ovm;
+mod ovm_out;
 mod ply;
 mod ply_header;
 mod ply_out;
@@ -45,6 +47,8 @@ mod fast_tests;
 #[cfg(test)]
 mod fuzz_tests;
 #[cfg(test)]
+mod ovm_tests;
+#[cfg(test)]
 mod roundtrip_tests;
 #[cfg(test)]
 mod test_scratch;
@@ -55,15 +59,17 @@ pub use obj::{parse_obj, parse_polygon_obj};
 pub use output::{
     check_output, check_writable, write_bytes, write_text, OutputError, OutputErrorKind,
 };
+pub use ovm::{parse_ovm_tet_map, HEXHEX_PARAM};
+pub use ovm_out::{hex_ovm, tet_map_ovm};
 
 /// Extensions [`write_quad_mesh`] accepts.
 pub const QUAD_MESH_EXTENSIONS: &[&str] = &["obj", "ply", "vtk"];
 /// Extensions [`write_hex_mesh`] accepts.
-pub const HEX_MESH_EXTENSIONS: &[&str] = &["mesh", "vtk"];
+pub const HEX_MESH_EXTENSIONS: &[&str] = &["mesh", "vtk", "ovm"];
 /// Extensions [`write_tri_map`] accepts.
 pub const TRI_MAP_EXTENSIONS: &[&str] = &["obj", "ply"];
 /// Extensions [`write_tet_map`] accepts.
-pub const TET_MAP_EXTENSIONS: &[&str] = &["hexex"];
+pub const TET_MAP_EXTENSIONS: &[&str] = &["hexex", "ovm"];
 pub use ply::{parse_ply, parse_polygon_ply};
 pub use ply_header::PlyFormat;
 pub use vtk::{parse_vtk, VtkMesh};
@@ -116,10 +122,14 @@ pub fn read_tri_map(path: &Path) -> Result<TriMap, InputError> {
     parse(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
 }
 
-/// Reads a tet map from `.hexex`.
+/// Reads a tet map from `.hexex` or OpenVolumeMesh ASCII `.ovm` (with
+/// HexHex's halfface property `HexHex::Parametrization`).
 pub fn read_tet_map(path: &Path) -> Result<TetMap, InputError> {
-    input_extension(path, &["hexex"])?;
-    parse_hexex(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+    let parse = match input_extension(path, &["hexex", "ovm"])?.as_str() {
+        "hexex" => parse_hexex,
+        _ => parse_ovm_tet_map,
+    };
+    parse(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
 }
 
 /// Reads a hex mesh from a MEDIT `.mesh` (as written by `dualex hex`).
@@ -164,12 +174,13 @@ pub fn write_quad_mesh(path: &Path, mesh: &QuadMesh) -> Result<(), OutputError> 
     })
 }
 
-/// Writes a hex mesh as `.mesh` (MEDIT) or `.vtk`.
+/// Writes a hex mesh as `.mesh` (MEDIT), `.vtk` or OpenVolumeMesh ASCII `.ovm`.
 pub fn write_hex_mesh(path: &Path, mesh: &HexMesh) -> Result<(), OutputError> {
     let ext = extension(path, HEX_MESH_EXTENSIONS)?;
     write_cells::check_cells(mesh).map_err(|m| invalid(path, m))?;
     write_atomic(path, |w| match ext.as_str() {
         "mesh" => write_cells::hex_medit(w, mesh),
+        "ovm" => hex_ovm(w, mesh),
         _ => write_cells::hex_vtk(w, mesh),
     })
 }
@@ -184,9 +195,13 @@ pub fn write_tri_map(path: &Path, map: &TriMap) -> Result<(), OutputError> {
     })
 }
 
-/// Writes a tet map as `.hexex`.
+/// Writes a tet map as `.hexex` or OpenVolumeMesh ASCII `.ovm` (HexHex's
+/// `HexHex::Parametrization`).
 pub fn write_tet_map(path: &Path, map: &TetMap) -> Result<(), OutputError> {
-    extension(path, TET_MAP_EXTENSIONS)?;
+    let ext = extension(path, TET_MAP_EXTENSIONS)?;
     map.validate().map_err(|e| invalid(path, e.to_string()))?;
-    write_atomic(path, |w| write_map::tet_map_hexex(w, map))
+    write_atomic(path, |w| match ext.as_str() {
+        "hexex" => write_map::tet_map_hexex(w, map),
+        _ => tet_map_ovm(w, map),
+    })
 }

@@ -169,7 +169,7 @@ fn file_writers_check_before_writing() {
     let e = write_hex_mesh(&dir.join("h.obj"), &tower()).unwrap_err();
     assert!(
         e.to_string()
-            .ends_with("unsupported output format `.obj`; use .mesh, .vtk"),
+            .ends_with("unsupported output format `.obj`; use .mesh, .vtk, .ovm"),
         "{e}"
     );
     for ext in ["obj", "ply", "vtk"] {

@@ -1,0 +1,328 @@
+//! The C API from C: compiles `tests/c/test_quad_hex.c` with `cc` (gcc)
+//! against `include/dualex.h` and the library cargo built for this test
+//! (static and shared), runs it on small maps it builds itself and on the
+//! shared maps of `../shared/data` (dumped here as plain text; listed as
+//! ignored with the reason when the folder is absent, see `build.rs`), and
+//! checks that the header's struct layout is the Rust one, field by field.
+
+use dualex_capi::{DualexHexMesh, DualexOptions, DualexQuadMesh};
+use std::mem::{offset_of, size_of};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The folder holding the library cargo built for this test: this test
+/// runs from `target/<profile>/deps`, where `cargo test` puts the
+/// library's static and shared forms (`cargo build` copies them up to
+/// `target/<profile>`, which `cargo test` does not refresh).
+fn lib_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("the test's path");
+    let deps = exe.parent().expect("the deps folder");
+    if deps.join("libdualex_capi.a").is_file() {
+        return deps.to_path_buf();
+    }
+    deps.parent().expect("the profile folder").to_path_buf()
+}
+
+fn manifest() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A fresh scratch folder for one test, removed on drop.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let d = std::env::temp_dir().join(format!("dualex-capi-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).expect("create the scratch folder");
+        Scratch(d)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Compiles the C test into `dir` against the static (or shared) library.
+fn c_program(dir: &Scratch, shared: bool) -> PathBuf {
+    let exe = dir.0.join("test_quad_hex");
+    let lib = lib_dir();
+    let mut cc = Command::new("cc");
+    cc.args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"])
+        .arg("-I")
+        .arg(manifest().join("include"))
+        .arg(manifest().join("tests/c/test_quad_hex.c"))
+        .arg("-o")
+        .arg(&exe);
+    if shared {
+        cc.arg("-L").arg(&lib).arg("-ldualex_capi");
+        cc.arg(format!("-Wl,-rpath,{}", lib.display()));
+    } else {
+        cc.arg(lib.join("libdualex_capi.a"));
+        // rustc --print native-static-libs on Linux
+        cc.args([
+            "-lgcc_s",
+            "-lutil",
+            "-lrt",
+            "-lpthread",
+            "-lm",
+            "-ldl",
+            "-lc",
+        ]);
+    }
+    let out = cc.output().expect("run cc (gcc)");
+    assert!(
+        out.status.success(),
+        "cc failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe
+}
+
+/// Runs a compiled C program; its stdout.
+fn run(exe: &Path, args: &[&str]) -> String {
+    let out = Command::new(exe)
+        .args(args)
+        .output()
+        .expect("run the C test");
+    let text = format!(
+        "stdout: {}\nstderr: {}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        out.status.success(),
+        "{} {args:?} failed: {text}",
+        exe.display()
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+#[test]
+fn c_program_extracts_small_maps_and_reports_errors_static() {
+    let dir = Scratch::new("static");
+    let out = run(&c_program(&dir, false), &[]);
+    assert!(out.contains("all checks passed"), "{out}");
+}
+
+#[test]
+fn c_program_links_the_shared_library() {
+    let dir = Scratch::new("shared");
+    let out = run(&c_program(&dir, true), &[]);
+    assert!(out.contains("all checks passed"), "{out}");
+}
+
+#[test]
+fn header_compiles_as_cpp() {
+    let out = Command::new("c++")
+        .args([
+            "-x",
+            "c++",
+            "-std=c++11",
+            "-Wall",
+            "-Werror",
+            "-fsyntax-only",
+            "-I",
+        ])
+        .arg(manifest().join("include"))
+        .arg(manifest().join("include/dualex.h"))
+        .output();
+    match out {
+        Ok(o) => assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr)),
+        Err(e) => eprintln!("NOTICE: no C++ compiler ({e}): the header's C++ check is skipped"),
+    }
+}
+
+/// The header's layout as the C compiler sees it equals Rust's.
+#[test]
+fn header_layout_matches_the_rust_structs() {
+    let dir = Scratch::new("layout");
+    let out = run(&c_program(&dir, false), &["--layout"]);
+    macro_rules! rust_layout {
+        ($t:ident: $($f:ident),*) => {{
+            let mut s = format!("{} {}\n", stringify!($t), size_of::<$t>());
+            $(s += &format!(
+                "{}.{} {} {}\n",
+                stringify!($t),
+                stringify!($f),
+                offset_of!($t, $f),
+                size_of_field(|x: &$t| &x.$f)
+            );)*
+            s
+        }};
+    }
+    let expected = rust_layout!(DualexOptions: weld, fairing, round_transitions, grid_offset, strict, seed)
+        + &rust_layout!(DualexQuadMesh: n_vertices, positions, n_cells, cells, sources, n_components,
+            n_boundary_loops, euler, n_singular_vertices, n_welded_vertices, topology_matches)
+        + &rust_layout!(DualexHexMesh: n_vertices, positions, n_cells, cells, sources, n_components,
+            n_boundary_surfaces, euler, n_singular_edges, n_welded_vertices, topology_matches);
+    assert_eq!(out, expected);
+}
+
+fn size_of_field<T, F>(_: impl Fn(&T) -> &F) -> usize {
+    size_of::<F>()
+}
+
+/// Writes a map as the C test's plain text: kind, vertices, simplices
+/// with their corners' map coordinates.
+fn dump<const N: usize, const D: usize>(
+    kind: &str,
+    positions: &[[f64; 3]],
+    simplices: &[[u32; N]],
+    coords: &[[[f64; D]; N]],
+    path: &Path,
+) -> std::io::Result<()> {
+    use std::fmt::Write;
+    let mut s = format!("{kind} {}\n", positions.len());
+    for p in positions {
+        let _ = writeln!(s, "{} {} {}", p[0], p[1], p[2]);
+    }
+    let _ = writeln!(s, "{}", simplices.len());
+    for (t, c) in simplices.iter().zip(coords) {
+        for v in t {
+            let _ = write!(s, "{v} ");
+        }
+        for x in c.iter().flatten() {
+            let _ = write!(s, "{x} ");
+        }
+        s.push('\n');
+    }
+    std::fs::write(path, s)
+}
+
+fn data(rel: &str) -> PathBuf {
+    manifest().join("../../../shared/data").join(rel)
+}
+
+#[test]
+#[cfg_attr(
+    no_shared_data,
+    ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"
+)]
+fn c_program_gets_the_reference_counts_on_shared_maps() {
+    let fandisk = dualex::read_tri_map(data("qex/fandisk_param.obj")).expect("read fandisk");
+    let dir = Scratch::new("shared-maps");
+    let exe = c_program(&dir, false);
+    let path = dir.0.join("fandisk.txt");
+    let m = &fandisk;
+    dump("tri", &m.positions, &m.simplices, &m.coords, &path).expect("write the fandisk dump");
+    let out = run(&exe, &[path.to_str().unwrap_or_default(), "897"]);
+    assert!(out.contains("897 quads"), "{out}");
+
+    let hand = dualex::read_tet_map(data("hexex/hand_q.hexex")).expect("read hand_q");
+    let path = dir.0.join("hand_q.txt");
+    let m = &hand;
+    dump("tet", &m.positions, &m.simplices, &m.coords, &path).expect("write the hand_q dump");
+    let out = run(&exe, &[path.to_str().unwrap_or_default(), "956"]);
+    assert!(out.contains("956 hexes"), "{out}");
+}
+
+/// `dualex.pc.in`, installed into a scratch prefix, gives the flags that
+/// compile and link the C test (shared and, with `--static`, static).
+#[test]
+fn pkg_config_file_links_the_c_test() {
+    let dir = Scratch::new("pkg-config");
+    let prefix = dir.0.join("prefix");
+    let (inc, lib, pc) = (
+        prefix.join("include"),
+        prefix.join("lib"),
+        prefix.join("lib/pkgconfig"),
+    );
+    for d in [&inc, &pc] {
+        std::fs::create_dir_all(d).expect("create the prefix");
+    }
+    let copy = |from: &Path, to: &Path| std::fs::copy(from, to).expect("install a file");
+    copy(&manifest().join("include/dualex.h"), &inc.join("dualex.h"));
+    for name in ["libdualex_capi.so", "libdualex_capi.a"] {
+        copy(&lib_dir().join(name), &lib.join(name));
+    }
+    let template =
+        std::fs::read_to_string(manifest().join("dualex.pc.in")).expect("read dualex.pc.in");
+    let text = template
+        .replace("@PREFIX@", &prefix.display().to_string())
+        .replace("@VERSION@", env!("CARGO_PKG_VERSION"));
+    std::fs::write(pc.join("dualex.pc"), text).expect("write dualex.pc");
+    for stat in [false, true] {
+        let mut args = vec!["--cflags", "--libs", "dualex"];
+        if stat {
+            args.insert(0, "--static");
+        }
+        let flags = match Command::new("pkg-config")
+            .args(&args)
+            .env("PKG_CONFIG_PATH", &pc)
+            .output()
+        {
+            Ok(o) if o.status.success() => String::from_utf8_lossy(&o.stdout).into_owned(),
+            Ok(o) => panic!("pkg-config failed: {}", String::from_utf8_lossy(&o.stderr)),
+            Err(e) => {
+                eprintln!("NOTICE: no pkg-config ({e}): dualex.pc is not checked");
+                return;
+            }
+        };
+        let exe = dir.0.join(if stat { "static" } else { "shared" });
+        let mut cc = Command::new("cc");
+        cc.arg(manifest().join("tests/c/test_quad_hex.c"))
+            .arg("-o")
+            .arg(&exe);
+        if stat {
+            // the static library ahead of -ldualex_capi resolves every symbol
+            cc.arg(lib.join("libdualex_capi.a"));
+        }
+        cc.args(flags.split_whitespace());
+        let out = cc.output().expect("run cc");
+        assert!(
+            out.status.success(),
+            "cc {flags}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let run = Command::new(&exe)
+            .env("LD_LIBRARY_PATH", &lib)
+            .output()
+            .expect("run");
+        assert!(
+            run.status.success(),
+            "{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+    }
+}
+
+/// The README's C snippet ("Use from C/C++") compiles and runs.
+#[test]
+fn the_readme_c_snippet_runs() {
+    let readme = std::fs::read_to_string(manifest().join("../../README.md")).expect("read README");
+    let section = readme
+        .split("## Use from C/C++")
+        .nth(1)
+        .expect("README has a \"Use from C/C++\" section");
+    let code = section
+        .split("```c\n")
+        .nth(1)
+        .and_then(|s| s.split("```").next())
+        .expect("the section has a ```c block");
+    let dir = Scratch::new("readme");
+    let src = dir.0.join("readme.c");
+    std::fs::write(&src, code).expect("write readme.c");
+    let exe = dir.0.join("readme");
+    let lib = lib_dir();
+    let out = Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-I"])
+        .arg(manifest().join("include"))
+        .arg(&src)
+        .arg("-o")
+        .arg(&exe)
+        .arg("-L")
+        .arg(&lib)
+        .arg("-ldualex_capi")
+        .arg(format!("-Wl,-rpath,{}", lib.display()))
+        .output()
+        .expect("run cc");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(run(&exe, &[]), "16 quads, 25 vertices\n");
+}
