@@ -17,7 +17,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-/// `numpy.ascontiguousarray(obj, dtype)` after checking the dtype's kind
+/// `numpy.asarray(obj, dtype, order="C")` after checking the dtype's kind
 /// (`kinds`: numpy's one-letter codes, e.g. "fiu").
 fn converted<'py>(
     name: &str,
@@ -40,7 +40,8 @@ fn converted<'py>(
     }
     let kw = PyDict::new(obj.py());
     kw.set_item("dtype", dtype)?;
-    np.call_method("ascontiguousarray", (arr,), Some(&kw))
+    kw.set_item("order", "C")?;
+    np.call_method("asarray", (arr,), Some(&kw))
 }
 
 fn shape_text(s: &[usize]) -> String {
