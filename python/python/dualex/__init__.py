@@ -1,0 +1,17 @@
+"""dualex: all-quad and all-hex meshes from messy grid-preserving maps.
+
+    >>> import dualex
+    >>> V, F, UV = dualex.read("fandisk_param.obj")   # a triangle map
+    >>> Q, quads, stats = dualex.quad(V, F, UV)       # numpy arrays, a dict
+    >>> dualex.write("quads.obj", Q, quads)
+
+``quad`` / ``hex`` take numpy arrays (positions (n, 3), simplices (m, 3) or
+(m, 4), per-corner map coordinates (m, 3, 2) or (m, 4, 3)) and keyword
+options; ``read`` / ``write`` use the Rust readers and writers; ``inspect``
+returns the map report. Every error is a ``ValueError`` with a one-line
+message; the GIL is released while the extraction runs.
+"""
+
+from ._dualex import __version__, hex, inspect, quad, read, write
+
+__all__ = ["quad", "hex", "read", "write", "inspect", "__version__"]

@@ -1,0 +1,71 @@
+"""Type stubs of the extension module (re-exported by ``dualex``)."""
+
+import os
+from typing import Any, Dict, Literal, Optional, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Path = Union[str, "os.PathLike[str]"]
+_Floats = npt.ArrayLike
+_Ints = npt.ArrayLike
+_Offset = Literal["auto", "half", "zero"]
+
+__version__: str
+
+def quad(
+    V: _Floats,
+    F: _Ints,
+    UV: _Floats,
+    *,
+    weld: bool = True,
+    fairing: bool = True,
+    round_transitions: bool = False,
+    grid_offset: _Offset = "auto",
+    seed: int = 1,
+    strict: bool = False,
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, Any]]:
+    """Extracts the all-quad mesh of a triangle mesh with a 2D map.
+
+    V: (n, 3) positions; F: (m, 3) triangles; UV: (m, 3, 2) map
+    coordinates per triangle corner. Returns (positions (k, 3), quads
+    (q, 4), stats). Raises ValueError on bad arrays or a refused map.
+    """
+
+def hex(
+    V: _Floats,
+    T: _Ints,
+    UVW: _Floats,
+    *,
+    weld: bool = True,
+    round_transitions: bool = False,
+    grid_offset: _Offset = "auto",
+    seed: int = 1,
+    strict: bool = False,
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, Any]]:
+    """Extracts the all-hex mesh of a tet mesh with a 3D map.
+
+    V: (n, 3) positions; T: (m, 4) tets; UVW: (m, 4, 3) map coordinates per
+    tet corner. Returns (positions (k, 3), hexes (h, 8) in VTK order,
+    stats). Raises ValueError on bad arrays or a refused map.
+    """
+
+def read(
+    path: _Path,
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]:
+    """Reads a map: .obj/.ply (triangles, (m, 3, 2) coords) or .hexex (tets,
+    (m, 4, 3) coords). Returns (V, simplices, coords)."""
+
+def write(path: _Path, positions: _Floats, cells: _Ints) -> None:
+    """Writes a quad mesh (cells (m, 4): .obj, .ply, .vtk) or a hex mesh
+    (cells (m, 8): .mesh, .vtk)."""
+
+def inspect(
+    map: Union[_Path, _Floats],
+    simplices: Optional[_Ints] = None,
+    coords: Optional[_Floats] = None,
+    *,
+    weld: bool = True,
+    round_transitions: bool = False,
+) -> Dict[str, Any]:
+    """The map report (as `dualex inspect --json`) of a file or of arrays."""

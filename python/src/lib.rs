@@ -1,0 +1,311 @@
+//! # dualex for Python: the extension module `dualex._dualex`
+//!
+//! Thin bindings of the `dualex` facade crate: numpy arrays in, the
+//! facade's maps and extractions, numpy arrays and dicts out.
+//!
+//! | Python | facade |
+//! |---|---|
+//! | `quad(V, F, UV, **options)` | [`dualex::tri_map_from_slices`], [`dualex::quad()`] |
+//! | `hex(V, T, UVW, **options)` | [`dualex::tet_map_from_slices`], [`dualex::hex()`] |
+//! | `read(path)` | [`dualex::read_tri_map`] / [`dualex::read_tet_map`] |
+//! | `write(path, V, cells)` | [`dualex::write_quad_mesh`] / [`dualex::write_hex_mesh`] |
+//! | `inspect(path)` / `inspect(V, S, C)` | `dualex_map::report::inspect` |
+//!
+//! Every error (bad arrays, a map the extraction refuses, an unreadable
+//! file) is a `ValueError` whose message is the CLI's one-line message;
+//! nothing panics on bad input. The GIL is released while Rust works.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod arrays;
+mod dicts;
+
+use arrays::{cells_array, corners, corners_array, indices, positions_array, rows};
+use dualex::{GridOffset, HexOptions, QuadOptions};
+use dualex_map::report::{inspect as inspect_map, InspectOptions};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+use std::path::PathBuf;
+
+/// A facade error as a `ValueError` with its one-line message.
+fn value_error(e: impl std::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+fn grid_offset(s: &str) -> PyResult<GridOffset> {
+    match s {
+        "auto" => Ok(GridOffset::Auto),
+        "half" => Ok(GridOffset::Half),
+        "zero" => Ok(GridOffset::Zero),
+        _ => Err(PyValueError::new_err(format!(
+            "grid_offset: expected \"auto\", \"half\" or \"zero\", got {s:?}"
+        ))),
+    }
+}
+
+fn is_tet_file(path: &std::path::Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("hexex"))
+}
+
+/// Extracts the all-quad mesh of a triangle mesh with a 2D map.
+///
+/// V: (n, 3) vertex positions; F: (m, 3) vertex indices of the triangles;
+/// UV: (m, 3, 2) map coordinates of each triangle corner, in that
+/// triangle's chart (cut meshes welded first unless weld=False).
+/// Returns (positions (k, 3) float64, quads (q, 4) int64, stats dict).
+/// Raises ValueError on bad arrays or a map the extraction refuses.
+#[pyfunction]
+#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false))]
+#[allow(non_snake_case, clippy::too_many_arguments)]
+fn quad<'py>(
+    py: Python<'py>,
+    V: &Bound<'py, PyAny>,
+    F: &Bound<'py, PyAny>,
+    UV: &Bound<'py, PyAny>,
+    weld: bool,
+    fairing: bool,
+    round_transitions: bool,
+    grid_offset: &str,
+    seed: u64,
+    strict: bool,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let opts = QuadOptions {
+        weld,
+        fairing,
+        round_transitions,
+        grid_offset: self::grid_offset(grid_offset)?,
+        seed,
+        strict,
+    };
+    let (p, t, c) = (
+        rows::<3>("V", V)?,
+        indices::<3>("F", "triangle", F)?,
+        corners::<3, 2>("UV", UV)?,
+    );
+    let out = py
+        .allow_threads(|| {
+            let map = dualex::tri_map_from_slices(&p, &t, &c)?;
+            dualex::quad(&map, &opts)
+        })
+        .map_err(value_error)?;
+    let stats = dicts::quad_stats(py, &out.stats)?;
+    PyTuple::new(
+        py,
+        [
+            positions_array(py, &out.mesh.positions)?,
+            cells_array(py, &out.mesh.cells)?,
+            stats.into_any(),
+        ],
+    )
+}
+
+/// Extracts the all-hex mesh of a tet mesh with a 3D map.
+///
+/// V: (n, 3) vertex positions; T: (m, 4) vertex indices of the tets
+/// (positively oriented); UVW: (m, 4, 3) map coordinates of each tet
+/// corner. Returns (positions (k, 3) float64, hexes (h, 8) int64 in VTK
+/// order, stats dict). Raises ValueError on bad arrays or a refused map.
+#[pyfunction]
+#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false))]
+#[allow(non_snake_case, clippy::too_many_arguments)]
+fn hex<'py>(
+    py: Python<'py>,
+    V: &Bound<'py, PyAny>,
+    T: &Bound<'py, PyAny>,
+    UVW: &Bound<'py, PyAny>,
+    weld: bool,
+    round_transitions: bool,
+    grid_offset: &str,
+    seed: u64,
+    strict: bool,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let opts = HexOptions {
+        weld,
+        round_transitions,
+        grid_offset: self::grid_offset(grid_offset)?,
+        seed,
+        strict,
+    };
+    let (p, t, c) = (
+        rows::<3>("V", V)?,
+        indices::<4>("T", "tet", T)?,
+        corners::<4, 3>("UVW", UVW)?,
+    );
+    let out = py
+        .allow_threads(|| {
+            let map = dualex::tet_map_from_slices(&p, &t, &c)?;
+            dualex::hex(&map, &opts)
+        })
+        .map_err(value_error)?;
+    let stats = dicts::hex_stats(py, &out.stats)?;
+    PyTuple::new(
+        py,
+        [
+            positions_array(py, &out.mesh.positions)?,
+            cells_array(py, &out.mesh.cells)?,
+            stats.into_any(),
+        ],
+    )
+}
+
+/// Reads a map: (V (n, 3), simplices (m, 3) or (m, 4), coords (m, 3, 2)
+/// or (m, 4, 3)). `.obj` (f v/vt) and `.ply` (per-face texcoord) hold
+/// triangle maps, `.hexex` tet maps. Raises ValueError naming the file.
+#[pyfunction]
+fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
+    if is_tet_file(&path) {
+        let m = py
+            .allow_threads(|| dualex::read_tet_map(&path))
+            .map_err(value_error)?;
+        let items = [
+            positions_array(py, &m.positions)?,
+            cells_array(py, &m.simplices)?,
+            corners_array(py, &m.coords)?,
+        ];
+        return PyTuple::new(py, items);
+    }
+    let m = py
+        .allow_threads(|| dualex::read_tri_map(&path))
+        .map_err(value_error)?;
+    let items = [
+        positions_array(py, &m.positions)?,
+        cells_array(py, &m.simplices)?,
+        corners_array(py, &m.coords)?,
+    ];
+    PyTuple::new(py, items)
+}
+
+/// Writes a quad mesh (cells (m, 4): `.obj`, `.ply`, `.vtk`) or a hex mesh
+/// (cells (m, 8), VTK order: `.mesh`, `.vtk`), chosen by the cells' shape
+/// and the extension. Raises ValueError on bad arrays or a failed write.
+#[pyfunction]
+fn write(
+    py: Python<'_>,
+    path: PathBuf,
+    positions: &Bound<'_, PyAny>,
+    cells: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    let positions = rows::<3>("positions", positions)?;
+    let width = cells
+        .getattr("shape")
+        .ok()
+        .and_then(|s| s.extract::<Vec<usize>>().ok())
+        .and_then(|s| s.get(1).copied());
+    let n = positions.len();
+    if width == Some(8) {
+        let cells = indices::<8>("cells", "hex", cells)?;
+        check_range(&cells, n, "hex")?;
+        let mesh = dualex::HexMesh { positions, cells };
+        return py
+            .allow_threads(|| dualex::write_hex_mesh(&path, &mesh))
+            .map_err(value_error);
+    }
+    let cells = indices::<4>("cells", "quad", cells).map_err(|e| {
+        PyValueError::new_err(format!("{} (4 for quads, 8 for hexes)", e.value(py)))
+    })?;
+    check_range(&cells, n, "quad")?;
+    let mesh = dualex::QuadMesh { positions, cells };
+    py.allow_threads(|| dualex::write_quad_mesh(&path, &mesh))
+        .map_err(value_error)
+}
+
+/// Every index below `n` (the writers trust their input).
+fn check_range<const K: usize>(cells: &[[u32; K]], n: usize, element: &str) -> PyResult<()> {
+    for (i, c) in cells.iter().enumerate() {
+        if let Some((k, &v)) = c.iter().enumerate().find(|(_, &v)| v as usize >= n) {
+            return Err(PyValueError::new_err(format!(
+                "{element} {i}: corner {k} refers to vertex {v}, but there are {n} vertices"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Analyses a map without extracting (the CLI's `inspect --json`): either
+/// a file, `inspect(path)`, or arrays, `inspect(V, simplices, coords)`
+/// (triangles (m, 3) with (m, 3, 2), or tets (m, 4) with (m, 4, 3)).
+/// Returns the report as a dict; raises ValueError on a bad map.
+#[pyfunction]
+#[pyo3(signature = (map, simplices=None, coords=None, *, weld=true, round_transitions=false))]
+fn inspect<'py>(
+    py: Python<'py>,
+    map: &Bound<'py, PyAny>,
+    simplices: Option<&Bound<'py, PyAny>>,
+    coords: Option<&Bound<'py, PyAny>>,
+    weld: bool,
+    round_transitions: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let opts = InspectOptions {
+        weld,
+        round: round_transitions,
+        ..Default::default()
+    };
+    let report = match (simplices, coords) {
+        (None, None) => {
+            let path: PathBuf = map.extract().map_err(|_| {
+                PyValueError::new_err(
+                    "inspect: expected a path, or the arrays V, simplices, coords",
+                )
+            })?;
+            let name = path.display().to_string();
+            py.allow_threads(|| {
+                if is_tet_file(&path) {
+                    let m = dualex::read_tet_map(&path)?;
+                    inspect_map(&m, &opts).map_err(|e| dualex::Error::from(e.in_file(name)))
+                } else {
+                    let m = dualex::read_tri_map(&path)?;
+                    inspect_map(&m, &opts).map_err(|e| dualex::Error::from(e.in_file(name)))
+                }
+            })
+            .map_err(value_error)?
+        }
+        (Some(s), Some(c)) => {
+            let p = rows::<3>("V", map)?;
+            let width = s
+                .getattr("shape")
+                .ok()
+                .and_then(|s| s.extract::<Vec<usize>>().ok());
+            if width.as_deref().and_then(|w| w.get(1)) == Some(&4) {
+                let (t, c) = (
+                    indices::<4>("simplices", "tet", s)?,
+                    corners::<4, 3>("coords", c)?,
+                );
+                py.allow_threads(|| {
+                    let m = dualex::tet_map_from_slices(&p, &t, &c)?;
+                    inspect_map(&m, &opts).map_err(dualex::Error::from)
+                })
+            } else {
+                let (t, c) = (
+                    indices::<3>("simplices", "triangle", s)?,
+                    corners::<3, 2>("coords", c)?,
+                );
+                py.allow_threads(|| {
+                    let m = dualex::tri_map_from_slices(&p, &t, &c)?;
+                    inspect_map(&m, &opts).map_err(dualex::Error::from)
+                })
+            }
+            .map_err(value_error)?
+        }
+        _ => {
+            return Err(PyValueError::new_err(
+                "inspect: give a path alone, or all three arrays V, simplices, coords",
+            ))
+        }
+    };
+    dicts::map_report(py, &report)
+}
+
+/// The extension module: `dualex` re-exports everything.
+#[pymodule]
+fn _dualex(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(quad, m)?)?;
+    m.add_function(wrap_pyfunction!(hex, m)?)?;
+    m.add_function(wrap_pyfunction!(read, m)?)?;
+    m.add_function(wrap_pyfunction!(write, m)?)?;
+    m.add_function(wrap_pyfunction!(inspect, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}
