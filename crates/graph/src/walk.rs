@@ -128,6 +128,29 @@ impl<const D: usize> NodeGraph<D> {
         rep
     }
 
+    /// Deletes the alive nodes none of whose sides is glued and all of
+    /// whose walks got lost (`Inconsistent` or `Loop`): an isolated node
+    /// that no iso-line reaches consistently is float noise — e.g. a node
+    /// seen inside a sliver next to a singular vertex — not a cell; kept,
+    /// it would be a component of one cell. Deleting it changes no other
+    /// node (it has no glued side). Returns the number deleted.
+    pub fn drop_isolated_lost(&mut self, ends: &[End<D>]) -> usize {
+        let lost: Vec<crate::ids::Node> = self
+            .alive_nodes()
+            .filter(|&n| {
+                (0..2 * D).all(|d| {
+                    let s = self.side(n, d);
+                    self.opposite(s).is_none()
+                        && matches!(ends.get(s.0 as usize), Some(End::Inconsistent | End::Loop))
+                })
+            })
+            .collect();
+        for n in &lost {
+            self.alive[n.idx()] = false;
+        }
+        lost.len()
+    }
+
     /// Unmatched sides of alive nodes that are not boundary but cracks
     /// (open interior faces / edges): all of them on a closed input (no
     /// boundary facet); otherwise those whose walk got lost (inconsistent
@@ -148,7 +171,25 @@ impl<const D: usize> NodeGraph<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ids::Node;
     use dualex_map::Rot2;
+
+    /// A node whose walks all got lost and that has no glued side is
+    /// dropped; one with a glued side, or a walk to the boundary, stays.
+    #[test]
+    fn isolated_lost_nodes_are_dropped() {
+        let mut g = NodeGraph::<2>::new(vec![false; 3]);
+        let lost = End::Inconsistent;
+        let mut ends = vec![lost; 12];
+        // node 1: one walk to the boundary; node 2 glued to node 0
+        ends[4] = End::Boundary;
+        g.link(Side(8), Side(1), Rot2::IDENTITY).expect("link");
+        assert_eq!(g.drop_isolated_lost(&ends), 0);
+        g.unlink(Side(8)).expect("unlink");
+        assert_eq!(g.drop_isolated_lost(&ends), 2);
+        assert!(!g.is_alive(Node(0)) && g.is_alive(Node(1)) && !g.is_alive(Node(2)));
+        g.check().expect("invariants");
+    }
 
     #[test]
     fn mutual_walks_are_linked_and_the_rest_counted() {

@@ -39,6 +39,8 @@ pub struct HexStats {
     pub sanitize: SanitizeReport,
     /// Doublet chains (valence-2 interior edges) dissolved after gluing.
     pub doublets: crate::doublets::Chains,
+    /// Isolated nodes dropped: no side glued, every walk lost (noise).
+    pub isolated_dropped: usize,
     /// Folded hexes collapsed after gluing.
     pub folded_collapsed: usize,
     /// Nodes found.
@@ -137,6 +139,7 @@ impl HexStats {
             "grid_offset_choice": offset_json(&self.grid_offset),
             "sanitize": sanitize,
             "nodes": self.nodes,
+            "isolated_nodes_dropped": self.isolated_dropped,
             "reverted_nodes": self.reverted_nodes,
             "trace": self.trace.to_json(&self.links, self.label_violations),
             "untangle": self.untangle.as_ref().map(|u| u.to_json()),

@@ -138,6 +138,7 @@ pub fn extract_traced(
     st.trace = trep;
     let mut graph = NodeGraph::<2>::new(nodes.reverted.clone());
     st.links = graph.link_mutual(&ends);
+    st.isolated_dropped = graph.drop_isolated_lost(&ends);
     st.label_violations = graph.label_violations();
     laps.lap("trace");
     // 5

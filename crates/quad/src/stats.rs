@@ -58,6 +58,8 @@ pub struct QuadStats {
     pub repair_triangles: usize,
     /// Cells of fewer than 3 distinct corners dropped by the subdivision.
     pub repair_dropped: usize,
+    /// Isolated nodes dropped: no side glued, every walk lost (noise).
+    pub isolated_dropped: usize,
     /// Whether the whole mesh was subdivided once (a triangle, or a hole
     /// that is not a quad, could not be made a quad otherwise).
     pub subdivided: bool,
@@ -134,6 +136,7 @@ impl QuadStats {
             "grid_offset_choice": offset_json(&self.grid_offset),
             "sanitize": sanitize,
             "nodes": self.nodes,
+            "isolated_nodes_dropped": self.isolated_dropped,
             "reverted_nodes": self.reverted_nodes,
             "trace": self.trace.to_json(&self.links, self.label_violations),
             "untangle": self.untangle.as_ref().map(|u| u.to_json()),
