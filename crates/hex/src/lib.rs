@@ -99,14 +99,32 @@ pub fn extract_traced(
                 st.singular_edges = singular.len();
                 st.singular_edge_angles = dualex_map::report::singular_edge_histogram(&singular);
                 (st.reverted_tets, st.degenerate_tets) = quality(&map);
-                // the offset is chosen once (splits add no singular vertex)
-                st.grid_offset =
-                    dualex_map::grid_offset::choose(&map, &topo, &stars, opts.grid_offset);
             }
-            // 1: the local map takes over the transitions (no second copy)
-            let mut local = local::LocalMap::with_grid(&map, &topo, trans, st.grid_offset.offset);
-            // singular vertices exactly on their fixed sets before any test
+            // 1: the local map takes over the transitions (no second copy),
+            // built with the offset ½ (or the one chosen on the first pass);
+            // singular vertices exactly on their fixed sets before any test;
+            // the offset is chosen on the snapped vertices, once (splits add
+            // no singular vertex)
+            let start = if st.split_faces > 0 {
+                st.grid_offset.offset
+            } else if opts.grid_offset == GridOffset::Zero {
+                GridOffset::Zero
+            } else {
+                GridOffset::Half
+            };
+            let mut local = local::LocalMap::with_grid(&map, &topo, trans, start);
             let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+            if st.split_faces == 0 {
+                st.grid_offset = dualex_map::grid_offset::choose_snapped(
+                    &local,
+                    &topo,
+                    &stars,
+                    opts.grid_offset,
+                );
+                if st.grid_offset.offset == GridOffset::Zero {
+                    local.unshift(&topo);
+                }
+            }
             // 1b: edges and faces that unmovable vertices span across the grid
             let pairs = singular
                 .iter()

@@ -115,15 +115,27 @@ pub fn count_on_grid<const N: usize, const D: usize>(
     topo: &Topology<N>,
     stars: &Stars<D>,
 ) -> (OnGrid, OnGrid) {
+    count_in(&map.coords, 0.0, topo, stars)
+}
+
+/// [`count_on_grid`] on per-corner coordinates that carry the shift
+/// `base` already (`0.5`: a [`crate::local::LocalMap`] built with `Half`).
+fn count_in<const N: usize, const D: usize>(
+    coords: &[[[f64; D]; N]],
+    base: f64,
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+) -> (OnGrid, OnGrid) {
     let (mut half, mut zero) = (OnGrid::default(), OnGrid::default());
-    for (s, c) in map.coords.iter().enumerate() {
+    let shifts = [(0.5 - base), (0.0 - base)];
+    for (s, c) in coords.iter().enumerate() {
         for f in (0..N).filter(|&f| topo.neighbour(s, f).is_none()) {
             let mut corners = (0..N).filter(|&k| k != f).map(|k| &c[k]);
             let Some(first) = corners.next() else {
                 continue;
             };
             let rest: Vec<&[f64; D]> = corners.collect();
-            for (count, shift) in [(&mut half, 0.5), (&mut zero, 0.0)] {
+            for (count, shift) in [(&mut half, shifts[0]), (&mut zero, shifts[1])] {
                 let flat = (0..D).any(|k| {
                     on_iso(first[k], shift)
                         && rest.iter().all(|p| (p[k] - first[k]).abs() < ON_GRID)
@@ -136,14 +148,13 @@ pub fn count_on_grid<const N: usize, const D: usize>(
         let Some(e) = stars.of(v).first() else {
             continue;
         };
-        let Some(p) = map
-            .coords
+        let Some(p) = coords
             .get(e.simplex as usize)
             .and_then(|c| c.get(e.corner as usize))
         else {
             continue;
         };
-        for (count, shift) in [(&mut half, 0.5), (&mut zero, 0.0)] {
+        for (count, shift) in [(&mut half, shifts[0]), (&mut zero, shifts[1])] {
             let on = p.iter().filter(|&&x| on_iso(x, shift)).count();
             count.on_node += usize::from(on == D);
             count.on_iso += usize::from(on > 0);
@@ -165,7 +176,31 @@ pub fn choose<const N: usize, const D: usize>(
             ..Default::default()
         };
     }
-    let (half, zero) = count_on_grid(map, topo, stars);
+    decide(count_on_grid(map, topo, stars))
+}
+
+/// [`choose`] on a local map built with `Half` whose singular vertices are
+/// already snapped onto their fixed sets ([`crate::singular_snap`]): a
+/// singular vertex a float's jitter (up to the transition tolerance) away
+/// from a node is then exactly on it, whatever [`ON_GRID`] says.
+pub fn choose_snapped<const N: usize, const D: usize>(
+    local: &crate::local::LocalMap<N, D>,
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+    opt: GridOffset,
+) -> OffsetChoice {
+    if opt != GridOffset::Auto {
+        return OffsetChoice {
+            offset: opt,
+            ..Default::default()
+        };
+    }
+    decide(count_in(&local.coords, 0.5, topo, stars))
+}
+
+/// The offset with fewer singular vertices on nodes, then on isos, then
+/// fewer boundary facets in isos; `Half` on a tie.
+fn decide((half, zero): (OnGrid, OnGrid)) -> OffsetChoice {
     let key = |c: OnGrid| (c.on_node, c.on_iso, c.boundary_on_iso);
     OffsetChoice {
         offset: if key(zero) < key(half) {

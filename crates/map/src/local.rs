@@ -102,6 +102,31 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
         }
     }
 
+    /// Turns a map built with the offset `Half` into the one `Zero` gives:
+    /// every coordinate less ½ (exact for local values) and every local
+    /// translation less `h − R·h`. Relations between corners (snapped
+    /// singular vertices included) are kept exactly. No-op on `Zero`.
+    pub fn unshift(&mut self, topo: &Topology<N>) {
+        if self.grid == GridOffset::Zero {
+            return;
+        }
+        for c in self.coords.iter_mut().flatten().flatten() {
+            *c -= 0.5;
+        }
+        let rot = &self.trans.rot;
+        for (s, ts) in self.trans.trans.iter_mut().enumerate() {
+            for (f, tf) in ts.iter_mut().enumerate() {
+                if topo.neighbour(s, f).is_some() {
+                    let d = shift_defect(&rot[s][f]);
+                    for k in 0..D {
+                        tf[k] -= d[k];
+                    }
+                }
+            }
+        }
+        self.grid = GridOffset::Zero;
+    }
+
     /// Maps a local point of simplex `s` into the local chart of its
     /// neighbour across facet `f`.
     #[inline]

@@ -88,7 +88,7 @@ pub fn extract_traced(
     let mut map = map;
     // the input triangle of each triangle of the (split) map
     let mut parent: Vec<u32> = (0..map.len() as u32).collect();
-    let mut grid = None;
+    let mut grid: Option<dualex_map::grid_offset::OffsetChoice> = None;
     let (topo, stars, mut local, singular_snap) = loop {
         let topo = Topology::build(map)?;
         let (trans, trep) = Transitions::derive(map, &topo, &opts.transitions)?;
@@ -103,15 +103,25 @@ pub fn extract_traced(
             st.singularities
                 .extend(unknown.into_iter().map(|(k, n)| (format!("{k} mod 1"), n)));
         }
-        // 1: the offset is chosen once (splits add no singular vertex)
-        let choice = *grid.get_or_insert_with(|| {
-            dualex_map::grid_offset::choose(map, &topo, &stars, opts.grid_offset)
-        });
-        st.grid_offset = choice;
-        // the local map takes over the transitions (no second copy)
-        let mut local = local::LocalMap::with_grid(map, &topo, trans, choice.offset);
-        // singular vertices exactly on their fixed points before any test
+        // 1: the local map takes over the transitions (no second copy),
+        // built with the offset ½; singular vertices exactly on their fixed
+        // points before any test; the offset is chosen on the snapped
+        // vertices, once (splits add no singular vertex)
+        let first = grid.map_or(opts.grid_offset, |c| c.offset);
+        let start = if first == GridOffset::Zero {
+            GridOffset::Zero
+        } else {
+            GridOffset::Half
+        };
+        let mut local = local::LocalMap::with_grid(map, &topo, trans, start);
         let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+        let choice = *grid.get_or_insert_with(|| {
+            dualex_map::grid_offset::choose_snapped(&local, &topo, &stars, opts.grid_offset)
+        });
+        if choice.offset == GridOffset::Zero {
+            local.unshift(&topo);
+        }
+        st.grid_offset = choice;
         let edges = split::edges_to_split(map, &topo, &stars, &local);
         if edges.is_empty() || st.split_edges >= map.len() {
             break (topo, stars, local, snap);
