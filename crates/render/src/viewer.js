@@ -8,7 +8,8 @@
 // centroid lies beyond the plane are hidden and the faces of the others
 // that become exposed are drawn. `#cut=z:0.5` in the URL sets it at load.
 // Small windows start with the panel collapsed (click the title).
-// Draws the quads flat-shaded (two-sided Lambert), their edges, and the
+// Draws the quads flat-shaded (two-sided Lambert), their edges (as thin
+// screen-space quads: GL lines go missing under software rendering), and the
 // vertices as dots in their valence colour. Drag: orbit; wheel: zoom;
 // right drag or shift drag: pan; double click: reset; keys e / d: edges
 // (shown by default when at least 4 px long) / dots on or off.
@@ -74,7 +75,9 @@
   function build(Q) {
   nq = Q.length / 4;
   faceData = new Float32Array(nq * 6 * 6);
-  edgeData = new Float32Array(nq * 8 * 3);
+  // edges as thin screen-space quads (GL lines go missing under some
+  // software renderers): 6 vertices of (a xyz, b xyz, end, side) each
+  edgeData = new Float32Array(nq * 4 * 6 * 8);
   var f = 0, e = 0, edgeSum = 0, used = new Uint8Array(V.length);
   for (var q = 0; q < nq; q++) {
     var c = [Q[4 * q], Q[4 * q + 1], Q[4 * q + 2], Q[4 * q + 3]];
@@ -96,7 +99,12 @@
       edgeSum += Math.sqrt([0, 1, 2].reduce(function (acc, k) {
         return acc + Math.pow(pos(ends[0], k) - pos(ends[1], k), 2);
       }, 0));
-      for (var m = 0; m < 2; m++) for (var k5 = 0; k5 < 3; k5++) edgeData[e++] = pos(ends[m], k5);
+      var corners = [[0, -1], [1, -1], [1, 1], [0, -1], [1, 1], [0, 1]];
+      for (var m = 0; m < 6; m++) {
+        for (var k5 = 0; k5 < 3; k5++) edgeData[e++] = pos(ends[0], k5);
+        for (var k6 = 0; k6 < 3; k6++) edgeData[e++] = pos(ends[1], k6);
+        edgeData[e++] = corners[m][0]; edgeData[e++] = corners[m][1];
+      }
     }
   }
   // dots: every marked vertex on a drawn face, regular ones first (drawn
@@ -135,7 +143,16 @@
     "  float len = length(vn);\n" +
     "  float d = len > 0.0 ? abs(dot(vn / len, l)) : 1.0;\n" +
     "  gl_FragColor = vec4(vec3(0.863) * (0.35 + 0.65 * d), 1.0);\n}\n";
-  var LINE_VS = HEAD + "attribute vec3 p;\nvoid main() { gl_Position = place(p, 0.0005); }\n";
+  var LINE_VS = HEAD + "attribute vec3 a; attribute vec3 b; attribute vec2 es;\n" +
+    "uniform vec2 px; uniform float width;\n" +
+    "void main() {\n" +
+    "  vec4 pa = place(a, 0.0005), pb = place(b, 0.0005);\n" +
+    "  vec2 d = (pb.xy - pa.xy) / px;\n" +
+    "  float len = length(d);\n" +
+    "  vec2 n = len > 0.0 ? vec2(-d.y, d.x) / len : vec2(0.0, 1.0);\n" +
+    "  vec4 p = es.x > 0.5 ? pb : pa;\n" +
+    "  p.xy += n * es.y * 0.5 * width * px;\n" +
+    "  gl_Position = p;\n}\n";
   var LINE_FS = "precision mediump float;\nvoid main() { gl_FragColor = vec4(0.19, 0.19, 0.19, 1.0); }\n";
   var DOT_VS = HEAD + "attribute vec3 p; attribute vec4 c; uniform float size; varying vec3 vc;\n" +
     "void main() { vc = c.rgb; gl_PointSize = size * c.a; gl_Position = place(p, 0.004); }\n";
@@ -235,8 +252,11 @@
     if (edgesShown()) {
       gl.useProgram(lineProg); uniforms(lineProg); disableAll();
       gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-      attrib(lineProg, "p", 3, 3, 0);
-      gl.drawArrays(gl.LINES, 0, edgeData.length / 3);
+      gl.disable(gl.POLYGON_OFFSET_FILL);
+      gl.uniform2f(gl.getUniformLocation(lineProg, "px"), 2 / w, 2 / h);
+      gl.uniform1f(gl.getUniformLocation(lineProg, "width"), Math.max(1, dpr));
+      attrib(lineProg, "a", 3, 8, 0); attrib(lineProg, "b", 3, 8, 3); attrib(lineProg, "es", 2, 8, 6);
+      gl.drawArrays(gl.TRIANGLES, 0, edgeData.length / 8);
     }
     if (!showDots) return;
     gl.useProgram(dotProg); uniforms(dotProg); disableAll();
