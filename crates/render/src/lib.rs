@@ -24,6 +24,7 @@
 #![warn(missing_docs)]
 
 mod canvas;
+mod glyphs;
 mod map_png;
 mod project;
 mod quad_png;

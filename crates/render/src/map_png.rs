@@ -10,7 +10,11 @@
 //!   there would be more than one line per 4 pixels), on top;
 //! - singular vertices as dots at each of their corners, in the valence
 //!   colour of the quad vertex they become (index +1/4: valence 3 blue,
-//!   −1/4: valence 5 red, any other: green, see [`crate::valence`]).
+//!   −1/4: valence 5 red, any other: green, see [`crate::valence`]), with
+//!   a white ring; their radius is 0.7 % of the picture (at least 2.5 px),
+//!   whatever the number of triangles;
+//! - a legend in the emptiest corner: reverted triangles and singular
+//!   vertices by index, with their counts ([`legend`]).
 //!
 //! [`map_png`] finds the singular vertices itself: it welds coincident
 //! boundary vertices (cut meshes, [`weld`]; the triangles and their
@@ -130,20 +134,33 @@ pub(crate) fn draw_map(map: &TriMap, marks: &[MapMark], size: u32) -> Result<Pix
     for m in marks {
         is_marked[m.vertex as usize] = m.class.rgb();
     }
-    let r = (0.006 * f64::from(size)).clamp(2.5, 10.0) as f32;
+    let r = mark_radius(size);
+    let ring = (0.3 * r).max(1.0);
+    let id = Transform::identity();
     for (s, tri) in map.simplices.iter().enumerate() {
         for (c, &v) in tri.iter().enumerate() {
             let Some(rgb) = is_marked[v as usize] else {
                 continue;
             };
             let (x, y) = fit.px(map.coords[s][c]);
+            // a white ring first, so the dot stands out on purple too
+            if let Some(halo) = PathBuilder::from_circle(x, y, r + ring) {
+                pix.fill_path(&halo, &paint([255; 3], 255), FillRule::Winding, id, None);
+            }
             if let Some(dot) = PathBuilder::from_circle(x, y, r) {
-                let p = paint(rgb, 255);
-                pix.fill_path(&dot, &p, FillRule::Winding, Transform::identity(), None);
+                pix.fill_path(&dot, &paint(rgb, 255), FillRule::Winding, id, None);
             }
         }
     }
+    let reverted = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
+    legend::draw_legend(&mut pix, reverted, marks);
     Ok(pix)
+}
+
+/// Radius in pixels of a singularity dot: a fixed share of the picture,
+/// whatever the number of triangles (at least 2.5 px).
+pub(crate) fn mark_radius(size: u32) -> f32 {
+    (0.007 * size as f32).max(2.5)
 }
 
 /// Fills all triangles (light, then reverted ones purple) and their edges.
@@ -184,8 +201,9 @@ fn draw_triangles(pix: &mut Pixmap, map: &TriMap, fit: &Fit) {
     if let Some(path) = purple.finish() {
         // outlined too, so that a sliver fold stays visible
         pix.fill_path(&path, &paint(PURPLE, 255), FillRule::Winding, id, None);
+        // thinner when the triangles are tiny, so a dense fold keeps its shape
         let stroke = Stroke {
-            width: 1.5,
+            width: (0.25 * typical).clamp(0.6, 1.5) as f32,
             ..Stroke::default()
         };
         pix.stroke_path(&path, &paint(PURPLE, 255), &stroke, id, None);
@@ -226,13 +244,15 @@ fn draw_grid(pix: &mut Pixmap, lo: [f64; 2], hi: [f64; 2], fit: &Fit) {
     }
     if let Some(path) = pb.finish() {
         let stroke = Stroke {
-            width: 0.8,
+            width: (pix.width() as f32 / 1000.0).clamp(0.8, 2.0),
             ..Stroke::default()
         };
         let grid = paint([0x50, 0x50, 0x50], 70);
         pix.stroke_path(&path, &grid, &stroke, Transform::identity(), None);
     }
 }
+
+mod legend;
 
 #[cfg(test)]
 mod tests;

@@ -1,11 +1,15 @@
-//! A self-contained HTML page to orbit a quad mesh or a hex mesh's boundary.
+//! A self-contained HTML page to orbit a quad mesh, or a hex mesh with a cut plane.
 //!
 //! Input: a [`QuadMesh`] (or a [`HexMesh`], shown by [`hex_boundary`]) and a
 //! title. Output: one HTML string with the mesh embedded as JSON
 //! (`<script type="application/json" id="mesh">`) and the viewer of
 //! `viewer.js` inline: no network, no external script. The JSON holds
 //! `positions` (flat `x y z`, f32 precision), `quads` (flat corner ids),
-//! `valence` (one code per vertex, [`crate::ValenceClass::code`]) and `title`.
+//! `valence` (one code per vertex, [`crate::ValenceClass::code`]) and `title`;
+//! for a hex mesh also `hexes` (flat, 8 ids each) and `hex_faces` (the 6
+//! faces of a hex as corner numbers), `quads` being its boundary on the
+//! same vertex ids (interior vertices: valence code −1). The page then
+//! says the hex count and offers a cut plane (axis and slider).
 //!
 //! Invariant: the embedded JSON contains no `</` (escaped as `<\/`), so the
 //! page's structure cannot be broken by a title.
@@ -25,6 +29,26 @@ use dualex_map::cells::HEX_FACES;
 /// a missing vertex, or a position is not finite.
 pub fn view_html(mesh: &QuadMesh, title: &str) -> Result<String, String> {
     check_quads(mesh)?;
+    let json = mesh_json(mesh, title, None);
+    Ok(page(&html_escape(title), &json))
+}
+
+/// The page showing the hex mesh `mesh`: its boundary quads with their
+/// valences, the hex count, and a cut plane to look inside (see the
+/// module docs). Errors: a hex refers to a missing vertex, or a position
+/// is not finite.
+pub fn view_html_hex(mesh: &HexMesh, title: &str) -> Result<String, String> {
+    let boundary = QuadMesh {
+        positions: mesh.positions.clone(),
+        cells: boundary_faces(mesh)?,
+    };
+    check_quads(&boundary)?;
+    let json = mesh_json(&boundary, title, Some(mesh));
+    Ok(page(&html_escape(title), &json))
+}
+
+/// The embedded JSON (see the module docs), `</` escaped.
+fn mesh_json(mesh: &QuadMesh, title: &str, hexes: Option<&HexMesh>) -> String {
     let class = valence_classes(mesh);
     let mut json = String::with_capacity(32 * mesh.positions.len() + 24 * mesh.cells.len());
     json.push_str("{\"title\":");
@@ -42,20 +66,38 @@ pub fn view_html(mesh: &QuadMesh, title: &str) -> Result<String, String> {
     join(&mut json, class.iter().map(|c| c.code()), |s, c| {
         write!(s, "{c}")
     });
-    json.push_str("]}");
-    let json = json.replace("</", "<\\/");
-    Ok(page(&html_escape(title), &json))
-}
-
-/// The page showing the boundary of the hex mesh `mesh`.
-pub fn view_html_hex(mesh: &HexMesh, title: &str) -> Result<String, String> {
-    view_html(&hex_boundary(mesh)?, title)
+    json.push(']');
+    if let Some(h) = hexes {
+        json.push_str(",\"hexes\":[");
+        join(&mut json, h.cells.iter().flatten(), |s, v| write!(s, "{v}"));
+        json.push_str("],\"hex_faces\":");
+        json.push_str(&serde_json::Value::from(HEX_FACES.map(|f| f.to_vec()).to_vec()).to_string());
+    }
+    json.push('}');
+    json.replace("</", "<\\/")
 }
 
 /// The boundary quads of a hex mesh (faces used by one hex), outward,
 /// with its vertices renumbered in order of first use. Errors: a hex
 /// refers to a missing vertex.
 pub fn hex_boundary(mesh: &HexMesh) -> Result<QuadMesh, String> {
+    let mut out = QuadMesh::default();
+    let mut new_id: HashMap<u32, u32> = HashMap::new();
+    for f in boundary_faces(mesh)? {
+        let cell = f.map(|v| {
+            *new_id.entry(v).or_insert_with(|| {
+                out.positions.push(mesh.positions[v as usize]);
+                (out.positions.len() - 1) as u32
+            })
+        });
+        out.cells.push(cell);
+    }
+    Ok(out)
+}
+
+/// The faces used by one hex, outward, on the vertex ids of `mesh`.
+/// Errors: a hex refers to a missing vertex.
+fn boundary_faces(mesh: &HexMesh) -> Result<Vec<[u32; 4]>, String> {
     let nv = mesh.positions.len();
     for (h, cell) in mesh.cells.iter().enumerate() {
         if let Some(&v) = cell.iter().find(|&&v| v as usize >= nv) {
@@ -78,18 +120,7 @@ pub fn hex_boundary(mesh: &HexMesh) -> Result<QuadMesh, String> {
     for f in faces() {
         *count.entry(key(&f)).or_insert(0) += 1;
     }
-    let mut out = QuadMesh::default();
-    let mut new_id: HashMap<u32, u32> = HashMap::new();
-    for f in faces().filter(|f| count.get(&key(f)) == Some(&1)) {
-        let cell = f.map(|v| {
-            *new_id.entry(v).or_insert_with(|| {
-                out.positions.push(mesh.positions[v as usize]);
-                (out.positions.len() - 1) as u32
-            })
-        });
-        out.cells.push(cell);
-    }
-    Ok(out)
+    Ok(faces().filter(|f| count.get(&key(f)) == Some(&1)).collect())
 }
 
 /// Writes the items separated by commas.
@@ -127,16 +158,24 @@ html, body {{ margin: 0; height: 100%; overflow: hidden; background: #fff;
   font: 13px/1.4 system-ui, sans-serif; color: #222; }}
 #view {{ position: absolute; inset: 0; width: 100%; height: 100%; display: block; }}
 #panel {{ position: absolute; left: 10px; top: 8px; background: rgba(255,255,255,0.85);
-  padding: 6px 10px; border-radius: 4px; pointer-events: none; }}
-#panel h1 {{ font-size: 14px; margin: 0 0 4px; }}
+  padding: 6px 10px; border-radius: 4px; pointer-events: none; max-width: calc(100% - 40px); }}
+#panel summary {{ font-size: 14px; font-weight: bold; margin: 0 0 4px; cursor: pointer;
+  pointer-events: auto; }}
+#panel:not([open]) summary {{ margin: 0; }}
+#controls {{ pointer-events: auto; margin-top: 4px; }}
+#controls input {{ vertical-align: middle; width: 10em; }}
+@media (max-width: 560px), (max-height: 420px) {{
+  #panel {{ left: 0; top: 0; border-radius: 0 0 4px 0; font-size: 11px; padding: 3px 6px; }}
+  #status {{ display: none; }}
+}}
 .swatch {{ display: inline-block; width: 10px; height: 10px; border-radius: 50%;
   margin-right: 6px; vertical-align: -1px; }}
-#status {{ color: #555; margin-top: 4px; max-width: 28em; }}
+#status {{ color: #555; margin-top: 4px; max-width: 18em; }}
 </style>
 </head>
 <body>
 <canvas id="view"></canvas>
-<div id="panel"><h1>{title}</h1><div id="legend"></div><div id="status"></div></div>
+<details id="panel" open><summary>{title}</summary><div id="legend"></div><div id="controls"></div><div id="status"></div></details>
 <script type="application/json" id="mesh">{json}</script>
 <script>
 {VIEWER_JS}

@@ -1,8 +1,15 @@
 // dualex mesh viewer: a small WebGL 1 viewer, no dependencies.
 // Reads the mesh from <script id="mesh" type="application/json">:
 //   { "title": str, "positions": [x,y,z, ...], "quads": [a,b,c,d, ...],
-//     "valence": [code per vertex: 3, 4, 5, 0 = other, -1 = not marked] }
-// Draws the quads flat-shaded (two-sided Lambert), their edges, and the
+//     "valence": [code per vertex: 3, 4, 5, 0 = other, -1 = not marked],
+//     hex meshes only: "hexes": [8 ids each], "hex_faces": [[4 corners] x 6] }
+// (for a hex mesh, "quads" is its boundary, on the same vertex ids).
+// Hex meshes get a cut plane: an axis and a slider; the hexes whose
+// centroid lies beyond the plane are hidden and the faces of the others
+// that become exposed are drawn. `#cut=z:0.5` in the URL sets it at load.
+// Small windows start with the panel collapsed (click the title).
+// Draws the quads flat-shaded (two-sided Lambert), their edges (as thin
+// screen-space quads: GL lines go missing under software rendering), and the
 // vertices as dots in their valence colour. Drag: orbit; wheel: zoom;
 // right drag or shift drag: pan; double click: reset; keys e / d: edges
 // (shown by default when at least 4 px long) / dots on or off.
@@ -34,16 +41,50 @@
   radius = Math.sqrt(radius) * 0.5 || 1;
   function pos(v, k) { return (P[3 * v + k] - centre[k]) / radius; }
 
+  // hex meshes: the hexes (8 ids each) and the 6 faces of a hex (outward,
+  // corner numbers); the cut keeps the hexes whose centroid is at most
+  // `cut.at` (fraction of the box) along `cut.axis` and draws the faces
+  // used by one kept hex
+  var H = mesh.hexes || null, HF = mesh.hex_faces || [];
+  var nh = H ? H.length / 8 : 0;
+  var cut = { axis: 2, at: 1 };
+  var hashCut = /cut=([xyz]):([0-9.]+)/.exec(window.location.hash);
+  if (H && hashCut) cut = { axis: "xyz".indexOf(hashCut[1]), at: parseFloat(hashCut[2]) };
+  function cutQuads() {
+    if (!H || cut.at >= 1) return Q;
+    var limit = lo[cut.axis] + cut.at * (hi[cut.axis] - lo[cut.axis]) + 1e-9 * radius;
+    var faces = {}, order = [];
+    for (var h = 0; h < nh; h++) {
+      var sum = 0;
+      for (var i = 0; i < 8; i++) sum += P[3 * H[8 * h + i] + cut.axis];
+      if (sum / 8 > limit) continue;
+      for (var fi = 0; fi < HF.length; fi++) {
+        var fc = HF[fi].map(function (k) { return H[8 * h + k]; });
+        var key = fc.slice().sort(function (a, b) { return a - b; }).join(",");
+        if (faces[key]) faces[key].n++;
+        else { faces[key] = { n: 1, c: fc }; order.push(key); }
+      }
+    }
+    var out = [];
+    order.forEach(function (key) { if (faces[key].n === 1) out.push.apply(out, faces[key].c); });
+    return out;
+  }
+
   // faces: two triangles per quad, flat normal (Newell) per quad
-  var nq = Q.length / 4;
-  var faceData = new Float32Array(nq * 6 * 6);
-  var edgeData = new Float32Array(nq * 8 * 3);
-  var f = 0, e = 0, edgeSum = 0;
+  var faceData, edgeData, dotData, nRegular, nq, meanEdge = 1, counts = { 3: 0, 4: 0, 5: 0, 0: 0 };
+  function build(Q) {
+  nq = Q.length / 4;
+  faceData = new Float32Array(nq * 6 * 6);
+  // edges as thin screen-space quads (GL lines go missing under some
+  // software renderers): 6 vertices of (a xyz, b xyz, end, side) each
+  edgeData = new Float32Array(nq * 4 * 6 * 8);
+  var f = 0, e = 0, edgeSum = 0, used = new Uint8Array(V.length);
   for (var q = 0; q < nq; q++) {
     var c = [Q[4 * q], Q[4 * q + 1], Q[4 * q + 2], Q[4 * q + 3]];
     var n = [0, 0, 0];
     for (var j = 0; j < 4; j++) {
       var a = c[j], b = c[(j + 1) % 4];
+      used[a] = 1;
       n[0] += (pos(a, 1) - pos(b, 1)) * (pos(a, 2) + pos(b, 2));
       n[1] += (pos(a, 2) - pos(b, 2)) * (pos(a, 0) + pos(b, 0));
       n[2] += (pos(a, 0) - pos(b, 0)) * (pos(a, 1) + pos(b, 1));
@@ -58,25 +99,33 @@
       edgeSum += Math.sqrt([0, 1, 2].reduce(function (acc, k) {
         return acc + Math.pow(pos(ends[0], k) - pos(ends[1], k), 2);
       }, 0));
-      for (var m = 0; m < 2; m++) for (var k5 = 0; k5 < 3; k5++) edgeData[e++] = pos(ends[m], k5);
+      var corners = [[0, -1], [1, -1], [1, 1], [0, -1], [1, 1], [0, 1]];
+      for (var m = 0; m < 6; m++) {
+        for (var k5 = 0; k5 < 3; k5++) edgeData[e++] = pos(ends[0], k5);
+        for (var k6 = 0; k6 < 3; k6++) edgeData[e++] = pos(ends[1], k6);
+        edgeData[e++] = corners[m][0]; edgeData[e++] = corners[m][1];
+      }
     }
   }
-  // dots: every marked vertex, regular ones first (drawn only when the
-  // quads are large enough on screen), irregular ones after (on top)
-  var regular = [], irregular = [], counts = { 3: 0, 4: 0, 5: 0, 0: 0 };
+  // dots: every marked vertex on a drawn face, regular ones first (drawn
+  // only when the quads are large enough on screen), irregular ones after
+  // (on top); the legend counts the whole mesh (first build)
+  var regular = [], irregular = [], first = !faceBuf;
   for (var v = 0; v < V.length; v++) {
     var code = V[v];
     if (!(code in COLOURS)) continue;
-    counts[code]++;
+    if (first) counts[code]++;
+    if (!used[v]) continue;
     var col = COLOURS[code];
     (code === 4 ? regular : irregular).push(pos(v, 0), pos(v, 1), pos(v, 2),
       col[0] / 255, col[1] / 255, col[2] / 255, code === 4 ? 0.45 : 1);
   }
-  var nRegular = regular.length / 7;
-  var dots = regular.concat(irregular);
-  var dotData = new Float32Array(dots);
-  // mean edge length (model units scaled to radius 1)
-  var meanEdge = nq ? edgeSum / (4 * nq) : 1;
+  nRegular = regular.length / 7;
+  dotData = new Float32Array(regular.concat(irregular));
+  // mean edge length (model units scaled to radius 1) of the whole mesh
+  if (first) meanEdge = nq ? edgeSum / (4 * nq) : 1;
+  }
+  var faceBuf = null, edgeBuf, dotBuf;
   // null: automatic (edges when at least 4 px long); true/false: forced
   var showEdges = null, showDots = true;
 
@@ -94,7 +143,16 @@
     "  float len = length(vn);\n" +
     "  float d = len > 0.0 ? abs(dot(vn / len, l)) : 1.0;\n" +
     "  gl_FragColor = vec4(vec3(0.863) * (0.35 + 0.65 * d), 1.0);\n}\n";
-  var LINE_VS = HEAD + "attribute vec3 p;\nvoid main() { gl_Position = place(p, 0.0005); }\n";
+  var LINE_VS = HEAD + "attribute vec3 a; attribute vec3 b; attribute vec2 es;\n" +
+    "uniform vec2 px; uniform float width;\n" +
+    "void main() {\n" +
+    "  vec4 pa = place(a, 0.0005), pb = place(b, 0.0005);\n" +
+    "  vec2 d = (pb.xy - pa.xy) / px;\n" +
+    "  float len = length(d);\n" +
+    "  vec2 n = len > 0.0 ? vec2(-d.y, d.x) / len : vec2(0.0, 1.0);\n" +
+    "  vec4 p = es.x > 0.5 ? pb : pa;\n" +
+    "  p.xy += n * es.y * 0.5 * width * px;\n" +
+    "  gl_Position = p;\n}\n";
   var LINE_FS = "precision mediump float;\nvoid main() { gl_FragColor = vec4(0.19, 0.19, 0.19, 1.0); }\n";
   var DOT_VS = HEAD + "attribute vec3 p; attribute vec4 c; uniform float size; varying vec3 vc;\n" +
     "void main() { vc = c.rgb; gl_PointSize = size * c.a; gl_Position = place(p, 0.004); }\n";
@@ -128,7 +186,13 @@
   var faceProg = program(FACE_VS, FACE_FS);
   var lineProg = program(LINE_VS, LINE_FS);
   var dotProg = program(DOT_VS, DOT_FS);
-  var faceBuf = buffer(faceData), edgeBuf = buffer(edgeData), dotBuf = buffer(dotData);
+  function upload() {
+    [faceBuf, edgeBuf, dotBuf].forEach(function (b) { if (b) gl.deleteBuffer(b); });
+    faceBuf = buffer(faceData); edgeBuf = buffer(edgeData); dotBuf = buffer(dotData);
+  }
+  build(Q);
+  upload();
+  if (H && cut.at < 1) { build(cutQuads()); upload(); }
 
   // attribute `name` of `prog`: `size` floats at `offset` in a `stride`-float record
   function attrib(prog, name, size, stride, offset) {
@@ -144,7 +208,17 @@
 
   // ---- camera ----------------------------------------------------------------
   var cam = {};
-  function reset() { cam.yaw = -0.52; cam.pitch = 0.35; cam.zoom = 0.95; cam.pan = [0, 0]; }
+  // the mesh is fitted into the part of the window right of the panel
+  // (when the panel is open and takes less than 45 % of the width)
+  function reset() {
+    cam.yaw = -0.52; cam.pitch = 0.35;
+    var panel = document.getElementById("panel");
+    var w = canvas.clientWidth || 1, h = canvas.clientHeight || 1;
+    var pw = panel && panel.open ? panel.offsetWidth + 16 : 0;
+    if (pw > 0.45 * w) pw = 0;
+    cam.zoom = 0.95 * Math.min(1, Math.min(w - pw, h) / Math.min(w, h));
+    cam.pan = [pw / w, 0];
+  }
   reset();
   function rotation() {
     var cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
@@ -178,8 +252,11 @@
     if (edgesShown()) {
       gl.useProgram(lineProg); uniforms(lineProg); disableAll();
       gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-      attrib(lineProg, "p", 3, 3, 0);
-      gl.drawArrays(gl.LINES, 0, edgeData.length / 3);
+      gl.disable(gl.POLYGON_OFFSET_FILL);
+      gl.uniform2f(gl.getUniformLocation(lineProg, "px"), 2 / w, 2 / h);
+      gl.uniform1f(gl.getUniformLocation(lineProg, "width"), Math.max(1, dpr));
+      attrib(lineProg, "a", 3, 8, 0); attrib(lineProg, "b", 3, 8, 3); attrib(lineProg, "es", 2, 8, 6);
+      gl.drawArrays(gl.TRIANGLES, 0, edgeData.length / 8);
     }
     if (!showDots) return;
     gl.useProgram(dotProg); uniforms(dotProg); disableAll();
@@ -237,6 +314,22 @@
   canvas.addEventListener("contextmenu", function (ev) { ev.preventDefault(); });
   window.addEventListener("resize", redraw);
 
+  // ---- cut plane (hex meshes) ----------------------------------------------
+  function cutControls() {
+    var box = document.getElementById("controls");
+    box.innerHTML = '<label>cut <select id="cut-axis"><option>x</option><option>y</option>' +
+      '<option>z</option></select> <input id="cut-at" type="range" min="0" max="1000" value="1000"></label>';
+    var axis = document.getElementById("cut-axis"), at = document.getElementById("cut-at");
+    axis.selectedIndex = cut.axis;
+    at.value = Math.round(1000 * Math.min(1, cut.at));
+    function update() {
+      cut = { axis: axis.selectedIndex, at: at.value / 1000 };
+      build(cutQuads()); upload(); redraw();
+    }
+    axis.addEventListener("change", update);
+    at.addEventListener("input", update);
+  }
+
   // ---- legend ------------------------------------------------------------------
   var names = { 3: "valence 3", 4: "valence 4", 5: "valence 5", 0: "other" };
   var legend = document.getElementById("legend");
@@ -249,6 +342,10 @@
     row.appendChild(document.createTextNode(names[code] + ": " + counts[code]));
     legend.appendChild(row);
   });
-  status.textContent = nq + " quads, " + V.length + " vertices. Drag: orbit, wheel: zoom, shift/right drag: pan, double click: reset, e: edges, d: dots.";
+  var what = H ? nh + " hexes (" + Q.length / 4 + " boundary quads), " : nq + " quads, ";
+  if (H) cutControls();
+  if (window.innerWidth < 560 || window.innerHeight < 420) document.getElementById("panel").open = false;
+  status.textContent = what + V.length + " vertices. Drag: orbit, wheel: zoom, shift/right drag: pan, double click: reset, e: edges, d: dots.";
+  reset();
   draw();
 })();

@@ -1,4 +1,5 @@
 use super::*;
+use crate::canvas::{bbox, white, Fit};
 use crate::test_png::{colours, has_colour, read_png, temp_path};
 use crate::valence::{V3_RGB, V5_RGB};
 
@@ -116,4 +117,70 @@ fn bad_inputs_are_errors_not_panics() {
     let mut far = grid(2);
     far.coords.iter_mut().flatten().for_each(|p| p[0] += 1e17);
     assert!(draw_map(&far, &[], 100).is_ok());
+}
+
+/// Whether some pixel of the rectangle `r` has exactly colour `rgb`.
+fn has_colour_in(pix: &Pixmap, r: tiny_skia::Rect, rgb: [u8; 3]) -> bool {
+    let w = pix.width();
+    pix.pixels().iter().enumerate().any(|(i, p)| {
+        let (x, y) = ((i as u32 % w) as f32, (i as u32 / w) as f32);
+        let c = p.demultiply();
+        let (cx, cy) = (x + 0.5, y + 0.5);
+        (r.left()..r.right()).contains(&cx)
+            && (r.top()..r.bottom()).contains(&cy)
+            && [c.red(), c.green(), c.blue()] == rgb
+            && c.alpha() == 255
+    })
+}
+
+#[test]
+fn reverted_singular_disk_has_a_legend_and_scaled_marks() {
+    let (map, _) = dualex_gen::singular_disk(1, true, 6, 16, 4.0).unwrap();
+    let reverted = (0..map.len()).filter(|&s| map.map_det(s) < 0.0).count();
+    assert!(reverted > 0);
+    let (welded, _) = weld(&map);
+    let marks = singular_marks(&welded);
+    assert!(
+        marks.iter().any(|m| m.class == ValenceClass::V3),
+        "{marks:?}"
+    );
+    for size in [256, 1200] {
+        let mut pix = white(size).unwrap();
+        let lo_hi = bbox(welded.coords.iter().flatten().copied()).unwrap();
+        draw_triangles(&mut pix, &welded, &Fit::new(lo_hi.0, lo_hi.1, size));
+        let rect = legend::draw_legend(&mut pix, reverted, &marks).expect("no legend");
+        // small: a corner box, not a band across the picture
+        let s = size as f32;
+        assert!(
+            rect.width() < 0.4 * s && rect.height() < 0.2 * s,
+            "{rect:?}"
+        );
+        assert!(rect.left() < 0.1 * s || rect.right() > 0.9 * s);
+        assert!(rect.top() < 0.1 * s || rect.bottom() > 0.9 * s);
+        assert!(has_colour_in(&pix, rect, PURPLE), "no reverted swatch");
+        assert!(has_colour_in(&pix, rect, V3_RGB), "no +1/4 swatch");
+        assert!(has_colour_in(&pix, rect, legend::INK), "no text");
+        assert!(!has_colour_in(&pix, rect, V5_RGB));
+    }
+    // the whole picture: marks as large as 0.7 % of it, legend included
+    let bytes = map_png_bytes(&map, 1200).unwrap();
+    let pix = Pixmap::decode_png(&bytes).unwrap();
+    let blue = colours(&pix)
+        .iter()
+        .find(|(c, _)| *c == V3_RGB)
+        .map_or(0, |&(_, n)| n);
+    let r = mark_radius(1200);
+    assert!(r > 8.0);
+    assert!(blue as f32 > 3.0 * r * r, "marks cover {blue} px only");
+    assert!(has_colour(&pix, legend::INK));
+    if let Some(dir) = std::env::var_os("DUALEX_KEEP_PNG") {
+        std::fs::write(std::path::Path::new(&dir).join("legend.png"), &bytes).unwrap();
+    }
+}
+
+#[test]
+fn no_legend_when_nothing_to_explain() {
+    let mut pix = white(100).unwrap();
+    assert!(legend::draw_legend(&mut pix, 0, &[]).is_none());
+    assert_eq!(colours(&pix).len(), 1);
 }
