@@ -152,8 +152,9 @@ fn hex<'py>(
 }
 
 /// Reads a map: (V (n, 3), simplices (m, 3) or (m, 4), coords (m, 3, 2)
-/// or (m, 4, 3)). `.obj` (f v/vt) and `.ply` (per-face texcoord) hold
-/// triangle maps, `.hexex` tet maps. Raises ValueError naming the file.
+/// or (m, 4, 3)). `.obj` (f v/vt) and `.ply` (per-face texcoord, or
+/// per-vertex u v / s t / texture_u texture_v) hold triangle maps,
+/// `.hexex` tet maps. Raises ValueError naming the file.
 #[pyfunction]
 fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
     if is_tet_file(&path) {
