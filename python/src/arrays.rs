@@ -9,8 +9,8 @@
 //! facade's `*_map_from_slices`, whose message names the element. Every
 //! failure is a `ValueError`; nothing panics.
 //!
-//! Output: `float64` arrays of shape (n, 3) for positions and `int64`
-//! arrays of shape (m, K) for cells.
+//! Output: `float64` arrays of shape (n, 3) for positions, `int64`
+//! arrays of shape (m, K) for cells and (m,) for their source simplices.
 
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
@@ -158,4 +158,14 @@ pub fn corners_array<'py, const N: usize, const D: usize>(
     Ok(PyArray1::from_vec(py, flat)
         .reshape([c.len(), N, D])?
         .into_any())
+}
+
+/// The input simplex of each cell as an `int64` array of shape (m,), -1
+/// for a cell that no simplex holds (a quad closing a hole).
+pub fn sources_array<'py>(
+    py: Python<'py>,
+    sources: impl Iterator<Item = Option<u32>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let flat: Vec<i64> = sources.map(|s| s.map_or(-1, i64::from)).collect();
+    Ok(PyArray1::from_vec(py, flat).into_any())
 }

@@ -5,8 +5,8 @@
 //!
 //! | Python | facade |
 //! |---|---|
-//! | `quad(V, F, UV, **options)` | [`dualex::tri_map_from_slices`], [`dualex::quad()`] |
-//! | `hex(V, T, UVW, **options)` | [`dualex::tet_map_from_slices`], [`dualex::hex()`] |
+//! | `quad(V, F, UV, **options)` (`return_sources=True`: the input triangle of each quad) | [`dualex::tri_map_from_slices`], [`dualex::quad()`] |
+//! | `hex(V, T, UVW, **options)` (`return_sources=True`: the input tet of each hex) | [`dualex::tet_map_from_slices`], [`dualex::hex()`] |
 //! | `read(path)` | [`dualex::read_tri_map`] / [`dualex::read_tet_map`] |
 //! | `write(path, V, cells)` | [`dualex::write_quad_mesh`] / [`dualex::write_hex_mesh`] |
 //! | `inspect(path)` / `inspect(V, S, C)` | `dualex_map::report::inspect` |
@@ -20,7 +20,7 @@
 mod arrays;
 mod dicts;
 
-use arrays::{cells_array, corners, corners_array, indices, positions_array, rows};
+use arrays::{cells_array, corners, corners_array, indices, positions_array, rows, sources_array};
 use dualex::{GridOffset, HexOptions, QuadOptions};
 use dualex_map::report::{inspect as inspect_map, InspectOptions};
 use pyo3::exceptions::PyValueError;
@@ -55,10 +55,12 @@ fn is_tet_file(path: &std::path::Path) -> bool {
 /// V: (n, 3) vertex positions; F: (m, 3) vertex indices of the triangles;
 /// UV: (m, 3, 2) map coordinates of each triangle corner, in that
 /// triangle's chart (cut meshes welded first unless weld=False).
-/// Returns (positions (k, 3) float64, quads (q, 4) int64, stats dict).
+/// Returns (positions (k, 3) float64, quads (q, 4) int64, stats dict);
+/// with return_sources=True also sources (q,) int64: the triangle (row of
+/// F) holding each quad's node, -1 for a quad that closes a hole.
 /// Raises ValueError on bad arrays or a map the extraction refuses.
 #[pyfunction]
-#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false))]
+#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false))]
 #[allow(non_snake_case, clippy::too_many_arguments)]
 fn quad<'py>(
     py: Python<'py>,
@@ -71,6 +73,7 @@ fn quad<'py>(
     grid_offset: &str,
     seed: u64,
     strict: bool,
+    return_sources: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let opts = QuadOptions {
         weld,
@@ -92,14 +95,15 @@ fn quad<'py>(
         })
         .map_err(value_error)?;
     let stats = dicts::quad_stats(py, &out.stats)?;
-    PyTuple::new(
-        py,
-        [
-            positions_array(py, &out.mesh.positions)?,
-            cells_array(py, &out.mesh.cells)?,
-            stats.into_any(),
-        ],
-    )
+    let mut items = vec![
+        positions_array(py, &out.mesh.positions)?,
+        cells_array(py, &out.mesh.cells)?,
+        stats.into_any(),
+    ];
+    if return_sources {
+        items.push(sources_array(py, out.sources.iter().copied())?);
+    }
+    PyTuple::new(py, items)
 }
 
 /// Extracts the all-hex mesh of a tet mesh with a 3D map.
@@ -107,9 +111,11 @@ fn quad<'py>(
 /// V: (n, 3) vertex positions; T: (m, 4) vertex indices of the tets
 /// (positively oriented); UVW: (m, 4, 3) map coordinates of each tet
 /// corner. Returns (positions (k, 3) float64, hexes (h, 8) int64 in VTK
-/// order, stats dict). Raises ValueError on bad arrays or a refused map.
+/// order, stats dict); with return_sources=True also sources (h,) int64:
+/// the tet (row of T) holding each hex's node. Raises ValueError on bad
+/// arrays or a refused map.
 #[pyfunction]
-#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false))]
+#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false))]
 #[allow(non_snake_case, clippy::too_many_arguments)]
 fn hex<'py>(
     py: Python<'py>,
@@ -121,6 +127,7 @@ fn hex<'py>(
     grid_offset: &str,
     seed: u64,
     strict: bool,
+    return_sources: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let opts = HexOptions {
         weld,
@@ -141,19 +148,21 @@ fn hex<'py>(
         })
         .map_err(value_error)?;
     let stats = dicts::hex_stats(py, &out.stats)?;
-    PyTuple::new(
-        py,
-        [
-            positions_array(py, &out.mesh.positions)?,
-            cells_array(py, &out.mesh.cells)?,
-            stats.into_any(),
-        ],
-    )
+    let mut items = vec![
+        positions_array(py, &out.mesh.positions)?,
+        cells_array(py, &out.mesh.cells)?,
+        stats.into_any(),
+    ];
+    if return_sources {
+        items.push(sources_array(py, out.sources.iter().map(|&s| Some(s)))?);
+    }
+    PyTuple::new(py, items)
 }
 
 /// Reads a map: (V (n, 3), simplices (m, 3) or (m, 4), coords (m, 3, 2)
-/// or (m, 4, 3)). `.obj` (f v/vt) and `.ply` (per-face texcoord) hold
-/// triangle maps, `.hexex` tet maps. Raises ValueError naming the file.
+/// or (m, 4, 3)). `.obj` (f v/vt) and `.ply` (per-face texcoord, or
+/// per-vertex u v / s t / texture_u texture_v) hold triangle maps,
+/// `.hexex` tet maps. Raises ValueError naming the file.
 #[pyfunction]
 fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
     if is_tet_file(&path) {

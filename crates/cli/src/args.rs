@@ -110,7 +110,8 @@ pub struct ExtractArgs {
 #[derive(Debug, Args)]
 #[command(
     after_help = "INPUT: .obj (`f v/vt`, per-corner texture coordinates) or .ply \
-                        (face `texcoord` list of 6). OUTPUT: .obj, .ply or .vtk."
+                        (face `texcoord` list of 6, or vertex `u v` / `s t` / \
+                        `texture_u texture_v`). OUTPUT: .obj, .ply or .vtk."
 )]
 pub struct QuadArgs {
     /// The 2D map (.obj / .ply); without it, the embedded messy map (a

@@ -103,7 +103,8 @@ impl From<OutputError> for Error {
 }
 
 /// Reads a triangle map from `.obj` (`f v/vt`) or `.ply` (per-face
-/// `texcoord`), chosen by extension.
+/// `texcoord`, or per-vertex `u v` / `s t` / `texture_u texture_v`), chosen
+/// by extension.
 pub fn read_tri_map(path: impl AsRef<Path>) -> Result<TriMap, Error> {
     Ok(dualex_io::read_tri_map(path.as_ref())?)
 }

@@ -4,7 +4,7 @@
 //!
 //! | data | read | write |
 //! |---|---|---|
-//! | triangle map ([`TriMap`]) | `.obj` (`f v/vt`), `.ply` (face `texcoord`) | `.obj`, `.ply` (binary LE) |
+//! | triangle map ([`TriMap`]) | `.obj` (`f v/vt`), `.ply` (face `texcoord`, or vertex `u v` / `s t` / `texture_u texture_v`) | `.obj`, `.ply` (binary LE) |
 //! | tet map ([`TetMap`]) | `.hexex`, `.ovm` (HexHex's `HexHex::Parametrization`) | `.hexex`, `.ovm` |
 //! | polygon mesh ([`PolyMesh`]) | `.obj`, `.ply` | — |
 //! | quad mesh ([`QuadMesh`]) | (as a polygon mesh) | `.obj`, `.ply` (binary LE), `.vtk` |
@@ -48,6 +48,8 @@ mod fast_tests;
 mod fuzz_tests;
 #[cfg(test)]
 mod ovm_tests;
+#[cfg(test)]
+mod ply_uv_tests;
 #[cfg(test)]
 mod roundtrip_tests;
 #[cfg(test)]

@@ -3,9 +3,13 @@
 //!
 //! Input: a `vertex` element with scalar `x`, `y`, `z` (any PLY type) and a
 //! `face` element with a `vertex_indices` (or `vertex_index`) list; for a
-//! triangle map also a per-face `texcoord` list of 6 values
-//! `u0 v0 u1 v1 u2 v2`. Other elements and properties (lists included) are
-//! skipped. Output: a [`TriMap`] or a [`PolyMesh`].
+//! triangle map also its map coordinates, either per corner, a per-face
+//! `texcoord` list of 6 values `u0 v0 u1 v1 u2 v2` (a map with seams), or
+//! per vertex, a scalar pair `u v`, `s t` or `texture_u texture_v` of the
+//! `vertex` element (a map without seams: each corner takes its vertex's
+//! pair). When both are present the per-face list wins. Other elements and
+//! properties (lists included) are skipped. Output: a [`TriMap`] or a
+//! [`PolyMesh`].
 //!
 //! Guard: before reading an element (or a list), its claimed size is checked
 //! against the bytes left, so a header claiming 10^14 vertices fails at once
@@ -13,7 +17,7 @@
 //! or the body position (`line L` in ascii, `byte B` in binary) and the
 //! record (`face 12`, counted from 0).
 
-use crate::ply_header::{parse_header, Element, Kind, PlyFormat, Scalar};
+use crate::ply_header::{parse_header, texcoord_source, Element, Kind, PlyFormat, Scalar};
 use crate::scan::{fits, quote, Tokens};
 use crate::PolyMesh;
 use dualex_map::{InputError, TriMap};
@@ -129,6 +133,9 @@ struct FaceRecord<'b> {
 /// What the body gave: positions and, per face, a callback result.
 struct Parsed {
     positions: Vec<[f64; 3]>,
+    /// Per-vertex map coordinates, read only when a triangle map needs them
+    /// (no per-face `texcoord`).
+    vertex_uv: Option<Vec<[f64; 2]>>,
     saw_vertices: bool,
     saw_faces: bool,
 }
@@ -145,7 +152,11 @@ pub fn parse_ply(bytes: &[u8]) -> Result<TriMap, InputError> {
                 f.vertices.len()
             ));
         };
-        let uv = f.texcoord.unwrap_or_default();
+        simplices.push([*a, *b, *c]);
+        // without a per-face list the corners take their vertices' pairs (below)
+        let Some(uv) = f.texcoord else {
+            return Ok(());
+        };
         let [u0, v0, u1, v1, u2, v2] = uv else {
             return Err(format!(
                 "face {}: texcoord list has {} values; expected 6 (u0 v0 u1 v1 u2 v2)",
@@ -156,10 +167,14 @@ pub fn parse_ply(bytes: &[u8]) -> Result<TriMap, InputError> {
         if uv.iter().any(|x| !x.is_finite()) {
             return Err(format!("face {}: texcoord is not finite", f.index));
         }
-        simplices.push([*a, *b, *c]);
         coords.push([[*u0, *v0], [*u1, *v1], [*u2, *v2]]);
         Ok(())
     })?;
+    if let Some(uv) = &parsed.vertex_uv {
+        // an index out of range gets (0, 0) here and fails `validate` below
+        let at = |v: u32| uv.get(v as usize).copied().unwrap_or_default();
+        coords = simplices.iter().map(|s| s.map(at)).collect();
+    }
     if simplices.is_empty() {
         return Err(InputError::new(
             "no triangles (the `face` element is empty)",
@@ -225,8 +240,14 @@ fn parse_body(
             base: header.body,
         },
     };
+    let uv_slots = if want_texcoord {
+        texcoord_source(&header.elements)?
+    } else {
+        None
+    };
     let mut parsed = Parsed {
         positions: Vec::new(),
+        vertex_uv: None,
         saw_vertices: false,
         saw_faces: false,
     };
@@ -234,11 +255,11 @@ fn parse_body(
         check_fits(&body, el)?;
         match el.name.as_str() {
             "vertex" if !parsed.saw_vertices => {
-                parsed.positions = read_vertices(&mut body, el)?;
+                (parsed.positions, parsed.vertex_uv) = read_vertices(&mut body, el, uv_slots)?;
                 parsed.saw_vertices = true;
             }
             "face" if !parsed.saw_faces => {
-                read_faces(&mut body, el, want_texcoord, &mut on_face)?;
+                read_faces(&mut body, el, &mut on_face)?;
                 parsed.saw_faces = true;
             }
             _ => skip_element(&mut body, el)?,
@@ -281,7 +302,15 @@ fn at(body: &Body<'_>, el: &Element, i: u64, message: String) -> InputError {
     e
 }
 
-fn read_vertices(body: &mut Body<'_>, el: &Element) -> Result<Vec<[f64; 3]>, InputError> {
+/// Positions and, when asked, per-vertex map coordinates.
+type Vertices = (Vec<[f64; 3]>, Option<Vec<[f64; 2]>>);
+
+/// Positions, and per-vertex map coordinates when `uv_slots` names them.
+fn read_vertices(
+    body: &mut Body<'_>,
+    el: &Element,
+    uv_slots: Option<[usize; 2]>,
+) -> Result<Vertices, InputError> {
     let mut slots = [usize::MAX; 3];
     for (k, name) in ["x", "y", "z"].iter().enumerate() {
         let p = el
@@ -296,8 +325,13 @@ fn read_vertices(body: &mut Body<'_>, el: &Element) -> Result<Vec<[f64; 3]>, Inp
     }
     // `check_fits` bounded `count` by the file size: this allocation is safe.
     let mut positions = Vec::with_capacity(el.count as usize);
+    let mut uvs = Vec::with_capacity(if uv_slots.is_some() {
+        positions.capacity()
+    } else {
+        0
+    });
     for i in 0..el.count {
-        let mut p = [0.0; 3];
+        let (mut p, mut uv) = ([0.0; 3], [0.0; 2]);
         for (j, prop) in el.props.iter().enumerate() {
             match prop.kind {
                 Kind::Scalar(ty) => {
@@ -307,6 +341,12 @@ fn read_vertices(body: &mut Body<'_>, el: &Element) -> Result<Vec<[f64; 3]>, Inp
                             return Err(at(body, el, i, "coordinate is not finite".into()));
                         }
                         p[k] = x;
+                    } else if let Some(k) = uv_slots.and_then(|s| s.iter().position(|&s| s == j)) {
+                        if !x.is_finite() {
+                            let m = format!("texture coordinate `{}` is not finite", prop.name);
+                            return Err(at(body, el, i, m));
+                        }
+                        uv[k] = x;
                     }
                 }
                 Kind::List { count, item } => {
@@ -315,14 +355,16 @@ fn read_vertices(body: &mut Body<'_>, el: &Element) -> Result<Vec<[f64; 3]>, Inp
             }
         }
         positions.push(p);
+        if uv_slots.is_some() {
+            uvs.push(uv);
+        }
     }
-    Ok(positions)
+    Ok((positions, uv_slots.map(|_| uvs)))
 }
 
 fn read_faces(
     body: &mut Body<'_>,
     el: &Element,
-    want_texcoord: bool,
     on_face: &mut impl FnMut(FaceRecord<'_>) -> Result<(), String>,
 ) -> Result<(), InputError> {
     let list = |names: &[&str]| {
@@ -336,12 +378,6 @@ fn read_faces(
         )
     })?;
     let tc = list(&["texcoord"]);
-    if want_texcoord && tc.is_none() {
-        return Err(InputError::at_line(
-            el.line,
-            "element `face` has no `texcoord` list property (per-corner u0 v0 u1 v1 u2 v2)",
-        ));
-    }
     let (mut verts, mut uvs) = (Vec::new(), Vec::new());
     for i in 0..el.count {
         for (j, prop) in el.props.iter().enumerate() {

@@ -1,7 +1,8 @@
 //! PLY header: format, elements and their properties.
 //!
 //! Input: the bytes of a PLY file. Output: a [`Header`] and the byte offset
-//! where the body starts (just after the `end_header` line). Counts are read
+//! where the body starts (just after the `end_header` line); for a triangle
+//! map, where its coordinates come from ([`texcoord_source`]). Counts are read
 //! as `u64` and *not* trusted: the body reader checks each against the bytes
 //! left before allocating anything.
 
@@ -226,6 +227,53 @@ fn parse_property(toks: &[&str]) -> Result<Property, String> {
         name: name.to_string(),
         kind,
     })
+}
+
+/// The first `vertex` and `face` elements (the ones the body reader reads).
+fn first<'h>(elements: &'h [Element], name: &str) -> Option<&'h Element> {
+    elements.iter().find(|e| e.name == name)
+}
+
+/// Where a triangle map's coordinates come from: `None` for the per-face
+/// `texcoord` list, else the `vertex` properties of the per-vertex pair.
+/// Checked on the header, before any body is read.
+pub(crate) fn texcoord_source(elements: &[Element]) -> Result<Option<[usize; 2]>, InputError> {
+    const PAIRS: [[&str; 2]; 3] = [["u", "v"], ["s", "t"], ["texture_u", "texture_v"]];
+    let (Some(face), Some(vertex)) = (first(elements, "face"), first(elements, "vertex")) else {
+        return Ok(None); // `parse_body` names the missing element
+    };
+    let is_list = |p: usize| matches!(face.props[p].kind, Kind::List { .. });
+    if face.find(&["texcoord"]).is_some_and(is_list) {
+        return Ok(None);
+    }
+    let scalar = |name: &str| {
+        vertex
+            .find(&[name])
+            .filter(|&p| matches!(vertex.props[p].kind, Kind::Scalar(_)))
+    };
+    let slots = PAIRS.map(|[a, b]| (scalar(a), scalar(b)));
+    if let Some(&(Some(u), Some(v))) = slots.iter().find(|s| matches!(s, (Some(_), Some(_)))) {
+        return Ok(Some([u, v]));
+    }
+    if let Some((k, (u, _))) = slots
+        .iter()
+        .enumerate()
+        .find(|(_, s)| s.0.is_some() != s.1.is_some())
+    {
+        let [a, b] = PAIRS[k];
+        let (has, lacks) = if u.is_some() { (a, b) } else { (b, a) };
+        return Err(InputError::at_line(
+            vertex.line,
+            format!(
+                "element `vertex` has property `{has}` but no `{lacks}` (per-vertex texture coordinates need both)"
+            ),
+        ));
+    }
+    Err(InputError::at_line(
+        face.line,
+        "element `face` has no `texcoord` list property (per-corner u0 v0 u1 v1 u2 v2), \
+         and element `vertex` no `u v`, `s t` or `texture_u texture_v` pair",
+    ))
 }
 
 #[cfg(test)]

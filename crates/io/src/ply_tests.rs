@@ -71,7 +71,8 @@ fn structural_errors() {
     let no_tc = ASCII.replace("property list int float texcoord\n", "");
     assert_eq!(
         err(no_tc.as_bytes()),
-        "line 13: element `face` has no `texcoord` list property (per-corner u0 v0 u1 v1 u2 v2)"
+        "line 13: element `face` has no `texcoord` list property (per-corner u0 v0 u1 v1 u2 v2), \
+         and element `vertex` no `u v`, `s t` or `texture_u texture_v` pair"
     );
     // without texcoord values it is still a polygon mesh
     let no_tc_data = no_tc

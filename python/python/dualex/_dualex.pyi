@@ -1,7 +1,7 @@
 """Type stubs of the extension module (re-exported by ``dualex``)."""
 
 import os
-from typing import Any, Dict, Literal, Optional, Tuple, Union
+from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -13,6 +13,15 @@ _Offset = Literal["auto", "half", "zero"]
 
 __version__: str
 
+_Mesh = Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, Any]]
+_MeshSources = Tuple[
+    npt.NDArray[np.float64],
+    npt.NDArray[np.int64],
+    Dict[str, Any],
+    npt.NDArray[np.int64],
+]
+
+@overload
 def quad(
     V: _Floats,
     F: _Ints,
@@ -24,14 +33,32 @@ def quad(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, Any]]:
+    return_sources: Literal[False] = False,
+) -> _Mesh: ...
+@overload
+def quad(
+    V: _Floats,
+    F: _Ints,
+    UV: _Floats,
+    *,
+    weld: bool = True,
+    fairing: bool = True,
+    round_transitions: bool = False,
+    grid_offset: _Offset = "auto",
+    seed: int = 1,
+    strict: bool = False,
+    return_sources: Literal[True],
+) -> _MeshSources:
     """Extracts the all-quad mesh of a triangle mesh with a 2D map.
 
     V: (n, 3) positions; F: (m, 3) triangles; UV: (m, 3, 2) map
     coordinates per triangle corner. Returns (positions (k, 3), quads
-    (q, 4), stats). Raises ValueError on bad arrays or a refused map.
+    (q, 4), stats); with return_sources=True also sources (q,) int64: the
+    triangle (row of F) holding each quad's node, -1 for a quad that
+    closes a hole. Raises ValueError on bad arrays or a refused map.
     """
 
+@overload
 def hex(
     V: _Floats,
     T: _Ints,
@@ -42,19 +69,37 @@ def hex(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, Any]]:
+    return_sources: Literal[False] = False,
+) -> _Mesh: ...
+@overload
+def hex(
+    V: _Floats,
+    T: _Ints,
+    UVW: _Floats,
+    *,
+    weld: bool = True,
+    round_transitions: bool = False,
+    grid_offset: _Offset = "auto",
+    seed: int = 1,
+    strict: bool = False,
+    return_sources: Literal[True],
+) -> _MeshSources:
     """Extracts the all-hex mesh of a tet mesh with a 3D map.
 
     V: (n, 3) positions; T: (m, 4) tets; UVW: (m, 4, 3) map coordinates per
     tet corner. Returns (positions (k, 3), hexes (h, 8) in VTK order,
-    stats). Raises ValueError on bad arrays or a refused map.
+    stats); with return_sources=True also sources (h,) int64: the tet (row
+    of T) holding each hex's node. Raises ValueError on bad arrays or a
+    refused map.
     """
 
 def read(
     path: _Path,
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]:
-    """Reads a map: .obj/.ply (triangles, (m, 3, 2) coords) or .hexex (tets,
-    (m, 4, 3) coords). Returns (V, simplices, coords)."""
+    """Reads a map: .obj/.ply (triangles, (m, 3, 2) coords; a PLY holds them
+    per face, `texcoord`, or per vertex, `u v` / `s t` /
+    `texture_u texture_v`) or .hexex (tets, (m, 4, 3) coords). Returns
+    (V, simplices, coords)."""
 
 def write(path: _Path, positions: _Floats, cells: _Ints) -> None:
     """Writes a quad mesh (cells (m, 4): .obj, .ply, .vtk) or a hex mesh
