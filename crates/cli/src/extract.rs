@@ -61,6 +61,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
         },
         seed: x.seed,
         grid_offset: x.grid_offset,
+        singularity_stats: x.stats.is_some() || g.verbose,
     };
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting quads");

@@ -145,6 +145,7 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
         transitions: transitions(opts.round_transitions),
         seed: opts.seed,
         grid_offset: opts.grid_offset,
+        singularity_stats: true,
     };
     let (mesh, stats, sources) = dualex_quad::extract_traced(&map, &inner)?;
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);

@@ -48,6 +48,11 @@ pub struct QuadOptions {
     pub seed: u64,
     /// Where the dual grid sits (`--grid-offset`).
     pub grid_offset: GridOffset,
+    /// Fill [`QuadStats::singularities`] (the input's singularities by
+    /// index: an angle sum at every vertex, ~10 % of the extraction on
+    /// maps without singularities; off by default, on where stats are
+    /// shown).
+    pub singularity_stats: bool,
 }
 
 impl Default for QuadOptions {
@@ -57,6 +62,7 @@ impl Default for QuadOptions {
             transitions: TransitionOptions::default(),
             seed: 1,
             grid_offset: GridOffset::Auto,
+            singularity_stats: false,
         }
     }
 }
@@ -96,7 +102,7 @@ pub fn extract_traced(
         st.snapped_transitions = trep.snapped;
         let stars = Stars::build(map, &topo, &trans);
         st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
-        if grid.is_none() {
+        if grid.is_none() && opts.singularity_stats {
             // the input's singularities (integer part unknown: "k/4 mod 1")
             let (known, unknown) = dualex_map::report::singularity_histogram(map, &topo, &trans);
             st.singularities = known;
