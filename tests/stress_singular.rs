@@ -13,7 +13,8 @@
 //! skipped. [`KNOWN_FAILING`] cases are run and reported, not asserted
 //! ("NOW PASSES: …" when they pass). One seed by default (< 60 s in
 //! `--profile ci`); `DUALEX_STRESS_CASES=N` runs seeds 1, 2, … until N
-//! cases have been run, for long runs by hand.
+//! cases have been run, for long runs by hand (`DUALEX_STRESS_FIRST_SEED`
+//! starts at another seed).
 
 mod mesh_oracle;
 use dualex_gen::from_mesh::{self, meshes, FromMeshOptions, Jitter, Slivers, VertexClass};
@@ -136,7 +137,13 @@ fn singular_configurations_extract_exactly() {
         .collect();
     let (mut run_, mut exact, mut refused, mut skipped) = (0, 0, 0, 0);
     let (mut wrong, mut known, mut now_pass) = (Vec::new(), Vec::new(), Vec::new());
-    let mut seed = 1;
+    // `DUALEX_STRESS_FIRST_SEED=S` starts a long run at seed S (to go on
+    // from where an earlier run stopped)
+    let mut seed: u64 = std::env::var("DUALEX_STRESS_FIRST_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1);
+    let first = seed;
     loop {
         for &(mesh, three) in &all {
             for (tag, case) in variants() {
@@ -190,7 +197,8 @@ fn singular_configurations_extract_exactly() {
         }
     }
     eprintln!(
-        "stress: {run_} run, {exact} exact, {refused} refused (allowed), {} wrong, {} known failing, {} now pass, {skipped} skipped",
+        "stress: seeds {first}–{}: {run_} run, {exact} exact, {refused} refused (allowed), {} wrong, {} known failing, {} now pass, {skipped} skipped",
+        seed - 1,
         wrong.len(),
         known.len(),
         now_pass.len()
