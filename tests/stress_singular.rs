@@ -184,6 +184,7 @@ fn singular_configurations_extract_exactly() {
                 }
             }
         }
+        #[allow(clippy::manual_is_multiple_of)] // `is_multiple_of` needs Rust 1.87
         if wanted > 0 && seed % 20 == 0 {
             // progress of long runs (a killed run still has its totals)
             eprintln!(
