@@ -171,26 +171,7 @@ mod tests {
     /// vertex less), valid.
     #[test]
     fn a_doublet_in_a_grid_is_dissolved() {
-        let mut m = QuadMesh::default();
-        for j in 0..4 {
-            for i in 0..4 {
-                m.positions.push([i as f64, j as f64, 0.0]);
-            }
-        }
-        let id = |i: u32, j: u32| j * 4 + i;
-        for j in 0..3 {
-            for i in 0..3 {
-                if (i, j) != (1, 1) {
-                    m.cells
-                        .push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
-                }
-            }
-        }
-        // the centre cell [5, 6, 10, 9] as two quads around v = 16 that
-        // share the edges 16–5 and 16–10: X = [16, 5, 6, 10], Y = [16, 10, 9, 5]
-        m.positions.push([1.5, 1.5, 0.0]);
-        m.cells.push([16, 5, 6, 10]);
-        m.cells.push([16, 10, 9, 5]);
+        let m = dualex_gen::from_mesh::meshes::grid_with_doublet();
         let before = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
         assert!(before.is_valid(), "{:?}", before.errors());
         assert_eq!(before.interior_valence.get(&2), Some(&1));

@@ -236,3 +236,29 @@ pub fn polycube_l() -> HexMesh {
     };
     extrude(&flat, 1)
 }
+
+/// A 3×3 grid of quads whose centre cell is two quads around an interior
+/// vertex of valence 2 (vertex 16, sharing the edges 16–5 and 16–10): the
+/// smallest doublet, for the tests of doublet removal in both dimensions
+/// (extruded in 3D).
+pub fn grid_with_doublet() -> QuadMesh {
+    let mut m = QuadMesh::default();
+    for j in 0..4 {
+        for i in 0..4 {
+            m.positions.push([i as f64, j as f64, 0.0]);
+        }
+    }
+    let id = |i: u32, j: u32| j * 4 + i;
+    for j in 0..3 {
+        for i in 0..3 {
+            if (i, j) != (1, 1) {
+                m.cells
+                    .push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+            }
+        }
+    }
+    m.positions.push([1.5, 1.5, 0.0]);
+    m.cells.push([16, 5, 6, 10]);
+    m.cells.push([16, 10, 9, 5]);
+    m
+}

@@ -1,30 +1,6 @@
 use super::*;
-use dualex_gen::from_mesh::meshes::extrude;
+use dualex_gen::from_mesh::meshes::{extrude, grid_with_doublet};
 use dualex_map::QuadMesh;
-
-/// The 3×3 grid with its centre cell as two quads around a valence-2
-/// vertex (16), as in `dualex_quad::doublets`.
-fn grid_with_doublet() -> QuadMesh {
-    let mut m = QuadMesh::default();
-    for j in 0..4 {
-        for i in 0..4 {
-            m.positions.push([i as f64, j as f64, 0.0]);
-        }
-    }
-    let id = |i: u32, j: u32| j * 4 + i;
-    for j in 0..3 {
-        for i in 0..3 {
-            if (i, j) != (1, 1) {
-                m.cells
-                    .push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
-            }
-        }
-    }
-    m.positions.push([1.5, 1.5, 0.0]);
-    m.cells.push([16, 5, 6, 10]);
-    m.cells.push([16, 10, 9, 5]);
-    m
-}
 
 fn check(m: &HexMesh) -> dualex_check::HexReport {
     let r = dualex_check::check_hex_mesh(m.positions.len(), &m.cells, None);
