@@ -18,6 +18,8 @@
 //! boundary) without degenerate triangles; every edge has one or two faces.
 #![forbid(unsafe_code)]
 
+pub mod field;
 pub mod surface;
 
+pub use field::CrossField;
 pub use surface::{Surface, SurfaceError, NO_FACE};
