@@ -47,7 +47,7 @@ fn grid_offset(s: &str) -> PyResult<GridOffset> {
 fn is_tet_file(path: &std::path::Path) -> bool {
     path.extension()
         .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("hexex"))
+        .is_some_and(|e| e.eq_ignore_ascii_case("hexex") || e.eq_ignore_ascii_case("ovm"))
 }
 
 /// Extracts the all-quad mesh of a triangle mesh with a 2D map.
@@ -162,7 +162,8 @@ fn hex<'py>(
 /// Reads a map: (V (n, 3), simplices (m, 3) or (m, 4), coords (m, 3, 2)
 /// or (m, 4, 3)). `.obj` (f v/vt) and `.ply` (per-face texcoord, or
 /// per-vertex u v / s t / texture_u texture_v) hold triangle maps,
-/// `.hexex` tet maps. Raises ValueError naming the file.
+/// `.hexex` and `.ovm` (HexHex's `HexHex::Parametrization`) tet maps.
+/// Raises ValueError naming the file.
 #[pyfunction]
 fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
     if is_tet_file(&path) {
@@ -188,7 +189,7 @@ fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
 }
 
 /// Writes a quad mesh (cells (m, 4): `.obj`, `.ply`, `.vtk`) or a hex mesh
-/// (cells (m, 8), VTK order: `.mesh`, `.vtk`), chosen by the cells' shape
+/// (cells (m, 8), VTK order: `.mesh`, `.vtk`, `.ovm`), chosen by the cells' shape
 /// and the extension. Raises ValueError on bad arrays or a failed write.
 #[pyfunction]
 fn write(
@@ -218,6 +219,39 @@ fn write(
     check_range(&cells, n, "quad")?;
     let mesh = dualex::QuadMesh { positions, cells };
     py.allow_threads(|| dualex::write_quad_mesh(&path, &mesh))
+        .map_err(value_error)
+}
+
+/// Writes a map (the arrays `read` returns): triangles (m, 3) with coords
+/// (m, 3, 2) to `.obj` / `.ply`, tets (m, 4) with (m, 4, 3) to `.hexex` /
+/// `.ovm` (HexHex's `HexHex::Parametrization`). The map is checked as
+/// `quad`/`hex` check it; raises ValueError on bad arrays or a failed write.
+#[pyfunction]
+#[allow(non_snake_case)]
+fn write_map(
+    py: Python<'_>,
+    path: PathBuf,
+    V: &Bound<'_, PyAny>,
+    simplices: &Bound<'_, PyAny>,
+    coords: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    let p = rows::<3>("V", V)?;
+    if is_tet_file(&path) {
+        let (t, c) = (
+            indices::<4>("simplices", "tet", simplices)?,
+            corners::<4, 3>("coords", coords)?,
+        );
+        return py
+            .allow_threads(|| {
+                dualex::write_tet_map(&path, &dualex::tet_map_from_slices(&p, &t, &c)?)
+            })
+            .map_err(value_error);
+    }
+    let (t, c) = (
+        indices::<3>("simplices", "triangle", simplices)?,
+        corners::<3, 2>("coords", coords)?,
+    );
+    py.allow_threads(|| dualex::write_tri_map(&path, &dualex::tri_map_from_slices(&p, &t, &c)?))
         .map_err(value_error)
 }
 
@@ -314,6 +348,7 @@ fn _dualex(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(hex, m)?)?;
     m.add_function(wrap_pyfunction!(read, m)?)?;
     m.add_function(wrap_pyfunction!(write, m)?)?;
+    m.add_function(wrap_pyfunction!(write_map, m)?)?;
     m.add_function(wrap_pyfunction!(inspect, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -48,7 +48,7 @@ pub struct Global {
 pub enum Command {
     /// Quad mesh of a 2D map (triangles with a per-corner map).
     Quad(QuadArgs),
-    /// Hex mesh of a 3D map (tets with a per-corner map, `.hexex`).
+    /// Hex mesh of a 3D map (tets with a per-corner map, `.hexex` or `.ovm`).
     Hex(HexArgs),
     /// A 3D map from a 2D one: prisms over every triangle, tetrahedralized.
     Extrude(ExtrudeArgs),
@@ -137,13 +137,14 @@ pub struct QuadArgs {
 /// `dualex hex`.
 #[derive(Debug, Args)]
 #[command(
-    after_help = "INPUT: .hexex (HexEx's format). OUTPUT: .mesh (MEDIT) or .vtk. \
+    after_help = "INPUT: .hexex (HexEx's format) or .ovm (OpenVolumeMesh ASCII with HexHex's \
+                        `HexHex::Parametrization`). OUTPUT: .mesh (MEDIT), .vtk or .ovm. \
                         Free boundaries are supported (hexes whose centres lie inside the volume)."
 )]
 pub struct HexArgs {
-    /// The 3D map (.hexex).
+    /// The 3D map (.hexex or .ovm).
     pub input: PathBuf,
-    /// The hex mesh (.mesh or .vtk).
+    /// The hex mesh (.mesh, .vtk or .ovm).
     #[arg(short, long, value_name = "OUTPUT")]
     pub output: PathBuf,
     #[command(flatten)]
@@ -162,7 +163,7 @@ pub struct HexArgs {
 pub struct ExtrudeArgs {
     /// The 2D map (.obj / .ply).
     pub input: PathBuf,
-    /// The 3D map (.hexex).
+    /// The 3D map (.hexex, or .ovm with `HexHex::Parametrization`).
     #[arg(short, long, value_name = "OUT.hexex")]
     pub output: PathBuf,
     /// Layers: `w` runs from 0 to L (at least 1).
@@ -204,7 +205,7 @@ pub struct ViewArgs {
 /// `dualex inspect`.
 #[derive(Debug, Args)]
 pub struct InspectArgs {
-    /// The map (.obj / .ply 2D, .hexex 3D).
+    /// The map (.obj / .ply 2D, .hexex / .ovm 3D).
     pub input: PathBuf,
     /// The report as one JSON object on stdout instead of text.
     #[arg(long)]
@@ -222,7 +223,7 @@ pub struct InspectArgs {
 /// `dualex generate`.
 #[derive(Debug, Args)]
 #[command(
-    after_help = "2D maps are written as .obj/.ply, 3D maps as .hexex. With --from-mesh \
+    after_help = "2D maps are written as .obj/.ply, 3D maps as .hexex or .ovm. With --from-mesh \
                         (or NAME a built-in mesh), each element becomes its own chart [0,K]^D; \
                         the expected extraction is written beside the map as MAP.expected.json \
                         and MAP.expected.obj/.mesh."

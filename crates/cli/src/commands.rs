@@ -27,7 +27,7 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
             dualex_io::VtkMesh::Quads(m) => dualex_render::view_html(&m, &title),
             dualex_io::VtkMesh::Hexes(m) => dualex_render::view_html_hex(&m, &title),
         },
-        _ => {
+        "obj" | "ply" => {
             let poly = dualex_io::read_polygon_mesh(input).map_err(|e| e.to_string())?;
             let mut mesh = dualex_map::QuadMesh {
                 positions: poly.positions,
@@ -43,6 +43,11 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
                 mesh.cells.push([a, b, c, d]);
             }
             dualex_render::view_html(&mesh, &title)
+        }
+        _ => {
+            return Err(format!(
+                "{name}: view reads quad meshes (.obj, .ply, .vtk) and hex meshes (.mesh, .vtk), not `.{ext}`"
+            ))
         }
     }
     .map_err(|e| format!("{name}: {e}"))?;

@@ -7,10 +7,11 @@
 //! | step | 2D (triangles → quads) | 3D (tets → hexes) |
 //! |---|---|---|
 //! | a map from slices | [`tri_map_from_slices`] | [`tet_map_from_slices`] |
-//! | a map from a file | [`read_tri_map`] (`.obj`, `.ply`) | [`read_tet_map`] (`.hexex`) |
+//! | a map from a file | [`read_tri_map`] (`.obj`, `.ply`) | [`read_tet_map`] (`.hexex`, `.ovm`) |
 //! | extraction (welds cut meshes first) | [`quad()`] → [`QuadOutput`] | [`hex()`] → [`HexOutput`] |
 //! | typed counts | [`QuadStats`] | [`HexStats`] |
-//! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`) |
+//! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`, `.ovm`) |
+//! | a map to a file | [`write_tri_map`] (`.obj`, `.ply`) | [`write_tet_map`] (`.hexex`, `.ovm`) |
 //!
 //! Errors are one [`Error`] enum; input errors name the file and the
 //! element (`triangle 17: …`). Nothing panics on bad input.
@@ -109,7 +110,9 @@ pub fn read_tri_map(path: impl AsRef<Path>) -> Result<TriMap, Error> {
     Ok(dualex_io::read_tri_map(path.as_ref())?)
 }
 
-/// Reads a tet map from HexEx's `.hexex`.
+/// Reads a tet map from HexEx's `.hexex` or OpenVolumeMesh ASCII `.ovm`
+/// (HexHex's halfface property `HexHex::Parametrization`), chosen by
+/// extension.
 pub fn read_tet_map(path: impl AsRef<Path>) -> Result<TetMap, Error> {
     Ok(dualex_io::read_tet_map(path.as_ref())?)
 }
@@ -120,10 +123,43 @@ pub fn write_quad_mesh(path: impl AsRef<Path>, mesh: &QuadMesh) -> Result<(), Er
     Ok(dualex_io::write_quad_mesh(path.as_ref(), mesh)?)
 }
 
-/// Writes a hex mesh as `.mesh` (MEDIT) or `.vtk`, chosen by extension,
-/// through a temporary file renamed over the target.
+/// Writes a hex mesh as `.mesh` (MEDIT), `.vtk` or OpenVolumeMesh ASCII
+/// `.ovm` (shared faces), chosen by extension, through a temporary file
+/// renamed over the target.
 pub fn write_hex_mesh(path: impl AsRef<Path>, mesh: &HexMesh) -> Result<(), Error> {
     Ok(dualex_io::write_hex_mesh(path.as_ref(), mesh)?)
+}
+
+/// Writes a triangle map as `.obj` (`f v/vt`) or `.ply` (binary, per-face
+/// `texcoord`), chosen by extension; the map is validated first.
+pub fn write_tri_map(path: impl AsRef<Path>, map: &TriMap) -> Result<(), Error> {
+    Ok(dualex_io::write_tri_map(path.as_ref(), map)?)
+}
+
+/// Writes a tet map as `.hexex` or OpenVolumeMesh ASCII `.ovm` (with
+/// HexHex's `HexHex::Parametrization`: each halfface holds the map value
+/// of its cell's opposite vertex), chosen by extension.
+///
+/// ```
+/// // one tet whose map is its position: written as .ovm, read back equal
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let map = dualex::tet_map_from_slices(&positions, &[[0, 1, 2, 3]], &[positions])?;
+/// let path = std::env::temp_dir().join(format!("dualex-doc-{}.ovm", std::process::id()));
+/// dualex::write_tet_map(&path, &map)?;
+/// let back = dualex::read_tet_map(&path)?;
+/// std::fs::remove_file(&path).ok();
+/// assert_eq!((back.positions.len(), back.simplices.len()), (4, 1));
+/// let corner_of = |m: &dualex::TetMap, v: u32| {
+///     let c = m.simplices[0].iter().position(|&w| w == v).unwrap();
+///     m.coords[0][c]
+/// };
+/// for v in 0..4 {
+///     assert_eq!(corner_of(&back, v), corner_of(&map, v));
+/// }
+/// # Ok::<(), dualex::Error>(())
+/// ```
+pub fn write_tet_map(path: impl AsRef<Path>, map: &TetMap) -> Result<(), Error> {
+    Ok(dualex_io::write_tet_map(path.as_ref(), map)?)
 }
 
 #[cfg(test)]

@@ -7,11 +7,13 @@
 
 ``quad`` / ``hex`` take numpy arrays (positions (n, 3), simplices (m, 3) or
 (m, 4), per-corner map coordinates (m, 3, 2) or (m, 4, 3)) and keyword
-options; ``read`` / ``write`` use the Rust readers and writers; ``inspect``
+options; ``read`` / ``write`` / ``write_map`` use the Rust readers and
+writers (maps: .obj, .ply, .hexex, .ovm; meshes: .obj, .ply, .vtk, .mesh,
+.ovm); ``inspect``
 returns the map report. Every error is a ``ValueError`` with a one-line
 message; the GIL is released while the extraction runs.
 """
 
-from ._dualex import __version__, hex, inspect, quad, read, write
+from ._dualex import __version__, hex, inspect, quad, read, write, write_map
 
-__all__ = ["quad", "hex", "read", "write", "inspect", "__version__"]
+__all__ = ["quad", "hex", "read", "write", "write_map", "inspect", "__version__"]

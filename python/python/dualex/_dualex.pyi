@@ -98,12 +98,19 @@ def read(
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]:
     """Reads a map: .obj/.ply (triangles, (m, 3, 2) coords; a PLY holds them
     per face, `texcoord`, or per vertex, `u v` / `s t` /
-    `texture_u texture_v`) or .hexex (tets, (m, 4, 3) coords). Returns
-    (V, simplices, coords)."""
+    `texture_u texture_v`) or .hexex / .ovm (tets, (m, 4, 3) coords; .ovm
+    with HexHex's `HexHex::Parametrization`). Returns (V, simplices,
+    coords)."""
 
 def write(path: _Path, positions: _Floats, cells: _Ints) -> None:
     """Writes a quad mesh (cells (m, 4): .obj, .ply, .vtk) or a hex mesh
-    (cells (m, 8): .mesh, .vtk)."""
+    (cells (m, 8): .mesh, .vtk, .ovm)."""
+
+def write_map(path: _Path, V: _Floats, simplices: _Ints, coords: _Floats) -> None:
+    """Writes a map (the arrays `read` returns): triangles (m, 3) with
+    coords (m, 3, 2) to .obj / .ply, tets (m, 4) with (m, 4, 3) to .hexex /
+    .ovm (HexHex's `HexHex::Parametrization`). Raises ValueError on bad
+    arrays or a failed write."""
 
 def inspect(
     map: Union[_Path, _Floats],
