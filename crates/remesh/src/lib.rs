@@ -20,6 +20,7 @@
 
 pub mod field;
 pub mod surface;
+pub mod weld;
 
 pub use field::CrossField;
 pub use surface::{Surface, SurfaceError, NO_FACE};
