@@ -31,11 +31,10 @@ fn check_outputs(
 
 /// `dualex quad`.
 pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
-    let x = &a.extract;
     check_outputs(
         &a.output,
         dualex_io::QUAD_MESH_EXTENSIONS,
-        x,
+        &a.extract,
         a.png.as_deref(),
     )?;
     let mut laps = timing::Laps::start();
@@ -53,6 +52,24 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
             (crate::weld_if(m, &a.weld, g, &name), name)
         }
     };
+    let done = if a.input.is_some() { "done" } else { "embedded map" };
+    quad_map(&map, &name, done, a, g, laps, None)
+}
+
+/// The quad extraction of a map read or made (`quad`, `remesh`): extract,
+/// check, write; `done` starts the summary line, `extra` is one more
+/// section of the stats (`remesh`'s).
+pub fn quad_map(
+    map: &dualex_map::TriMap,
+    name: &str,
+    done: &str,
+    a: &QuadArgs,
+    g: &Global,
+    mut laps: timing::Laps,
+    extra: Option<(&str, serde_json::Value)>,
+) -> Result<(), String> {
+    let x = &a.extract;
+    let name = name.to_string();
     let opts = dualex_quad::QuadOptions {
         fairing: !a.no_fairing,
         transitions: dualex_map::TransitionOptions {
@@ -66,7 +83,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting quads");
     let (mesh, stats) =
-        dualex_quad::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+        dualex_quad::extract(map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
     laps.lap("extract");
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
     laps.lap("check");
@@ -84,7 +101,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
         cell: "quad",
         cells: mesh.cells.len(),
         nodes: stats.nodes,
-        measure: verify::measure(&map),
+        measure: verify::measure(map),
         topology,
     };
     verify::last_check(&name, &summary, x.strict)?;
@@ -101,6 +118,9 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
     drop(progress);
     let mut json = stats.to_json();
     verify::add_to_stats(&mut json, &topology);
+    if let (Some((key, value)), Some(obj)) = (extra, json.as_object_mut()) {
+        obj.insert(key.to_string(), value);
+    }
     finish_stats(x, g, &json, &laps, &stats.time_ms)?;
     if let (Some(path), Some(bytes)) = (&a.png, &png) {
         outputs::write_png(path, bytes)?;
@@ -135,11 +155,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
     if !g.quiet {
         eprintln!(
             "dualex: {}: {}, {}, {}, {} -> {}{}",
-            if a.input.is_some() {
-                "done"
-            } else {
-                "embedded map"
-            },
+            done,
             count(stats.quads, "quad", "quads"),
             count(stats.vertices, "vertex", "vertices"),
             count(stats.boundary_loops, "boundary loop", "boundary loops"),
