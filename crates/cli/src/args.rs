@@ -111,7 +111,14 @@ pub struct ExtractArgs {
 #[command(
     after_help = "INPUT: .obj (`f v/vt`, per-corner texture coordinates) or .ply \
                         (face `texcoord` list of 6, or vertex `u v` / `s t` / \
-                        `texture_u texture_v`). OUTPUT: .obj, .ply or .vtk."
+                        `texture_u texture_v`). OUTPUT: .obj, .ply or .vtk. \
+                        --uv: each quad's corners get map coordinates in the chart \
+                        of the input triangle that holds its node (the node ± ½ on \
+                        each axis: integers with --grid-offset half, half-integers \
+                        with zero), per corner since charts disagree on seams; \
+                        .obj `vt` + `f v/vt`, .ply face `texcoord` (8 values); \
+                        quads without their own cell (hole fills, merged doublets) \
+                        get none."
 )]
 pub struct QuadArgs {
     /// The 2D map (.obj / .ply); without it, the embedded messy map (a
@@ -128,6 +135,10 @@ pub struct QuadArgs {
     /// with strongly negative singularities by saddle lifts).
     #[arg(long)]
     pub no_fairing: bool,
+    /// Write the map coordinates of each quad's corners (.obj `vt`, .ply
+    /// face `texcoord`; not .vtk): the node's chart, node ± ½ (see below).
+    #[arg(long)]
+    pub uv: bool,
     #[command(flatten)]
     pub extract: ExtractArgs,
     #[command(flatten)]

@@ -31,6 +31,9 @@ fn check_outputs(
 
 /// `dualex quad`.
 pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
+    if a.uv {
+        refuse_uv(&a.output);
+    }
     check_outputs(
         &a.output,
         dualex_io::QUAD_MESH_EXTENSIONS,
@@ -52,7 +55,11 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
             (crate::weld_if(m, &a.weld, g, &name), name)
         }
     };
-    let done = if a.input.is_some() { "done" } else { "embedded map" };
+    let done = if a.input.is_some() {
+        "done"
+    } else {
+        "embedded map"
+    };
     quad_map(&map, &name, done, a, g, laps, None)
 }
 
@@ -82,8 +89,12 @@ pub fn quad_map(
     };
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting quads");
-    let (mesh, stats) =
-        dualex_quad::extract(map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    let dualex_quad::Extracted {
+        mesh,
+        stats,
+        corner_uv,
+        ..
+    } = dualex_quad::extract_full(map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
     laps.lap("extract");
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
     laps.lap("check");
@@ -113,7 +124,12 @@ pub fn quad_map(
         _ => None,
     };
     progress.stage("writing");
-    dualex_io::write_quad_mesh(&a.output, &mesh).map_err(|e| e.to_string())?;
+    if a.uv {
+        dualex_io::write_quad_mesh_uv(&a.output, &mesh, &corner_uv)
+    } else {
+        dualex_io::write_quad_mesh(&a.output, &mesh)
+    }
+    .map_err(|e| e.to_string())?;
     laps.lap("write");
     drop(progress);
     let mut json = stats.to_json();
@@ -165,6 +181,24 @@ pub fn quad_map(
         );
     }
     Ok(())
+}
+
+/// `--uv` with an output format that cannot carry per-corner map
+/// coordinates (`.vtk`) is a usage error (exit 2); an unknown extension is
+/// left to the output check.
+fn refuse_uv(output: &Path) {
+    let ext = output
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    if dualex_io::QUAD_MESH_EXTENSIONS.contains(&ext.as_str())
+        && !dualex_io::write_uv::UV_EXTENSIONS.contains(&ext.as_str())
+    {
+        crate::args::usage_error(&format!(
+            "--uv does not apply to .{ext} output (no per-corner attribute): use .obj or .ply"
+        ));
+    }
 }
 
 /// `dualex hex`.

@@ -94,6 +94,15 @@ pub struct QuadOutput {
     /// four quads of a cell name its triangle; a quad merged from two
     /// (doublet removal) names the first one's.
     pub sources: Vec<Option<u32>>,
+    /// For each quad, the map coordinates of its 4 corners (in its cell
+    /// order) in the chart of its source triangle: its node ± ½ on each
+    /// axis, exact grid points of the input map (integers with the grid
+    /// offset `half`, half-integers with `zero`). A seam vertex may have
+    /// different coordinates in the quads around it. `None` for a quad
+    /// without its own cell: a face closing a hole, a quad merged from a
+    /// doublet or made along a local repair path; after a subdivision each
+    /// quad is a half-size square of its cell.
+    pub corner_uv: Vec<Option<[[f64; 2]; 4]>>,
 }
 
 /// The result of [`hex`](crate::hex()).
@@ -106,6 +115,10 @@ pub struct HexOutput {
     /// For each hex, the input tet that holds its node (an index into the
     /// map's tets); a hex merged from a pair names the first one's.
     pub sources: Vec<u32>,
+    /// For each hex, the map coordinates of its 8 corners (VTK order) in
+    /// the chart of its source tet, as [`QuadOutput::corner_uv`]; `None`
+    /// for a hex merged from a doublet chain.
+    pub corner_uvw: Vec<Option<[[f64; 3]; 8]>>,
 }
 
 /// Welds `map` when asked; the number of vertices merged.
@@ -147,7 +160,12 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
         grid_offset: opts.grid_offset,
         singularity_stats: true,
     };
-    let (mesh, stats, sources) = dualex_quad::extract_traced(&map, &inner)?;
+    let dualex_quad::Extracted {
+        mesh,
+        stats,
+        sources,
+        corner_uv,
+    } = dualex_quad::extract_full(&map, &inner)?;
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
     if !rep.is_valid() {
         return Err(Error::InvalidOutput(rep.errors().join("; ")));
@@ -165,6 +183,7 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
         stats: QuadStats::new(&stats, welded, t),
         mesh,
         sources,
+        corner_uv,
     })
 }
 
@@ -199,7 +218,12 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
         seed: opts.seed,
         grid_offset: opts.grid_offset,
     };
-    let (mesh, stats, sources) = dualex_hex::extract_traced(&map, &inner)?;
+    let dualex_hex::Extracted {
+        mesh,
+        stats,
+        sources,
+        corner_uvw,
+    } = dualex_hex::extract_full(&map, &inner)?;
     let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
     if !rep.is_valid() {
         return Err(Error::InvalidOutput(rep.errors().join("; ")));
@@ -213,5 +237,6 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
         stats: HexStats::new(&stats, welded, t),
         mesh,
         sources,
+        corner_uvw,
     })
 }

@@ -11,6 +11,7 @@
 //! | extraction (welds cut meshes first) | [`quad()`] → [`QuadOutput`] | [`hex()`] → [`HexOutput`] |
 //! | typed counts | [`QuadStats`] | [`HexStats`] |
 //! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`, `.ovm`) |
+//! | with corner map coordinates | [`write_quad_mesh_uv`] (`.obj`, `.ply`) | — ([`HexOutput::corner_uvw`] only) |
 //! | a map to a file | [`write_tri_map`] (`.obj`, `.ply`) | [`write_tet_map`] (`.hexex`, `.ovm`) |
 //!
 //! Errors are one [`Error`] enum; input errors name the file and the
@@ -121,6 +122,21 @@ pub fn read_tet_map(path: impl AsRef<Path>) -> Result<TetMap, Error> {
 /// extension, through a temporary file renamed over the target.
 pub fn write_quad_mesh(path: impl AsRef<Path>, mesh: &QuadMesh) -> Result<(), Error> {
     Ok(dualex_io::write_quad_mesh(path.as_ref(), mesh)?)
+}
+
+/// Writes a quad mesh with the map coordinates of each quad's corners
+/// ([`QuadOutput::corner_uv`]) as `.obj` (`vt`, `f v/vt`) or `.ply` (face
+/// `texcoord`), chosen by extension (as `dualex quad --uv`).
+pub fn write_quad_mesh_uv(
+    path: impl AsRef<Path>,
+    mesh: &QuadMesh,
+    corner_uv: &[Option<[[f64; 2]; 4]>],
+) -> Result<(), Error> {
+    Ok(dualex_io::write_quad_mesh_uv(
+        path.as_ref(),
+        mesh,
+        corner_uv,
+    )?)
 }
 
 /// Writes a hex mesh as `.mesh` (MEDIT), `.vtk` or OpenVolumeMesh ASCII

@@ -103,10 +103,19 @@ fn meshes_are_written_and_read_back() {
     let written = write_quad_mesh(&p, &out.mesh);
     let back = dualex_io::read_polygon_mesh(&p);
     let bad = write_quad_mesh(dir.join("q.stl"), &out.mesh);
+    let uv = dir.join("uv.obj");
+    let written_uv = write_quad_mesh_uv(&uv, &out.mesh, &out.corner_uv);
+    let back_uv = dualex_io::read_polygon_mesh(&uv);
+    let text_uv = std::fs::read_to_string(&uv).unwrap_or_default();
+    let bad_uv = write_quad_mesh_uv(dir.join("q.vtk"), &out.mesh, &out.corner_uv);
     let _ = std::fs::remove_dir_all(&dir);
     written.unwrap();
     assert_eq!(back.unwrap().faces.len(), 4);
     assert!(matches!(bad, Err(Error::Output(_))));
+    written_uv.unwrap();
+    assert_eq!(back_uv.unwrap().faces.len(), 4);
+    assert_eq!(text_uv.lines().filter(|l| l.starts_with("vt ")).count(), 16);
+    assert!(matches!(bad_uv, Err(Error::Output(_))));
 }
 
 /// Whether `p` lies in triangle `t` of a flat map (z = 0), with a margin
@@ -134,6 +143,20 @@ fn each_quad_names_the_triangle_holding_its_node() {
                 in_triangle(&map, t, centre),
                 "quad {q:?} centre {centre:?} not in triangle {t}"
             );
+        }
+        // the map is 3 × the position (up to sanitization's moves of map
+        // vertices on the grid's diagonals), the corners exact integers
+        assert_eq!(out.corner_uv.len(), out.mesh.cells.len());
+        for (q, uv) in out.mesh.cells.iter().zip(&out.corner_uv) {
+            let uv = uv.expect("corners");
+            for (&v, t) in q.iter().zip(uv) {
+                let p = out.mesh.positions[v as usize];
+                assert!(t.iter().all(|x| x.fract() == 0.0), "{t:?}");
+                assert!(
+                    (0..2).all(|k| (t[k] - 3.0 * p[k]).abs() < 1e-4),
+                    "{t:?} at {p:?}"
+                );
+            }
         }
     }
 }
@@ -201,5 +224,19 @@ fn each_hex_names_the_tet_holding_its_node() {
             det(q[0], q[1], q[2], q[3]) * whole >= -1e-4 * whole.abs()
         });
         assert!(inside, "hex {h:?} centre {p:?} not in tet {s}");
+    }
+    // the map is 2 × the position (up to sanitization's moves): each
+    // corner's uvw, an exact integer
+    assert_eq!(out.corner_uvw.len(), 64);
+    for (h, uvw) in out.mesh.cells.iter().zip(&out.corner_uvw) {
+        let uvw = uvw.expect("corners");
+        for (&v, t) in h.iter().zip(uvw) {
+            let p = out.mesh.positions[v as usize];
+            assert!(t.iter().all(|x| x.fract() == 0.0), "{t:?}");
+            assert!(
+                (0..3).all(|k| (t[k] - 2.0 * p[k]).abs() < 1e-4),
+                "{t:?} at {p:?}"
+            );
+        }
     }
 }

@@ -52,8 +52,9 @@ pub struct Glued<const D: usize> {
     cells: Vec<u32>,
 }
 
-/// Output position k ↦ corner code (see the module docs).
-fn cell_code<const D: usize>(k: usize, reverted: bool) -> usize {
+/// Output position k ↦ corner code (see the module docs): the corner of a
+/// node (reverted or not) that position `k` of its cell is.
+pub fn cell_code<const D: usize>(k: usize, reverted: bool) -> usize {
     let code = (k & !3) | ((k & 3) ^ ((k & 3) >> 1));
     match (reverted, D) {
         (false, _) => code,

@@ -39,7 +39,7 @@ mod tests;
 
 pub use check::GraphError;
 pub use fair::{FairingStats, LiftUndo};
-pub use glue::{Glued, NO_VERTEX};
+pub use glue::{cell_code, Glued, NO_VERTEX};
 pub use graph::NodeGraph;
 pub use ids::{Node, Side};
 pub use ops::{Op2Outcome, OpError, PleatRemoval};

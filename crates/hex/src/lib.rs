@@ -14,16 +14,20 @@
 //!    diagonal tracing.
 //!
 //! 7. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
-//!    edges dissolved.
+//!    edges dissolved;
+//! 8. [`corner_uvw`]: each hex's corners in its node's chart (kept along
+//!    step 7).
 //!
 //! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`]
-//! ([`extract_traced`]: also the input tet holding each hex's node).
+//! ([`extract_traced`]: also the input tet holding each hex's node;
+//! [`extract_full`]: also the map coordinates of its corners).
 //! Walks that leave the mesh leave their side unmatched: free boundaries
 //! become boundary faces of the hex mesh.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod clusters;
+pub mod corner_uvw;
 pub mod doublets;
 pub mod geometry;
 pub mod local;
@@ -75,6 +79,26 @@ pub fn extract_traced(
     map: &TetMap,
     opts: &HexOptions,
 ) -> Result<(HexMesh, HexStats, Vec<u32>), InputError> {
+    extract_full(map, opts).map(|x| (x.mesh, x.stats, x.sources))
+}
+
+/// Everything [`extract_full`] returns.
+#[derive(Clone, Debug)]
+pub struct Extracted {
+    /// The hex mesh.
+    pub mesh: HexMesh,
+    /// Its counts.
+    pub stats: HexStats,
+    /// Per hex, the input tet holding its node (as [`extract_traced`]).
+    pub sources: Vec<u32>,
+    /// Per hex, its corners' map coordinates in that tet's chart
+    /// ([`corner_uvw`]), in VTK order.
+    pub corner_uvw: Vec<corner_uvw::HexCorners>,
+}
+
+/// [`extract_traced`], also returning the map coordinates of each hex's
+/// corners ([`corner_uvw`]).
+pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputError> {
     let mut st = HexStats::default();
     let mut laps = Laps::start();
     map.validate()?;
@@ -171,6 +195,7 @@ pub fn extract_traced(
         .cells()
         .map(|(node, _)| parent[nodes.tet[node.idx()] as usize])
         .collect();
+    let mut corners = corner_uvw::of_glued(&glued, &graph, &local, &nodes);
     st.finish_output(&graph, &glued, &mesh);
     // cracks: unmatched sides that are not on the input's boundary
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
@@ -188,6 +213,8 @@ pub fn extract_traced(
         st.folded_collapsed = folded;
         st.doublets = chains;
         if folded + chains.edges > 0 {
+            corners = corner_uvw::carry(&mesh, &corners, &collapsed, &kept_folded);
+            corners = corner_uvw::carry(&collapsed, &corners, &dissolved, &kept_chains);
             mesh = dissolved;
             source = kept_chains
                 .iter()
@@ -198,7 +225,12 @@ pub fn extract_traced(
     }
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
-    Ok((mesh, st, source))
+    Ok(Extracted {
+        mesh,
+        stats: st,
+        sources: source,
+        corner_uvw: corners,
+    })
 }
 
 /// Positions of the glued vertices by diagonal tracing (corner code bits:

@@ -7,7 +7,7 @@
 //! | triangle map ([`TriMap`]) | `.obj` (`f v/vt`), `.ply` (face `texcoord`, or vertex `u v` / `s t` / `texture_u texture_v`) | `.obj`, `.ply` (binary LE) |
 //! | tet map ([`TetMap`]) | `.hexex`, `.ovm` (HexHex's `HexHex::Parametrization`) | `.hexex`, `.ovm` |
 //! | polygon mesh ([`PolyMesh`]) | `.obj`, `.ply` | — |
-//! | quad mesh ([`QuadMesh`]) | (as a polygon mesh) | `.obj`, `.ply` (binary LE), `.vtk` |
+//! | quad mesh ([`QuadMesh`]) | (as a polygon mesh) | `.obj`, `.ply` (binary LE), `.vtk`; with per-corner map coordinates ([`write_uv`]) `.obj`, `.ply` |
 //! | hex mesh ([`HexMesh`]) | — | `.mesh` (MEDIT), `.vtk`, `.ovm` |
 //!
 //! Readers: `parse_*` take bytes (for fuzzers and embedded data), `read_*`
@@ -39,6 +39,7 @@ mod vtk;
 pub mod output;
 pub mod write_cells;
 pub mod write_map;
+pub mod write_uv;
 
 #[cfg(test)]
 mod data_tests;
@@ -173,6 +174,23 @@ pub fn write_quad_mesh(path: &Path, mesh: &QuadMesh) -> Result<(), OutputError> 
         "obj" => write_cells::quad_obj(w, mesh),
         "ply" => write_cells::quad_ply(w, mesh, PlyFormat::BinaryLittleEndian),
         _ => write_cells::quad_vtk(w, mesh),
+    })
+}
+
+/// Writes a quad mesh with per-corner map coordinates (`uv`, one entry per
+/// quad, see [`write_uv`]) as `.obj` (`vt`, `f v/vt`) or `.ply` (binary
+/// little endian, face `texcoord`).
+pub fn write_quad_mesh_uv(
+    path: &Path,
+    mesh: &QuadMesh,
+    uv: &[write_uv::CornerUv],
+) -> Result<(), OutputError> {
+    let ext = extension(path, write_uv::UV_EXTENSIONS)?;
+    write_cells::check_cells(mesh).map_err(|m| invalid(path, m))?;
+    write_uv::check_uv(mesh, uv).map_err(|m| invalid(path, m))?;
+    write_atomic(path, |w| match ext.as_str() {
+        "obj" => write_uv::quad_obj_uv(w, mesh, uv),
+        _ => write_uv::quad_ply_uv(w, mesh, uv, PlyFormat::BinaryLittleEndian),
     })
 }
 

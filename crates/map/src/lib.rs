@@ -22,6 +22,7 @@ pub mod bad_scan;
 pub mod cells;
 pub mod cluster;
 mod components;
+pub mod corners;
 pub mod error;
 pub mod grid;
 pub mod grid_offset;

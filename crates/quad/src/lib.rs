@@ -11,13 +11,17 @@
 //! 7. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
 //!    diagonal tracing;
 //! 8. [`repair`]: holes closed, faces quads cannot represent subdivided;
-//! 9. [`doublets`]: interior valence-2 vertices left by fairing dissolved.
+//! 9. [`doublets`]: interior valence-2 vertices left by fairing dissolved;
+//! 10. [`corner_uv`]: each quad's corners in its node's chart (kept along
+//!     steps 7–9).
 //!
 //! Input: a validated [`TriMap`]. Output: a [`QuadMesh`] and [`QuadStats`]
-//! ([`extract_traced`]: also the input triangle holding each quad's node).
+//! ([`extract_traced`]: also the input triangle holding each quad's node;
+//! [`extract_full`]: also the map coordinates of its corners).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod corner_uv;
 pub mod doublets;
 mod fairing;
 pub mod geometry;
@@ -84,6 +88,27 @@ pub fn extract_traced(
     map: &TriMap,
     opts: &QuadOptions,
 ) -> Result<(QuadMesh, QuadStats, Vec<u32>), InputError> {
+    extract_full(map, opts).map(|x| (x.mesh, x.stats, x.sources))
+}
+
+/// Everything [`extract_full`] returns.
+#[derive(Clone, Debug)]
+pub struct Extracted {
+    /// The quad mesh.
+    pub mesh: QuadMesh,
+    /// Its counts.
+    pub stats: QuadStats,
+    /// Per quad, the input triangle holding its node (as
+    /// [`extract_traced`]).
+    pub sources: Vec<u32>,
+    /// Per quad, its corners' map coordinates in that triangle's chart
+    /// ([`corner_uv`]), in the quad's corner order.
+    pub corner_uv: Vec<corner_uv::QuadCorners>,
+}
+
+/// [`extract_traced`], also returning the map coordinates of each quad's
+/// corners ([`corner_uv`]).
+pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, InputError> {
     let mut st = QuadStats::default();
     let mut laps = Laps::start();
     map.validate()?;
@@ -179,6 +204,7 @@ pub fn extract_traced(
         .cells()
         .map(|(node, _)| parent[nodes.tri[node.idx()] as usize])
         .collect();
+    let mut corners = corner_uv::of_glued(&glued, &graph, &local, &nodes);
     st.finish_output(&graph, &glued, &mesh);
     // 8
     let holes = hole_edges(&graph, &glued, &ends, topo.boundary_facets == 0);
@@ -196,6 +222,11 @@ pub fn extract_traced(
         let collapsed = collapsed_unmatched_sides(&graph, &glued);
         st.unmatched_sides -= (collapsed + holes.len()).min(st.unmatched_sides);
         st.boundary_loops -= (collapsed + fill.len()).min(st.boundary_loops);
+        corners = if rep.subdivided {
+            corner_uv::subdivided(&mesh, &corners, &rep.mesh, &rep.origin)
+        } else {
+            carry(&mesh, &corners, &rep.mesh, &rep.origin)
+        };
         mesh = rep.mesh;
         source = rep
             .origin
@@ -210,6 +241,7 @@ pub fn extract_traced(
         let (dissolved, rep, kept) = doublets::dissolve_traced(&mesh);
         st.doublets = rep;
         if rep.dissolved > 0 {
+            corners = carry(&mesh, &corners, &dissolved, &kept);
             mesh = dissolved;
             source = kept.iter().map(|&k| source[k as usize]).collect();
             st.finish_mesh(&mesh);
@@ -217,7 +249,30 @@ pub fn extract_traced(
     }
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
-    Ok((mesh, st, source))
+    Ok(Extracted {
+        mesh,
+        stats: st,
+        sources: source,
+        corner_uv: corners,
+    })
+}
+
+/// [`dualex_map::corners::carry`] from `old` to `new` (cell `c` of `new`
+/// made from cell `origin[c]` of `old`).
+fn carry(
+    old: &QuadMesh,
+    corners: &[corner_uv::QuadCorners],
+    new: &QuadMesh,
+    origin: &[u32],
+) -> Vec<corner_uv::QuadCorners> {
+    dualex_map::corners::carry(
+        &old.cells,
+        &old.positions,
+        corners,
+        &new.cells,
+        &new.positions,
+        origin,
+    )
 }
 
 /// The two corners (vertex ids) of side `d` of `node`, in the order of the

@@ -1,0 +1,56 @@
+//! Step 8: the map coordinates of each hex's corners, in the input chart
+//! of the tet that holds the hex's node — see [`dualex_map::corners`] for
+//! the definition (node ± ½, exact grid points of the input map: integers
+//! with the grid offset `Half`, half-integers with `Zero`).
+//!
+//! Input: the glued cells with their nodes, then the cells step 7 remakes.
+//! Output: per hex, its 8 corners' coordinates in its cell (VTK) order, or
+//! `None` (a hex merged from a doublet chain whose corners are not all
+//! corners of its first cell).
+
+use crate::local::LocalMap;
+use crate::nodes::Nodes;
+use dualex_graph::{cell_code, Glued, NodeGraph};
+use dualex_map::corners::{node_corner, Corners};
+use dualex_map::HexMesh;
+
+/// The map coordinates of a hex's corners (module docs).
+pub type HexCorners = Corners<3, 8>;
+
+/// The corners of the glued cells, in [`Glued::cells`] order.
+pub fn of_glued(
+    glued: &Glued<3>,
+    graph: &NodeGraph<3>,
+    local: &LocalMap,
+    nodes: &Nodes,
+) -> Vec<HexCorners> {
+    glued
+        .nodes
+        .iter()
+        .map(|&n| {
+            let rev = graph.is_reverted(n);
+            let (s, ijk) = (nodes.tet[n.idx()] as usize, &nodes.ijk[n.idx()]);
+            Some(std::array::from_fn(|k| {
+                node_corner(local, s, ijk, cell_code::<3>(k, rev))
+            }))
+        })
+        .collect()
+}
+
+/// [`dualex_map::corners::carry`] from `old` to `new` (cell `c` of `new`
+/// made from cell `origin[c]` of `old`).
+pub fn carry(
+    old: &HexMesh,
+    corners: &[HexCorners],
+    new: &HexMesh,
+    origin: &[u32],
+) -> Vec<HexCorners> {
+    dualex_map::corners::carry(
+        &old.cells,
+        &old.positions,
+        corners,
+        &new.cells,
+        &new.positions,
+        origin,
+    )
+}
