@@ -169,3 +169,13 @@ pub fn sources_array<'py>(
     let flat: Vec<i64> = sources.map(|s| s.map_or(-1, i64::from)).collect();
     Ok(PyArray1::from_vec(py, flat).into_any())
 }
+
+/// The map coordinates of each cell's corners, (m, N, D) float64, NaN for
+/// a cell made by a repair (no chart of its own).
+pub fn optional_corners_array<'py, const N: usize, const D: usize>(
+    py: Python<'py>,
+    c: &[Option<[[f64; D]; N]>],
+) -> PyResult<Bound<'py, PyAny>> {
+    let full: Vec<[[f64; D]; N]> = c.iter().map(|x| x.unwrap_or([[f64::NAN; D]; N])).collect();
+    corners_array(py, &full)
+}

@@ -20,7 +20,10 @@
 mod arrays;
 mod dicts;
 
-use arrays::{cells_array, corners, corners_array, indices, positions_array, rows, sources_array};
+use arrays::{
+    cells_array, corners, corners_array, indices, optional_corners_array, positions_array, rows,
+    sources_array,
+};
 use dualex::{GridOffset, HexOptions, QuadOptions};
 use dualex_map::report::{inspect as inspect_map, InspectOptions};
 use pyo3::exceptions::PyValueError;
@@ -57,10 +60,13 @@ fn is_tet_file(path: &std::path::Path) -> bool {
 /// triangle's chart (cut meshes welded first unless weld=False).
 /// Returns (positions (k, 3) float64, quads (q, 4) int64, stats dict);
 /// with return_sources=True also sources (q,) int64: the triangle (row of
-/// F) holding each quad's node, -1 for a quad that closes a hole.
+/// F) holding each quad's node, -1 for a quad that closes a hole; with
+/// return_uv=True also uv (q, 4, 2) float64: the map coordinates of each
+/// quad's corners in its node's chart (node ± ½, exact grid points of the
+/// input map), NaN for a quad made by a repair.
 /// Raises ValueError on bad arrays or a map the extraction refuses.
 #[pyfunction]
-#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false))]
+#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false, return_uv=false))]
 #[allow(non_snake_case, clippy::too_many_arguments)]
 fn quad<'py>(
     py: Python<'py>,
@@ -74,6 +80,7 @@ fn quad<'py>(
     seed: u64,
     strict: bool,
     return_sources: bool,
+    return_uv: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let opts = QuadOptions {
         weld,
@@ -103,6 +110,9 @@ fn quad<'py>(
     if return_sources {
         items.push(sources_array(py, out.sources.iter().copied())?);
     }
+    if return_uv {
+        items.push(optional_corners_array(py, &out.corner_uv)?);
+    }
     PyTuple::new(py, items)
 }
 
@@ -112,10 +122,12 @@ fn quad<'py>(
 /// (positively oriented); UVW: (m, 4, 3) map coordinates of each tet
 /// corner. Returns (positions (k, 3) float64, hexes (h, 8) int64 in VTK
 /// order, stats dict); with return_sources=True also sources (h,) int64:
-/// the tet (row of T) holding each hex's node. Raises ValueError on bad
+/// the tet (row of T) holding each hex's node; with return_uv=True also
+/// uvw (h, 8, 3): each hex's corners in its node's chart, NaN for a hex
+/// merged by a repair. Raises ValueError on bad
 /// arrays or a refused map.
 #[pyfunction]
-#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false))]
+#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false, return_uv=false))]
 #[allow(non_snake_case, clippy::too_many_arguments)]
 fn hex<'py>(
     py: Python<'py>,
@@ -128,6 +140,7 @@ fn hex<'py>(
     seed: u64,
     strict: bool,
     return_sources: bool,
+    return_uv: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let opts = HexOptions {
         weld,
@@ -155,6 +168,9 @@ fn hex<'py>(
     ];
     if return_sources {
         items.push(sources_array(py, out.sources.iter().map(|&s| Some(s)))?);
+    }
+    if return_uv {
+        items.push(optional_corners_array(py, &out.corner_uvw)?);
     }
     PyTuple::new(py, items)
 }

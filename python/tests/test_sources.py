@@ -46,3 +46,21 @@ def test_without_the_keyword_three_values(flag):
     kw = {} if flag is None else {"return_sources": flag}
     assert len(dualex.quad(*square(2), **kw)) == 3
     assert len(dualex.hex(*cube(1), **kw)) == 3
+
+
+def test_corner_uv_are_the_maps_grid_points():
+    """return_uv=True: each quad's corners in its node's chart, exact grid
+    points of the input map; on the identity-like square map they are the
+    map's value at the quad's vertices."""
+    V, F, UV = square(3)
+    Q, quads, _, uv = dualex.quad(V, F, UV, return_uv=True)
+    assert uv.shape == (9, 4, 2) and uv.dtype == np.float64
+    assert np.array_equal(uv, np.round(uv))
+    # (vertex positions come from the sanitized map: within 1e-5 of exact)
+    assert np.allclose(uv, 3 * Q[quads][:, :, :2], atol=1e-4)
+    # with sources too: sources first, then uv
+    out = dualex.quad(V, F, UV, return_sources=True, return_uv=True)
+    assert len(out) == 5 and out[3].shape == (9,) and np.array_equal(out[4], uv)
+    H, hexes, _, uvw = dualex.hex(*cube(2), return_uv=True)
+    assert uvw.shape == (8, 8, 3)
+    assert np.allclose(uvw, 2 * H[hexes], atol=1e-4)

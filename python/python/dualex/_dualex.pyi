@@ -34,6 +34,7 @@ def quad(
     seed: int = 1,
     strict: bool = False,
     return_sources: Literal[False] = False,
+    return_uv: Literal[False] = False,
 ) -> _Mesh: ...
 @overload
 def quad(
@@ -48,7 +49,23 @@ def quad(
     seed: int = 1,
     strict: bool = False,
     return_sources: Literal[True],
-) -> _MeshSources:
+    return_uv: Literal[False] = False,
+) -> _MeshSources: ...
+@overload
+def quad(
+    V: _Floats,
+    F: _Ints,
+    UV: _Floats,
+    *,
+    weld: bool = True,
+    fairing: bool = True,
+    round_transitions: bool = False,
+    grid_offset: _Offset = "auto",
+    seed: int = 1,
+    strict: bool = False,
+    return_sources: bool = False,
+    return_uv: bool,
+) -> Tuple[Any, ...]:
     """Extracts the all-quad mesh of a triangle mesh with a 2D map.
 
     V: (n, 3) positions; F: (m, 3) triangles; UV: (m, 3, 2) map
@@ -56,6 +73,9 @@ def quad(
     (q, 4), stats); with return_sources=True also sources (q,) int64: the
     triangle (row of F) holding each quad's node, -1 for a quad that
     closes a hole. Raises ValueError on bad arrays or a refused map.
+    With return_uv=True also the map coordinates of each cell's corners
+    ((q, 4, 2) / (h, 8, 3), the node's chart, node ± ½; NaN for a cell made
+    by a repair), after sources when both are asked.
     """
 
 @overload
@@ -70,6 +90,7 @@ def hex(
     seed: int = 1,
     strict: bool = False,
     return_sources: Literal[False] = False,
+    return_uv: Literal[False] = False,
 ) -> _Mesh: ...
 @overload
 def hex(
@@ -83,7 +104,22 @@ def hex(
     seed: int = 1,
     strict: bool = False,
     return_sources: Literal[True],
-) -> _MeshSources:
+    return_uv: Literal[False] = False,
+) -> _MeshSources: ...
+@overload
+def hex(
+    V: _Floats,
+    T: _Ints,
+    UVW: _Floats,
+    *,
+    weld: bool = True,
+    round_transitions: bool = False,
+    grid_offset: _Offset = "auto",
+    seed: int = 1,
+    strict: bool = False,
+    return_sources: bool = False,
+    return_uv: bool,
+) -> Tuple[Any, ...]:
     """Extracts the all-hex mesh of a tet mesh with a 3D map.
 
     V: (n, 3) positions; T: (m, 4) tets; UVW: (m, 4, 3) map coordinates per
@@ -91,6 +127,9 @@ def hex(
     stats); with return_sources=True also sources (h,) int64: the tet (row
     of T) holding each hex's node. Raises ValueError on bad arrays or a
     refused map.
+    With return_uv=True also the map coordinates of each cell's corners
+    ((q, 4, 2) / (h, 8, 3), the node's chart, node ± ½; NaN for a cell made
+    by a repair), after sources when both are asked.
     """
 
 def read(
