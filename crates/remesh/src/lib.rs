@@ -19,7 +19,12 @@
 #![forbid(unsafe_code)]
 
 pub mod field;
+pub mod integrate;
+pub mod quantize;
+pub mod sparse;
 pub mod surface;
 
 pub use field::CrossField;
+pub use integrate::{integrate, integrate_report, IntegrateOptions, IntegrateReport};
+pub use quantize::Rounding;
 pub use surface::{Surface, SurfaceError, NO_FACE};

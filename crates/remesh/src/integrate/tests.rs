@@ -1,0 +1,284 @@
+//! End-to-end tests: integrate, check the transitions, extract with the
+//! real `dualex quad`.
+
+use super::*;
+use crate::field::CrossField;
+use std::collections::HashMap;
+
+/// A field along a 3D direction field `dir(centroid)`, projected per face.
+fn field_along(s: &Surface, dir: impl Fn([f64; 3]) -> [f64; 3]) -> CrossField {
+    let angles = (0..s.triangles.len())
+        .map(|f| {
+            let t = s.triangles[f];
+            let c: [f64; 3] = std::array::from_fn(|k| {
+                t.iter().map(|&v| s.positions[v as usize][k]).sum::<f64>() / 3.0
+            });
+            let [x, y] = s.in_frame(f as u32, dir(c));
+            y.atan2(x)
+        })
+        .collect();
+    CrossField::from_angles(s, angles)
+}
+
+/// The unit square as a `k × k` grid of triangle pairs, interior vertices
+/// moved by up to `jitter / k`.
+fn square(k: usize, jitter: f64) -> Surface {
+    let mut p = Vec::new();
+    for j in 0..=k {
+        for i in 0..=k {
+            let inner = i > 0 && j > 0 && i < k && j < k;
+            let d = if inner { jitter / k as f64 } else { 0.0 };
+            let (x, y) = (i as f64 / k as f64, j as f64 / k as f64);
+            p.push([x + d * ((i * 7 + j * 3) as f64).sin(), y + d * ((i * 5 + j) as f64).cos(), 0.0]);
+        }
+    }
+    Surface::new(p, grid_triangles(k, k, |i, j| (j % (k + 1)) * (k + 1) + i % (k + 1))).unwrap()
+}
+
+/// Two triangles per cell `(i, j)` of an `nu × nv` grid, vertex ids by `id`.
+fn grid_triangles(nu: usize, nv: usize, id: impl Fn(usize, usize) -> usize) -> Vec<[u32; 3]> {
+    let mut t = Vec::new();
+    for j in 0..nv {
+        for i in 0..nu {
+            let [a, b, c, d] = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)].map(|v| v as u32);
+            t.push([a, b, c]);
+            t.push([a, c, d]);
+        }
+    }
+    t
+}
+
+/// The unit cube's surface, each face a `k × k` grid.
+fn cube(k: usize) -> Surface {
+    let mut ids: HashMap<[usize; 3], u32> = HashMap::new();
+    let mut p = Vec::new();
+    let mut t = Vec::new();
+    for axis in 0..3 {
+        for side in [0, k] {
+            let (b, c) = ((axis + 1) % 3, (axis + 2) % 3);
+            // (e_b × e_c) = e_axis: outward on the far side
+            let (b, c) = if side == k { (b, c) } else { (c, b) };
+            let mut id = |i: usize, j: usize| {
+                let mut q = [0; 3];
+                q[axis] = side;
+                q[b] = i;
+                q[c] = j;
+                *ids.entry(q).or_insert_with(|| {
+                    p.push(q.map(|x| x as f64 / k as f64));
+                    p.len() as u32 - 1
+                }) as usize
+            };
+            let mut local = vec![0; (k + 1) * (k + 1)];
+            for j in 0..=k {
+                for i in 0..=k {
+                    local[j * (k + 1) + i] = id(i, j);
+                }
+            }
+            t.extend(grid_triangles(k, k, |i, j| local[j * (k + 1) + i]));
+        }
+    }
+    Surface::new(p, t).unwrap()
+}
+
+/// The cube's field: per face, the first tangent axis.
+fn cube_field(s: &Surface) -> CrossField {
+    let normals: Vec<usize> = s
+        .frames
+        .iter()
+        .map(|fr| (0..3).max_by(|&a, &b| fr[2][a].abs().total_cmp(&fr[2][b].abs())).unwrap())
+        .collect();
+    let angles = (0..s.triangles.len())
+        .map(|f| {
+            let mut d = [0.0; 3];
+            d[(normals[f] + 1) % 3] = 1.0;
+            let [x, y] = s.in_frame(f as u32, d);
+            y.atan2(x)
+        })
+        .collect();
+    CrossField::from_angles(s, angles)
+}
+
+/// The cube's corners.
+fn cube_corners(s: &Surface) -> Vec<u32> {
+    (0..s.positions.len() as u32)
+        .filter(|&v| s.positions[v as usize].iter().all(|&x| x == 0.0 || x == 1.0))
+        .collect()
+}
+
+/// A torus (radii 2 and 0.7) as an `nu × nv` grid.
+fn torus(nu: usize, nv: usize) -> Surface {
+    let mut p = Vec::new();
+    for j in 0..nv {
+        for i in 0..nu {
+            let (u, v) = (
+                i as f64 * std::f64::consts::TAU / nu as f64,
+                j as f64 * std::f64::consts::TAU / nv as f64,
+            );
+            let r = 2.0 + 0.7 * v.cos();
+            p.push([r * u.cos(), r * u.sin(), 0.7 * v.sin()]);
+        }
+    }
+    Surface::new(p, grid_triangles(nu, nv, |i, j| (j % nv) * nu + i % nu)).unwrap()
+}
+
+/// Every interior edge: the two triangles' coordinates of the shared
+/// vertices differ by a quarter-turn rotation and an integer translation.
+/// Returns the number of edges with a nonzero rotation.
+fn assert_grid_transitions(s: &Surface, map: &TriMap) -> usize {
+    let uv = |f: u32, v: u32| {
+        let i = s.triangles[f as usize].iter().position(|&x| x == v).unwrap();
+        map.coords[f as usize][i]
+    };
+    let mut rotated = 0;
+    for (e, &[f0, f1]) in s.edge_faces.iter().enumerate() {
+        if f1 == crate::NO_FACE {
+            continue;
+        }
+        let [a, b] = s.edges[e];
+        let (a0, b0, a1, b1) = (uv(f0, a), uv(f0, b), uv(f1, a), uv(f1, b));
+        let found = (0..4u8).find(|&p| {
+            let m = constraints::seam_rotation(p);
+            let t = |w0: [f64; 2], w1: [f64; 2]| {
+                [0, 1].map(|c| w1[c] - m[c][0] * w0[0] - m[c][1] * w0[1])
+            };
+            let (ta, tb) = (t(a0, a1), t(b0, b1));
+            (0..2).all(|c| (ta[c] - tb[c]).abs() < 1e-9 && (ta[c] - ta[c].round()).abs() < 1e-9)
+        });
+        match found {
+            Some(p) => rotated += usize::from(p != 0),
+            None => panic!("edge {a}–{b}: no grid transition: {a0:?} {b0:?} | {a1:?} {b1:?}"),
+        }
+    }
+    rotated
+}
+
+/// Extracts with the real `dualex quad`; returns (quads, vertex valences,
+/// Euler characteristic of the quad mesh).
+fn extract(map: &TriMap) -> (usize, Vec<usize>, i64) {
+    let out = dualex::quad(map, &dualex::QuadOptions::default()).expect("extraction");
+    let m = &out.mesh;
+    let mut valence = vec![0; m.positions.len()];
+    let mut edges = std::collections::HashSet::new();
+    for q in &m.cells {
+        for i in 0..4 {
+            valence[q[i] as usize] += 1;
+            let (a, b) = (q[i], q[(i + 1) % 4]);
+            edges.insert((a.min(b), a.max(b)));
+        }
+    }
+    let chi = m.positions.len() as i64 - edges.len() as i64 + m.cells.len() as i64;
+    (m.cells.len(), valence, chi)
+}
+
+fn opts(quads: usize, rounding: Rounding) -> IntegrateOptions {
+    IntegrateOptions {
+        quads: Some(quads),
+        rounding,
+        ..IntegrateOptions::default()
+    }
+}
+
+#[test]
+fn flat_square_is_affine_with_integer_boundary() {
+    let s = square(12, 0.3);
+    let field = field_along(&s, |_| [1.0, 0.0, 0.0]);
+    let cut = test_cut::cut(&s, &[]);
+    assert!(cut.iter().all(|&c| !c), "a disk needs no cut");
+    let (map, report) = integrate_report(&s, &field, &cut, &[], &opts(100, Rounding::Direct)).unwrap();
+    assert_eq!(report.aligned_edges, 48);
+    // u = 10·x + u₀, v = 10·y + v₀ at every corner, u₀, v₀ integers
+    let [u0, v0] = map.coords[0][0];
+    let p0 = s.positions[s.triangles[0][0] as usize];
+    assert!((u0 - 10.0 * p0[0]).fract().abs() < 1e-9 && (v0 - 10.0 * p0[1]).fract().abs() < 1e-9);
+    for (f, t) in s.triangles.iter().enumerate() {
+        for i in 0..3 {
+            let q = s.positions[t[i] as usize];
+            let [u, v] = map.coords[f][i];
+            assert!((u - u0 - 10.0 * (q[0] - p0[0])).abs() < 1e-9, "face {f}");
+            assert!((v - v0 - 10.0 * (q[1] - p0[1])).abs() < 1e-9, "face {f}");
+        }
+    }
+    let (quads, _, chi) = extract(&map);
+    assert_eq!((quads, chi), (100, 1));
+}
+
+#[test]
+fn cube_transitions_are_grid_rotations() {
+    let s = cube(5);
+    let field = cube_field(&s);
+    let corners = cube_corners(&s);
+    assert_eq!(corners.len(), 8);
+    let cut = test_cut::cut(&s, &corners);
+    for rounding in [Rounding::Direct, Rounding::Greedy { rounds: 4 }] {
+        let (map, report) = integrate_report(&s, &field, &cut, &corners, &opts(54, rounding)).unwrap();
+        assert!(report.rotated_seams > 0, "{report:?}");
+        assert_eq!(report.quantize.conflicts, 0, "{report:?}");
+        assert!(assert_grid_transitions(&s, &map) > 0);
+        let (quads, valence, chi) = extract(&map);
+        assert_eq!((quads, chi), (54, 2), "{rounding:?}");
+        assert_eq!(valence.iter().filter(|&&v| v == 3).count(), 8);
+        assert!(valence.iter().all(|&v| v == 3 || v == 4));
+    }
+}
+
+#[test]
+fn representative_angles_do_not_matter() {
+    // the same cross field with each face's angle turned by k·π/2
+    let s = cube(4);
+    let mut field = cube_field(&s);
+    for (f, a) in field.angle.iter_mut().enumerate() {
+        *a += ((f * 7 + f / 3) % 4) as f64 * std::f64::consts::FRAC_PI_2;
+    }
+    let field = CrossField::from_angles(&s, field.angle);
+    let corners = cube_corners(&s);
+    let cut = test_cut::cut(&s, &corners);
+    let map = integrate(&s, &field, &cut, &corners, &opts(96, Rounding::Direct)).unwrap();
+    assert_grid_transitions(&s, &map);
+    let (quads, valence, _) = extract(&map);
+    assert_eq!(quads, 96);
+    assert_eq!(valence.iter().filter(|&&v| v == 3).count(), 8);
+}
+
+#[test]
+fn torus_gives_a_closed_quad_mesh() {
+    let s = torus(72, 24);
+    let field = field_along(&s, |c| [-c[1], c[0], 0.0]);
+    let cut = test_cut::cut(&s, &[]);
+    let n = 400;
+    let (map, report) = integrate_report(&s, &field, &cut, &[], &opts(n, Rounding::Direct)).unwrap();
+    assert_eq!(report.rotated_seams, 0);
+    assert_grid_transitions(&s, &map);
+    let (quads, valence, chi) = extract(&map);
+    assert_eq!(chi, 0);
+    assert!(valence.iter().all(|&v| v == 4));
+    assert!(quads.abs_diff(n) * 10 <= n, "{quads} quads for {n}");
+}
+
+#[test]
+fn continuous_map_is_seamless_but_off_the_grid() {
+    let s = cube(4);
+    let field = cube_field(&s);
+    let corners = cube_corners(&s);
+    let cut = test_cut::cut(&s, &corners);
+    let o = opts(60, Rounding::Continuous);
+    let (map, report) = integrate_report(&s, &field, &cut, &corners, &o).unwrap();
+    assert_eq!(report.quantize.solves, 1);
+    // corners sit at multiples of sqrt(10): not integers
+    let off = map.coords.iter().flatten().flatten().any(|x| (x - x.round()).abs() > 1e-3);
+    assert!(off);
+}
+
+#[test]
+fn bad_cuts_are_refused() {
+    let s = cube(3);
+    let field = cube_field(&s);
+    let corners = cube_corners(&s);
+    let none = vec![false; s.edges.len()];
+    let e = integrate(&s, &field, &none, &corners, &IntegrateOptions::default()).unwrap_err();
+    assert!(e.contains("misses a singularity"), "{e}");
+    let t = torus(12, 6);
+    let tf = field_along(&t, |c| [-c[1], c[0], 0.0]);
+    let none = vec![false; t.edges.len()];
+    let e = integrate(&t, &tf, &none, &[], &IntegrateOptions::default()).unwrap_err();
+    assert!(e.contains("disks"), "{e}");
+}
