@@ -98,7 +98,12 @@ mod tests {
         let n = 50;
         let mut t = vec![(0, 0, 1.0)];
         for i in 0..n - 1 {
-            t.extend([(i, i, 1.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0), (i + 1, i, -1.0)]);
+            t.extend([
+                (i, i, 1.0),
+                (i + 1, i + 1, 1.0),
+                (i, i + 1, -1.0),
+                (i + 1, i, -1.0),
+            ]);
         }
         let mut rhs = vec![0.0; n];
         rhs[n - 1] = 1.0;
@@ -121,6 +126,9 @@ mod tests {
         assert!(e.contains("Cholesky"), "{e}");
         let e = solve_spd(1, &[(0, 0, -1.0)], &[1.0]).unwrap_err();
         assert!(e.contains("Cholesky"), "{e}");
-        assert!(SpdFactor::new(1, &[(0, 0, 1.0)]).unwrap().solve(&[1.0, 2.0]).is_err());
+        assert!(SpdFactor::new(1, &[(0, 0, 1.0)])
+            .unwrap()
+            .solve(&[1.0, 2.0])
+            .is_err());
     }
 }

@@ -171,8 +171,14 @@ fn check_disks(
     // pieces: faces joined through uncut interior edges = faces sharing a wedge
     let mut uf = UnionFind::new(wedges);
     for f in 0..surface.triangles.len() {
-        uf.union(corner_wedge[3 * f] as usize, corner_wedge[3 * f + 1] as usize);
-        uf.union(corner_wedge[3 * f] as usize, corner_wedge[3 * f + 2] as usize);
+        uf.union(
+            corner_wedge[3 * f] as usize,
+            corner_wedge[3 * f + 1] as usize,
+        );
+        uf.union(
+            corner_wedge[3 * f] as usize,
+            corner_wedge[3 * f + 2] as usize,
+        );
     }
     let (piece, pieces) = uf.labels();
     let mut chi = vec![0i64; pieces];

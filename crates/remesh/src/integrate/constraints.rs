@@ -149,7 +149,11 @@ fn align(surface: &Surface, charts: &Charts, tolerance: f64, out: &mut Constrain
             continue;
         }
         // along ±d: v is constant; along ±d⊥: u is
-        let c = if (turns as i64).rem_euclid(2) == 0 { 1 } else { 0 };
+        let c = if (turns as i64).rem_euclid(2) == 0 {
+            1
+        } else {
+            0
+        };
         let (wa, wb) = (charts.wedge(surface, f, a), charts.wedge(surface, f, b));
         out.rows.push(Form {
             terms: vec![(2 * wa + c, 1.0), (2 * wb + c, -1.0)],

@@ -39,7 +39,12 @@ impl Form {
 
     /// The form's value at `x`.
     pub fn eval(&self, x: &[f64]) -> f64 {
-        self.constant + self.terms.iter().map(|&(i, c)| c * x[i as usize]).sum::<f64>()
+        self.constant
+            + self
+                .terms
+                .iter()
+                .map(|&(i, c)| c * x[i as usize])
+                .sum::<f64>()
     }
 
     fn prune(&mut self) {
@@ -172,10 +177,19 @@ mod tests {
     fn chain_resolves_to_free_unknowns() {
         // x0 = x1 + 1, x1 = x2 + 1, x2 free
         let mut el = Eliminator::new(3);
-        assert_eq!(el.add_row(form(&[(0, 1.0), (1, -1.0)], -1.0), 1e-9), RowOutcome::Eliminated);
-        assert_eq!(el.add_row(form(&[(1, 1.0), (2, -1.0)], -1.0), 1e-9), RowOutcome::Eliminated);
+        assert_eq!(
+            el.add_row(form(&[(0, 1.0), (1, -1.0)], -1.0), 1e-9),
+            RowOutcome::Eliminated
+        );
+        assert_eq!(
+            el.add_row(form(&[(1, 1.0), (2, -1.0)], -1.0), 1e-9),
+            RowOutcome::Eliminated
+        );
         // x0 − x2 = 2 follows; x0 − x2 = 3 conflicts
-        assert_eq!(el.add_row(form(&[(0, 1.0), (2, -1.0)], -2.0), 1e-9), RowOutcome::Redundant);
+        assert_eq!(
+            el.add_row(form(&[(0, 1.0), (2, -1.0)], -2.0), 1e-9),
+            RowOutcome::Redundant
+        );
         assert_eq!(
             el.add_row(form(&[(0, 1.0), (2, -1.0)], -3.0), 1e-9),
             RowOutcome::Conflict(-1.0)

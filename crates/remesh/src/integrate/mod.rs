@@ -146,7 +146,9 @@ fn scale(surface: &Surface, opts: &IntegrateOptions) -> Result<f64, String> {
     if s.is_finite() && s > 0.0 {
         Ok(s)
     } else {
-        Err(format!("integrate: scale {s} (needs a positive finite number)"))
+        Err(format!(
+            "integrate: scale {s} (needs a positive finite number)"
+        ))
     }
 }
 

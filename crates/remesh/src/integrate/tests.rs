@@ -29,10 +29,18 @@ fn square(k: usize, jitter: f64) -> Surface {
             let inner = i > 0 && j > 0 && i < k && j < k;
             let d = if inner { jitter / k as f64 } else { 0.0 };
             let (x, y) = (i as f64 / k as f64, j as f64 / k as f64);
-            p.push([x + d * ((i * 7 + j * 3) as f64).sin(), y + d * ((i * 5 + j) as f64).cos(), 0.0]);
+            p.push([
+                x + d * ((i * 7 + j * 3) as f64).sin(),
+                y + d * ((i * 5 + j) as f64).cos(),
+                0.0,
+            ]);
         }
     }
-    Surface::new(p, grid_triangles(k, k, |i, j| (j % (k + 1)) * (k + 1) + i % (k + 1))).unwrap()
+    Surface::new(
+        p,
+        grid_triangles(k, k, |i, j| (j % (k + 1)) * (k + 1) + i % (k + 1)),
+    )
+    .unwrap()
 }
 
 /// Two triangles per cell `(i, j)` of an `nu × nv` grid, vertex ids by `id`.
@@ -40,7 +48,8 @@ fn grid_triangles(nu: usize, nv: usize, id: impl Fn(usize, usize) -> usize) -> V
     let mut t = Vec::new();
     for j in 0..nv {
         for i in 0..nu {
-            let [a, b, c, d] = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)].map(|v| v as u32);
+            let [a, b, c, d] =
+                [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)].map(|v| v as u32);
             t.push([a, b, c]);
             t.push([a, c, d]);
         }
@@ -85,7 +94,11 @@ fn cube_field(s: &Surface) -> CrossField {
     let normals: Vec<usize> = s
         .frames
         .iter()
-        .map(|fr| (0..3).max_by(|&a, &b| fr[2][a].abs().total_cmp(&fr[2][b].abs())).unwrap())
+        .map(|fr| {
+            (0..3)
+                .max_by(|&a, &b| fr[2][a].abs().total_cmp(&fr[2][b].abs()))
+                .unwrap()
+        })
         .collect();
     let angles = (0..s.triangles.len())
         .map(|f| {
@@ -101,7 +114,11 @@ fn cube_field(s: &Surface) -> CrossField {
 /// The cube's corners.
 fn cube_corners(s: &Surface) -> Vec<u32> {
     (0..s.positions.len() as u32)
-        .filter(|&v| s.positions[v as usize].iter().all(|&x| x == 0.0 || x == 1.0))
+        .filter(|&v| {
+            s.positions[v as usize]
+                .iter()
+                .all(|&x| x == 0.0 || x == 1.0)
+        })
         .collect()
 }
 
@@ -126,7 +143,10 @@ fn torus(nu: usize, nv: usize) -> Surface {
 /// Returns the number of edges with a nonzero rotation.
 fn assert_grid_transitions(s: &Surface, map: &TriMap) -> usize {
     let uv = |f: u32, v: u32| {
-        let i = s.triangles[f as usize].iter().position(|&x| x == v).unwrap();
+        let i = s.triangles[f as usize]
+            .iter()
+            .position(|&x| x == v)
+            .unwrap();
         map.coords[f as usize][i]
     };
     let mut rotated = 0;
@@ -184,15 +204,17 @@ fn flat_square_is_affine_with_integer_boundary() {
     let field = field_along(&s, |_| [1.0, 0.0, 0.0]);
     let cut = test_cut::cut(&s, &[]);
     assert!(cut.iter().all(|&c| !c), "a disk needs no cut");
-    let (map, report) = integrate_report(&s, &field, &cut, &[], &opts(100, Rounding::Direct)).unwrap();
+    let (map, report) =
+        integrate_report(&s, &field, &cut, &[], &opts(100, Rounding::Direct)).unwrap();
     assert_eq!(report.aligned_edges, 48);
     // u = 10·x + u₀, v = 10·y + v₀ at every corner, u₀, v₀ integers
     let [u0, v0] = map.coords[0][0];
     let p0 = s.positions[s.triangles[0][0] as usize];
-    assert!((u0 - 10.0 * p0[0]).fract().abs() < 1e-9 && (v0 - 10.0 * p0[1]).fract().abs() < 1e-9);
+    let integer = |x: f64| (x - x.round()).abs() < 1e-9;
+    assert!(integer(u0 - 10.0 * p0[0]) && integer(v0 - 10.0 * p0[1]));
     for (f, t) in s.triangles.iter().enumerate() {
-        for i in 0..3 {
-            let q = s.positions[t[i] as usize];
+        for (i, &vertex) in t.iter().enumerate() {
+            let q = s.positions[vertex as usize];
             let [u, v] = map.coords[f][i];
             assert!((u - u0 - 10.0 * (q[0] - p0[0])).abs() < 1e-9, "face {f}");
             assert!((v - v0 - 10.0 * (q[1] - p0[1])).abs() < 1e-9, "face {f}");
@@ -210,7 +232,8 @@ fn cube_transitions_are_grid_rotations() {
     assert_eq!(corners.len(), 8);
     let cut = test_cut::cut(&s, &corners);
     for rounding in [Rounding::Direct, Rounding::Greedy { rounds: 4 }] {
-        let (map, report) = integrate_report(&s, &field, &cut, &corners, &opts(54, rounding)).unwrap();
+        let (map, report) =
+            integrate_report(&s, &field, &cut, &corners, &opts(54, rounding)).unwrap();
         assert!(report.rotated_seams > 0, "{report:?}");
         assert_eq!(report.quantize.conflicts, 0, "{report:?}");
         assert!(assert_grid_transitions(&s, &map) > 0);
@@ -245,7 +268,8 @@ fn torus_gives_a_closed_quad_mesh() {
     let field = field_along(&s, |c| [-c[1], c[0], 0.0]);
     let cut = test_cut::cut(&s, &[]);
     let n = 400;
-    let (map, report) = integrate_report(&s, &field, &cut, &[], &opts(n, Rounding::Direct)).unwrap();
+    let (map, report) =
+        integrate_report(&s, &field, &cut, &[], &opts(n, Rounding::Direct)).unwrap();
     assert_eq!(report.rotated_seams, 0);
     assert_grid_transitions(&s, &map);
     let (quads, valence, chi) = extract(&map);
@@ -264,7 +288,12 @@ fn continuous_map_is_seamless_but_off_the_grid() {
     let (map, report) = integrate_report(&s, &field, &cut, &corners, &o).unwrap();
     assert_eq!(report.quantize.solves, 1);
     // corners sit at multiples of sqrt(10): not integers
-    let off = map.coords.iter().flatten().flatten().any(|x| (x - x.round()).abs() > 1e-3);
+    let off = map
+        .coords
+        .iter()
+        .flatten()
+        .flatten()
+        .any(|x| (x - x.round()).abs() > 1e-3);
     assert!(off);
 }
 
@@ -281,4 +310,172 @@ fn bad_cuts_are_refused() {
     let none = vec![false; t.edges.len()];
     let e = integrate(&t, &tf, &none, &[], &IntegrateOptions::default()).unwrap_err();
     assert!(e.contains("disks"), "{e}");
+}
+
+/// Speed on ~100k triangles (README.md, "Speed"):
+/// `cargo test -p dualex-remesh --profile ci -- --ignored --nocapture timing`.
+#[test]
+#[ignore = "a measurement, run by hand"]
+fn timing_100k_triangles() {
+    use std::time::Instant;
+    let cases: Vec<(&str, Surface, Vec<u32>)> = vec![
+        ("cube 6·91²·2", cube(91), Vec::new()),
+        ("torus 354×141·2", torus(354, 141), Vec::new()),
+    ];
+    for (name, s, _) in cases {
+        let t0 = Instant::now();
+        let (field, corners) = if name.starts_with("cube") {
+            (cube_field(&s), cube_corners(&s))
+        } else {
+            (field_along(&s, |c| [-c[1], c[0], 0.0]), Vec::new())
+        };
+        let cut = test_cut::cut(&s, &corners);
+        let prep = t0.elapsed().as_secs_f64();
+        for rounding in [
+            Rounding::Continuous,
+            Rounding::Direct,
+            Rounding::Greedy { rounds: 4 },
+        ] {
+            let t1 = Instant::now();
+            let (map, r) =
+                integrate_report(&s, &field, &cut, &corners, &opts(20_000, rounding)).unwrap();
+            let dt = t1.elapsed().as_secs_f64();
+            let t2 = Instant::now();
+            let quads = if rounding == Rounding::Continuous {
+                0
+            } else {
+                extract(&map).0
+            };
+            println!(
+                "{name}: {} triangles, {} wedges, {} seams; field+cut {prep:.2} s; {rounding:?}: integrate {dt:.2} s ({} solves, {} rounded); extraction {:.2} s, {quads} quads",
+                s.triangles.len(),
+                r.wedges,
+                r.seams,
+                r.quantize.solves,
+                r.quantize.rounded,
+                t2.elapsed().as_secs_f64()
+            );
+        }
+    }
+}
+
+#[test]
+fn singularities_may_stay_off_the_grid() {
+    // sqrt(10) quads per cube edge: the continuous corners are off the grid
+    let s = cube(4);
+    let field = cube_field(&s);
+    let corners = cube_corners(&s);
+    let cut = test_cut::cut(&s, &corners);
+    let mut o = opts(60, Rounding::Direct);
+    o.round_singularities = false;
+    let (map, report) = integrate_report(&s, &field, &cut, &corners, &o).unwrap();
+    assert!(report.quantize.rounded > 0);
+    // the translations are integers all the same…
+    assert!(assert_grid_transitions(&s, &map) > 0);
+    // …which puts the corners (quarter-turn fixed points) on the
+    // half-integer lattice (the energy happens to prefer integers here)
+    for (f, t) in s.triangles.iter().enumerate() {
+        for (i, v) in t.iter().enumerate() {
+            if corners.contains(v) {
+                for x in map.coords[f][i] {
+                    assert!((2.0 * x - (2.0 * x).round()).abs() < 1e-9, "{x}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn boundary_alignment_follows_the_tolerance() {
+    let s = square(10, 0.0);
+    let cut = test_cut::cut(&s, &[]);
+    // 10° off the boundary: still aligned, the boundary on iso-lines
+    let turned = field_along(&s, |_| {
+        [10f64.to_radians().cos(), 10f64.to_radians().sin(), 0.0]
+    });
+    let (map, report) =
+        integrate_report(&s, &turned, &cut, &[], &opts(100, Rounding::Direct)).unwrap();
+    assert_eq!(report.aligned_edges, 40);
+    for (e, &[f, f1]) in s.edge_faces.iter().enumerate() {
+        if f1 != crate::NO_FACE {
+            continue;
+        }
+        let t = s.triangles[f as usize];
+        let on =
+            s.edges[e].map(|v| map.coords[f as usize][t.iter().position(|&x| x == v).unwrap()]);
+        let iso =
+            (0..2).any(|c| on[0][c] == on[1][c] && (on[0][c] - on[0][c].round()).abs() < 1e-9);
+        assert!(iso, "boundary edge {e}: {on:?}");
+    }
+    let (quads, _, chi) = extract(&map);
+    assert_eq!(chi, 1);
+    assert!(quads.abs_diff(100) <= 10, "{quads}");
+    // 45° off: no edge is aligned
+    let diagonal = field_along(&s, |_| [1.0, 1.0, 0.0]);
+    let (_, report) =
+        integrate_report(&s, &diagonal, &cut, &[], &opts(100, Rounding::Direct)).unwrap();
+    assert_eq!(report.aligned_edges, 0);
+    // no alignment asked
+    let mut o = opts(100, Rounding::Direct);
+    o.align_boundary = None;
+    let (_, report) = integrate_report(&s, &turned, &cut, &[], &o).unwrap();
+    assert_eq!(report.aligned_edges, 0);
+}
+
+/// Interior vertices whose matchings around them do not add up to a whole
+/// turn (valid for small angle defects and jumps, as on a fine sphere).
+fn singular_by_matchings(s: &Surface, field: &CrossField) -> Vec<u32> {
+    let mut sum = vec![0i64; s.positions.len()];
+    for (e, &[a, b]) in s.edges.iter().enumerate() {
+        if s.is_boundary_edge(e as u32) {
+            continue;
+        }
+        // going counter-clockwise around a vertex crosses the edge from
+        // the face holding the half-edge into it to the other
+        let p = i64::from(field.matching[e]);
+        sum[a as usize] -= p;
+        sum[b as usize] += p;
+    }
+    (0..s.positions.len() as u32)
+        .filter(|&v| !s.boundary_vertex[v as usize] && sum[v as usize].rem_euclid(4) != 0)
+        .collect()
+}
+
+#[test]
+fn sphere_with_projected_cube_field() {
+    let k = 12;
+    let mut s = cube(k);
+    for p in &mut s.positions {
+        let c = p.map(|x| x - 0.5);
+        let n = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+        *p = c.map(|x| x / n);
+    }
+    let s = Surface::new(s.positions, s.triangles).unwrap();
+    let per_side = 4 * k * k;
+    let angles = (0..s.triangles.len())
+        .map(|f| {
+            let mut d = [0.0; 3];
+            d[(f / per_side + 1) % 3] = 1.0;
+            let [x, y] = s.in_frame(f as u32, d);
+            y.atan2(x)
+        })
+        .collect();
+    let field = CrossField::from_angles(&s, angles);
+    let singular = singular_by_matchings(&s, &field);
+    assert_eq!(singular.len(), 8);
+    let cut = test_cut::cut(&s, &singular);
+    let n = 300;
+    for rounding in [Rounding::Direct, Rounding::Greedy { rounds: 3 }] {
+        let (map, report) =
+            integrate_report(&s, &field, &cut, &singular, &opts(n, rounding)).unwrap();
+        assert_eq!(report.quantize.conflicts, 0);
+        assert!(assert_grid_transitions(&s, &map) > 0);
+        let (quads, valence, chi) = extract(&map);
+        assert_eq!(chi, 2, "{rounding:?}");
+        assert_eq!(valence.iter().filter(|&&v| v == 3).count(), 8);
+        assert!(
+            quads.abs_diff(n) * 10 <= n,
+            "{quads} quads for {n}, {rounding:?}"
+        );
+    }
 }
