@@ -59,6 +59,9 @@ pub fn build(surface: &Surface, field: &CrossField, is_cut: &[bool]) -> Result<C
             is_cut.len()
         ));
     }
+    if let Some(f) = field.angle.iter().position(|a| !a.is_finite()) {
+        return Err(format!("integrate: face {f} has angle {}", field.angle[f]));
+    }
     let joined = |e: usize| !is_cut[e] && surface.edge_faces[e][1] != NO_FACE;
     let turns = comb(surface, field, &joined)?;
     let angle = (0..nf)

@@ -153,4 +153,6 @@ fn scale(surface: &Surface, opts: &IntegrateOptions) -> Result<f64, String> {
 }
 
 #[cfg(test)]
+mod test_meshes;
+#[cfg(test)]
 mod tests;

@@ -1,142 +1,9 @@
 //! End-to-end tests: integrate, check the transitions, extract with the
 //! real `dualex quad`.
 
+use super::test_meshes::*;
 use super::*;
 use crate::field::CrossField;
-use std::collections::HashMap;
-
-/// A field along a 3D direction field `dir(centroid)`, projected per face.
-fn field_along(s: &Surface, dir: impl Fn([f64; 3]) -> [f64; 3]) -> CrossField {
-    let angles = (0..s.triangles.len())
-        .map(|f| {
-            let t = s.triangles[f];
-            let c: [f64; 3] = std::array::from_fn(|k| {
-                t.iter().map(|&v| s.positions[v as usize][k]).sum::<f64>() / 3.0
-            });
-            let [x, y] = s.in_frame(f as u32, dir(c));
-            y.atan2(x)
-        })
-        .collect();
-    CrossField::from_angles(s, angles)
-}
-
-/// The unit square as a `k × k` grid of triangle pairs, interior vertices
-/// moved by up to `jitter / k`.
-fn square(k: usize, jitter: f64) -> Surface {
-    let mut p = Vec::new();
-    for j in 0..=k {
-        for i in 0..=k {
-            let inner = i > 0 && j > 0 && i < k && j < k;
-            let d = if inner { jitter / k as f64 } else { 0.0 };
-            let (x, y) = (i as f64 / k as f64, j as f64 / k as f64);
-            p.push([
-                x + d * ((i * 7 + j * 3) as f64).sin(),
-                y + d * ((i * 5 + j) as f64).cos(),
-                0.0,
-            ]);
-        }
-    }
-    Surface::new(
-        p,
-        grid_triangles(k, k, |i, j| (j % (k + 1)) * (k + 1) + i % (k + 1)),
-    )
-    .unwrap()
-}
-
-/// Two triangles per cell `(i, j)` of an `nu × nv` grid, vertex ids by `id`.
-fn grid_triangles(nu: usize, nv: usize, id: impl Fn(usize, usize) -> usize) -> Vec<[u32; 3]> {
-    let mut t = Vec::new();
-    for j in 0..nv {
-        for i in 0..nu {
-            let [a, b, c, d] =
-                [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)].map(|v| v as u32);
-            t.push([a, b, c]);
-            t.push([a, c, d]);
-        }
-    }
-    t
-}
-
-/// The unit cube's surface, each face a `k × k` grid.
-fn cube(k: usize) -> Surface {
-    let mut ids: HashMap<[usize; 3], u32> = HashMap::new();
-    let mut p = Vec::new();
-    let mut t = Vec::new();
-    for axis in 0..3 {
-        for side in [0, k] {
-            let (b, c) = ((axis + 1) % 3, (axis + 2) % 3);
-            // (e_b × e_c) = e_axis: outward on the far side
-            let (b, c) = if side == k { (b, c) } else { (c, b) };
-            let mut id = |i: usize, j: usize| {
-                let mut q = [0; 3];
-                q[axis] = side;
-                q[b] = i;
-                q[c] = j;
-                *ids.entry(q).or_insert_with(|| {
-                    p.push(q.map(|x| x as f64 / k as f64));
-                    p.len() as u32 - 1
-                }) as usize
-            };
-            let mut local = vec![0; (k + 1) * (k + 1)];
-            for j in 0..=k {
-                for i in 0..=k {
-                    local[j * (k + 1) + i] = id(i, j);
-                }
-            }
-            t.extend(grid_triangles(k, k, |i, j| local[j * (k + 1) + i]));
-        }
-    }
-    Surface::new(p, t).unwrap()
-}
-
-/// The cube's field: per face, the first tangent axis.
-fn cube_field(s: &Surface) -> CrossField {
-    let normals: Vec<usize> = s
-        .frames
-        .iter()
-        .map(|fr| {
-            (0..3)
-                .max_by(|&a, &b| fr[2][a].abs().total_cmp(&fr[2][b].abs()))
-                .unwrap()
-        })
-        .collect();
-    let angles = (0..s.triangles.len())
-        .map(|f| {
-            let mut d = [0.0; 3];
-            d[(normals[f] + 1) % 3] = 1.0;
-            let [x, y] = s.in_frame(f as u32, d);
-            y.atan2(x)
-        })
-        .collect();
-    CrossField::from_angles(s, angles)
-}
-
-/// The cube's corners.
-fn cube_corners(s: &Surface) -> Vec<u32> {
-    (0..s.positions.len() as u32)
-        .filter(|&v| {
-            s.positions[v as usize]
-                .iter()
-                .all(|&x| x == 0.0 || x == 1.0)
-        })
-        .collect()
-}
-
-/// A torus (radii 2 and 0.7) as an `nu × nv` grid.
-fn torus(nu: usize, nv: usize) -> Surface {
-    let mut p = Vec::new();
-    for j in 0..nv {
-        for i in 0..nu {
-            let (u, v) = (
-                i as f64 * std::f64::consts::TAU / nu as f64,
-                j as f64 * std::f64::consts::TAU / nv as f64,
-            );
-            let r = 2.0 + 0.7 * v.cos();
-            p.push([r * u.cos(), r * u.sin(), 0.7 * v.sin()]);
-        }
-    }
-    Surface::new(p, grid_triangles(nu, nv, |i, j| (j % nv) * nu + i % nu)).unwrap()
-}
 
 /// Every interior edge: the two triangles' coordinates of the shared
 /// vertices differ by a quarter-turn rotation and an integer translation.
@@ -170,6 +37,14 @@ fn assert_grid_transitions(s: &Surface, map: &TriMap) -> usize {
         }
     }
     rotated
+}
+
+/// Triangles whose map is reverted (negative signed area).
+fn reverted(map: &TriMap) -> usize {
+    map.coords
+        .iter()
+        .filter(|[a, b, c]| (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) <= 0.0)
+        .count()
 }
 
 /// Extracts with the real `dualex quad`; returns (quads, vertex valences,
@@ -237,6 +112,7 @@ fn cube_transitions_are_grid_rotations() {
         assert!(report.rotated_seams > 0, "{report:?}");
         assert_eq!(report.quantize.conflicts, 0, "{report:?}");
         assert!(assert_grid_transitions(&s, &map) > 0);
+        assert_eq!(reverted(&map), 0);
         let (quads, valence, chi) = extract(&map);
         assert_eq!((quads, chi), (54, 2), "{rounding:?}");
         assert_eq!(valence.iter().filter(|&&v| v == 3).count(), 8);
@@ -272,6 +148,7 @@ fn torus_gives_a_closed_quad_mesh() {
         integrate_report(&s, &field, &cut, &[], &opts(n, Rounding::Direct)).unwrap();
     assert_eq!(report.rotated_seams, 0);
     assert_grid_transitions(&s, &map);
+    assert_eq!(reverted(&map), 0);
     let (quads, valence, chi) = extract(&map);
     assert_eq!(chi, 0);
     assert!(valence.iter().all(|&v| v == 4));
@@ -310,6 +187,16 @@ fn bad_cuts_are_refused() {
     let none = vec![false; t.edges.len()];
     let e = integrate(&t, &tf, &none, &[], &IntegrateOptions::default()).unwrap_err();
     assert!(e.contains("disks"), "{e}");
+    let mut nan = tf.clone();
+    nan.angle[3] = f64::NAN;
+    let e = integrate(&t, &nan, &none, &[], &IntegrateOptions::default()).unwrap_err();
+    assert_eq!(e, "integrate: face 3 has angle NaN");
+    let o = IntegrateOptions {
+        quads: Some(0),
+        ..IntegrateOptions::default()
+    };
+    let e = integrate(&t, &tf, &none, &[], &o).unwrap_err();
+    assert!(e.contains("scale 0"), "{e}");
 }
 
 /// Speed on ~100k triangles (README.md, "Speed"):
@@ -422,25 +309,6 @@ fn boundary_alignment_follows_the_tolerance() {
     assert_eq!(report.aligned_edges, 0);
 }
 
-/// Interior vertices whose matchings around them do not add up to a whole
-/// turn (valid for small angle defects and jumps, as on a fine sphere).
-fn singular_by_matchings(s: &Surface, field: &CrossField) -> Vec<u32> {
-    let mut sum = vec![0i64; s.positions.len()];
-    for (e, &[a, b]) in s.edges.iter().enumerate() {
-        if s.is_boundary_edge(e as u32) {
-            continue;
-        }
-        // going counter-clockwise around a vertex crosses the edge from
-        // the face holding the half-edge into it to the other
-        let p = i64::from(field.matching[e]);
-        sum[a as usize] -= p;
-        sum[b as usize] += p;
-    }
-    (0..s.positions.len() as u32)
-        .filter(|&v| !s.boundary_vertex[v as usize] && sum[v as usize].rem_euclid(4) != 0)
-        .collect()
-}
-
 #[test]
 fn sphere_with_projected_cube_field() {
     let k = 12;
@@ -470,6 +338,7 @@ fn sphere_with_projected_cube_field() {
             integrate_report(&s, &field, &cut, &singular, &opts(n, rounding)).unwrap();
         assert_eq!(report.quantize.conflicts, 0);
         assert!(assert_grid_transitions(&s, &map) > 0);
+        assert_eq!(reverted(&map), 0, "{rounding:?}");
         let (quads, valence, chi) = extract(&map);
         assert_eq!(chi, 2, "{rounding:?}");
         assert_eq!(valence.iter().filter(|&&v| v == 3).count(), 8);
