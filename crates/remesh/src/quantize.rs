@@ -1,7 +1,7 @@
 //! Quantization: the integer unknowns rounded, the map solved again.
 //!
-//! Input: the integration [`Energy`], the rows always imposed, and the
-//! integer unknowns as forms over the map's unknowns (singular wedges'
+//! Input: the integration [`Energy`], the rows always imposed, the
+//! [`Gauge`] (imposed last, where still free), and the integer unknowns as forms over the map's unknowns (singular wedges'
 //! coordinates, boundary iso-values, seam translations). Output: the
 //! map's unknowns and a [`QuantizeReport`].
 //!
@@ -19,6 +19,7 @@
 //! contradicts them is counted in [`QuantizeReport::conflicts`] and not
 //! imposed.
 
+use crate::integrate::constraints::Gauge;
 use crate::integrate::elim::{Eliminator, Form, RowOutcome};
 use crate::integrate::system::{minimize, Energy};
 
@@ -58,6 +59,7 @@ const TOLERANCE: f64 = 1e-6;
 pub fn quantize(
     energy: &Energy,
     rows: &[Form],
+    gauge: &Gauge,
     integers: &[Form],
     rounding: Rounding,
 ) -> Result<(Vec<f64>, QuantizeReport), String> {
@@ -75,7 +77,11 @@ pub fn quantize(
     };
     for round in 0..=batches {
         let el = eliminate(n, rows, &fixed, &mut report);
-        let (p, free) = el.clone().finish();
+        let mut gauged = el.clone();
+        for g in gauge.rows(rows.iter().chain(&fixed)) {
+            gauged.add_row(g, f64::INFINITY);
+        }
+        let (p, free) = gauged.finish();
         let x = minimize(energy, &p, free)?;
         report.solves += 1;
         if round == batches {
@@ -111,7 +117,8 @@ pub fn quantize(
     Err("quantize: no solve".into())
 }
 
-/// The rows, then the rounded integer unknowns, eliminated.
+/// The rows, then the rounded integer unknowns, eliminated (the gauge
+/// comes after, in [`quantize`]).
 fn eliminate(n: usize, rows: &[Form], fixed: &[Form], report: &mut QuantizeReport) -> Eliminator {
     let mut el = Eliminator::new(n);
     for r in rows {

@@ -18,7 +18,10 @@
 //! field's first direction `d` (or `−d`), of `u` along `±d⊥`; rows
 //! `A_c = B_c`, and `A_c` is an integer unknown.
 //!
-//! **Gauge.** One wedge per component at `(0, 0)`.
+//! **Gauge.** The map of a component can be translated in the directions
+//! that every row leaves free; [`Gauge::rows`] fixes exactly those at one
+//! wedge (after rounding, the integer unknowns usually fix the translation
+//! already, and an arbitrary wedge must not be pinned to an integer point).
 //!
 //! Output: [`Constraints`]: the rows, and the integer unknowns as forms
 //! (singular wedges' coordinates first, then boundary iso-values, then
@@ -35,6 +38,8 @@ use std::f64::consts::FRAC_PI_2;
 pub struct Constraints {
     /// Rows `form = 0`, always imposed.
     pub rows: Vec<Form>,
+    /// The gauge (module docs).
+    pub gauge: Gauge,
     /// Integer unknowns of the singular vertices.
     pub singular: Vec<Form>,
     /// Integer unknowns of the aligned boundary edges.
@@ -43,6 +48,58 @@ pub struct Constraints {
     pub translations: Vec<Form>,
     /// Boundary edges aligned.
     pub aligned_edges: usize,
+}
+
+/// Where the translations of the components are fixed (module docs).
+#[derive(Clone, Debug, Default)]
+pub struct Gauge {
+    /// Per component: the wedge fixed.
+    pub wedge: Vec<u32>,
+    /// Per wedge: its component.
+    pub component: Vec<u32>,
+}
+
+impl Gauge {
+    /// Rows fixing, at each component's gauge wedge, the translations
+    /// that all of `rows` leave free: a translation by `(a, b)` changes
+    /// a row by `a·Σ(u coefficients) + b·Σ(v coefficients)`.
+    pub fn rows<'a>(&self, rows: impl Iterator<Item = &'a Form>) -> Vec<Form> {
+        // per component: Σ over rows of gᵀg, g = (Σ u coeffs, Σ v coeffs)
+        let mut gram = vec![[0.0f64; 3]; self.wedge.len()];
+        let mut some = vec![[0.0f64; 2]; self.wedge.len()];
+        for r in rows {
+            let Some(&(x, _)) = r.terms.first() else {
+                continue;
+            };
+            let c = self.component[(x / 2) as usize] as usize;
+            let mut g = [0.0; 2];
+            for &(x, k) in &r.terms {
+                g[(x % 2) as usize] += k;
+            }
+            gram[c][0] += g[0] * g[0];
+            gram[c][1] += g[0] * g[1];
+            gram[c][2] += g[1] * g[1];
+            if g[0].abs() + g[1].abs() > 1e-9 {
+                some[c] = g;
+            }
+        }
+        let mut out = Vec::new();
+        for (c, &w) in self.wedge.iter().enumerate() {
+            let [a, b, d] = gram[c];
+            let row = |ku: f64, kv: f64| Form {
+                terms: vec![(2 * w, ku), (2 * w + 1, kv)],
+                constant: 0.0,
+            };
+            if a + d <= 1e-9 {
+                out.extend([row(1.0, 0.0), row(0.0, 1.0)]);
+            } else if a * d - b * b <= 1e-9 * (a + d) * (a + d) {
+                // one free direction, perpendicular to the rows' g
+                let [x, y] = some[c];
+                out.push(row(-y, x));
+            }
+        }
+        out
+    }
 }
 
 /// The rotation `M_p` of the `(u, v)` plane across a seam of matching `p`:
@@ -77,17 +134,13 @@ pub fn build(
 ) -> Result<Constraints, String> {
     let mut out = Constraints::default();
     // gauge: the first wedge of each component
-    let mut seen = vec![false; charts.components];
+    out.gauge.component = vec![0; charts.wedges];
     for (f, &c) in charts.component.iter().enumerate() {
-        if !seen[c as usize] {
-            seen[c as usize] = true;
-            let w = charts.corner_wedge[3 * f];
-            for c in 0..2 {
-                out.rows.push(Form {
-                    terms: vec![(2 * w + c, 1.0)],
-                    constant: 0.0,
-                });
-            }
+        if out.gauge.wedge.len() == c as usize {
+            out.gauge.wedge.push(charts.corner_wedge[3 * f]);
+        }
+        for i in 0..3 {
+            out.gauge.component[charts.corner_wedge[3 * f + i] as usize] = c;
         }
     }
     for (e, seam) in charts.seam.iter().enumerate() {
@@ -164,5 +217,41 @@ fn align(surface: &Surface, charts: &Charts, tolerance: f64, out: &mut Constrain
             constant: 0.0,
         });
         out.aligned_edges += 1;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn form(terms: &[(u32, f64)], constant: f64) -> Form {
+        Form {
+            terms: terms.to_vec(),
+            constant,
+        }
+    }
+
+    /// Fixed directions per row kind: differences fix none, a pinned
+    /// coordinate one, a quarter-turn translation the direction (1, −1).
+    #[test]
+    fn gauge_fixes_only_free_translations() {
+        let gauge = Gauge {
+            wedge: vec![1],
+            component: vec![0; 3],
+        };
+        let difference = form(&[(0, 1.0), (2, -1.0)], 0.0);
+        assert_eq!(gauge.rows([difference.clone()].iter()).len(), 2);
+        let pinned_u = form(&[(4, 1.0)], -3.0);
+        let rows = gauge.rows([difference.clone(), pinned_u.clone()].iter());
+        assert_eq!(rows, vec![form(&[(2, -0.0), (3, 1.0)], 0.0)]);
+        let pinned_v = form(&[(5, 1.0)], -2.0);
+        assert!(gauge.rows([pinned_u, pinned_v].iter()).is_empty());
+        // t = A₁ − M₁·A₀ = (u_a1 − v_a0, v_a1 + u_a0): one row fixes (1, −1)
+        let m = seam_rotation(1);
+        let tu = translation(0, 2, &m, 0);
+        let rows = gauge.rows([tu].iter());
+        assert_eq!(rows.len(), 1);
+        let r = &rows[0].terms;
+        assert!((r[0].1 * 1.0 + r[1].1 * 1.0).abs() > 0.5, "{r:?}");
     }
 }

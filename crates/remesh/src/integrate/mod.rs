@@ -114,7 +114,7 @@ pub fn integrate_report(
     // 3. energy
     let energy = system::energy(surface, &charts, scale);
     // 4. solve, round, solve
-    let (x, quantize) = quantize(&energy, &cons.rows, &integers, opts.rounding)?;
+    let (x, quantize) = quantize(&energy, &cons.rows, &cons.gauge, &integers, opts.rounding)?;
     let coords = charts
         .corner_wedge
         .chunks_exact(3)

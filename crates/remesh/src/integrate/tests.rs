@@ -76,27 +76,36 @@ fn opts(quads: usize, rounding: Rounding) -> IntegrateOptions {
 #[test]
 fn flat_square_is_affine_with_integer_boundary() {
     let s = square(12, 0.3);
-    let field = field_along(&s, |_| [1.0, 0.0, 0.0]);
-    let cut = test_cut::cut(&s, &[]);
-    assert!(cut.iter().all(|&c| !c), "a disk needs no cut");
-    let (map, report) =
-        integrate_report(&s, &field, &cut, &[], &opts(100, Rounding::Direct)).unwrap();
-    assert_eq!(report.aligned_edges, 48);
-    // u = 10·x + u₀, v = 10·y + v₀ at every corner, u₀, v₀ integers
-    let [u0, v0] = map.coords[0][0];
-    let p0 = s.positions[s.triangles[0][0] as usize];
-    let integer = |x: f64| (x - x.round()).abs() < 1e-9;
-    assert!(integer(u0 - 10.0 * p0[0]) && integer(v0 - 10.0 * p0[1]));
-    for (f, t) in s.triangles.iter().enumerate() {
-        for (i, &vertex) in t.iter().enumerate() {
-            let q = s.positions[vertex as usize];
-            let [u, v] = map.coords[f][i];
-            assert!((u - u0 - 10.0 * (q[0] - p0[0])).abs() < 1e-9, "face {f}");
-            assert!((v - v0 - 10.0 * (q[1] - p0[1])).abs() < 1e-9, "face {f}");
+    // the same with an interior triangle first (where the gauge goes)
+    let mut t = s.triangles.clone();
+    t.rotate_left(12 * 5 + 5);
+    let moved = Surface::new(s.positions.clone(), t).unwrap();
+    assert!(!moved.boundary_vertex[moved.triangles[0][0] as usize]);
+    for s in [s, moved] {
+        let field = field_along(&s, |_| [1.0, 0.0, 0.0]);
+        let cut = test_cut::cut(&s, &[]);
+        assert!(cut.iter().all(|&c| !c), "a disk needs no cut");
+        let (map, report) =
+            integrate_report(&s, &field, &cut, &[], &opts(100, Rounding::Direct)).unwrap();
+        assert_eq!(report.aligned_edges, 48);
+        // u = 10·x + u₀, v = 10·y + v₀ at every corner, u₀, v₀ integers
+        let p0 = s.positions[0];
+        let [u0, v0] = map.coords[0][0];
+        let q0 = s.positions[s.triangles[0][0] as usize];
+        let (u0, v0) = (u0 - 10.0 * (q0[0] - p0[0]), v0 - 10.0 * (q0[1] - p0[1]));
+        let integer = |x: f64| (x - x.round()).abs() < 1e-9;
+        assert!(integer(u0) && integer(v0), "{u0} {v0}");
+        for (f, t) in s.triangles.iter().enumerate() {
+            for (i, &vertex) in t.iter().enumerate() {
+                let q = s.positions[vertex as usize];
+                let [u, v] = map.coords[f][i];
+                assert!((u - u0 - 10.0 * (q[0] - p0[0])).abs() < 1e-9, "face {f}");
+                assert!((v - v0 - 10.0 * (q[1] - p0[1])).abs() < 1e-9, "face {f}");
+            }
         }
+        let (quads, _, chi) = extract(&map);
+        assert_eq!((quads, chi), (100, 1));
     }
-    let (quads, _, chi) = extract(&map);
-    assert_eq!((quads, chi), (100, 1));
 }
 
 #[test]
