@@ -9,9 +9,11 @@
 //!   off the grid).
 //! - [`Rounding::Direct`]: solve, round **every** integer unknown at once
 //!   to its nearest integer, solve once more (two solves).
-//! - [`Rounding::Greedy`]: in `rounds` batches, round the still-free
-//!   integer unknowns closest to an integer first, re-solving between
-//!   batches (`rounds + 1` solves).
+//! - [`Rounding::Greedy`]: in at most `rounds` batches of equally many
+//!   independent integer unknowns, round the still-free ones closest to an
+//!   integer first, re-solving after each batch (at most `rounds + 1`
+//!   solves; `rounds` at least the number of independent integer
+//!   unknowns rounds one at a time).
 //!
 //! Integer unknowns are rounded in their order (singular first): one that
 //! already follows from earlier ones is skipped (it is an integer
@@ -87,34 +89,75 @@ pub fn quantize(
         if round == batches {
             return Ok((x, report));
         }
-        // the still-free integer unknowns, closest to an integer first
-        let mut pending: Vec<(f64, usize, f64)> = Vec::new();
-        for (i, q) in integers.iter().enumerate() {
-            if done[i] {
-                continue;
-            }
-            if el.reduce(q.clone()).terms.is_empty() {
-                done[i] = true;
-                continue;
-            }
-            let value = q.eval(&x);
-            pending.push(((value - value.round()).abs(), i, value));
+        let left = batches - round;
+        let batch = next_batch(&el, integers, &mut done, &x, left, batches > 1);
+        if batch.is_empty() {
+            return Ok((x, report));
         }
-        if batches > 1 {
-            pending.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        }
-        let take = pending.len().div_ceil(batches - round);
-        let mut batch: Vec<(usize, f64)> = pending[..take].iter().map(|t| (t.1, t.2)).collect();
-        batch.sort_by_key(|t| t.0);
         for (i, value) in batch {
-            done[i] = true;
+            report.max_rounding = report.max_rounding.max((value - value.round()).abs());
             let mut row = integers[i].clone();
             row.constant -= value.round();
-            report.max_rounding = report.max_rounding.max((value - value.round()).abs());
             fixed.push(row);
         }
     }
     Err("quantize: no solve".into())
+}
+
+/// The next integer unknowns to round, with their current values; marks
+/// them (and the ones already
+/// determined) `done`. Direct: every pending one, in order. Greedy: the
+/// closest to an integer first, until `⌈independent / rounds_left⌉`
+/// independent ones are taken (ties in order), so that `rounds_left = 1`
+/// takes all and enough rounds make it one at a time.
+fn next_batch(
+    el: &Eliminator,
+    integers: &[Form],
+    done: &mut [bool],
+    x: &[f64],
+    rounds_left: usize,
+    greedy: bool,
+) -> Vec<(usize, f64)> {
+    let mut pending: Vec<(f64, usize, f64)> = Vec::new();
+    for (i, q) in integers.iter().enumerate() {
+        if done[i] {
+            continue;
+        }
+        if el.reduce(q.clone()).terms.is_empty() {
+            done[i] = true;
+            continue;
+        }
+        let value = q.eval(x);
+        pending.push(((value - value.round()).abs(), i, value));
+    }
+    let rounded = |i: usize, value: f64| {
+        let mut row = integers[i].clone();
+        row.constant -= value.round();
+        row
+    };
+    let mut limit = usize::MAX;
+    if greedy {
+        pending.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut trial = el.clone();
+        let independent = pending
+            .iter()
+            .filter(|t| trial.add_row(rounded(t.1, t.2), TOLERANCE) == RowOutcome::Eliminated)
+            .count();
+        limit = independent.div_ceil(rounds_left.max(1));
+    }
+    let mut trial = el.clone();
+    let mut batch = Vec::new();
+    for &(_, i, value) in &pending {
+        if limit == 0 {
+            break;
+        }
+        done[i] = true;
+        if trial.add_row(rounded(i, value), TOLERANCE) == RowOutcome::Eliminated {
+            limit -= 1;
+        }
+        batch.push((i, value));
+    }
+    batch
 }
 
 /// The rows, then the rounded integer unknowns, eliminated (the gauge

@@ -156,3 +156,31 @@ pub fn singular_by_matchings(s: &Surface, field: &CrossField) -> Vec<u32> {
         .filter(|&v| !s.boundary_vertex[v as usize] && sum[v as usize].rem_euclid(4) != 0)
         .collect()
 }
+
+/// The unit square as a `k × k` grid without the cells `lo..hi` in both
+/// directions (an annulus), unused vertices dropped.
+pub fn square_with_hole(k: usize, lo: usize, hi: usize) -> Surface {
+    let id = |i: usize, j: usize| j * (k + 1) + i;
+    let mut t = Vec::new();
+    for j in 0..k {
+        for i in 0..k {
+            if (lo..hi).contains(&i) && (lo..hi).contains(&j) {
+                continue;
+            }
+            t.extend(grid_triangles(1, 1, |a, b| id(i + a, j + b)));
+        }
+    }
+    let mut new = vec![u32::MAX; (k + 1) * (k + 1)];
+    let mut p = Vec::new();
+    for tri in &mut t {
+        for v in tri.iter_mut() {
+            if new[*v as usize] == u32::MAX {
+                new[*v as usize] = p.len() as u32;
+                let (i, j) = (*v as usize % (k + 1), *v as usize / (k + 1));
+                p.push([i as f64 / k as f64, j as f64 / k as f64, 0.0]);
+            }
+            *v = new[*v as usize];
+        }
+    }
+    Surface::new(p, t).unwrap()
+}

@@ -357,3 +357,31 @@ fn sphere_with_projected_cube_field() {
         );
     }
 }
+
+#[test]
+fn square_with_a_hole_needs_a_seam() {
+    // hole [1/3, 2/3]², 10 quads per unit: its sides at 3.33 and 6.67
+    let s = square_with_hole(15, 5, 10);
+    assert_eq!(s.euler_characteristic(), 0);
+    let field = field_along(&s, |_| [1.0, 0.0, 0.0]);
+    let cut = test_cut::cut(&s, &[]);
+    assert!(cut.iter().any(|&c| c), "an annulus needs a cut");
+    // every side rounds to its nearest line (3 and 7: a hole of 4 × 4),
+    // greedy too: rounding one side hardly moves the opposite one
+    for (rounding, solves) in [
+        (Rounding::Direct, 2..=2),
+        (Rounding::Greedy { rounds: 1 }, 2..=2),
+        (Rounding::Greedy { rounds: 20 }, 3..=21),
+    ] {
+        let o = opts(89, rounding);
+        let (map, report) = integrate_report(&s, &field, &cut, &[], &o).unwrap();
+        assert!((report.scale - 10.0).abs() < 0.01, "{report:?}");
+        assert_eq!((report.aligned_edges, report.rotated_seams), (80, 0));
+        assert_grid_transitions(&s, &map);
+        assert_eq!(reverted(&map), 0);
+        let (quads, valence, chi) = extract(&map);
+        assert_eq!((quads, chi), (84, 0), "{rounding:?}");
+        assert!(solves.contains(&report.quantize.solves), "{report:?}");
+        assert!(valence.iter().all(|&v| v <= 4));
+    }
+}
