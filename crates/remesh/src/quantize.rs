@@ -1,9 +1,12 @@
 //! Quantization: the integer unknowns rounded, the map solved again.
 //!
 //! Input: the integration [`Energy`], the rows always imposed, the
-//! [`Gauge`] (imposed last, where still free), and the integer unknowns as forms over the map's unknowns (singular wedges'
-//! coordinates, boundary iso-values, seam translations). Output: the
-//! map's unknowns and a [`QuantizeReport`].
+//! [`Gauge`] (imposed last, where still free), and the integer unknowns as
+//! forms over the map's unknowns, the first `first` of them (the
+//! coordinates of one wedge per singular vertex) to be rounded before the
+//! rest (boundary
+//! iso-values, seam translations). Output: the map's unknowns and a
+//! [`QuantizeReport`].
 //!
 //! - [`Rounding::Continuous`]: one solve, nothing rounded (a seamless map
 //!   off the grid).
@@ -11,15 +14,22 @@
 //!   to its nearest integer, solve once more (two solves).
 //! - [`Rounding::Greedy`]: in at most `rounds` batches of equally many
 //!   independent integer unknowns, round the still-free ones closest to an
-//!   integer first, re-solving after each batch (at most `rounds + 1`
-//!   solves; `rounds` at least the number of independent integer
-//!   unknowns rounds one at a time).
+//!   integer first (the first `first` before the others), re-solving after
+//!   each batch (at most `rounds + 1` solves; `rounds` at least the number
+//!   of independent integer unknowns rounds one at a time).
 //!
-//! Integer unknowns are rounded in their order (singular first): one that
-//! already follows from earlier ones is skipped (it is an integer
-//! combination of integers when the seams are consistent); one that
-//! contradicts them is counted in [`QuantizeReport::conflicts`] and not
-//! imposed.
+//! Why singular vertices first: a singular vertex `S` is the fixed point
+//! of a quarter or half turn composed with translations, `(I − M)·S =`
+//! (integer combination of translations); `S` on an integer point makes
+//! that combination an integer, while integer translations rounded first
+//! may put `S` only on the half-integer lattice. One wedge per singular
+//! vertex: its other wedges follow from it and the translations, and
+//! rounding them on their own could break the parity that `(I − M)`
+//! asks of the translations.
+//!
+//! An integer unknown that already follows from earlier ones is not
+//! imposed; if it follows as a non-integer it is counted in
+//! [`QuantizeReport::conflicts`].
 
 use crate::integrate::constraints::Gauge;
 use crate::integrate::elim::{Eliminator, Form, RowOutcome};
@@ -46,8 +56,11 @@ pub struct QuantizeReport {
     pub integer_unknowns: usize,
     /// Independent integer unknowns imposed.
     pub rounded: usize,
-    /// Integer unknowns that contradicted earlier ones (not imposed).
+    /// Integer unknowns that followed from earlier ones as non-integers.
     pub conflicts: usize,
+    /// Integer unknowns whose final value is off the integers by more
+    /// than 10⁻⁶ (0 for a consistent input when rounding).
+    pub off_grid: usize,
     /// Largest distance moved by a rounding.
     pub max_rounding: f64,
     /// Sparse solves.
@@ -63,6 +76,7 @@ pub fn quantize(
     rows: &[Form],
     gauge: &Gauge,
     integers: &[Form],
+    first: usize,
     rounding: Rounding,
 ) -> Result<(Vec<f64>, QuantizeReport), String> {
     let n = energy.b.len();
@@ -77,7 +91,8 @@ pub fn quantize(
         Rounding::Direct => 1,
         Rounding::Greedy { rounds } => rounds.max(1),
     };
-    for round in 0..=batches {
+    let mut round = 0;
+    loop {
         let el = eliminate(n, rows, &fixed, &mut report);
         let mut gauged = el.clone();
         for g in gauge.rows(rows.iter().chain(&fixed)) {
@@ -86,12 +101,26 @@ pub fn quantize(
         let (p, free) = gauged.finish();
         let x = minimize(energy, &p, free)?;
         report.solves += 1;
-        if round == batches {
-            return Ok((x, report));
-        }
-        let left = batches - round;
-        let batch = next_batch(&el, integers, &mut done, &x, left, batches > 1);
+        let batch = if round < batches {
+            let pending = Pending {
+                el: &el,
+                integers,
+                first,
+            };
+            pending.next_batch(&mut done, &x, batches - round, batches > 1)
+        } else {
+            Vec::new()
+        };
         if batch.is_empty() {
+            if batches > 0 {
+                report.off_grid = integers
+                    .iter()
+                    .filter(|q| {
+                        let v = q.eval(&x);
+                        (v - v.round()).abs() > TOLERANCE
+                    })
+                    .count();
+            }
             return Ok((x, report));
         }
         for (i, value) in batch {
@@ -100,64 +129,76 @@ pub fn quantize(
             row.constant -= value.round();
             fixed.push(row);
         }
+        round += 1;
     }
-    Err("quantize: no solve".into())
 }
 
-/// The next integer unknowns to round, with their current values; marks
-/// them (and the ones already
-/// determined) `done`. Direct: every pending one, in order. Greedy: the
-/// closest to an integer first, until `⌈independent / rounds_left⌉`
-/// independent ones are taken (ties in order), so that `rounds_left = 1`
-/// takes all and enough rounds make it one at a time.
-fn next_batch(
-    el: &Eliminator,
-    integers: &[Form],
-    done: &mut [bool],
-    x: &[f64],
-    rounds_left: usize,
-    greedy: bool,
-) -> Vec<(usize, f64)> {
-    let mut pending: Vec<(f64, usize, f64)> = Vec::new();
-    for (i, q) in integers.iter().enumerate() {
-        if done[i] {
-            continue;
+/// The integer unknowns not yet rounded, against the eliminations so far.
+struct Pending<'a> {
+    el: &'a Eliminator,
+    integers: &'a [Form],
+    first: usize,
+}
+
+impl Pending<'_> {
+    /// The next integer unknowns to round, with their current values;
+    /// marks them (and the ones already determined) `done`. Direct: every
+    /// pending one, in order. Greedy: by priority, then closest to an
+    /// integer first, until `⌈independent / rounds_left⌉` independent
+    /// ones are taken, so that `rounds_left = 1` takes all and enough
+    /// rounds make it one at a time.
+    fn next_batch(
+        &self,
+        done: &mut [bool],
+        x: &[f64],
+        rounds_left: usize,
+        greedy: bool,
+    ) -> Vec<(usize, f64)> {
+        let mut pending: Vec<(bool, f64, usize, f64)> = Vec::new();
+        for (i, q) in self.integers.iter().enumerate() {
+            if done[i] {
+                continue;
+            }
+            if self.el.reduce(q.clone()).terms.is_empty() {
+                done[i] = true;
+                continue;
+            }
+            let value = q.eval(x);
+            pending.push((i >= self.first, (value - value.round()).abs(), i, value));
         }
-        if el.reduce(q.clone()).terms.is_empty() {
+        let rounded = |i: usize, value: f64| {
+            let mut row = self.integers[i].clone();
+            row.constant -= value.round();
+            row
+        };
+        let mut limit = usize::MAX;
+        if greedy {
+            pending.sort_by(|a, b| {
+                (a.0, a.1, a.2)
+                    .partial_cmp(&(b.0, b.1, b.2))
+                    .unwrap_or(std::cmp::Ordering::Equal)
+            });
+            let mut trial = self.el.clone();
+            let independent = pending
+                .iter()
+                .filter(|t| trial.add_row(rounded(t.2, t.3), TOLERANCE) == RowOutcome::Eliminated)
+                .count();
+            limit = independent.div_ceil(rounds_left.max(1));
+        }
+        let mut trial = self.el.clone();
+        let mut batch = Vec::new();
+        for &(_, _, i, value) in &pending {
+            if limit == 0 {
+                break;
+            }
             done[i] = true;
-            continue;
+            if trial.add_row(rounded(i, value), TOLERANCE) == RowOutcome::Eliminated {
+                limit -= 1;
+            }
+            batch.push((i, value));
         }
-        let value = q.eval(x);
-        pending.push(((value - value.round()).abs(), i, value));
+        batch
     }
-    let rounded = |i: usize, value: f64| {
-        let mut row = integers[i].clone();
-        row.constant -= value.round();
-        row
-    };
-    let mut limit = usize::MAX;
-    if greedy {
-        pending.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let mut trial = el.clone();
-        let independent = pending
-            .iter()
-            .filter(|t| trial.add_row(rounded(t.1, t.2), TOLERANCE) == RowOutcome::Eliminated)
-            .count();
-        limit = independent.div_ceil(rounds_left.max(1));
-    }
-    let mut trial = el.clone();
-    let mut batch = Vec::new();
-    for &(_, i, value) in &pending {
-        if limit == 0 {
-            break;
-        }
-        done[i] = true;
-        if trial.add_row(rounded(i, value), TOLERANCE) == RowOutcome::Eliminated {
-            limit -= 1;
-        }
-        batch.push((i, value));
-    }
-    batch
 }
 
 /// The rows, then the rounded integer unknowns, eliminated (the gauge
@@ -173,7 +214,12 @@ fn eliminate(n: usize, rows: &[Form], fixed: &[Form], report: &mut QuantizeRepor
         match el.add_row(r.clone(), TOLERANCE) {
             RowOutcome::Eliminated => report.rounded += 1,
             RowOutcome::Redundant => {}
-            RowOutcome::Conflict(_) => report.conflicts += 1,
+            // it follows as `rounding + c`: a conflict unless c is whole
+            RowOutcome::Conflict(c) => {
+                if (c - c.round()).abs() > TOLERANCE {
+                    report.conflicts += 1;
+                }
+            }
         }
     }
     el

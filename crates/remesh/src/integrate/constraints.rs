@@ -24,7 +24,8 @@
 //! already, and an arbitrary wedge must not be pinned to an integer point).
 //!
 //! Output: [`Constraints`]: the rows, and the integer unknowns as forms
-//! (singular wedges' coordinates first, then boundary iso-values, then
+//! (the coordinates of one wedge per singular vertex first, then boundary
+//! iso-values, then
 //! seam translations).
 
 use super::charts::Charts;
@@ -40,7 +41,7 @@ pub struct Constraints {
     pub rows: Vec<Form>,
     /// The gauge (module docs).
     pub gauge: Gauge,
-    /// Integer unknowns of the singular vertices.
+    /// Integer unknowns of the singular vertices (one wedge each).
     pub singular: Vec<Form>,
     /// Integer unknowns of the aligned boundary edges.
     pub boundary: Vec<Form>,
@@ -163,7 +164,6 @@ pub fn build(
     if let Some(tolerance) = align_boundary {
         align(surface, charts, tolerance, &mut out);
     }
-    let mut done = vec![false; charts.wedges];
     for &v in singular_vertices {
         if v as usize >= surface.positions.len() {
             return Err(format!("integrate: singular vertex {v} out of range"));
@@ -175,8 +175,11 @@ pub fn build(
     }
     for (corner, &w) in charts.corner_wedge.iter().enumerate() {
         let v = surface.triangles[corner / 3][corner % 3];
-        if is_singular[v as usize] && !done[w as usize] {
-            done[w as usize] = true;
+        // one wedge per singular vertex: its other wedges follow from it
+        // and the seam translations (rounding them too could break the
+        // parity that a quarter turn's fixed point asks of them)
+        if is_singular[v as usize] {
+            is_singular[v as usize] = false;
             for c in 0..2 {
                 out.singular.push(Form {
                     terms: vec![(2 * w + c, 1.0)],

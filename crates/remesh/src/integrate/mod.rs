@@ -114,7 +114,19 @@ pub fn integrate_report(
     // 3. energy
     let energy = system::energy(surface, &charts, scale);
     // 4. solve, round, solve
-    let (x, quantize) = quantize(&energy, &cons.rows, &cons.gauge, &integers, opts.rounding)?;
+    let first = if opts.round_singularities {
+        cons.singular.len()
+    } else {
+        0
+    };
+    let (x, quantize) = quantize(
+        &energy,
+        &cons.rows,
+        &cons.gauge,
+        &integers,
+        first,
+        opts.rounding,
+    )?;
     let coords = charts
         .corner_wedge
         .chunks_exact(3)
