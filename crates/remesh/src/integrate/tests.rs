@@ -217,18 +217,43 @@ fn bad_cuts_are_refused() {
 #[ignore = "a measurement, run by hand"]
 fn timing_100k_triangles() {
     use std::time::Instant;
-    let cases: Vec<(&str, Surface, Vec<u32>)> = vec![
-        ("cube 6·91²·2", cube(91), Vec::new()),
-        ("torus 354×141·2", torus(354, 141), Vec::new()),
-    ];
-    for (name, s, _) in cases {
-        let t0 = Instant::now();
-        let (field, corners) = if name.starts_with("cube") {
-            (cube_field(&s), cube_corners(&s))
-        } else {
-            (field_along(&s, |c| [-c[1], c[0], 0.0]), Vec::new())
+    let wavy = |s: &Surface| {
+        // ±¼ turn around 40 points: about 40 singularities
+        let mut state = 0x9e3779b97f4a7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % 10_000) as f64 / 10_000.0
         };
-        let cut = test_cut::cut(&s, &corners);
+        let points: Vec<(f64, f64, f64)> = (0..40)
+            .map(|i| (next(), next(), if i % 2 == 0 { 0.25 } else { -0.25 }))
+            .collect();
+        field_along(s, move |c| {
+            let a: f64 = points
+                .iter()
+                .map(|&(x, y, k)| k * (c[1] - y).atan2(c[0] - x))
+                .sum();
+            [a.cos(), a.sin(), 0.0]
+        })
+    };
+    let cases: Vec<(&str, Surface)> = vec![
+        ("cube 6·91²·2", cube(91)),
+        ("torus 354×141·2", torus(354, 141)),
+        ("square 224²·2, 40 point singularities", square(224, 0.2)),
+    ];
+    for (name, s) in cases {
+        let t0 = Instant::now();
+        let (field, singular) = if name.starts_with("cube") {
+            (cube_field(&s), cube_corners(&s))
+        } else if name.starts_with("torus") {
+            (field_along(&s, |c| [-c[1], c[0], 0.0]), Vec::new())
+        } else {
+            let f = wavy(&s);
+            let sing = singular_by_matchings(&s, &f);
+            (f, sing)
+        };
+        let cut = test_cut::cut(&s, &singular);
         let prep = t0.elapsed().as_secs_f64();
         for rounding in [
             Rounding::Continuous,
@@ -237,7 +262,7 @@ fn timing_100k_triangles() {
         ] {
             let t1 = Instant::now();
             let (map, r) =
-                integrate_report(&s, &field, &cut, &corners, &opts(20_000, rounding)).unwrap();
+                integrate_report(&s, &field, &cut, &singular, &opts(20_000, rounding)).unwrap();
             let dt = t1.elapsed().as_secs_f64();
             let t2 = Instant::now();
             let quads = if rounding == Rounding::Continuous {
@@ -246,12 +271,14 @@ fn timing_100k_triangles() {
                 extract(&map).0
             };
             println!(
-                "{name}: {} triangles, {} wedges, {} seams; field+cut {prep:.2} s; {rounding:?}: integrate {dt:.2} s ({} solves, {} rounded); extraction {:.2} s, {quads} quads",
+                "{name}: {} triangles, {} singular, {} wedges, {} seams; field+cut {prep:.2} s; {rounding:?}: integrate {dt:.2} s ({} solves, {} rounded, {} off grid); extraction {:.2} s, {quads} quads",
                 s.triangles.len(),
+                singular.len(),
                 r.wedges,
                 r.seams,
                 r.quantize.solves,
                 r.quantize.rounded,
+                r.quantize.off_grid,
                 t2.elapsed().as_secs_f64()
             );
         }
