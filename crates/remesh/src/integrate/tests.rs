@@ -456,3 +456,26 @@ fn noisy_field_with_many_singularities() {
         }
     }
 }
+
+#[test]
+fn two_components_each_get_a_gauge() {
+    // two unit squares side by side, not connected; cut flags on the
+    // boundary are ignored
+    let a = square(8, 0.25);
+    let n = a.positions.len() as u32;
+    let mut p = a.positions.clone();
+    p.extend(a.positions.iter().map(|q| [q[0] + 3.0, q[1], q[2]]));
+    let mut t = a.triangles.clone();
+    t.extend(a.triangles.iter().map(|f| f.map(|v| v + n)));
+    let s = Surface::new(p, t).unwrap();
+    let field = field_along(&s, |_| [0.0, 1.0, 0.0]);
+    let cut: Vec<bool> = (0..s.edges.len() as u32)
+        .map(|e| s.is_boundary_edge(e))
+        .collect();
+    let (map, report) =
+        integrate_report(&s, &field, &cut, &[], &opts(200, Rounding::Direct)).unwrap();
+    assert_eq!((report.seams, report.quantize.off_grid), (0, 0));
+    assert_eq!(reverted(&map), 0);
+    let (quads, _, chi) = extract(&map);
+    assert_eq!((quads, chi), (200, 2));
+}
