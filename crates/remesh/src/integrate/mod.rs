@@ -1,0 +1,170 @@
+//! Seamless integration: a per-corner `(u, v)` map from a cross field and
+//! a cut.
+//!
+//! Input: a [`Surface`], a [`CrossField`], the cut (`is_cut` per edge: the
+//! cut edges open the surface to disks and pass through every singular
+//! vertex), the singular vertices and [`IntegrateOptions`]. Output: a
+//! [`TriMap`] on the surface's own vertices and triangles whose corner
+//! coordinates are the map (`dualex quad` extracts it), with an
+//! [`IntegrateReport`].
+//!
+//! Steps, one module each:
+//! 1. [`charts`]: comb the field across uncut edges, find the wedges
+//!    (one `(u, v)` per wedge), the seams and their matchings;
+//! 2. [`constraints`]: seams' transitions (rotation + translation), aligned
+//!    boundary edges, gauge; the integer unknowns;
+//! 3. [`system`]: the energy `Σ_f area_f·|∇(u, v) − s·(d_f, d_f⊥)|²`;
+//! 4. [`crate::quantize`]: constraints eliminated by substitution
+//!    ([`elim`]), SPD solves, rounding of the integer unknowns.
+//!
+//! Invariants of the output (rounded modes, consistent input): across
+//! every interior edge the two triangles' coordinates of the shared
+//! vertices differ by a rotation by a multiple of 90° plus an integer
+//! translation; singular vertices (with `round_singularities`) sit on
+//! integer points; aligned boundary edges lie on integer iso-lines.
+
+pub mod charts;
+pub mod constraints;
+pub mod elim;
+pub mod system;
+pub mod test_cut;
+
+use crate::field::CrossField;
+use crate::quantize::{quantize, QuantizeReport, Rounding};
+use crate::surface::Surface;
+use dualex_map::TriMap;
+
+/// Options of [`integrate`].
+#[derive(Clone, Debug)]
+pub struct IntegrateOptions {
+    /// Target number of quads `N`: the scale is `sqrt(N / area)` (quads of
+    /// side `h = sqrt(area / N)`). Default: 1000. Ignored when `scale` is set.
+    pub quads: Option<usize>,
+    /// Map units per surface length (`1 / h`); overrides `quads`.
+    pub scale: Option<f64>,
+    /// How the integer unknowns are rounded. Default: [`Rounding::Direct`].
+    pub rounding: Rounding,
+    /// Put the singular vertices on integer points. Default: on.
+    pub round_singularities: bool,
+    /// Align boundary edges within this angle (radians) of a field
+    /// direction to integer iso-lines; `None`: no alignment. Default:
+    /// `Some(π/8)`.
+    pub align_boundary: Option<f64>,
+}
+
+impl Default for IntegrateOptions {
+    fn default() -> Self {
+        IntegrateOptions {
+            quads: Some(1000),
+            scale: None,
+            rounding: Rounding::Direct,
+            round_singularities: true,
+            align_boundary: Some(std::f64::consts::FRAC_PI_8),
+        }
+    }
+}
+
+/// What [`integrate_report`] did.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct IntegrateReport {
+    /// The scale used (map units per length).
+    pub scale: f64,
+    /// Wedges (chart vertices); the unknowns are twice as many.
+    pub wedges: usize,
+    /// Seam edges (cut interior edges).
+    pub seams: usize,
+    /// Seam edges with a nonzero rotation.
+    pub rotated_seams: usize,
+    /// Boundary edges aligned to iso-lines.
+    pub aligned_edges: usize,
+    /// The rounding's report.
+    pub quantize: QuantizeReport,
+}
+
+/// The map (module docs).
+pub fn integrate(
+    surface: &Surface,
+    field: &CrossField,
+    is_cut: &[bool],
+    singular_vertices: &[u32],
+    opts: &IntegrateOptions,
+) -> Result<TriMap, String> {
+    integrate_report(surface, field, is_cut, singular_vertices, opts).map(|r| r.0)
+}
+
+/// [`integrate`] with its report.
+pub fn integrate_report(
+    surface: &Surface,
+    field: &CrossField,
+    is_cut: &[bool],
+    singular_vertices: &[u32],
+    opts: &IntegrateOptions,
+) -> Result<(TriMap, IntegrateReport), String> {
+    let scale = scale(surface, opts)?;
+    // 1. the cut-open surface
+    let charts = charts::build(surface, field, is_cut)?;
+    // 2. constraints and integer unknowns
+    let cons = constraints::build(surface, &charts, singular_vertices, opts.align_boundary)?;
+    let mut integers = Vec::new();
+    if opts.round_singularities {
+        integers.extend(cons.singular.iter().cloned());
+    }
+    integers.extend(cons.boundary.iter().cloned());
+    integers.extend(cons.translations.iter().cloned());
+    // 3. energy
+    let energy = system::energy(surface, &charts, scale);
+    // 4. solve, round, solve
+    let first = if opts.round_singularities {
+        cons.singular.len()
+    } else {
+        0
+    };
+    let (x, quantize) = quantize(
+        &energy,
+        &cons.rows,
+        &cons.gauge,
+        &integers,
+        first,
+        opts.rounding,
+    )?;
+    let coords = charts
+        .corner_wedge
+        .chunks_exact(3)
+        .map(|w| std::array::from_fn(|i| [x[2 * w[i] as usize], x[2 * w[i] as usize + 1]]))
+        .collect();
+    let map = TriMap {
+        positions: surface.positions.clone(),
+        simplices: surface.triangles.clone(),
+        coords,
+    };
+    let report = IntegrateReport {
+        scale,
+        wedges: charts.wedges,
+        seams: charts.seam.iter().flatten().count(),
+        rotated_seams: charts.seam.iter().flatten().filter(|&&p| p != 0).count(),
+        aligned_edges: cons.aligned_edges,
+        quantize,
+    };
+    Ok((map, report))
+}
+
+/// The scale from the options (module docs of [`IntegrateOptions`]).
+fn scale(surface: &Surface, opts: &IntegrateOptions) -> Result<f64, String> {
+    let s = match (opts.scale, opts.quads) {
+        (Some(s), _) => s,
+        (None, Some(n)) => (n as f64 / surface.areas.iter().sum::<f64>()).sqrt(),
+        (None, None) => return Err("integrate: neither a scale nor a quad count".into()),
+    };
+    if s.is_finite() && s > 0.0 {
+        Ok(s)
+    } else {
+        Err(format!(
+            "integrate: scale {s} (needs a positive finite number)"
+        ))
+    }
+}
+
+#[cfg(test)]
+mod test_meshes;
+#[cfg(test)]
+mod tests;
