@@ -7,8 +7,9 @@
 //! | step | module | input → output |
 //! |---|---|---|
 //! | connectivity, face frames | [`surface`] | positions, triangles → [`Surface`] |
-//! | smoothest 4-RoSy field | `field` | [`Surface`] → `CrossField` (angle per face, matching per edge, singularities) |
-//! | cut to a disk | `cut` | field → cut edges through every singularity |
+//! | smoothest 4-RoSy field | [`smooth`] (type in [`field`]) | [`Surface`] → [`CrossField`] (angle per face, matching per edge), aligned to boundary and sharp edges |
+//! | singular vertices | [`singularity`] | field → `(vertex, index·4)` |
+//! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk |
 //! | seamless integration | `integrate` | field + cut → per-corner `(u, v)` |
 //! | direct rounding | `quantize` | integer unknowns rounded at once, one more solve |
 //!
@@ -18,8 +19,15 @@
 //! boundary) without degenerate triangles; every edge has one or two faces.
 #![forbid(unsafe_code)]
 
+pub mod cut;
 pub mod field;
+pub mod shapes;
+pub mod singularity;
+pub mod smooth;
+pub mod sparse;
 pub mod surface;
 
+pub use cut::{cut_to_disk, Cut};
 pub use field::CrossField;
+pub use smooth::{cross_field, FieldOptions, FieldResult};
 pub use surface::{Surface, SurfaceError, NO_FACE};

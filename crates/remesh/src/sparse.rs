@@ -1,0 +1,195 @@
+//! Sparse symmetric positive definite solves (glue over `faer`).
+//!
+//! Input: the matrix as `(row, column, value)` triplets (duplicates are
+//! summed; both triangles may be given, only the lower one is read) and
+//! right-hand sides. Output: the solution, or an error naming why the
+//! factorisation failed (the matrix is not positive definite, or an index
+//! is out of range).
+//!
+//! Why `faer`: a maintained pure-Rust crate with a supernodal sparse
+//! Cholesky and a fill-reducing ordering (AMD), building with the
+//! workspace's Rust 1.85 (faer 0.24 declares `rust-version = 1.84`).
+//! The factorisation is kept ([`SpdSolver`]) so that repeated solves with
+//! one matrix (inverse iteration, rounding) pay for it once.
+
+use faer::linalg::solvers::Solve;
+use faer::sparse::{SparseColMat, Triplet};
+use faer::{c64, MatMut, Side};
+
+/// A sparse Cholesky factorisation `A = L·Lᵀ`, ready to solve with.
+pub struct SpdSolver {
+    n: usize,
+    llt: faer::sparse::linalg::solvers::Llt<usize, f64>,
+}
+
+impl SpdSolver {
+    /// Factorises the `n × n` matrix given by `triplets` (lower triangle
+    /// read, duplicates summed).
+    pub fn new(n: usize, triplets: &[(u32, u32, f64)]) -> Result<Self, String> {
+        let mut lower = Vec::with_capacity(triplets.len());
+        for &(r, c, v) in triplets {
+            let (r, c) = (r as usize, c as usize);
+            if r >= n || c >= n {
+                return Err(format!(
+                    "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
+                ));
+            }
+            if !v.is_finite() {
+                return Err(format!("sparse entry ({r}, {c}) is not finite"));
+            }
+            if r >= c {
+                lower.push(Triplet::new(r, c, v));
+            }
+        }
+        let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &lower)
+            .map_err(|e| format!("sparse matrix: {e:?}"))?;
+        let llt = a
+            .sp_cholesky(Side::Lower)
+            .map_err(|e| format!("sparse Cholesky ({n} unknowns): {e}"))?;
+        Ok(SpdSolver { n, llt })
+    }
+
+    /// Solves `A·x = rhs`.
+    pub fn solve(&self, rhs: &[f64]) -> Result<Vec<f64>, String> {
+        if rhs.len() != self.n {
+            return Err(format!(
+                "right-hand side of length {} for {} unknowns",
+                rhs.len(),
+                self.n
+            ));
+        }
+        let mut x = rhs.to_vec();
+        self.llt
+            .solve_in_place(MatMut::from_column_major_slice_mut(&mut x, self.n, 1));
+        if x.iter().all(|v| v.is_finite()) {
+            Ok(x)
+        } else {
+            Err(format!(
+                "sparse solve ({} unknowns): non-finite solution",
+                self.n
+            ))
+        }
+    }
+}
+
+/// A sparse Cholesky factorisation `A = L·Lᴴ` of a complex Hermitian
+/// positive definite matrix (the cross field's system: half the unknowns
+/// of its real form and, measured on an 82k-face sphere, a factorisation
+/// six times faster: 0.22 s against 1.45 s).
+pub struct HpdSolver {
+    n: usize,
+    llt: faer::sparse::linalg::solvers::Llt<usize, c64>,
+}
+
+impl HpdSolver {
+    /// Factorises the `n × n` matrix given by `triplets` (lower triangle
+    /// read, duplicates summed).
+    pub fn new(n: usize, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
+        let mut lower = Vec::with_capacity(triplets.len());
+        for &(r, c, v) in triplets {
+            let (r, c) = (r as usize, c as usize);
+            if r >= n || c >= n {
+                return Err(format!(
+                    "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
+                ));
+            }
+            if !(v.re.is_finite() && v.im.is_finite()) {
+                return Err(format!("sparse entry ({r}, {c}) is not finite"));
+            }
+            if r >= c {
+                lower.push(Triplet::new(r, c, v));
+            }
+        }
+        let a = SparseColMat::<usize, c64>::try_new_from_triplets(n, n, &lower)
+            .map_err(|e| format!("sparse matrix: {e:?}"))?;
+        let llt = a
+            .sp_cholesky(Side::Lower)
+            .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e}"))?;
+        Ok(HpdSolver { n, llt })
+    }
+
+    /// Solves `A·x = rhs`.
+    pub fn solve(&self, rhs: &[c64]) -> Result<Vec<c64>, String> {
+        if rhs.len() != self.n {
+            return Err(format!(
+                "right-hand side of length {} for {} unknowns",
+                rhs.len(),
+                self.n
+            ));
+        }
+        let mut x = rhs.to_vec();
+        self.llt
+            .solve_in_place(MatMut::from_column_major_slice_mut(&mut x, self.n, 1));
+        if x.iter().all(|v| v.re.is_finite() && v.im.is_finite()) {
+            Ok(x)
+        } else {
+            Err(format!(
+                "sparse solve ({} unknowns): non-finite solution",
+                self.n
+            ))
+        }
+    }
+}
+
+/// Solves the symmetric positive definite system `A·x = rhs`, `A` given
+/// by `triplets` as for [`SpdSolver::new`].
+pub fn solve_spd(n: usize, triplets: &[(u32, u32, f64)], rhs: &[f64]) -> Result<Vec<f64>, String> {
+    SpdSolver::new(n, triplets)?.solve(rhs)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn solves_a_path_laplacian_with_duplicates() {
+        // (L + I) x = b on a path of 4 nodes, entries given twice (summed)
+        let n = 4;
+        let mut t = Vec::new();
+        for i in 0..n as u32 {
+            t.push((i, i, 0.5));
+            t.push((i, i, 0.5));
+        }
+        for i in 0..n as u32 - 1 {
+            t.extend([
+                (i, i, 1.0),
+                (i + 1, i + 1, 1.0),
+                (i + 1, i, -1.0),
+                (i, i + 1, -1.0),
+            ]);
+        }
+        let b = [1.0, 2.0, 3.0, 4.0];
+        let x = solve_spd(n, &t, &b).unwrap();
+        // check A x = b with the full matrix
+        let mut ax = [0.0; 4];
+        for &(r, c, v) in &t {
+            ax[r as usize] += v * x[c as usize];
+        }
+        for i in 0..n {
+            assert!((ax[i] - b[i]).abs() < 1e-12, "{ax:?}");
+        }
+    }
+
+    #[test]
+    fn solves_a_hermitian_system() {
+        // [[2, −i], [i, 2]] x = [1, 0]  →  x = [2, −i] / 3
+        let i = c64::new(0.0, 1.0);
+        let two = c64::new(2.0, 0.0);
+        let t = [(0, 0, two), (1, 1, two), (1, 0, i), (0, 1, -i)];
+        let x = HpdSolver::new(2, &t)
+            .unwrap()
+            .solve(&[c64::new(1.0, 0.0), c64::new(0.0, 0.0)])
+            .unwrap();
+        assert!((x[0] - c64::new(2.0 / 3.0, 0.0)).norm() < 1e-12, "{x:?}");
+        assert!((x[1] - c64::new(0.0, -1.0 / 3.0)).norm() < 1e-12, "{x:?}");
+    }
+
+    #[test]
+    fn rejects_indefinite_and_out_of_range() {
+        assert!(solve_spd(2, &[(0, 0, 1.0), (1, 1, -1.0)], &[1.0, 1.0]).is_err());
+        let e = solve_spd(2, &[(0, 2, 1.0)], &[1.0, 1.0]).unwrap_err();
+        assert!(e.contains("outside"), "{e}");
+        let e = solve_spd(1, &[(0, 0, 1.0)], &[1.0, 1.0]).unwrap_err();
+        assert!(e.contains("length"), "{e}");
+    }
+}

@@ -1,0 +1,195 @@
+//! Cross field, singularities and cut on the generated test surfaces.
+
+use dualex_remesh::shapes::{bumpy_square, cube, icosphere, plate_with_holes, torus};
+use dualex_remesh::smooth::field_energy;
+use dualex_remesh::{cross_field, cut_to_disk, Cut, FieldOptions, FieldResult, Surface};
+use std::f64::consts::FRAC_PI_2;
+
+fn field(s: &Surface) -> FieldResult {
+    cross_field(s, &FieldOptions::default()).unwrap()
+}
+
+fn quarters(r: &FieldResult) -> i64 {
+    r.singularities.iter().map(|&(_, q)| i64::from(q)).sum()
+}
+
+/// Poincaré–Hopf on a closed surface and a valid cut.
+fn check_closed(name: &str, s: &Surface) -> FieldResult {
+    let r = field(s);
+    assert_eq!(
+        quarters(&r),
+        4 * s.euler_characteristic(),
+        "{name}: Σ index ≠ χ; singularities {:?}",
+        r.singularities
+    );
+    let cut = cut_to_disk(s, &r.singularities).unwrap();
+    cut.check(s, &r.singularities)
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    r
+}
+
+#[test]
+fn sphere_has_eight_quarter_singularities() {
+    let s = icosphere(3);
+    let r = check_closed("icosphere", &s);
+    assert!(r.fixed.iter().all(|&f| !f) && r.sharp.iter().all(|&e| !e));
+    assert_eq!(r.singularities.len(), 8, "{:?}", r.singularities);
+    assert!(r.singularities.iter().all(|&(_, q)| q == 1));
+}
+
+#[test]
+fn torus_index_sum_is_zero() {
+    // the relaxed smoothest field of a torus of revolution has ± pairs on
+    // the inner side (see the `smooth` module docs): check they pair up
+    let r = check_closed("torus", &torus(3.0, 1.0, 48, 16));
+    let plus = r.singularities.iter().filter(|&&(_, q)| q == 1).count();
+    let minus = r.singularities.iter().filter(|&&(_, q)| q == -1).count();
+    assert_eq!(plus + minus, r.singularities.len(), "{:?}", r.singularities);
+    assert_eq!(plus, minus);
+    assert!(r.singularities.len() <= 16, "{:?}", r.singularities);
+}
+
+#[test]
+fn cube_field_follows_the_edges_with_a_singularity_per_corner() {
+    let s = cube(4);
+    let r = check_closed("cube", &s);
+    assert_eq!(r.sharp.iter().filter(|&&e| e).count(), 12 * 4);
+    let mut corners: Vec<u32> = r
+        .singularities
+        .iter()
+        .map(|&(v, q)| {
+            assert_eq!(q, 1, "vertex {v}");
+            v
+        })
+        .collect();
+    corners.sort_unstable();
+    let mut want: Vec<u32> = (0..s.positions.len() as u32)
+        .filter(|&v| {
+            s.positions[v as usize]
+                .iter()
+                .all(|&c| c == 0.0 || c == 1.0)
+        })
+        .collect();
+    want.sort_unstable();
+    assert_eq!(corners, want);
+    // every face of the cube is flat: the field is axis-aligned everywhere
+    for (f, &a) in r.field.angle.iter().enumerate() {
+        assert!(field_axis_aligned(&s, f as u32, a), "face {f}: angle {a}");
+    }
+}
+
+/// The direction `a` of face `f` is along a coordinate axis.
+fn field_axis_aligned(s: &Surface, f: u32, a: f64) -> bool {
+    let [e1, e2, _] = s.frames[f as usize];
+    let d: Vec<f64> = (0..3).map(|i| a.cos() * e1[i] + a.sin() * e2[i]).collect();
+    d.iter().filter(|c| c.abs() > 1e-6).count() == 1
+}
+
+#[test]
+fn genus_three_plate_index_sum() {
+    let s = plate_with_holes(3, 2);
+    let r = check_closed("plate with 3 holes", &s);
+    // the convex corners are +1/4, the concave ones (inside the holes'
+    // corners meet the plate faces) −1/4
+    // 8 outer corners, 8 concave corners per hole (top and bottom)
+    let plus = r.singularities.iter().filter(|&&(_, q)| q == 1).count();
+    let minus = r.singularities.iter().filter(|&&(_, q)| q == -1).count();
+    assert_eq!((plus, minus, r.singularities.len()), (8, 24, 32));
+}
+
+#[test]
+fn square_patch_field_follows_the_boundary_and_is_smooth() {
+    let s = bumpy_square(16, 0.15);
+    let r = field(&s);
+    assert!(r.singularities.is_empty(), "{:?}", r.singularities);
+    for (f, &fixed) in r.fixed.iter().enumerate() {
+        let on_boundary = s.face_edges[f].iter().any(|&e| s.is_boundary_edge(e));
+        assert_eq!(fixed, on_boundary, "face {f}");
+        for &e in &s.face_edges[f] {
+            if s.is_boundary_edge(e) {
+                let d = r.field.angle[f] - s.edge_angle(e, f as u32);
+                let off = (d / FRAC_PI_2 - (d / FRAC_PI_2).round()).abs();
+                assert!(off < 1e-9, "face {f} edge {e}: {d}");
+            }
+        }
+    }
+    // a minimiser: turning any free face increases the energy
+    let e0 = field_energy(&s, &r.field.angle);
+    for f in (0..s.triangles.len()).filter(|&f| !r.fixed[f]).step_by(37) {
+        for da in [-0.05, 0.05] {
+            let mut a = r.field.angle.clone();
+            a[f] += da;
+            assert!(field_energy(&s, &a) > e0, "face {f} turned by {da}");
+        }
+    }
+    let cut = cut_to_disk(&s, &r.singularities).unwrap();
+    cut.check(&s, &r.singularities).unwrap();
+    assert!(cut.is_cut.iter().all(|&c| !c), "a disk needs no cut");
+}
+
+#[test]
+fn unit_steps_lower_the_energy_of_the_unit_field() {
+    for s in [icosphere(3), torus(3.0, 1.0, 48, 16)] {
+        let energy = |steps| {
+            let opts = FieldOptions {
+                unit_steps: steps,
+                ..FieldOptions::default()
+            };
+            let r = cross_field(&s, &opts).unwrap();
+            field_energy(&s, &r.field.angle)
+        };
+        let (linear, unit) = (energy(0), energy(10));
+        assert!(unit < 0.95 * linear, "{unit} vs {linear}");
+    }
+}
+
+#[test]
+fn the_checker_rejects_bad_cuts() {
+    let s = torus(3.0, 1.0, 24, 8);
+    let none = Cut {
+        is_cut: vec![false; s.edges.len()],
+    };
+    let e = none.check(&s, &[]).unwrap_err();
+    assert!(e.contains("Euler characteristic 0"), "{e}");
+    let s = icosphere(1);
+    let r = field(&s);
+    let cut = cut_to_disk(&s, &r.singularities[..1]).unwrap();
+    let e = cut.check(&s, &r.singularities).unwrap_err();
+    assert!(e.contains("not on the cut"), "{e}");
+    assert!(cut_to_disk(&s, &[(9999, 1)]).is_err());
+}
+
+#[test]
+fn bad_options_are_errors() {
+    let s = icosphere(0);
+    let opts = FieldOptions {
+        sharp_degrees: f64::NAN,
+        ..FieldOptions::default()
+    };
+    assert!(cross_field(&s, &opts).is_err());
+}
+
+/// `cargo test -p dualex-remesh --profile ci --test field_cut -- --ignored --nocapture`
+#[test]
+#[ignore]
+fn timing_on_a_large_icosphere() {
+    for sub in [6u32, 7] {
+        let t0 = std::time::Instant::now();
+        let s = icosphere(sub);
+        let t1 = std::time::Instant::now();
+        let r = field(&s);
+        let t2 = std::time::Instant::now();
+        let cut = cut_to_disk(&s, &r.singularities).unwrap();
+        let t3 = std::time::Instant::now();
+        cut.check(&s, &r.singularities).unwrap();
+        println!(
+            "icosphere({sub}): {} triangles; surface {:.3} s, field {:.3} s, cut {:.3} s; {} singularities, {} cut edges",
+            s.triangles.len(),
+            (t1 - t0).as_secs_f64(),
+            (t2 - t1).as_secs_f64(),
+            (t3 - t2).as_secs_f64(),
+            r.singularities.len(),
+            cut.is_cut.iter().filter(|&&c| c).count()
+        );
+    }
+}
