@@ -117,6 +117,39 @@ pub fn bumpy_square(n: u32, amplitude: f64) -> Surface {
     build(p, t)
 }
 
+/// The flat ring `1 ≤ |(x, y)| ≤ 2` with `nr` rings of `nphi` cells (two
+/// triangles per cell): an annulus, two boundary loops.
+pub fn annulus(nphi: u32, nr: u32) -> Surface {
+    let mut p = Vec::new();
+    for j in 0..=nr {
+        let r = 1.0 + f64::from(j) / f64::from(nr);
+        for i in 0..nphi {
+            let a = 2.0 * PI * f64::from(i) / f64::from(nphi);
+            p.push([r * a.cos(), r * a.sin(), 0.0]);
+        }
+    }
+    let id = |i: u32, j: u32| j * nphi + i % nphi;
+    let mut t = Vec::new();
+    for j in 0..nr {
+        for i in 0..nphi {
+            t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    build(p, t)
+}
+
+/// Two surfaces as one (the second's vertices renumbered after the
+/// first's): a surface of two components.
+pub fn disjoint_union(a: &Surface, b: &Surface) -> Surface {
+    let off = a.positions.len() as u32;
+    let mut p = a.positions.clone();
+    p.extend_from_slice(&b.positions);
+    let mut t = a.triangles.clone();
+    t.extend(b.triangles.iter().map(|t| t.map(|v| v + off)));
+    build(p, t)
+}
+
 /// The cube `[0,1]³`, each face an `n × n` grid: sharp edges and eight
 /// corners of angle defect `π/2`.
 pub fn cube(n: u32) -> Surface {
@@ -210,6 +243,10 @@ mod tests {
         assert_eq!(s.euler_characteristic(), 2);
         assert_eq!(torus(3.0, 1.0, 12, 8).euler_characteristic(), 0);
         assert_eq!(bumpy_square(6, 0.2).euler_characteristic(), 1);
+        assert_eq!(annulus(12, 3).euler_characteristic(), 0);
+        let two = disjoint_union(&icosphere(0), &bumpy_square(2, 0.0));
+        assert_eq!(two.euler_characteristic(), 3);
+        assert_eq!(two.triangles.len(), 28);
         let c = cube(3);
         assert_eq!(c.triangles.len(), 6 * 9 * 2);
         assert_eq!(c.euler_characteristic(), 2);

@@ -46,6 +46,7 @@ use crate::field::CrossField;
 use crate::singularity::vertex_indices;
 use crate::sparse::HpdSolver;
 use crate::surface::{dot, norm, sub, Surface, NO_FACE};
+use dualex_map::timing::Laps;
 use faer::c64;
 
 /// Options of [`cross_field`].
@@ -90,6 +91,8 @@ pub struct FieldResult {
     pub sharp: Vec<bool>,
     /// Per face: its direction was fixed to a boundary or sharp edge.
     pub fixed: Vec<bool>,
+    /// Wall-clock laps of the steps: (name, milliseconds).
+    pub laps: Vec<(String, f64)>,
 }
 
 /// The smoothest cross field of `surface`; see the module docs.
@@ -104,9 +107,18 @@ pub fn cross_field(surface: &Surface, opts: &FieldOptions) -> Result<FieldResult
             opts.sharp_degrees
         ));
     }
+    if opts.unit_steps > 0 && !(opts.unit_shift.is_finite() && opts.unit_shift > 0.0) {
+        return Err(format!(
+            "cross field: unit-step shift {} is not a positive number",
+            opts.unit_shift
+        ));
+    }
+    let mut laps = Laps::start();
+    check_manifold_vertices(surface)?;
     let sharp = sharp_edges(surface, opts.sharp_degrees);
     let fixed_angle = fixed_directions(surface, &sharp, opts.align_boundary);
-    let z = solve_field(surface, &fixed_angle, opts)?;
+    laps.lap("field: checks, constraints");
+    let z = solve_field(surface, &fixed_angle, opts, &mut laps)?;
     let angle = (0..nf)
         .map(|f| match fixed_angle[f] {
             Some(a) => a,
@@ -115,13 +127,40 @@ pub fn cross_field(surface: &Surface, opts: &FieldOptions) -> Result<FieldResult
         .collect();
     let field = CrossField::from_angles(surface, angle);
     let singularities = vertex_indices(surface, &field);
+    laps.lap("field: matchings, singularities");
     let fixed = fixed_angle.iter().map(Option::is_some).collect();
     Ok(FieldResult {
         field,
         singularities,
         sharp,
         fixed,
+        laps: laps.into_laps(),
     })
+}
+
+/// An error naming the first vertex whose faces form more than one fan
+/// (two sheets touching at a vertex): its index would be meaningless.
+fn check_manifold_vertices(surface: &Surface) -> Result<(), String> {
+    let uncut = crate::cut::Cut {
+        is_cut: vec![false; surface.edges.len()],
+    };
+    let (corners, count) = uncut.corner_vertices(surface);
+    let mut owner = vec![u32::MAX; count as usize];
+    for (t, c) in surface.triangles.iter().zip(&corners) {
+        for i in 0..3 {
+            owner[c[i] as usize] = t[i];
+        }
+    }
+    let mut fans = vec![0u32; surface.positions.len()];
+    for v in owner {
+        fans[v as usize] += 1;
+        if fans[v as usize] > 1 {
+            return Err(format!(
+                "cross field: vertex {v} is not manifold (its triangles form several fans)"
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Interior edges whose dihedral angle exceeds `degrees`.
@@ -199,6 +238,7 @@ fn solve_field(
     surface: &Surface,
     fixed: &[Option<f64>],
     opts: &FieldOptions,
+    laps: &mut Laps,
 ) -> Result<Vec<c64>, String> {
     let nf = surface.triangles.len();
     let mut z: Vec<c64> = fixed
@@ -233,7 +273,9 @@ fn solve_field(
         .map(|&f| c64::cis(f64::from(f.wrapping_mul(2_654_435_761) >> 8) * 1e-3))
         .collect();
     let eps = 1e-6 * mean_w / mean_area;
+    laps.lap("field: assemble");
     let solver = shifted(&laplacian, &mass, eps)?;
+    laps.lap("field: factorise");
     for _ in 0..opts.max_iterations.max(1) {
         let rhs: Vec<c64> = (0..free.len())
             .map(|k| b[k] + x[k] * (eps * mass[k]))
@@ -249,10 +291,12 @@ fn solve_field(
             break;
         }
     }
+    laps.lap("field: linear iteration");
     if opts.unit_steps > 0 {
         // diffuse and project to unit length (see `FieldOptions::unit_steps`)
         let mu = opts.unit_shift * mean_w / mean_area;
         let solver = shifted(&laplacian, &mass, mu)?;
+        laps.lap("field: factorise (unit steps)");
         for _ in 0..opts.unit_steps {
             let rhs: Vec<c64> = (0..free.len())
                 .map(|k| {
@@ -265,6 +309,7 @@ fn solve_field(
                 .solve(&rhs)
                 .map_err(|e| format!("cross field: {e}"))?;
         }
+        laps.lap("field: unit steps");
     }
     for (k, &f) in free.iter().enumerate() {
         z[f as usize] = x[k];

@@ -1,6 +1,8 @@
 //! Cross field, singularities and cut on the generated test surfaces.
 
-use dualex_remesh::shapes::{bumpy_square, cube, icosphere, plate_with_holes, torus};
+use dualex_remesh::shapes::{
+    annulus, bumpy_square, cube, disjoint_union, icosphere, plate_with_holes, torus,
+};
 use dualex_remesh::smooth::field_energy;
 use dualex_remesh::{cross_field, cut_to_disk, Cut, FieldOptions, FieldResult, Surface};
 use std::f64::consts::FRAC_PI_2;
@@ -144,6 +146,63 @@ fn unit_steps_lower_the_energy_of_the_unit_field() {
 }
 
 #[test]
+fn annulus_cut_joins_the_two_boundaries() {
+    let s = annulus(48, 8);
+    let r = field(&s);
+    assert!(r.singularities.is_empty(), "{:?}", r.singularities);
+    let cut = cut_to_disk(&s, &r.singularities).unwrap();
+    cut.check(&s, &r.singularities).unwrap();
+    let cut_edges: Vec<usize> = (0..s.edges.len()).filter(|&e| cut.is_cut[e]).collect();
+    // one path from the inner loop (radius 1) to the outer one (radius 2)
+    assert!(!cut_edges.is_empty());
+    let radius = |v: u32| {
+        let p = s.positions[v as usize];
+        (p[0] * p[0] + p[1] * p[1]).sqrt()
+    };
+    let ends: Vec<f64> = cut_edges
+        .iter()
+        .flat_map(|&e| s.edges[e])
+        .filter(|&v| s.boundary_vertex[v as usize])
+        .map(radius)
+        .collect();
+    assert!(ends.iter().any(|&r| (r - 1.0).abs() < 1e-9), "{ends:?}");
+    assert!(ends.iter().any(|&r| (r - 2.0).abs() < 1e-9), "{ends:?}");
+}
+
+#[test]
+fn components_with_and_without_constraints() {
+    // a closed sphere (inverse iteration) beside a patch (fixed faces)
+    let s = disjoint_union(&icosphere(3), &bumpy_square(12, 0.1));
+    let r = field(&s);
+    let sphere_vertices = icosphere(3).positions.len() as u32;
+    let on_sphere: i64 = r
+        .singularities
+        .iter()
+        .filter(|&&(v, _)| v < sphere_vertices)
+        .map(|&(_, q)| i64::from(q))
+        .sum();
+    assert_eq!(on_sphere, 8);
+    assert_eq!(quarters(&r), 8, "{:?}", r.singularities);
+    let cut = cut_to_disk(&s, &r.singularities).unwrap();
+    cut.check(&s, &r.singularities).unwrap();
+}
+
+#[test]
+fn non_manifold_vertices_are_errors() {
+    // two triangles sharing only vertex 0
+    let p = vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [0.0, -1.0, 0.0],
+    ];
+    let s = Surface::new(p, vec![[0, 1, 2], [0, 3, 4]]).unwrap();
+    let e = cross_field(&s, &FieldOptions::default()).unwrap_err();
+    assert!(e.contains("vertex 0 is not manifold"), "{e}");
+}
+
+#[test]
 fn the_checker_rejects_bad_cuts() {
     let s = torus(3.0, 1.0, 24, 8);
     let none = Cut {
@@ -167,15 +226,25 @@ fn bad_options_are_errors() {
         ..FieldOptions::default()
     };
     assert!(cross_field(&s, &opts).is_err());
+    let opts = FieldOptions {
+        unit_shift: 0.0,
+        ..FieldOptions::default()
+    };
+    assert!(cross_field(&s, &opts).is_err());
 }
 
 /// `cargo test -p dualex-remesh --profile ci --test field_cut -- --ignored --nocapture`
 #[test]
 #[ignore]
 fn timing_on_a_large_icosphere() {
-    for sub in [6u32, 7] {
+    let shapes: [(&str, fn() -> Surface); 3] = [
+        ("icosphere(6)", || icosphere(6)),
+        ("torus 224 × 224", || torus(3.0, 1.0, 224, 224)),
+        ("icosphere(7)", || icosphere(7)),
+    ];
+    for (name, make) in shapes {
         let t0 = std::time::Instant::now();
-        let s = icosphere(sub);
+        let s = make();
         let t1 = std::time::Instant::now();
         let r = field(&s);
         let t2 = std::time::Instant::now();
@@ -183,7 +252,7 @@ fn timing_on_a_large_icosphere() {
         let t3 = std::time::Instant::now();
         cut.check(&s, &r.singularities).unwrap();
         println!(
-            "icosphere({sub}): {} triangles; surface {:.3} s, field {:.3} s, cut {:.3} s; {} singularities, {} cut edges",
+            "{name}: {} triangles; surface {:.3} s, field {:.3} s, cut {:.3} s; {} singularities, {} cut edges",
             s.triangles.len(),
             (t1 - t0).as_secs_f64(),
             (t2 - t1).as_secs_f64(),
@@ -191,5 +260,8 @@ fn timing_on_a_large_icosphere() {
             r.singularities.len(),
             cut.is_cut.iter().filter(|&&c| c).count()
         );
+        for (lap, ms) in &r.laps {
+            println!("  {lap}: {ms:.0} ms");
+        }
     }
 }
