@@ -237,7 +237,8 @@ fn bad_options_are_errors() {
 #[test]
 #[ignore]
 fn timing_on_a_large_icosphere() {
-    let shapes: [(&str, fn() -> Surface); 3] = [
+    type Make = fn() -> Surface;
+    let shapes: [(&str, Make); 3] = [
         ("icosphere(6)", || icosphere(6)),
         ("torus 224 × 224", || torus(3.0, 1.0, 224, 224)),
         ("icosphere(7)", || icosphere(7)),
