@@ -16,17 +16,26 @@
 //! to `2π·χ` (Gauss–Bonnet): `Σ index = χ` (Poincaré–Hopf), which the
 //! tests check.
 //!
-//! Boundary vertices are skipped: their index would need the boundary's
-//! turning angle, and the field is aligned to the boundary anyway.
+//! Boundary vertices have their own index ([`boundary_indices`]), for a
+//! field that follows the boundary: the turning from the first boundary
+//! edge to the last one through the fan, `(π − Σ corner angles + Σ ±jump)
+//! / 2π` (a square's corner `+1/4`, a straight boundary `0`, a concave
+//! right angle `−1/4`). With them Poincaré–Hopf holds on surfaces with
+//! boundary too: `Σ interior + Σ boundary = χ`.
 
 use crate::field::CrossField;
 use crate::surface::{dot, norm, sub, Surface, NO_FACE};
 use std::f64::consts::{FRAC_PI_2, PI};
 
-/// The turning `d(v) + Σ ±jump` of every vertex, in radians (boundary
-/// vertices included, but meaningless there).
+/// The turning `d(v) + Σ ±jump` of every vertex, in radians, with
+/// `d(v) = 2π − Σ angles` inside and `π − Σ angles` on the boundary
+/// (`2π` for a vertex of no triangle).
 pub fn vertex_turning(surface: &Surface, field: &CrossField) -> Vec<f64> {
-    let mut turn = vec![2.0 * PI; surface.positions.len()];
+    let mut turn: Vec<f64> = surface
+        .boundary_vertex
+        .iter()
+        .map(|&b| if b { PI } else { 2.0 * PI })
+        .collect();
     for t in &surface.triangles {
         for i in 0..3 {
             let [v, a, b] =
@@ -50,10 +59,29 @@ pub fn vertex_turning(surface: &Surface, field: &CrossField) -> Vec<f64> {
 
 /// Interior vertices of nonzero index, as `(vertex, quarters)`.
 pub fn vertex_indices(surface: &Surface, field: &CrossField) -> Vec<(u32, i32)> {
+    indices(surface, field, false)
+}
+
+/// Boundary vertices of nonzero index, as `(vertex, quarters)`:
+/// meaningful when the field follows the boundary (the faces on both
+/// boundary edges of the vertex), as [`crate::cross_field`] makes it by
+/// default.
+pub fn boundary_indices(surface: &Surface, field: &CrossField) -> Vec<(u32, i32)> {
+    indices(surface, field, true)
+}
+
+/// The vertices used by a triangle get an index; the others are skipped.
+fn indices(surface: &Surface, field: &CrossField, boundary: bool) -> Vec<(u32, i32)> {
+    let mut used = vec![false; surface.positions.len()];
+    for t in &surface.triangles {
+        for &v in t {
+            used[v as usize] = true;
+        }
+    }
     vertex_turning(surface, field)
         .iter()
         .enumerate()
-        .filter(|&(v, _)| !surface.boundary_vertex[v])
+        .filter(|&(v, _)| used[v] && surface.boundary_vertex[v] == boundary)
         .filter_map(|(v, &t)| {
             let q = (t / FRAC_PI_2).round() as i32;
             (q != 0).then_some((v as u32, q))

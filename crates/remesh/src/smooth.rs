@@ -47,7 +47,7 @@
 //! on 328k faces (the fill-in grows faster than the size).
 
 use crate::field::CrossField;
-use crate::singularity::vertex_indices;
+use crate::singularity::{boundary_indices, vertex_indices};
 use crate::sparse::HpdSolver;
 use crate::surface::{dot, norm, sub, Surface, NO_FACE};
 use dualex_map::timing::Laps;
@@ -91,6 +91,10 @@ pub struct FieldResult {
     /// Interior vertices of nonzero index, as `(vertex, quarters)`: the
     /// index is `quarters / 4` (see [`crate::singularity`]).
     pub singularities: Vec<(u32, i32)>,
+    /// Boundary vertices of nonzero index, as `(vertex, quarters)` (see
+    /// [`crate::singularity::boundary_indices`]; empty unless the field
+    /// follows the boundary).
+    pub boundary_singularities: Vec<(u32, i32)>,
     /// Per edge: a sharp interior edge (boundary edges are `false`).
     pub sharp: Vec<bool>,
     /// Per face: its direction was fixed to a boundary or sharp edge.
@@ -131,11 +135,17 @@ pub fn cross_field(surface: &Surface, opts: &FieldOptions) -> Result<FieldResult
         .collect();
     let field = CrossField::from_angles(surface, angle);
     let singularities = vertex_indices(surface, &field);
+    let boundary_singularities = if opts.align_boundary {
+        boundary_indices(surface, &field)
+    } else {
+        Vec::new()
+    };
     laps.lap("field: matchings, singularities");
     let fixed = fixed_angle.iter().map(Option::is_some).collect();
     Ok(FieldResult {
         field,
         singularities,
+        boundary_singularities,
         sharp,
         fixed,
         laps: laps.into_laps(),

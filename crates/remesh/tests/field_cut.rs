@@ -3,6 +3,7 @@
 use dualex_remesh::shapes::{
     annulus, bumpy_square, cube, disjoint_union, icosphere, plate_with_holes, torus,
 };
+use dualex_remesh::singularity::vertex_turning;
 use dualex_remesh::smooth::field_energy;
 use dualex_remesh::{cross_field, cut_to_disk, Cut, FieldOptions, FieldResult, Surface};
 use std::f64::consts::FRAC_PI_2;
@@ -15,9 +16,44 @@ fn quarters(r: &FieldResult) -> i64 {
     r.singularities.iter().map(|&(_, q)| i64::from(q)).sum()
 }
 
+/// Every vertex's turning is a whole number of quarter turns (up to
+/// rounding): the field and the index formula agree.
+fn check_turning(name: &str, s: &Surface, r: &FieldResult) {
+    for (v, t) in vertex_turning(s, &r.field).into_iter().enumerate() {
+        // (a vertex of no triangle turns 2π: a whole number too)
+        let off = (t / FRAC_PI_2 - (t / FRAC_PI_2).round()).abs();
+        assert!(off < 1e-6, "{name}: vertex {v} turns {t}");
+    }
+}
+
+/// Poincaré–Hopf with boundary: Σ interior + Σ boundary = χ.
+fn check_poincare_hopf(name: &str, s: &Surface, r: &FieldResult) {
+    let mut used = vec![false; s.positions.len()];
+    s.triangles
+        .iter()
+        .flatten()
+        .for_each(|&v| used[v as usize] = true);
+    let unused = used.iter().filter(|&&u| !u).count() as i64;
+    let boundary: i64 = r
+        .boundary_singularities
+        .iter()
+        .map(|&(_, q)| i64::from(q))
+        .sum();
+    assert_eq!(
+        quarters(r) + boundary,
+        4 * (s.euler_characteristic() - unused),
+        "{name}: {:?} + boundary {:?}",
+        r.singularities,
+        r.boundary_singularities
+    );
+    check_turning(name, s, r);
+}
+
 /// Poincaré–Hopf on a closed surface and a valid cut.
 fn check_closed(name: &str, s: &Surface) -> FieldResult {
     let r = field(s);
+    check_turning(name, s, &r);
+    assert!(r.boundary_singularities.is_empty());
     assert_eq!(
         quarters(&r),
         4 * s.euler_characteristic(),
@@ -104,6 +140,17 @@ fn square_patch_field_follows_the_boundary_and_is_smooth() {
     let s = bumpy_square(16, 0.15);
     let r = field(&s);
     assert!(r.singularities.is_empty(), "{:?}", r.singularities);
+    check_poincare_hopf("square", &s, &r);
+    let mut corners: Vec<u32> = r
+        .boundary_singularities
+        .iter()
+        .map(|&(v, q)| {
+            assert_eq!(q, 1);
+            v
+        })
+        .collect();
+    corners.sort_unstable();
+    assert_eq!(corners, [0, 16, 17 * 16, 17 * 17 - 1]);
     for (f, &fixed) in r.fixed.iter().enumerate() {
         let on_boundary = s.face_edges[f].iter().any(|&e| s.is_boundary_edge(e));
         assert_eq!(fixed, on_boundary, "face {f}");
@@ -146,10 +193,49 @@ fn unit_steps_lower_the_energy_of_the_unit_field() {
 }
 
 #[test]
+fn l_shape_has_five_convex_and_one_concave_boundary_corner() {
+    // an 8 × 8 grid of unit cells without its upper right 4 × 4 quarter
+    let id = |i: u32, j: u32| j * 9 + i;
+    let p: Vec<[f64; 3]> = (0..81)
+        .map(|v| [f64::from(v % 9), f64::from(v / 9), 0.0])
+        .collect();
+    let mut t = Vec::new();
+    for j in 0..8 {
+        for i in 0..8 {
+            if i >= 4 && j >= 4 {
+                continue;
+            }
+            t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    // the vertices of the missing quarter's inside are used by no triangle
+    let s = Surface::new(p, t).unwrap();
+    let r = field(&s);
+    assert!(r.singularities.is_empty(), "{:?}", r.singularities);
+    let mut b = r.boundary_singularities.clone();
+    b.sort_unstable();
+    let want = [
+        (id(0, 0), 1),
+        (id(8, 0), 1),
+        (id(0, 8), 1),
+        (id(8, 4), 1),
+        (id(4, 4), -1),
+        (id(4, 8), 1),
+    ];
+    let mut want = want.to_vec();
+    want.sort_unstable();
+    assert_eq!(b, want);
+    check_poincare_hopf("L", &s, &r);
+}
+
+#[test]
 fn annulus_cut_joins_the_two_boundaries() {
     let s = annulus(48, 8);
     let r = field(&s);
     assert!(r.singularities.is_empty(), "{:?}", r.singularities);
+    assert!(r.boundary_singularities.is_empty());
+    check_poincare_hopf("annulus", &s, &r);
     let cut = cut_to_disk(&s, &r.singularities).unwrap();
     cut.check(&s, &r.singularities).unwrap();
     let cut_edges: Vec<usize> = (0..s.edges.len()).filter(|&e| cut.is_cut[e]).collect();
@@ -182,7 +268,7 @@ fn components_with_and_without_constraints() {
         .map(|&(_, q)| i64::from(q))
         .sum();
     assert_eq!(on_sphere, 8);
-    assert_eq!(quarters(&r), 8, "{:?}", r.singularities);
+    check_poincare_hopf("sphere + square", &s, &r);
     let cut = cut_to_disk(&s, &r.singularities).unwrap();
     cut.check(&s, &r.singularities).unwrap();
 }
