@@ -124,6 +124,55 @@ fn field_axis_aligned(s: &Surface, f: u32, a: f64) -> bool {
 }
 
 #[test]
+fn sharp_threshold_decides_which_creases_the_field_follows() {
+    // a strip folded along x = 0 by `bend` degrees: sharp iff bend > 35
+    let hinge = |bend: f64| {
+        let a = bend.to_radians();
+        let mut p = Vec::new();
+        for j in 0..=4 {
+            for i in 0..=8 {
+                let x = f64::from(i) / 4.0 - 1.0;
+                let (x, z) = if x <= 0.0 {
+                    (x, 0.0)
+                } else {
+                    (x * a.cos(), x * a.sin())
+                };
+                p.push([x, f64::from(j) / 4.0, z]);
+            }
+        }
+        let id = |i: u32, j: u32| j * 9 + i;
+        let mut t = Vec::new();
+        for j in 0..4 {
+            for i in 0..8 {
+                t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+                t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+            }
+        }
+        Surface::new(p, t).unwrap()
+    };
+    for (bend, sharp) in [(20.0, 0), (50.0, 4), (90.0, 4)] {
+        let s = hinge(bend);
+        let r = field(&s);
+        assert_eq!(
+            r.sharp.iter().filter(|&&e| e).count(),
+            sharp,
+            "bend {bend}°"
+        );
+        check_poincare_hopf(&format!("hinge {bend}°"), &s, &r);
+    }
+    // with a higher threshold nothing is sharp on a cube: the field is
+    // free (no boundary either) and still obeys Poincaré–Hopf
+    let s = cube(3);
+    let opts = FieldOptions {
+        sharp_degrees: 100.0,
+        ..FieldOptions::default()
+    };
+    let r = cross_field(&s, &opts).unwrap();
+    assert!(r.sharp.iter().all(|&e| !e) && r.fixed.iter().all(|&f| !f));
+    assert_eq!(quarters(&r), 8);
+}
+
+#[test]
 fn genus_three_plate_index_sum() {
     let s = plate_with_holes(3, 2);
     let r = check_closed("plate with 3 holes", &s);
