@@ -246,6 +246,24 @@ pub(crate) fn face_components(surface: &Surface) -> (Vec<u32>, u32) {
     (comp, count)
 }
 
+/// The energy on the free faces: `L`, `b` (from the fixed faces), the
+/// mass, and which components are pinned by a fixed face.
+struct System {
+    /// Free faces, in unknown order.
+    free: Vec<u32>,
+    /// `L` as full Hermitian triplets.
+    laplacian: Vec<(u32, u32, c64)>,
+    /// The right-hand side from the fixed faces.
+    b: Vec<c64>,
+    /// Per unknown: the face area.
+    mass: Vec<f64>,
+    /// Per unknown: its component; per component: has a fixed face.
+    comp: Vec<u32>,
+    pinned: Vec<bool>,
+    /// Mean edge weight over mean face area: the scale of the shifts.
+    scale: f64,
+}
+
 /// `z` per face: fixed faces keep `exp(4i·angle)`, free faces are solved
 /// for (see the module docs).
 fn solve_field(
@@ -254,50 +272,32 @@ fn solve_field(
     opts: &FieldOptions,
     laps: &mut Laps,
 ) -> Result<Vec<c64>, String> {
-    let nf = surface.triangles.len();
     let mut z: Vec<c64> = fixed
         .iter()
         .map(|a| a.map_or(c64::new(0.0, 0.0), |a| c64::cis(4.0 * a)))
         .collect();
-    // unknown number of each free face
-    let mut unknown = vec![u32::MAX; nf];
-    let mut free = Vec::new();
-    for f in 0..nf {
-        if fixed[f].is_none() {
-            unknown[f] = free.len() as u32;
-            free.push(f as u32);
-        }
-    }
-    if free.is_empty() {
+    let sys = system(surface, fixed, &z);
+    if sys.free.is_empty() {
         return Ok(z);
     }
-    let mean_area = surface.areas.iter().sum::<f64>() / nf as f64;
-    let (laplacian, b, mean_w) = assemble(surface, &unknown, &z);
-    let mass: Vec<f64> = free.iter().map(|&f| surface.areas[f as usize]).collect();
-    // components without a fixed face are normalised (inverse iteration)
-    let (comp, ncomp) = face_components(surface);
-    let mut pinned = vec![false; ncomp as usize];
-    for f in 0..nf {
-        pinned[comp[f] as usize] |= fixed[f].is_some();
-    }
-    let free_comp: Vec<u32> = free.iter().map(|&f| comp[f as usize]).collect();
+    laps.lap("field: assemble");
+    let eps = 1e-6 * sys.scale;
+    let solver = shifted(&sys, eps, None)?;
+    laps.lap("field: factorise");
     // a fixed pseudo-random start (matters only without fixed faces)
-    let mut x: Vec<c64> = free
+    let mut x: Vec<c64> = sys
+        .free
         .iter()
         .map(|&f| c64::cis(f64::from(f.wrapping_mul(2_654_435_761) >> 8) * 1e-3))
         .collect();
-    let eps = 1e-6 * mean_w / mean_area;
-    laps.lap("field: assemble");
-    let solver = shifted(&laplacian, &mass, eps, None)?;
-    laps.lap("field: factorise");
     for _ in 0..opts.max_iterations.max(1) {
-        let rhs: Vec<c64> = (0..free.len())
-            .map(|k| b[k] + x[k] * (eps * mass[k]))
+        let rhs: Vec<c64> = (0..x.len())
+            .map(|k| sys.b[k] + x[k] * (eps * sys.mass[k]))
             .collect();
         let mut y = solver
             .solve(&rhs)
             .map_err(|e| format!("cross field: {e}"))?;
-        normalise_components(&free_comp, &pinned, &mass, &mut y);
+        normalise_components(&sys, &mut y);
         let change: f64 = y.iter().zip(&x).map(|(a, b)| (a - b).norm_sqr()).sum();
         let size: f64 = y.iter().map(|a| a.norm_sqr()).sum();
         x = y;
@@ -308,15 +308,15 @@ fn solve_field(
     laps.lap("field: linear iteration");
     if opts.unit_steps > 0 {
         // diffuse and project to unit length (see `FieldOptions::unit_steps`)
-        let mu = opts.unit_shift * mean_w / mean_area;
-        let solver = shifted(&laplacian, &mass, mu, Some(&solver))?;
+        let mu = opts.unit_shift * sys.scale;
+        let solver = shifted(&sys, mu, Some(&solver))?;
         laps.lap("field: factorise (unit steps)");
         for _ in 0..opts.unit_steps {
-            let rhs: Vec<c64> = (0..free.len())
+            let rhs: Vec<c64> = (0..x.len())
                 .map(|k| {
                     let r = x[k].norm();
                     let unit = if r > 0.0 { x[k] / r } else { x[k] };
-                    b[k] + unit * (mu * mass[k])
+                    sys.b[k] + unit * (mu * sys.mass[k])
                 })
                 .collect();
             x = solver
@@ -325,27 +325,53 @@ fn solve_field(
         }
         laps.lap("field: unit steps");
     }
-    for (k, &f) in free.iter().enumerate() {
+    for (k, &f) in sys.free.iter().enumerate() {
         z[f as usize] = x[k];
     }
     Ok(z)
 }
 
+/// Numbers the free faces and assembles their [`System`].
+fn system(surface: &Surface, fixed: &[Option<f64>], z: &[c64]) -> System {
+    let nf = surface.triangles.len();
+    let mut unknown = vec![u32::MAX; nf];
+    let mut free = Vec::new();
+    for f in 0..nf {
+        if fixed[f].is_none() {
+            unknown[f] = free.len() as u32;
+            free.push(f as u32);
+        }
+    }
+    let (laplacian, b, mean_w) = assemble(surface, &unknown, z);
+    let mass = free.iter().map(|&f| surface.areas[f as usize]).collect();
+    let (face_comp, ncomp) = face_components(surface);
+    let mut pinned = vec![false; ncomp as usize];
+    for f in 0..nf {
+        pinned[face_comp[f] as usize] |= fixed[f].is_some();
+    }
+    let comp = free.iter().map(|&f| face_comp[f as usize]).collect();
+    let mean_area = surface.areas.iter().sum::<f64>() / nf as f64;
+    System {
+        free,
+        laplacian,
+        b,
+        mass,
+        comp,
+        pinned,
+        scale: mean_w / mean_area,
+    }
+}
+
 /// Factorises `L + shift·M` (reusing the symbolic factorisation of
 /// `like`, a matrix of the same pattern, when given).
-fn shifted(
-    laplacian: &[(u32, u32, c64)],
-    mass: &[f64],
-    shift: f64,
-    like: Option<&HpdSolver>,
-) -> Result<HpdSolver, String> {
-    let mut t = laplacian.to_vec();
-    for (k, &m) in mass.iter().enumerate() {
+fn shifted(sys: &System, shift: f64, like: Option<&HpdSolver>) -> Result<HpdSolver, String> {
+    let mut t = sys.laplacian.clone();
+    for (k, &m) in sys.mass.iter().enumerate() {
         t.push((k as u32, k as u32, c64::new(shift * m, 0.0)));
     }
     match like {
         Some(s) => s.refactor(&t),
-        None => HpdSolver::new(mass.len(), &t),
+        None => HpdSolver::new(sys.mass.len(), &t),
     }
     .map_err(|e| format!("cross field: {e}"))
 }
@@ -407,19 +433,19 @@ fn edge_weight(surface: &Surface, e: u32) -> f64 {
     dot(d, d) / (surface.areas[f0 as usize] + surface.areas[f1 as usize])
 }
 
-/// Scales the free faces of every component without a fixed face to
-/// unit area-weighted norm.
-fn normalise_components(comp: &[u32], pinned: &[bool], mass: &[f64], x: &mut [c64]) {
-    let mut norm2 = vec![0.0; pinned.len()];
-    let mut area = vec![0.0; pinned.len()];
-    for k in 0..x.len() {
-        norm2[comp[k] as usize] += mass[k] * x[k].norm_sqr();
-        area[comp[k] as usize] += mass[k];
+/// Scales the unknowns of every component without a fixed face to unit
+/// area-weighted norm.
+fn normalise_components(sys: &System, x: &mut [c64]) {
+    let mut norm2 = vec![0.0; sys.pinned.len()];
+    let mut area = vec![0.0; sys.pinned.len()];
+    for (k, z) in x.iter().enumerate() {
+        norm2[sys.comp[k] as usize] += sys.mass[k] * z.norm_sqr();
+        area[sys.comp[k] as usize] += sys.mass[k];
     }
-    for k in 0..x.len() {
-        let c = comp[k] as usize;
-        if !pinned[c] && norm2[c] > 0.0 {
-            x[k] *= (area[c] / norm2[c]).sqrt();
+    for (k, z) in x.iter_mut().enumerate() {
+        let c = sys.comp[k] as usize;
+        if !sys.pinned[c] && norm2[c] > 0.0 {
+            *z *= (area[c] / norm2[c]).sqrt();
         }
     }
 }
