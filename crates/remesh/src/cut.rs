@@ -4,7 +4,9 @@
 //! set of interior edges to cut along. Cutting along them (and the
 //! boundary, already open) leaves one topological disk per connected
 //! component, with every singular vertex on the cut or the boundary
-//! ([`Cut::check`] verifies both).
+//! ([`Cut::check`] verifies both), so the field combs on it
+//! ([`Cut::comb`]: quarter turns per face that make every uncut matching
+//! 0, what the seamless integration needs).
 //!
 //! Method (the standard one): a breadth-first spanning tree of the dual
 //! graph (faces, across interior edges) from the first face of each
@@ -20,6 +22,7 @@
 //! The cut is not the shortest possible one (a BFS tree from one face);
 //! the seamless integration does not depend on its shape.
 
+use crate::field::CrossField;
 use crate::surface::{Surface, NO_FACE};
 use std::collections::VecDeque;
 
@@ -127,6 +130,50 @@ fn prune(surface: &Surface, keep: &[bool], is_cut: &mut [bool]) {
 }
 
 impl Cut {
+    /// Combs the field on the cut-open surface: per face a number `r_f` of
+    /// quarter turns such that, rotating each face's direction back by
+    /// `r_f·π/2`, every uncut interior edge has matching 0
+    /// (`r_f1 = r_f0 + p_e mod 4`). Possible exactly when no singularity
+    /// is left inside the cut-open surface; the error names the first
+    /// edge where the quarter turns disagree.
+    pub fn comb(&self, surface: &Surface, field: &CrossField) -> Result<Vec<u8>, String> {
+        let nf = surface.triangles.len();
+        let mut rot = vec![u8::MAX; nf];
+        let mut stack = Vec::new();
+        for start in 0..nf {
+            if rot[start] != u8::MAX {
+                continue;
+            }
+            rot[start] = 0;
+            stack.push(start as u32);
+            while let Some(f) = stack.pop() {
+                for &e in &surface.face_edges[f as usize] {
+                    let [f0, f1] = surface.edge_faces[e as usize];
+                    if f1 == NO_FACE || self.is_cut[e as usize] {
+                        continue;
+                    }
+                    let p = field.matching[e as usize];
+                    let (g, want) = if f == f0 {
+                        (f1, (rot[f as usize] + p) % 4)
+                    } else {
+                        (f0, (rot[f as usize] + 4 - p % 4) % 4)
+                    };
+                    if rot[g as usize] == u8::MAX {
+                        rot[g as usize] = want;
+                        stack.push(g);
+                    } else if rot[g as usize] != want {
+                        let [a, b] = surface.edges[e as usize];
+                        return Err(format!(
+                            "the field does not comb across uncut edge {e} ({a}–{b}): \
+                             a singularity is not on the cut"
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(rot)
+    }
+
     /// The vertices of the cut-open surface: per face corner, the id of
     /// its copy of the vertex (corners around a vertex share a copy when
     /// they are joined across uncut interior edges), and the number of

@@ -49,6 +49,24 @@ fn check_poincare_hopf(name: &str, s: &Surface, r: &FieldResult) {
     check_turning(name, s, r);
 }
 
+/// The field combs on the cut surface: after the per-face quarter turns
+/// every uncut interior edge has matching 0.
+fn check_comb(name: &str, s: &Surface, r: &FieldResult, cut: &Cut) {
+    let rot = cut
+        .comb(s, &r.field)
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    for (e, &[f0, f1]) in s.edge_faces.iter().enumerate() {
+        if f1 != dualex_remesh::NO_FACE && !cut.is_cut[e] {
+            let p = r.field.matching[e];
+            assert_eq!(
+                (rot[f0 as usize] + p) % 4,
+                rot[f1 as usize],
+                "{name}: edge {e}"
+            );
+        }
+    }
+}
+
 /// Poincaré–Hopf on a closed surface and a valid cut.
 fn check_closed(name: &str, s: &Surface) -> FieldResult {
     let r = field(s);
@@ -63,6 +81,7 @@ fn check_closed(name: &str, s: &Surface) -> FieldResult {
     let cut = cut_to_disk(s, &r.singularities).unwrap();
     cut.check(s, &r.singularities)
         .unwrap_or_else(|e| panic!("{name}: {e}"));
+    check_comb(name, s, &r, &cut);
     r
 }
 
@@ -223,6 +242,7 @@ fn square_patch_field_follows_the_boundary_and_is_smooth() {
     let cut = cut_to_disk(&s, &r.singularities).unwrap();
     cut.check(&s, &r.singularities).unwrap();
     assert!(cut.is_cut.iter().all(|&c| !c), "a disk needs no cut");
+    check_comb("square", &s, &r, &cut);
 }
 
 #[test]
@@ -287,6 +307,7 @@ fn annulus_cut_joins_the_two_boundaries() {
     check_poincare_hopf("annulus", &s, &r);
     let cut = cut_to_disk(&s, &r.singularities).unwrap();
     cut.check(&s, &r.singularities).unwrap();
+    check_comb("annulus", &s, &r, &cut);
     let cut_edges: Vec<usize> = (0..s.edges.len()).filter(|&e| cut.is_cut[e]).collect();
     // one path from the inner loop (radius 1) to the outer one (radius 2)
     assert!(!cut_edges.is_empty());
@@ -320,6 +341,7 @@ fn components_with_and_without_constraints() {
     check_poincare_hopf("sphere + square", &s, &r);
     let cut = cut_to_disk(&s, &r.singularities).unwrap();
     cut.check(&s, &r.singularities).unwrap();
+    check_comb("sphere + square", &s, &r, &cut);
 }
 
 #[test]
@@ -350,6 +372,9 @@ fn the_checker_rejects_bad_cuts() {
     let cut = cut_to_disk(&s, &r.singularities[..1]).unwrap();
     let e = cut.check(&s, &r.singularities).unwrap_err();
     assert!(e.contains("not on the cut"), "{e}");
+    // a singularity inside the cut-open surface: the field does not comb
+    let e = cut.comb(&s, &r.field).unwrap_err();
+    assert!(e.contains("does not comb"), "{e}");
     assert!(cut_to_disk(&s, &[(9999, 1)]).is_err());
 }
 
@@ -385,10 +410,11 @@ fn timing_on_a_large_icosphere() {
         let r = field(&s);
         let t2 = std::time::Instant::now();
         let cut = cut_to_disk(&s, &r.singularities).unwrap();
+        cut.comb(&s, &r.field).unwrap();
         let t3 = std::time::Instant::now();
         cut.check(&s, &r.singularities).unwrap();
         println!(
-            "{name}: {} triangles; surface {:.3} s, field {:.3} s, cut {:.3} s; {} singularities, {} cut edges",
+            "{name}: {} triangles; surface {:.3} s, field {:.3} s, cut + comb {:.3} s; {} singularities, {} cut edges",
             s.triangles.len(),
             (t1 - t0).as_secs_f64(),
             (t2 - t1).as_secs_f64(),
