@@ -9,11 +9,14 @@
 //! | connectivity, face frames | [`surface`] | positions, triangles → [`Surface`] |
 //! | smoothest 4-RoSy field | [`smooth`] (type in [`field`]) | [`Surface`] → [`CrossField`] (angle per face, matching per edge), aligned to boundary and sharp edges |
 //! | singular vertices | [`singularity`] | field → `(vertex, index·4)` |
-//! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk |
+//! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
 //! | seamless integration | `integrate` | field + cut → per-corner `(u, v)` |
 //! | direct rounding | `quantize` | integer unknowns rounded at once, one more solve |
 //!
 //! The output is a [`dualex_map::TriMap`] that `dualex quad` extracts.
+//! Beside the steps: [`sparse`] (the sparse Cholesky solves, over `faer`)
+//! and [`shapes`] (generated test surfaces: sphere, torus, cube, polycube
+//! of genus `g`, patches with boundary).
 //!
 //! Invariants: [`Surface`] is an oriented 2-manifold (with or without
 //! boundary) without degenerate triangles; every edge has one or two faces.
