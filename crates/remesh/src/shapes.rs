@@ -117,6 +117,40 @@ pub fn bumpy_square(n: u32, amplitude: f64) -> Surface {
     build(p, t)
 }
 
+/// The flat unit disk: an `n × n` grid of `[−1, 1]²` mapped onto it by
+/// `(x·√(1 − y²/2), y·√(1 − x²/2))` (the square's corners land on the
+/// circle), two triangles per cell. A field following its round boundary
+/// needs interior singularities of total index 1.
+pub fn flat_disk(n: u32) -> Surface {
+    let mut p = Vec::new();
+    for j in 0..=n {
+        for i in 0..=n {
+            let x = 2.0 * f64::from(i) / f64::from(n) - 1.0;
+            let y = 2.0 * f64::from(j) / f64::from(n) - 1.0;
+            p.push([
+                x * (1.0 - y * y / 2.0).sqrt(),
+                y * (1.0 - x * x / 2.0).sqrt(),
+                0.0,
+            ]);
+        }
+    }
+    let id = |i: u32, j: u32| j * (n + 1) + i;
+    let mut t = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            // diagonals away from the corners, where the cells flatten
+            if (i < n / 2) == (j < n / 2) {
+                t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+                t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+            } else {
+                t.push([id(i, j), id(i + 1, j), id(i, j + 1)]);
+                t.push([id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+            }
+        }
+    }
+    build(p, t)
+}
+
 /// The flat ring `1 ≤ |(x, y)| ≤ 2` with `nr` rings of `nphi` cells (two
 /// triangles per cell): an annulus, two boundary loops.
 pub fn annulus(nphi: u32, nr: u32) -> Surface {
@@ -244,6 +278,7 @@ mod tests {
         assert_eq!(torus(3.0, 1.0, 12, 8).euler_characteristic(), 0);
         assert_eq!(bumpy_square(6, 0.2).euler_characteristic(), 1);
         assert_eq!(annulus(12, 3).euler_characteristic(), 0);
+        assert_eq!(flat_disk(8).euler_characteristic(), 1);
         let two = disjoint_union(&icosphere(0), &bumpy_square(2, 0.0));
         assert_eq!(two.euler_characteristic(), 3);
         assert_eq!(two.triangles.len(), 28);

@@ -1,7 +1,7 @@
 //! Cross field, singularities and cut on the generated test surfaces.
 
 use dualex_remesh::shapes::{
-    annulus, bumpy_square, cube, disjoint_union, icosphere, plate_with_holes, torus,
+    annulus, bumpy_square, cube, disjoint_union, flat_disk, icosphere, plate_with_holes, torus,
 };
 use dualex_remesh::singularity::vertex_turning;
 use dualex_remesh::smooth::field_energy;
@@ -296,6 +296,27 @@ fn l_shape_has_five_convex_and_one_concave_boundary_corner() {
     want.sort_unstable();
     assert_eq!(b, want);
     check_poincare_hopf("L", &s, &r);
+}
+
+#[test]
+fn round_disk_cut_reaches_the_inner_singularities_from_the_boundary() {
+    let s = flat_disk(24);
+    let r = field(&s);
+    check_poincare_hopf("disk", &s, &r);
+    assert!(
+        r.boundary_singularities.is_empty(),
+        "{:?}",
+        r.boundary_singularities
+    );
+    assert_eq!(quarters(&r), 4, "{:?}", r.singularities);
+    assert!(!r.singularities.is_empty());
+    let cut = cut_to_disk(&s, &r.singularities).unwrap();
+    cut.check(&s, &r.singularities).unwrap();
+    check_comb("disk", &s, &r, &cut);
+    // every cut edge is on a path from a singularity to the boundary: the
+    // cut touches the boundary
+    assert!((0..s.edges.len())
+        .any(|e| cut.is_cut[e] && s.edges[e].iter().any(|&v| s.boundary_vertex[v as usize])));
 }
 
 #[test]
