@@ -41,10 +41,11 @@
 //! energy. Curvature alignment would be the fix; it is not done here.
 //!
 //! Cost, measured (`cargo test -p dualex-remesh --profile ci --test
-//! field_cut -- --ignored --nocapture`, one thread, on 2 cores under a
-//! load of ~8): 1.1 s on an 82k-face icosphere, 1.4 s on a 100k-face
-//! torus (two factorisations ~0.4 s each, twelve solves ~0.5 s), 5.1 s
-//! on 328k faces (the fill-in grows faster than the size).
+//! field_cut -- --ignored --nocapture`, one thread, 2 shared cores at a
+//! load of ~2): 0.52 s on an 82k-face icosphere, 0.69 s on a 100k-face
+//! torus (two factorisations 0.22 + 0.17 s, twelve solves 0.25 s),
+//! 2.6 s on 328k faces (the fill-in grows faster than the size). Under
+//! a load of ~8 the same runs took about twice as long.
 
 use crate::field::CrossField;
 use crate::singularity::{boundary_indices, vertex_indices};
