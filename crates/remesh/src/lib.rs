@@ -7,28 +7,35 @@
 //! | step | module | input → output |
 //! |---|---|---|
 //! | connectivity, face frames | [`surface`] | positions, triangles → [`Surface`] |
-//! | smoothest 4-RoSy field | `field` | [`Surface`] → `CrossField` (angle per face, matching per edge, singularities) |
-//! | cut to a disk | `cut` | field → cut edges through every singularity |
+//! | smoothest 4-RoSy field | [`smooth`] (type in [`field`]) | [`Surface`] → [`CrossField`] (angle per face, matching per edge), aligned to boundary and sharp edges |
+//! | singular vertices | [`singularity`] | field → `(vertex, index·4)` |
+//! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
 //! | seamless integration | [`integrate`](mod@integrate) | field + cut → per-corner `(u, v)` |
 //! | direct rounding | [`quantize`] | integer unknowns rounded at once, one more solve |
 //!
-//! [`sparse`] holds the sparse SPD solves (faer's Cholesky) the field and
-//! the integration use.
-//!
 //! The output is a [`dualex_map::TriMap`] that `dualex quad` extracts.
+//! Beside the steps: [`sparse`] (the sparse Cholesky solves, over `faer`)
+//! and [`shapes`] (generated test surfaces: sphere, torus, cube, polycube
+//! of genus `g`, patches with boundary).
 //!
 //! Invariants: [`Surface`] is an oriented 2-manifold (with or without
 //! boundary) without degenerate triangles; every edge has one or two faces.
 #![forbid(unsafe_code)]
 
+pub mod cut;
 pub mod field;
 pub mod integrate;
 pub mod quantize;
+pub mod shapes;
+pub mod singularity;
+pub mod smooth;
 pub mod sparse;
 pub mod surface;
 pub mod weld;
 
+pub use cut::{cut_to_disk, Cut};
 pub use field::CrossField;
 pub use integrate::{integrate, integrate_report, IntegrateOptions, IntegrateReport};
 pub use quantize::Rounding;
+pub use smooth::{cross_field, FieldOptions, FieldResult};
 pub use surface::{Surface, SurfaceError, NO_FACE};

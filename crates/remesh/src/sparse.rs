@@ -1,35 +1,42 @@
-//! Sparse symmetric positive definite solves (faer's supernodal Cholesky
-//! with its fill-reducing ordering).
+//! Sparse symmetric positive definite solves (glue over `faer`).
 //!
-//! Input: the matrix as triplets `(row, col, value)` of the **full**
-//! symmetric matrix (both `(i, j)` and `(j, i)`; duplicates are summed;
-//! only the lower triangle `row ≥ col` is read), and right-hand sides.
-//! Output: the solution, or an error naming the cause (an index out of
-//! range, a matrix that is not positive definite, a non-finite value).
+//! Input: the matrix as `(row, column, value)` triplets (duplicates are
+//! summed; both triangles may be given, only the lower one is read) and
+//! right-hand sides. Output: the solution, or an error naming why the
+//! factorisation failed (the matrix is not positive definite, or an index
+//! is out of range).
 //!
-//! [`SpdFactor`] factors once and solves many right-hand sides (the
-//! rounding re-solves with new right-hand sides when only constants
-//! change). See README.md, "Sparse solver", for why faer.
+//! Why `faer`: a maintained pure-Rust crate with a supernodal sparse
+//! Cholesky and a fill-reducing ordering (AMD), building with the
+//! workspace's Rust 1.85 (faer 0.24 declares `rust-version = 1.84`).
+//! The factorisation is kept ([`SpdSolver`]) so that repeated solves with
+//! one matrix (inverse iteration, rounding) pay for it once.
 
 use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
 use faer::sparse::{SparseColMat, Triplet};
+use faer::{c64, MatMut, Side};
 
-/// A Cholesky factorization `A = L·Lᵀ` to solve with many right-hand sides.
-pub struct SpdFactor {
+/// A sparse Cholesky factorisation `A = L·Lᵀ`, ready to solve with.
+pub struct SpdSolver {
     n: usize,
-    llt: faer::sparse::linalg::solvers::Llt<usize, f64>,
+    llt: Llt<usize, f64>,
 }
 
-impl SpdFactor {
-    /// Factors the `n × n` matrix given by `triplets` (module docs).
-    pub fn new(n: usize, triplets: &[(usize, usize, f64)]) -> Result<Self, String> {
-        let mut lower = Vec::with_capacity(triplets.len() / 2 + n);
+impl SpdSolver {
+    /// Factorises the `n × n` matrix given by `triplets` (lower triangle
+    /// read, duplicates summed).
+    pub fn new(n: usize, triplets: &[(u32, u32, f64)]) -> Result<Self, String> {
+        let mut lower = Vec::with_capacity(triplets.len());
         for &(r, c, v) in triplets {
+            let (r, c) = (r as usize, c as usize);
             if r >= n || c >= n {
-                return Err(format!("sparse matrix: entry ({r}, {c}) outside {n} × {n}"));
+                return Err(format!(
+                    "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
+                ));
             }
             if !v.is_finite() {
-                return Err(format!("sparse matrix: entry ({r}, {c}) is {v}"));
+                return Err(format!("sparse entry ({r}, {c}) is not finite"));
             }
             if r >= c {
                 lower.push(Triplet::new(r, c, v));
@@ -38,97 +45,207 @@ impl SpdFactor {
         let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &lower)
             .map_err(|e| format!("sparse matrix: {e:?}"))?;
         let llt = a
-            .sp_cholesky(faer::Side::Lower)
-            .map_err(|e| format!("sparse Cholesky: {e:?} (matrix not positive definite?)"))?;
-        Ok(SpdFactor { n, llt })
-    }
-
-    /// Size of the system.
-    pub fn len(&self) -> usize {
-        self.n
-    }
-
-    /// Whether the system is empty.
-    pub fn is_empty(&self) -> bool {
-        self.n == 0
+            .sp_cholesky(Side::Lower)
+            .map_err(|e| format!("sparse Cholesky ({n} unknowns): {e}"))?;
+        Ok(SpdSolver { n, llt })
     }
 
     /// Solves `A·x = rhs`.
     pub fn solve(&self, rhs: &[f64]) -> Result<Vec<f64>, String> {
         if rhs.len() != self.n {
             return Err(format!(
-                "sparse solve: right-hand side of length {} for {} unknowns",
+                "right-hand side of length {} for {} unknowns",
                 rhs.len(),
                 self.n
             ));
         }
-        if self.n == 0 {
-            return Ok(Vec::new());
+        let mut x = rhs.to_vec();
+        self.llt
+            .solve_in_place(MatMut::from_column_major_slice_mut(&mut x, self.n, 1));
+        if x.iter().all(|v| v.is_finite()) {
+            Ok(x)
+        } else {
+            Err(format!(
+                "sparse solve ({} unknowns): non-finite solution",
+                self.n
+            ))
         }
-        let mut x = faer::Mat::<f64>::from_fn(self.n, 1, |i, _| rhs[i]);
-        self.llt.solve_in_place(x.as_mut());
-        let x: Vec<f64> = (0..self.n).map(|i| x[(i, 0)]).collect();
-        if let Some(i) = x.iter().position(|v| !v.is_finite()) {
-            return Err(format!("sparse solve: unknown {i} is not finite"));
-        }
-        Ok(x)
     }
 }
 
-/// Solves the SPD system `A·x = rhs`, `A` given by `triplets` (module docs).
-pub fn solve_spd(
+/// A sparse Cholesky factorisation `A = L·Lᴴ` of a complex Hermitian
+/// positive definite matrix (the cross field's system: half the unknowns
+/// of its real form and, measured on an 82k-face sphere, a factorisation
+/// six times faster: 0.22 s against 1.45 s).
+pub struct HpdSolver {
     n: usize,
-    triplets: &[(usize, usize, f64)],
-    rhs: &[f64],
-) -> Result<Vec<f64>, String> {
-    if n == 0 {
-        return Ok(Vec::new());
+    /// The pattern (column starts, row indices) of the lower triangle.
+    pattern: (Vec<usize>, Vec<usize>),
+    symbolic: SymbolicLlt<usize>,
+    llt: Llt<usize, c64>,
+}
+
+impl HpdSolver {
+    /// Factorises the `n × n` matrix given by `triplets` (lower triangle
+    /// read, duplicates summed).
+    pub fn new(n: usize, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
+        let a = hermitian_lower(n, triplets)?;
+        let symbolic = SymbolicLlt::try_new(a.symbolic(), Side::Lower)
+            .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e:?}"))?;
+        Self::numeric(n, a, symbolic)
     }
-    SpdFactor::new(n, triplets)?.solve(rhs)
+
+    /// Factorises another matrix with the same pattern (the same triplet
+    /// positions), reusing the fill-reducing ordering and the symbolic
+    /// factorisation (a quarter of the cost, measured).
+    pub fn refactor(&self, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
+        let a = hermitian_lower(self.n, triplets)?;
+        let sym = a.symbolic();
+        if sym.col_ptr() != self.pattern.0.as_slice() || sym.row_idx() != self.pattern.1.as_slice()
+        {
+            return Err("sparse refactorisation: the pattern differs".into());
+        }
+        Self::numeric(self.n, a, self.symbolic.clone())
+    }
+
+    fn numeric(
+        n: usize,
+        a: SparseColMat<usize, c64>,
+        symbolic: SymbolicLlt<usize>,
+    ) -> Result<Self, String> {
+        let llt = Llt::try_new_with_symbolic(symbolic.clone(), a.as_ref(), Side::Lower)
+            .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e}"))?;
+        let pattern = (
+            a.symbolic().col_ptr().to_vec(),
+            a.symbolic().row_idx().to_vec(),
+        );
+        Ok(HpdSolver {
+            n,
+            pattern,
+            symbolic,
+            llt,
+        })
+    }
+
+    /// Solves `A·x = rhs`.
+    pub fn solve(&self, rhs: &[c64]) -> Result<Vec<c64>, String> {
+        if rhs.len() != self.n {
+            return Err(format!(
+                "right-hand side of length {} for {} unknowns",
+                rhs.len(),
+                self.n
+            ));
+        }
+        let mut x = rhs.to_vec();
+        self.llt
+            .solve_in_place(MatMut::from_column_major_slice_mut(&mut x, self.n, 1));
+        if x.iter().all(|v| v.re.is_finite() && v.im.is_finite()) {
+            Ok(x)
+        } else {
+            Err(format!(
+                "sparse solve ({} unknowns): non-finite solution",
+                self.n
+            ))
+        }
+    }
+}
+
+/// The lower triangle of the `n × n` matrix given by `triplets`.
+fn hermitian_lower(
+    n: usize,
+    triplets: &[(u32, u32, c64)],
+) -> Result<SparseColMat<usize, c64>, String> {
+    let mut lower = Vec::with_capacity(triplets.len());
+    for &(r, c, v) in triplets {
+        let (r, c) = (r as usize, c as usize);
+        if r >= n || c >= n {
+            return Err(format!(
+                "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
+            ));
+        }
+        if !(v.re.is_finite() && v.im.is_finite()) {
+            return Err(format!("sparse entry ({r}, {c}) is not finite"));
+        }
+        if r >= c {
+            lower.push(Triplet::new(r, c, v));
+        }
+    }
+    SparseColMat::<usize, c64>::try_new_from_triplets(n, n, &lower)
+        .map_err(|e| format!("sparse matrix: {e:?}"))
+}
+
+/// Solves the symmetric positive definite system `A·x = rhs`, `A` given
+/// by `triplets` as for [`SpdSolver::new`].
+pub fn solve_spd(n: usize, triplets: &[(u32, u32, f64)], rhs: &[f64]) -> Result<Vec<f64>, String> {
+    SpdSolver::new(n, triplets)?.solve(rhs)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// 1D Laplacian with one end pinned: `x_i = i + 1` solves it with
-    /// `rhs = e_last`.
     #[test]
-    fn path_laplacian() {
-        let n = 50;
-        let mut t = vec![(0, 0, 1.0)];
-        for i in 0..n - 1 {
+    fn solves_a_path_laplacian_with_duplicates() {
+        // (L + I) x = b on a path of 4 nodes, entries given twice (summed)
+        let n = 4;
+        let mut t = Vec::new();
+        for i in 0..n as u32 {
+            t.push((i, i, 0.5));
+            t.push((i, i, 0.5));
+        }
+        for i in 0..n as u32 - 1 {
             t.extend([
                 (i, i, 1.0),
                 (i + 1, i + 1, 1.0),
-                (i, i + 1, -1.0),
                 (i + 1, i, -1.0),
+                (i, i + 1, -1.0),
             ]);
         }
-        let mut rhs = vec![0.0; n];
-        rhs[n - 1] = 1.0;
-        let x = solve_spd(n, &t, &rhs).unwrap();
-        for (i, v) in x.iter().enumerate() {
-            assert!((v - (i + 1) as f64).abs() < 1e-9, "x[{i}] = {v}");
+        let b = [1.0, 2.0, 3.0, 4.0];
+        let x = solve_spd(n, &t, &b).unwrap();
+        // check A x = b with the full matrix
+        let mut ax = [0.0; 4];
+        for &(r, c, v) in &t {
+            ax[r as usize] += v * x[c as usize];
         }
-        let f = SpdFactor::new(n, &t).unwrap();
-        let y = f.solve(&vec![0.0; n]).unwrap();
-        assert!(y.iter().all(|v| v.abs() < 1e-12));
+        for i in 0..n {
+            assert!((ax[i] - b[i]).abs() < 1e-12, "{ax:?}");
+        }
     }
 
     #[test]
-    fn errors_name_the_cause() {
-        assert!(solve_spd(2, &[(0, 0, 1.0), (2, 0, 1.0)], &[1.0, 1.0])
-            .unwrap_err()
-            .contains("outside"));
-        // singular (no diagonal on unknown 1)
-        let e = solve_spd(2, &[(0, 0, 1.0)], &[1.0, 1.0]).unwrap_err();
-        assert!(e.contains("Cholesky"), "{e}");
-        let e = solve_spd(1, &[(0, 0, -1.0)], &[1.0]).unwrap_err();
-        assert!(e.contains("Cholesky"), "{e}");
-        assert!(SpdFactor::new(1, &[(0, 0, 1.0)])
+    fn solves_a_hermitian_system() {
+        // [[2, −i], [i, 2]] x = [1, 0]  →  x = [2, −i] / 3
+        let i = c64::new(0.0, 1.0);
+        let two = c64::new(2.0, 0.0);
+        let t = [(0, 0, two), (1, 1, two), (1, 0, i), (0, 1, -i)];
+        let x = HpdSolver::new(2, &t)
             .unwrap()
-            .solve(&[1.0, 2.0])
-            .is_err());
+            .solve(&[c64::new(1.0, 0.0), c64::new(0.0, 0.0)])
+            .unwrap();
+        assert!((x[0] - c64::new(2.0 / 3.0, 0.0)).norm() < 1e-12, "{x:?}");
+        assert!((x[1] - c64::new(0.0, -1.0 / 3.0)).norm() < 1e-12, "{x:?}");
+        // the same pattern with other values: [[3, −i], [i, 3]] x = [1, 0]
+        let three = c64::new(3.0, 0.0);
+        let solver = HpdSolver::new(2, &t).unwrap();
+        let t3 = [(0, 0, three), (1, 1, three), (1, 0, i), (0, 1, -i)];
+        let x = solver
+            .refactor(&t3)
+            .unwrap()
+            .solve(&[c64::new(1.0, 0.0), c64::new(0.0, 0.0)])
+            .unwrap();
+        assert!((x[0] - c64::new(3.0 / 8.0, 0.0)).norm() < 1e-12, "{x:?}");
+        assert!((x[1] - c64::new(0.0, -1.0 / 8.0)).norm() < 1e-12, "{x:?}");
+        let e = solver.refactor(&[(0, 0, three), (1, 1, three)]).err();
+        assert!(e.is_some_and(|e| e.contains("pattern differs")));
+    }
+
+    #[test]
+    fn rejects_indefinite_and_out_of_range() {
+        assert!(solve_spd(2, &[(0, 0, 1.0), (1, 1, -1.0)], &[1.0, 1.0]).is_err());
+        let e = solve_spd(2, &[(0, 2, 1.0)], &[1.0, 1.0]).unwrap_err();
+        assert!(e.contains("outside"), "{e}");
+        let e = solve_spd(1, &[(0, 0, 1.0)], &[1.0, 1.0]).unwrap_err();
+        assert!(e.contains("length"), "{e}");
     }
 }

@@ -11,7 +11,7 @@
 
 use super::charts::Charts;
 use super::elim::Form;
-use crate::sparse::SpdFactor;
+use crate::sparse::solve_spd;
 use crate::surface::Surface;
 
 /// The energy's quadratic part `K` (triplets over the unknowns, both
@@ -79,11 +79,11 @@ pub fn minimize(energy: &Energy, p: &[Form], free: usize) -> Result<Vec<f64>, St
     for &(i, j, v) in &energy.k {
         for &(a, ca) in &p[i as usize].terms {
             for &(b, cb) in &p[j as usize].terms {
-                triplets.push((a as usize, b as usize, v * ca * cb));
+                triplets.push((a, b, v * ca * cb));
             }
         }
     }
-    let y = SpdFactor::new(free, &triplets)?.solve(&rhs)?;
+    let y = solve_spd(free, &triplets, &rhs)?;
     debug_assert_eq!(p.len(), n);
     Ok(p.iter().map(|f| f.eval(&y)).collect())
 }
