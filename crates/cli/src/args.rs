@@ -58,6 +58,9 @@ pub enum Command {
     Inspect(InspectArgs),
     /// Writes a generated test map, or a map made from a mesh (an oracle).
     Generate(GenerateArgs),
+    /// Quad mesh of a plain surface: cross field, seamless map, rounding,
+    /// then `quad` on that map.
+    Remesh(RemeshArgs),
 }
 
 /// Welding of cut meshes (2D inputs).
@@ -197,6 +200,86 @@ pub struct ExtrudeArgs {
     pub fallback: bool,
     #[command(flatten)]
     pub weld: WeldArgs,
+}
+
+/// How the integer unknowns of the map are rounded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum RoundingArg {
+    /// All at once, then one more solve (the cheap way real pipelines use).
+    Direct,
+    /// A batch at a time, the closest to an integer first, solving between.
+    Greedy,
+    /// No rounding: singularities and seams off the grid (a messy map).
+    Off,
+}
+
+/// `dualex remesh`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "INPUT: .obj or .ply triangles (any map in it is ignored; cut meshes are \
+                        welded). OUTPUT: .obj, .ply or .vtk. The map: a smoothest cross field \
+                        (aligned to the boundary and to edges sharper than --sharp), a cut \
+                        through its singularities, seamless least-squares integration, \
+                        rounding; then `dualex quad` on it."
+)]
+pub struct RemeshArgs {
+    /// The surface (.obj / .ply); without it, the embedded surface is
+    /// used, and said.
+    pub input: Option<PathBuf>,
+    /// The quad mesh (.obj, .ply or .vtk).
+    #[arg(short, long, value_name = "OUTPUT")]
+    pub output: PathBuf,
+    /// About this many quads [default: 1000].
+    #[arg(long, value_name = "N", value_parser = at_least_one, conflicts_with = "scale")]
+    pub quads: Option<usize>,
+    /// Quad edge length in model units, instead of --quads.
+    #[arg(long, value_name = "S", value_parser = positive_number)]
+    pub scale: Option<f64>,
+    /// Edges whose dihedral angle exceeds DEG degrees are features the
+    /// field follows (180 turns them off).
+    #[arg(long, value_name = "DEG", default_value_t = 35.0, value_parser = degrees)]
+    pub sharp: f64,
+    /// Rounding of the map's integer unknowns (seam translations,
+    /// singular vertices, feature lines).
+    #[arg(long, value_name = "direct|greedy|off", default_value = "direct")]
+    pub rounding: RoundingArg,
+    /// Also write the map (a triangle map, .obj or .ply) that was
+    /// extracted.
+    #[arg(long, value_name = "MAP.obj")]
+    pub map_out: Option<PathBuf>,
+    /// A picture of the map in the (u, v) plane: reverted triangles
+    /// purple, singularities marked by index.
+    #[arg(long, value_name = "MAP.png")]
+    pub png: Option<PathBuf>,
+    /// Seed: where the grid falls on the surface (a random translation of
+    /// the map before rounding) and the field's rotation on surfaces
+    /// without features; also the sanitization's.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub seed: u64,
+    /// Write the stats (the extraction's, with a `remesh` section: field,
+    /// singularities, flipped triangles, times) to this file; `-` writes
+    /// them to stdout.
+    #[arg(long, value_name = "STATS.json")]
+    pub stats: Option<PathBuf>,
+    /// Skip index fairing in the extraction.
+    #[arg(long)]
+    pub no_fairing: bool,
+    /// Write the map coordinates of each quad's corners (.obj `vt`, .ply
+    /// face `texcoord`), as `quad --uv`.
+    #[arg(long)]
+    pub uv: bool,
+    /// An output whose topology differs from the surface's is an error.
+    #[arg(long)]
+    pub strict: bool,
+}
+
+fn degrees(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if (0.0..=180.0).contains(&x) => Ok(x),
+        _ => Err(format!(
+            "expected an angle from 0 to 180 degrees, not {s:?}"
+        )),
+    }
 }
 
 /// `dualex view`.

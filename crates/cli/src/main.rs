@@ -14,6 +14,7 @@ mod generate;
 mod generate_from_mesh;
 mod outputs;
 mod progress;
+mod remesh;
 mod summary;
 mod timing;
 mod verify;
@@ -51,6 +52,7 @@ fn main() -> ExitCode {
         Command::Inspect(a) => commands::inspect(a, g),
         Command::Generate(a) => generate::generate(a, g),
         Command::Extrude(a) => commands::extrude(a, g),
+        Command::Remesh(a) => remesh::remesh(a, g),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -25,6 +25,7 @@
 pub mod cut;
 pub mod field;
 pub mod integrate;
+pub mod pipeline;
 pub mod quantize;
 pub mod shapes;
 pub mod singularity;
@@ -36,6 +37,7 @@ pub mod weld;
 pub use cut::{cut_to_disk, Cut};
 pub use field::CrossField;
 pub use integrate::{integrate, integrate_report, IntegrateOptions, IntegrateReport};
+pub use pipeline::{remesh, Quantization, RemeshOptions, RemeshStats, Remeshed, Target};
 pub use quantize::Rounding;
 pub use smooth::{cross_field, FieldOptions, FieldResult};
 pub use surface::{Surface, SurfaceError, NO_FACE};

@@ -314,3 +314,25 @@ mod tests {
         }
     }
 }
+
+/// An icosphere with bumps: each vertex moved along its direction `d` to
+/// radius `1 + amplitude·sin(3·d.x)·sin(2·d.y + 1)·cos(d.z)`.
+pub fn bumpy_sphere(subdivisions: u32, amplitude: f64) -> Surface {
+    let s = icosphere(subdivisions);
+    let positions = s
+        .positions
+        .iter()
+        .map(|&[x, y, z]| {
+            let r = 1.0 + amplitude * (3.0 * x).sin() * (2.0 * y + 1.0).sin() * z.cos();
+            [r * x, r * y, r * z]
+        })
+        .collect();
+    Surface::new(positions, s.triangles).expect("a bumpy sphere is a surface")
+}
+
+/// The surface `dualex remesh` runs on without INPUT: a bumpy sphere of
+/// 5 120 triangles, as positions and triangles.
+pub fn embedded() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+    let s = bumpy_sphere(4, 0.25);
+    (s.positions, s.triangles)
+}

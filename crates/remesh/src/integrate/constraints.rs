@@ -58,6 +58,10 @@ pub struct Gauge {
     pub wedge: Vec<u32>,
     /// Per wedge: its component.
     pub component: Vec<u32>,
+    /// Where the fixed wedges sit (`(0, 0)` by default): moving it moves
+    /// the continuous map against the grid, so the rounding lands
+    /// elsewhere (the remesher's seed).
+    pub offset: [f64; 2],
 }
 
 impl Gauge {
@@ -87,9 +91,10 @@ impl Gauge {
         let mut out = Vec::new();
         for (c, &w) in self.wedge.iter().enumerate() {
             let [a, b, d] = gram[c];
+            let [ou, ov] = self.offset;
             let row = |ku: f64, kv: f64| Form {
                 terms: vec![(2 * w, ku), (2 * w + 1, kv)],
-                constant: 0.0,
+                constant: -(ku * ou + kv * ov),
             };
             if a + d <= 1e-9 {
                 out.extend([row(1.0, 0.0), row(0.0, 1.0)]);

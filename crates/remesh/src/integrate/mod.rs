@@ -50,6 +50,10 @@ pub struct IntegrateOptions {
     /// direction to integer iso-lines; `None`: no alignment. Default:
     /// `Some(π/8)`.
     pub align_boundary: Option<f64>,
+    /// Where each component's gauge wedge sits before rounding (map units;
+    /// default `(0, 0)`): a fractional offset moves the grid against the
+    /// surface, so the rounding lands elsewhere.
+    pub gauge_offset: [f64; 2],
 }
 
 impl Default for IntegrateOptions {
@@ -60,6 +64,7 @@ impl Default for IntegrateOptions {
             rounding: Rounding::Direct,
             round_singularities: true,
             align_boundary: Some(std::f64::consts::FRAC_PI_8),
+            gauge_offset: [0.0, 0.0],
         }
     }
 }
@@ -104,7 +109,14 @@ pub fn integrate_report(
     // 1. the cut-open surface
     let charts = charts::build(surface, field, is_cut)?;
     // 2. constraints and integer unknowns
-    let cons = constraints::build(surface, &charts, singular_vertices, opts.align_boundary)?;
+    let mut cons = constraints::build(surface, &charts, singular_vertices, opts.align_boundary)?;
+    if !opts.gauge_offset.iter().all(|x| x.is_finite()) {
+        return Err(format!(
+            "gauge offset {:?} is not finite",
+            opts.gauge_offset
+        ));
+    }
+    cons.gauge.offset = opts.gauge_offset;
     let mut integers = Vec::new();
     if opts.round_singularities {
         integers.extend(cons.singular.iter().cloned());
