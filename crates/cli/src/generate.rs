@@ -77,6 +77,10 @@ pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), String> {
         refuse_size(a, name);
         return generate_from_mesh::run(a, g, Input::Hexes(m, name.clone()), out);
     }
+    if let Some(surface) = dualex_remesh::shapes::by_name(name) {
+        refuse_size(a, name);
+        return write_surface(name, &surface, out, g);
+    }
     if a.mesh_options() {
         usage_error(&format!(
             "--scale, --noise, --folds and --half-shift apply to --from-mesh and built-in meshes, not to the map {name:?}"
@@ -193,8 +197,43 @@ fn list(seed: u64) {
             "hex mesh: a map with its expected extraction (--scale, --noise, --folds)",
         );
     }
+    for (n, what) in dualex_remesh::shapes::NAMED {
+        let len = dualex_remesh::shapes::by_name(n).map_or(0, |s| s.triangles.len());
+        line(
+            n,
+            count(len, "triangle", "triangles"),
+            &format!("plain surface for `dualex remesh`: {what}"),
+        );
+    }
     println!(
         "\n--size N rebuilds {} at grid resolution N (2·N² triangles for squares, N² for tori, 6·N³ tets for blocks)",
         SIZEABLE.join(", ")
     );
+}
+
+/// Writes a generated plain surface (no map) as OBJ `v` / `f` lines.
+fn write_surface(
+    name: &str,
+    s: &dualex_remesh::Surface,
+    out: &std::path::Path,
+    g: &Global,
+) -> Result<(), String> {
+    use std::fmt::Write as _;
+    crate::outputs::check(out, Some(&["obj"]))?;
+    let mut text = format!("# {name}: a plain surface (dualex generate)\n");
+    for p in &s.positions {
+        let _ = writeln!(text, "v {} {} {}", p[0], p[1], p[2]);
+    }
+    for t in &s.triangles {
+        let _ = writeln!(text, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
+    }
+    dualex_io::write_text(out, &text).map_err(|e| e.to_string())?;
+    if !g.quiet {
+        eprintln!(
+            "dualex: {name}: {} -> {}",
+            count(s.triangles.len(), "triangle", "triangles"),
+            out.display()
+        );
+    }
+    Ok(())
 }

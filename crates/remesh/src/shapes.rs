@@ -336,3 +336,40 @@ pub fn embedded() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
     let s = bumpy_sphere(4, 0.25);
     (s.positions, s.triangles)
 }
+
+/// The generated surfaces by name (`dualex generate surface_NAME`), with
+/// what each is: the inputs of the remesher's tests besides the shared
+/// surfaces.
+pub const NAMED: &[(&str, &str)] = &[
+    (
+        "surface_sphere",
+        "icosphere, 5120 triangles (smooth, closed)",
+    ),
+    (
+        "surface_bumpy_sphere",
+        "bumpy icosphere, 5120 triangles (dualex remesh's embedded surface)",
+    ),
+    ("surface_torus", "torus, 6144 triangles (genus 1)"),
+    (
+        "surface_genus3",
+        "polycube plate with 3 holes (genus 3, sharp edges)",
+    ),
+    ("surface_cube", "cube, 8×8 per face (sharp edges)"),
+    (
+        "surface_disk",
+        "bumpy square, 48×48 (open: one boundary loop)",
+    ),
+];
+
+/// A generated surface by its name in [`NAMED`].
+pub fn by_name(name: &str) -> Option<Surface> {
+    Some(match name {
+        "surface_sphere" => icosphere(4),
+        "surface_bumpy_sphere" => bumpy_sphere(4, 0.25),
+        "surface_torus" => torus(1.0, 0.4, 96, 32),
+        "surface_genus3" => plate_with_holes(3, 4),
+        "surface_cube" => cube(8),
+        "surface_disk" => bumpy_square(48, 0.2),
+        _ => return None,
+    })
+}
