@@ -17,14 +17,9 @@ use std::path::Path;
 
 /// Cases (map, layers, quality) where the 3D path differs from the 2D one.
 const KNOWN: &[&str] = &[
-    // 2D index fairing has no 3D counterpart (folded hexes are collapsed
-    // and doublet chains dissolved, as in 2D): knight 1841 quads vs 1842
-    // hexes (TetGen), dragon 5084 vs 5082 (prism split), both valid
-    "decimated-knight-param.obj L=1",
+    // 2D index fairing (57 saddle lifts, 13 merges) has no 3D counterpart:
+    // dragon 5084 quads vs 5061 hexes (prism split), valid
     "dragon-param-full-seamless.obj L=1",
-    // 2D subdivides the 3-sided faces of singularities on nodes (4809
-    // quads); 3D gives 1180 hexes with 88 faces left open
-    "horsers-param-full-seamless.obj L=1",
 ];
 
 /// `Err` naming the install command when TetGen cannot be run: the tests

@@ -24,6 +24,7 @@
 #![warn(missing_docs)]
 
 pub mod clusters;
+pub mod columns;
 pub mod doublets;
 pub mod geometry;
 pub mod local;
@@ -174,6 +175,18 @@ pub fn extract_traced(
     st.finish_output(&graph, &glued, &mesh);
     // cracks: unmatched sides that are not on the input's boundary
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
+    // 6b: holes through columns (an extruded map's singular edges through
+    // nodes) repaired locally, as the 2D local repair in every layer
+    if st.open_interior_faces > 0 {
+        let open = open_faces(&graph, &glued, &ends, topo.boundary_facets == 0);
+        if let Some(rep) = columns::repair(&mesh, &open) {
+            st.columns = rep.report;
+            st.open_interior_faces -= open.len().min(st.open_interior_faces);
+            mesh = rep.mesh;
+            source = rep.origin.iter().map(|&o| source[o as usize]).collect();
+            st.finish_mesh(&mesh);
+        }
+    }
     // 7: folded hexes collapsed, doublet chains dissolved (the extrusions
     // of the 2D collapse of folded quads and of doublet removal)
     // (only when the checker's counts show a repeated corner or an
@@ -184,7 +197,7 @@ pub fn extract_traced(
         .any(|h| (0..8).any(|i| (i + 1..8).any(|j| h[i] == h[j])));
     if repeated || st.edge_valence_interior.contains_key(&2) {
         let (collapsed, folded, kept_folded) = doublets::collapse_folded_traced(&mesh);
-        let (dissolved, chains, kept_chains) = doublets::dissolve_traced(&collapsed);
+        let (dissolved, chains, kept_chains) = doublets::dissolve_all_traced(&collapsed);
         st.folded_collapsed = folded;
         st.doublets = chains;
         if folded + chains.edges > 0 {
@@ -199,6 +212,30 @@ pub fn extract_traced(
     laps.lap("glue_geometry");
     st.time_ms = laps.into_laps();
     Ok((mesh, st, source))
+}
+
+/// The corners of the unmatched sides that are cracks, not boundary (see
+/// `NodeGraph::lost_unmatched_sides`).
+fn open_faces(
+    graph: &NodeGraph<3>,
+    glued: &dualex_graph::Glued<3>,
+    ends: &[trace::End],
+    closed: bool,
+) -> Vec<[u32; 4]> {
+    graph
+        .lost_sides(ends, closed)
+        .map(|s| {
+            let (node, d) = (graph.node_of(s), graph.dir_of(s));
+            // the side's corners: cube codes with the axis bit of its side
+            let (axis, want) = (d >> 1, usize::from(d & 1 == 0));
+            let mut f = [0u32; 4];
+            let codes = (0..8).filter(|c| (c >> axis) & 1 == want);
+            for (k, c) in codes.enumerate() {
+                f[k] = glued.vertex(node, c);
+            }
+            f
+        })
+        .collect()
 }
 
 /// Positions of the glued vertices by diagonal tracing (corner code bits:

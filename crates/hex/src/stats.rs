@@ -41,6 +41,8 @@ pub struct HexStats {
     pub doublets: crate::doublets::Chains,
     /// Isolated nodes dropped: no side glued, every walk lost (noise).
     pub isolated_dropped: usize,
+    /// Holes through columns repaired locally (`crate::columns`).
+    pub columns: crate::columns::ColumnRepair,
     /// Folded hexes collapsed after gluing.
     pub folded_collapsed: usize,
     /// Nodes found.
@@ -159,6 +161,13 @@ impl HexStats {
                 "doublet_chains_dissolved": self.doublets.dissolved,
                 "doublet_edges_dissolved": self.doublets.edges,
                 "doublet_edges_left": self.doublets.left,
+            },
+            "repair": {
+                "local_paths": self.columns.paths,
+                "holes_filled": self.columns.holes,
+                "columns_split": self.columns.split,
+                "column_layers": self.columns.layers,
+                "doublet_rounds": self.doublets.rounds,
             },
             "time_ms": times_json(&self.time_ms),
         })

@@ -22,7 +22,8 @@ fn an_extruded_doublet_column_is_dissolved() {
             Chains {
                 dissolved: 1,
                 edges: layers,
-                left: 0
+                left: 0,
+                rounds: 0,
             },
             "L = {layers}"
         );

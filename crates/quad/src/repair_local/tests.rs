@@ -18,9 +18,12 @@ fn two_triangles_joined_by_a_straight_path() {
         mesh: out,
         paths,
         origin,
+        new_points,
     } = repair(&m, &[]).expect("repaired");
     assert_eq!(paths, 1);
     assert_eq!(origin, [0, 1, 1, 2, 2, 3]);
+    // the 3 edge points, each the mean of its edge's ends
+    assert_eq!(new_points, [vec![1, 6], vec![2, 7], vec![3, 8]]);
     let after = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
     assert!(after.is_valid(), "{:?}", after.errors());
     assert_eq!(after.euler, before.euler);
