@@ -536,7 +536,10 @@ fn real_extruded_maps_are_valid_or_loud() {
         assert_eq!(hexes.len(), quads, "{name}");
         if out == "h" {
             assert!(err.contains("local repair on columns"), "{err}");
-            assert!(err.contains("repaired locally along 5 paths of columns"), "{err}");
+            assert!(
+                err.contains("repaired locally along 5 paths of columns"),
+                "{err}"
+            );
         }
     }
 }

@@ -166,6 +166,7 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
         },
         seed: x.seed,
         grid_offset: x.grid_offset,
+        ..dualex_hex::HexOptions::default()
     };
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting hexes");

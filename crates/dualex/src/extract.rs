@@ -198,6 +198,7 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
         transitions: transitions(opts.round_transitions),
         seed: opts.seed,
         grid_offset: opts.grid_offset,
+        ..dualex_hex::HexOptions::default()
     };
     let (mesh, stats, sources) = dualex_hex::extract_traced(&map, &inner)?;
     let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);

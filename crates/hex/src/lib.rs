@@ -53,6 +53,9 @@ pub struct HexOptions {
     pub seed: u64,
     /// Where the dual grid sits (`--grid-offset`).
     pub grid_offset: GridOffset,
+    /// Index fairing on columns (extruded maps: the 2D saddle lifts in
+    /// every layer, `dualex_graph::columns`). Default: on.
+    pub fairing: bool,
 }
 
 impl Default for HexOptions {
@@ -61,9 +64,14 @@ impl Default for HexOptions {
             transitions: TransitionOptions::default(),
             seed: 1,
             grid_offset: GridOffset::Auto,
+            fairing: true,
         }
     }
 }
+
+/// Longest path a singularity is moved along by fairing (as in 2D, the
+/// paper's 10).
+pub const FAIRING_MAX_PATH: usize = 10;
 
 /// Extracts the hex mesh of `map`.
 pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), InputError> {
@@ -165,6 +173,12 @@ pub fn extract_traced(
     // 5
     st.untangle = Some(graph.untangle());
     laps.lap("untangle");
+    // 5b: index fairing on columns (an extruded map's graph: the 2D saddle
+    // lifts and folded-corner collapses, in every layer alike)
+    if opts.fairing {
+        st.column_fairing = graph.fair_columns(FAIRING_MAX_PATH);
+        laps.lap("fairing");
+    }
     // 6
     let glued = graph.glue();
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);

@@ -41,6 +41,8 @@ pub struct HexStats {
     pub doublets: crate::doublets::Chains,
     /// Isolated nodes dropped: no side glued, every walk lost (noise).
     pub isolated_dropped: usize,
+    /// Index fairing on columns (`None`: not columns, or off).
+    pub column_fairing: Option<dualex_graph::ColumnFairing>,
     /// Holes through columns repaired locally (`crate::columns`).
     pub columns: crate::columns::ColumnRepair,
     /// Folded hexes collapsed after gluing.
@@ -162,6 +164,13 @@ impl HexStats {
                 "doublet_edges_dissolved": self.doublets.edges,
                 "doublet_edges_left": self.doublets.left,
             },
+            "fairing": self.column_fairing.as_ref().map(|f| {
+                let mut j = f.fairing.to_json();
+                j["folded_columns_collapsed"] = json!(f.collapsed);
+                j["columns"] = json!(f.columns);
+                j["layers"] = json!(f.layers);
+                j
+            }),
             "repair": {
                 "local_paths": self.columns.paths,
                 "holes_filled": self.columns.holes,
