@@ -208,8 +208,7 @@ impl NodeGraph<3> {
                 }
                 let (j, e) = (flat.node_of(b), flat.dir_of(b));
                 let r = to_3d(flat.rotation(a)?)?;
-                for k in 0..stacks[0].len() {
-                    let ((x, fx), (y, fy)) = (stacks[i.idx()][k], stacks[j.idx()][k]);
+                for (&(x, fx), &(y, fy)) in stacks[i.idx()].iter().zip(&stacks[j.idx()]) {
                     let rk = fx.inverse().then(&r).then(&fy);
                     let (sx, sy) = (self.side(x, fx.apply_dir(d)), self.side(y, fy.apply_dir(e)));
                     self.link(sx, sy, rk).ok()?;

@@ -271,8 +271,7 @@ pub fn repair(mesh: &HexMesh, open: &[[u32; 4]]) -> Option<Repaired> {
         } else {
             *hole_base.get(o - base.len())?
         };
-        let stack = &cols.stacks[b];
-        for k in 0..layers {
+        for (k, &input) in cols.stacks[b].iter().enumerate() {
             let lo = q.map(|v| at(v, k));
             let hi = q.map(|v| at(v, k + 1));
             let mut h = [0u32; 8];
@@ -281,7 +280,7 @@ pub fn repair(mesh: &HexMesh, open: &[[u32; 4]]) -> Option<Repaired> {
                 h[i + 4] = hi[i]?;
             }
             cells.push(h);
-            origin.push(stack[k] as u32);
+            origin.push(input as u32);
         }
     }
     let out = HexMesh { positions, cells };

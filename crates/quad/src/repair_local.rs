@@ -257,7 +257,6 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
             cell_origin.push(o);
         }
     }
-    drop(midpoint);
     Some(Local {
         mesh: QuadMesh { positions, cells },
         paths,

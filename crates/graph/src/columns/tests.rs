@@ -99,3 +99,27 @@ fn rotated_charts_are_not_columns() {
     assert!(r.fair_columns(10).is_none());
     assert_eq!(r, before);
 }
+
+/// Charts turned about `w` above the bottom layer (a column's nodes in
+/// different triangles' charts): the frames carry them back, and the
+/// result is the turned extrusion of the faired 2D graph.
+#[test]
+fn turned_charts_up_a_column_are_carried_by_frames() {
+    let layers = 3;
+    let g2 = split_disk();
+    let mut want = g2.clone();
+    want.fair(10);
+    want.collapse_folded_corners();
+    let turns: Vec<Rot3> = (0..g2.n_nodes() * layers)
+        .map(|x| {
+            let k = (x % layers) as i64 * (x as i64 + 1);
+            to_3d(Rot2::quarter_turns(if x % layers == 0 { 0 } else { k })).expect("3D")
+        })
+        .collect();
+    let mut g3 = rotate_charts(&extrude(&g2, layers), &turns);
+    g3.check().expect("valid before");
+    let rep = g3.fair_columns(10).expect("columns");
+    assert_eq!((rep.fairing.merged, rep.fairing.lifts), (1, 1));
+    g3.check().expect("valid after");
+    assert_eq!(g3, rotate_charts(&extrude(&want, layers), &turns));
+}

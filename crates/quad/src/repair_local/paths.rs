@@ -95,12 +95,10 @@ fn reach(s: usize, polys: &[Vec<u32>], by_edge: &HashMap<Edge, Vec<usize>>) -> R
             }
             let c = cost + step(&polys[f], ein, e);
             match by_edge.get(&e).map(Vec::as_slice) {
-                Some([_]) => {
-                    if out.boundary.as_ref().is_none_or(|(b, _)| c < *b) {
-                        let (faces, mut shared) = unwind((f, ein), &prev);
-                        shared.push(e);
-                        out.boundary = Some((c, (faces, shared)));
-                    }
+                Some([_]) if out.boundary.as_ref().is_none_or(|(b, _)| c < *b) => {
+                    let (faces, mut shared) = unwind((f, ein), &prev);
+                    shared.push(e);
+                    out.boundary = Some((c, (faces, shared)));
                 }
                 Some(&[g0, g1]) => {
                     let g = if g0 == f { g1 } else { g0 };
