@@ -9,12 +9,15 @@
 //!    ([`near`] says what "on" means, [`clusters`] what moves together);
 //! 3. [`nodes`]: integer points inside tets, reverted flags;
 //! 4. [`trace`]: walk every side along its iso-line to the opposite side;
-//! 5. untangling (pleat removal, `dualex_graph`);
+//! 5. untangling (pleat removal, `dualex_graph`); 5b. on a graph made of
+//!    columns (an extruded map's), index fairing and the collapse of
+//!    folded corners in every layer (`dualex_graph::columns`);
 //! 6. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
-//!    diagonal tracing.
-//!
+//!    diagonal tracing; 6b. [`columns`]: holes through columns (singular
+//!    edges through dual nodes) repaired as the 2D local repair, replayed
+//!    in every layer;
 //! 7. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
-//!    edges dissolved.
+//!    edges dissolved (in rounds).
 //!
 //! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`]
 //! ([`extract_traced`]: also the input tet holding each hex's node).
