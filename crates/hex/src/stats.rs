@@ -106,15 +106,19 @@ impl HexStats {
             .collect();
     }
 
-    /// Recounts the output after a change of the mesh alone (doublet
-    /// chains dissolved): cells, vertices, Euler characteristic, edge
-    /// valences and boundary faces from the validity checker.
+    /// Recounts the output after a change of the mesh alone (holes through
+    /// columns repaired, doublet chains dissolved): cells, vertices, Euler
+    /// characteristic, edge valences, boundary faces and surfaces and
+    /// components from the validity checker.
     pub fn finish_mesh(&mut self, mesh: &HexMesh) {
         self.hexes = mesh.cells.len();
         self.vertices = mesh.positions.len();
         let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
         self.euler = c.euler;
         self.unmatched_sides = c.boundary_faces;
+        // the repairs close holes and may split the boundary surface
+        self.boundary_surfaces = c.boundary.components;
+        self.components = c.components;
         self.edge_valence_interior = c
             .interior_edge_valence
             .iter()
