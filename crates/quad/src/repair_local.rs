@@ -9,12 +9,15 @@
 //! with an even number can (a fan of quads from one corner). Odd faces are
 //! paired up (or sent to the boundary) by the cheapest paths of quads
 //! between them, chosen independently of the faces' order ([`paths`]: the
-//! quads a path adds, a minimum-cost matching). Every edge the path crosses gets a new point at its
-//! midpoint; every quad the path crosses is split: into two quads when the
-//! path leaves through the opposite edge, into three around a new centre
-//! point when it turns. Each end face gets one new point, so a triangle
-//! becomes a quad and a pentagon a hexagon (two quads). Orientation is
-//! kept; only the faces along the path change.
+//! quads a path adds, a minimum-cost matching). Every edge the path
+//! crosses gets a new point at its midpoint; every quad the path crosses
+//! is split: into two quads when the path leaves through the opposite
+//! edge, into three around a new centre point when it turns. Each end
+//! face gets one new point, so a triangle becomes a quad and a pentagon a
+//! hexagon (two quads, fanned from the corner that leaves the best
+//! valences). Orientation is kept; only the faces along the path change.
+//! Every new point is returned with the points it is the mean of, so the
+//! same repair can be replayed on copies of the mesh (`dualex_hex::columns`).
 //!
 //! Invariants checked before any write: every polygon has distinct
 //! corners; interior edges have two faces. The result is checked by the
