@@ -8,7 +8,7 @@
 //! A face with an odd number of sides cannot be split into quads; faces
 //! with an even number can (a fan of quads from one corner). Odd faces are
 //! paired up (or sent to the boundary) by the cheapest paths of quads
-//! between them, chosen independently of the faces' order ([`paths`]: the
+//! between them, chosen independently of the faces' order (`paths`: the
 //! quads a path adds, a minimum-cost matching). Every edge the path
 //! crosses gets a new point at its midpoint; every quad the path crosses
 //! is split: into two quads when the path leaves through the opposite
