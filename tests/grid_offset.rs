@@ -80,6 +80,11 @@ fn cube_surface_offset_by_half_picks_zero() {
         assert!(got.is_valid(), "{name}: {:?}", got.errors());
         assert_eq!(got.euler, 2, "{name}");
         assert_eq!(got.interior_valence.get(&3), Some(&8), "{name}: {st}");
+        if name == "cube" {
+            // 54 quads, the 8 triangles made quads, and the quads the 4
+            // paths add (the cheapest pairing, whatever the face order)
+            assert_eq!(got.faces, 64, "{name}: {st}");
+        }
     }
 }
 
@@ -155,4 +160,32 @@ fn cli_option_and_bad_value() {
         first.contains("--grid-offset") && first.contains("auto, half or zero"),
         "{err}"
     );
+}
+
+/// `dualex extrude` keeps the 2D grid: the cube surface offset by ½ (which
+/// `dualex quad` extracts with the offset 0) has its charts shifted by ½
+/// before extruding, so `dualex hex` (offset ½ on extruded maps) gives L
+/// layers of the same quads; the unshifted cube is extruded as it is.
+#[test]
+fn extrusion_keeps_the_2d_grid_offset() {
+    let Some((cube, _)) = dualex_gen::by_name("cube", 1) else {
+        panic!("generator");
+    };
+    let mut shifted = cube.clone();
+    offset_by_half(&mut shifted);
+    for (map, want_shift) in [(cube, false), (shifted, true)] {
+        let opts = dualex_extrude::ExtrudeOptions {
+            layers: 2,
+            program: "dualex-test-no-tetgen".into(),
+            fallback: true,
+            ..Default::default()
+        };
+        let (tets, rep) = dualex_extrude::extrude(&map, &opts).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(rep.uv_shifted, want_shift);
+        let (q, _) = quads(&map, GridOffset::Auto);
+        let (h, st) = hexes(&tets, GridOffset::Auto);
+        assert_eq!(st["grid_offset"], "half", "{st}");
+        assert_eq!(h.cells.len(), 2 * q.cells.len(), "{st}");
+        assert_eq!(h.positions.len(), 3 * q.positions.len(), "{st}");
+    }
 }

@@ -119,6 +119,11 @@ pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), String> {
     if let Some(note) = rep.note.as_deref().filter(|_| !g.quiet) {
         eprintln!("dualex: {name}: {note}");
     }
+    if rep.uv_shifted && !g.quiet {
+        eprintln!(
+            "dualex: {name}: charts shifted by (½, ½): `dualex quad` takes the grid offset 0 on this map, and `dualex hex` the offset ½, so the 3D grid is the 2D one"
+        );
+    }
     let cap = dualex_extrude::tetgen::steiner_cap(rep.prisms);
     if a.quality && rep.steiner_points >= cap {
         eprintln!(

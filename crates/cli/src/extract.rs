@@ -216,6 +216,7 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
         },
         seed: x.seed,
         grid_offset: x.grid_offset,
+        ..dualex_hex::HexOptions::default()
     };
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting hexes");
@@ -253,6 +254,18 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
     verify::add_to_stats(&mut json, &topology);
     finish_stats(x, g, &json, &laps, &stats.time_ms)?;
     warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    if stats.columns.holes > 0 {
+        // printed under -q too: the output is not the map's own mesh
+        let c = &stats.columns;
+        eprintln!(
+            "dualex: warning: {} through {} that hexes cannot represent (singular edges through dual nodes) {} filled, and {} split along {} between them (local repair on columns, as in 2D)",
+            count(c.holes, "hole", "holes"),
+            count(c.layers, "layer", "layers"),
+            summary::plural(c.holes, "was", "were"),
+            count(c.split, "column", "columns"),
+            count(c.paths, "path", "paths"),
+        );
+    }
     if stats.open_interior_faces > 0 {
         // loud: printed even with -q (a crack is a wrong mesh, not noise)
         eprintln!(

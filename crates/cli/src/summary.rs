@@ -70,6 +70,13 @@ pub fn hex_problems(st: &dualex_hex::HexStats) -> Vec<String> {
             count(low, "interior edge", "interior edges")
         ));
     }
+    if st.columns.holes > 0 {
+        p.push(format!(
+            "repaired locally along {} of columns, {} split (hexes could not represent the map)",
+            count(st.columns.paths, "path", "paths"),
+            count(st.columns.split, "column", "columns"),
+        ));
+    }
     if st.open_interior_faces > 0 {
         p.push(format!(
             "{} left open",

@@ -217,6 +217,7 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
         transitions: transitions(opts.round_transitions),
         seed: opts.seed,
         grid_offset: opts.grid_offset,
+        ..dualex_hex::HexOptions::default()
     };
     let dualex_hex::Extracted {
         mesh,

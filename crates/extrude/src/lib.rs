@@ -24,6 +24,7 @@
 
 pub mod chain;
 pub mod chart;
+pub mod grid;
 pub mod intersect;
 pub mod label;
 pub mod offset;
@@ -75,6 +76,8 @@ impl Default for ExtrudeOptions {
 /// What [`extrude`] did.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExtrudeReport {
+    /// The charts were shifted by (½, ½): the 2D grid offset is 0 ([`grid`]).
+    pub uv_shifted: bool,
     /// `true`: TetGen made the tets; `false`: the built-in prism split.
     pub tetgen: bool,
     /// How the tets were made ([`chain`]).
@@ -162,6 +165,14 @@ pub fn extrude(
     opts: &ExtrudeOptions,
 ) -> Result<(TetMap, ExtrudeReport), ExtrudeError> {
     let start = Instant::now();
+    let uv_shifted = grid::zero_in_2d(map)?;
+    let owned;
+    let map = if uv_shifted {
+        owned = grid::shifted(map);
+        &owned
+    } else {
+        map
+    };
     let t0 = Instant::now();
     let chain::Outcome {
         slab,
@@ -173,6 +184,7 @@ pub fn extrude(
     let tetrahedralize_ms = t0.elapsed().as_secs_f64() * 1e3;
     let (tets, steiner_points) = chart::tet_map(&slab, &mesh)?;
     let report = ExtrudeReport {
+        uv_shifted,
         tetgen: method != Method::Split,
         method,
         note,

@@ -14,12 +14,15 @@
 //!   and components counted on the graph;
 //! - [`fan`]: vertex fans (2D), read from the graph;
 //! - [`fair`]: index fairing by saddle lifts (2D, [`FairingStats`]);
+//! - [`columns`]: the same on every layer of a 3D graph made of columns
+//!   (an extruded map's), [`ColumnFairing`];
 //! - [`testgrid`]: regular, folded and singular-disk graphs for tests.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod check;
 pub mod collapse;
+pub mod columns;
 pub mod fair;
 mod fair_local;
 pub mod fan;
@@ -38,6 +41,7 @@ pub mod walk;
 mod tests;
 
 pub use check::GraphError;
+pub use columns::ColumnFairing;
 pub use fair::{FairingStats, LiftUndo};
 pub use glue::{cell_code, Glued, NO_VERTEX};
 pub use graph::NodeGraph;

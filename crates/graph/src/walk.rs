@@ -157,14 +157,22 @@ impl<const D: usize> NodeGraph<D> {
     /// or looping: at a singular vertex or edge). The others reached the
     /// boundary, directly or handed over by a reconnection of untangling.
     pub fn lost_unmatched_sides(&self, ends: &[End<D>], closed: bool) -> usize {
+        self.lost_sides(ends, closed).count()
+    }
+
+    /// The sides [`Self::lost_unmatched_sides`] counts.
+    pub fn lost_sides<'a>(
+        &'a self,
+        ends: &'a [End<D>],
+        closed: bool,
+    ) -> impl Iterator<Item = Side> + 'a {
         self.alive_nodes()
             .flat_map(|n| (0..2 * D).map(move |d| (n, d)))
             .map(|(n, d)| self.side(n, d))
             .filter(|&s| self.opposite(s).is_none())
-            .filter(|s| {
+            .filter(move |s| {
                 closed || matches!(ends.get(s.0 as usize), Some(End::Inconsistent | End::Loop))
             })
-            .count()
     }
 }
 

@@ -34,6 +34,9 @@ pub struct Chains {
     pub edges: usize,
     /// Valence-2 interior edges left (their chain broke a precondition).
     pub left: usize,
+    /// Rounds after the first that dissolved chains made by earlier ones
+    /// ([`dissolve_all_traced`]).
+    pub rounds: usize,
 }
 
 /// Cube corner code (bit 0: u, bit 1: v, bit 2: w) of each VTK corner.
@@ -69,6 +72,33 @@ fn across(h: &[u32; 8], p: u32, q: u32) -> Option<u32> {
 pub fn dissolve(mesh: &HexMesh) -> (HexMesh, Chains) {
     let (out, rep, _) = dissolve_traced(mesh);
     (out, rep)
+}
+
+/// [`dissolve_traced`] repeated until no chain is left to dissolve:
+/// dissolving a chain takes a hex from each of its neighbours' edges, so
+/// an edge of valence 3 next to it may become a new doublet (the 2D
+/// removal queues the neighbours for the same reason). Returns the mesh,
+/// the summed counts (`left`: of the last round) and, for each output hex,
+/// the input hex it is.
+pub fn dissolve_all_traced(mesh: &HexMesh) -> (HexMesh, Chains, Vec<u32>) {
+    let (mut out, mut rep, mut kept) = dissolve_traced(mesh);
+    let mut last = rep.edges;
+    // each round deletes at least one hex
+    while last > 0 {
+        let (next, r, k) = dissolve_traced(&out);
+        if r.edges == 0 {
+            rep.left = r.left;
+            break;
+        }
+        kept = k.iter().map(|&i| kept[i as usize]).collect();
+        rep.dissolved += r.dissolved;
+        rep.edges += r.edges;
+        rep.left = r.left;
+        rep.rounds += 1;
+        last = r.edges;
+        out = next;
+    }
+    (out, rep, kept)
 }
 
 /// The input cell index of each live cell.

@@ -9,14 +9,17 @@
 //!    ([`near`] says what "on" means, [`clusters`] what moves together);
 //! 3. [`nodes`]: integer points inside tets, reverted flags;
 //! 4. [`trace`]: walk every side along its iso-line to the opposite side;
-//! 5. untangling (pleat removal, `dualex_graph`);
+//! 5. untangling (pleat removal, `dualex_graph`); 5b. on a graph made of
+//!    columns (an extruded map's), index fairing and the collapse of
+//!    folded corners in every layer (`dualex_graph::columns`);
 //! 6. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
-//!    diagonal tracing.
-//!
+//!    diagonal tracing; 6b. [`columns`]: holes through columns (singular
+//!    edges through dual nodes) repaired as the 2D local repair, replayed
+//!    in every layer;
 //! 7. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
-//!    edges dissolved;
+//!    edges dissolved (in rounds);
 //! 8. [`corner_uvw`]: each hex's corners in its node's chart (kept along
-//!    step 7).
+//!    steps 6b and 7).
 //!
 //! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`]
 //! ([`extract_traced`]: also the input tet holding each hex's node;
@@ -27,6 +30,7 @@
 #![warn(missing_docs)]
 
 pub mod clusters;
+pub mod columns;
 pub mod corner_uvw;
 pub mod doublets;
 pub mod geometry;
@@ -56,6 +60,9 @@ pub struct HexOptions {
     pub seed: u64,
     /// Where the dual grid sits (`--grid-offset`).
     pub grid_offset: GridOffset,
+    /// Index fairing on columns (extruded maps: the 2D saddle lifts in
+    /// every layer, `dualex_graph::columns`). Default: on.
+    pub fairing: bool,
 }
 
 impl Default for HexOptions {
@@ -64,9 +71,14 @@ impl Default for HexOptions {
             transitions: TransitionOptions::default(),
             seed: 1,
             grid_offset: GridOffset::Auto,
+            fairing: true,
         }
     }
 }
+
+/// Longest path a singularity is moved along by fairing (as in 2D, the
+/// paper's 10).
+pub const FAIRING_MAX_PATH: usize = 10;
 
 /// Extracts the hex mesh of `map`.
 pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), InputError> {
@@ -188,6 +200,12 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     // 5
     st.untangle = Some(graph.untangle());
     laps.lap("untangle");
+    // 5b: index fairing on columns (an extruded map's graph: the 2D saddle
+    // lifts and folded-corner collapses, in every layer alike)
+    if opts.fairing {
+        st.column_fairing = graph.fair_columns(FAIRING_MAX_PATH);
+        laps.lap("fairing");
+    }
     // 6
     let glued = graph.glue();
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
@@ -199,6 +217,19 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     st.finish_output(&graph, &glued, &mesh);
     // cracks: unmatched sides that are not on the input's boundary
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
+    // 6b: holes through columns (an extruded map's singular edges through
+    // nodes) repaired locally, as the 2D local repair in every layer
+    if st.open_interior_faces > 0 {
+        let open = open_faces(&graph, &glued, &ends, topo.boundary_facets == 0);
+        if let Some(rep) = columns::repair(&mesh, &open) {
+            st.columns = rep.report;
+            st.open_interior_faces -= open.len().min(st.open_interior_faces);
+            corners = corner_uvw::carry(&mesh, &corners, &rep.mesh, &rep.origin);
+            mesh = rep.mesh;
+            source = rep.origin.iter().map(|&o| source[o as usize]).collect();
+            st.finish_mesh(&mesh);
+        }
+    }
     // 7: folded hexes collapsed, doublet chains dissolved (the extrusions
     // of the 2D collapse of folded quads and of doublet removal)
     // (only when the checker's counts show a repeated corner or an
@@ -209,7 +240,7 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         .any(|h| (0..8).any(|i| (i + 1..8).any(|j| h[i] == h[j])));
     if repeated || st.edge_valence_interior.contains_key(&2) {
         let (collapsed, folded, kept_folded) = doublets::collapse_folded_traced(&mesh);
-        let (dissolved, chains, kept_chains) = doublets::dissolve_traced(&collapsed);
+        let (dissolved, chains, kept_chains) = doublets::dissolve_all_traced(&collapsed);
         st.folded_collapsed = folded;
         st.doublets = chains;
         if folded + chains.edges > 0 {
@@ -231,6 +262,30 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         sources: source,
         corner_uvw: corners,
     })
+}
+
+/// The corners of the unmatched sides that are cracks, not boundary (see
+/// `NodeGraph::lost_unmatched_sides`).
+fn open_faces(
+    graph: &NodeGraph<3>,
+    glued: &dualex_graph::Glued<3>,
+    ends: &[trace::End],
+    closed: bool,
+) -> Vec<[u32; 4]> {
+    graph
+        .lost_sides(ends, closed)
+        .map(|s| {
+            let (node, d) = (graph.node_of(s), graph.dir_of(s));
+            // the side's corners: cube codes with the axis bit of its side
+            let (axis, want) = (d >> 1, usize::from(d & 1 == 0));
+            let mut f = [0u32; 4];
+            let codes = (0..8).filter(|c| (c >> axis) & 1 == want);
+            for (k, c) in codes.enumerate() {
+                f[k] = glued.vertex(node, c);
+            }
+            f
+        })
+        .collect()
 }
 
 /// Positions of the glued vertices by diagonal tracing (corner code bits:

@@ -41,6 +41,10 @@ pub struct HexStats {
     pub doublets: crate::doublets::Chains,
     /// Isolated nodes dropped: no side glued, every walk lost (noise).
     pub isolated_dropped: usize,
+    /// Index fairing on columns (`None`: not columns, or off).
+    pub column_fairing: Option<dualex_graph::ColumnFairing>,
+    /// Holes through columns repaired locally (`crate::columns`).
+    pub columns: crate::columns::ColumnRepair,
     /// Folded hexes collapsed after gluing.
     pub folded_collapsed: usize,
     /// Nodes found.
@@ -102,15 +106,19 @@ impl HexStats {
             .collect();
     }
 
-    /// Recounts the output after a change of the mesh alone (doublet
-    /// chains dissolved): cells, vertices, Euler characteristic, edge
-    /// valences and boundary faces from the validity checker.
+    /// Recounts the output after a change of the mesh alone (holes through
+    /// columns repaired, doublet chains dissolved): cells, vertices, Euler
+    /// characteristic, edge valences, boundary faces and surfaces and
+    /// components from the validity checker.
     pub fn finish_mesh(&mut self, mesh: &HexMesh) {
         self.hexes = mesh.cells.len();
         self.vertices = mesh.positions.len();
         let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
         self.euler = c.euler;
         self.unmatched_sides = c.boundary_faces;
+        // the repairs close holes and may split the boundary surface
+        self.boundary_surfaces = c.boundary.components;
+        self.components = c.components;
         self.edge_valence_interior = c
             .interior_edge_valence
             .iter()
@@ -159,6 +167,20 @@ impl HexStats {
                 "doublet_chains_dissolved": self.doublets.dissolved,
                 "doublet_edges_dissolved": self.doublets.edges,
                 "doublet_edges_left": self.doublets.left,
+            },
+            "fairing": self.column_fairing.as_ref().map(|f| {
+                let mut j = f.fairing.to_json();
+                j["folded_columns_collapsed"] = json!(f.collapsed);
+                j["columns"] = json!(f.columns);
+                j["layers"] = json!(f.layers);
+                j
+            }),
+            "repair": {
+                "local_paths": self.columns.paths,
+                "holes_filled": self.columns.holes,
+                "columns_split": self.columns.split,
+                "column_layers": self.columns.layers,
+                "doublet_rounds": self.doublets.rounds,
             },
             "time_ms": times_json(&self.time_ms),
         })

@@ -7,21 +7,26 @@
 //!
 //! A face with an odd number of sides cannot be split into quads; faces
 //! with an even number can (a fan of quads from one corner). Odd faces are
-//! paired up: from an odd face, a breadth-first search over the quads finds
-//! the nearest other odd face (or, when there is none left in reach, the
-//! nearest boundary edge). Every edge the path crosses gets a new point at its
-//! midpoint; every quad the path crosses is split: into two quads when the
-//! path leaves through the opposite edge, into three around a new centre
-//! point when it turns. Each end face gets one new point, so a triangle
-//! becomes a quad and a pentagon a hexagon (two quads). Orientation is
-//! kept; only the faces along the path change.
+//! paired up (or sent to the boundary) by the cheapest paths of quads
+//! between them, chosen independently of the faces' order (`paths`: the
+//! quads a path adds, a minimum-cost matching). Every edge the path
+//! crosses gets a new point at its midpoint; every quad the path crosses
+//! is split: into two quads when the path leaves through the opposite
+//! edge, into three around a new centre point when it turns. Each end
+//! face gets one new point, so a triangle becomes a quad and a pentagon a
+//! hexagon (two quads, fanned from the corner that leaves the best
+//! valences). Orientation is kept; only the faces along the path change.
+//! Every new point is returned with the points it is the mean of, so the
+//! same repair can be replayed on copies of the mesh (`dualex_hex::columns`).
 //!
 //! Invariants checked before any write: every polygon has distinct
 //! corners; interior edges have two faces. The result is checked by the
 //! caller like any output.
 
 use dualex_map::QuadMesh;
-use std::collections::{HashMap, VecDeque};
+use std::collections::HashMap;
+
+mod paths;
 
 /// The oriented edges of polygon `p`.
 fn edges(p: &[u32]) -> impl Iterator<Item = (u32, u32)> + '_ {
@@ -52,67 +57,7 @@ fn insert_on(p: &mut Vec<u32>, e: (u32, u32), m: u32) -> Option<()> {
 
 /// A path: its faces and the edges between consecutive ones (and a last
 /// boundary edge when it ends on the boundary).
-type Path = (Vec<usize>, Vec<(u32, u32)>);
-
-/// A path from odd face `s` to the nearest other odd face, or with
-/// `to_boundary` to the nearest odd face or boundary edge: the faces and,
-/// between consecutive faces, the edge they share; a last edge without a
-/// face when the path ends on the boundary.
-fn path_from(
-    s: usize,
-    polys: &[Vec<u32>],
-    by_edge: &HashMap<(u32, u32), Vec<usize>>,
-    to_boundary: bool,
-) -> Option<Path> {
-    let mut prev: HashMap<usize, (usize, (u32, u32))> = HashMap::new();
-    let mut queue = VecDeque::from([s]);
-    let mut seen = vec![false; polys.len()];
-    seen[s] = true;
-    while let Some(f) = queue.pop_front() {
-        let end_here = f != s && polys[f].len() % 2 == 1;
-        // a boundary end only on the start face or a quad
-        let boundary = if !to_boundary || end_here || (f != s && polys[f].len() != 4) {
-            None
-        } else {
-            edges(&polys[f]).find(|&(a, b)| by_edge.get(&key(a, b)).is_some_and(|l| l.len() == 1))
-        };
-        if end_here || boundary.is_some() {
-            let mut faces = vec![f];
-            let mut shared = Vec::new();
-            let mut g = f;
-            while let Some(&(p, e)) = prev.get(&g) {
-                faces.push(p);
-                shared.push(e);
-                g = p;
-            }
-            faces.reverse();
-            shared.reverse();
-            if let Some(b) = boundary {
-                shared.push(key(b.0, b.1));
-            }
-            return Some((faces, shared));
-        }
-        // only quads are crossed (and the start face left)
-        if f != s && polys[f].len() != 4 {
-            continue;
-        }
-        for (a, b) in edges(&polys[f]) {
-            let Some(list) = by_edge.get(&key(a, b)) else {
-                continue;
-            };
-            if list.len() != 2 {
-                continue;
-            }
-            let g = if list[0] == f { list[1] } else { list[0] };
-            if !seen[g] {
-                seen[g] = true;
-                prev.insert(g, (f, key(a, b)));
-                queue.push_back(g);
-            }
-        }
-    }
-    None
-}
+pub(crate) type Path = (Vec<usize>, Vec<(u32, u32)>);
 
 /// Splits quad `q` crossed by the path through its edges `e1` (points
 /// `p1`) and `e2` (`p2`): two quads when the edges are opposite, three
@@ -150,6 +95,62 @@ fn split_quad(
     }
 }
 
+/// The mean of the positions of `pts`.
+pub fn mean(pos: &[[f64; 3]], pts: &[u32]) -> [f64; 3] {
+    let k = pts.len() as f64;
+    let mut m = [0.0; 3];
+    for &v in pts {
+        for (mk, x) in m.iter_mut().zip(pos[v as usize]) {
+            *mk += x / k;
+        }
+    }
+    m
+}
+
+/// Distinct edges at each vertex of `polys`.
+fn degrees(polys: &[Vec<u32>], nv: usize) -> Vec<u32> {
+    let mut all: Vec<(u32, u32)> = polys
+        .iter()
+        .flat_map(|p| edges(p).map(|(a, b)| key(a, b)))
+        .collect();
+    all.sort_unstable();
+    all.dedup();
+    let mut d = vec![0u32; nv];
+    for (a, b) in all {
+        d[a as usize] += 1;
+        d[b as usize] += 1;
+    }
+    d
+}
+
+/// The corner of even polygon `p` to fan its quads from: the one whose
+/// diagonals leave the fewest corners of valence ≤ 2, then the valences
+/// nearest 4 (so the choice does not depend on where `p` starts, except
+/// between equally good corners).
+fn fan_corner(p: &[u32], degree: &[u32]) -> usize {
+    let n = p.len();
+    if n <= 4 {
+        return 0;
+    }
+    let score = |r: usize| {
+        let (mut low, mut off) = (0u32, 0u32);
+        for k in 0..n {
+            // the fan's diagonals: r to r+3, r+5, …, r+n−3
+            let extra = if k == r {
+                (n as u32 - 4) / 2
+            } else {
+                let d = (k + n - r) % n;
+                u32::from(d >= 3 && d <= n - 3 && d % 2 == 1)
+            };
+            let v = degree[p[k] as usize] + extra;
+            low += u32::from(v <= 2);
+            off += v.abs_diff(4);
+        }
+        (low, off)
+    };
+    (0..n).min_by_key(|&r| score(r)).unwrap_or(0)
+}
+
 /// What [`repair`] made.
 pub struct Local {
     /// The all-quad mesh.
@@ -160,6 +161,11 @@ pub struct Local {
     /// For each cell, the polygon it comes from: an index into the input
     /// cells followed by `extra`.
     pub origin: Vec<u32>,
+    /// The new points in order (ids from the input's vertex count on): the
+    /// points each is the mean of (new points only refer to earlier ones),
+    /// so that the same repair can be replayed on copies of the mesh (the
+    /// layers of an extruded hex mesh, `dualex_hex::columns`).
+    pub new_points: Vec<Vec<u32>>,
 }
 
 /// The local repair (module docs): `None` when it does not apply.
@@ -181,22 +187,22 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
     }
     let mut origin: Vec<u32> = (0..polys.len() as u32).collect();
     let mut paths = 0;
-    let midpoint = |pos: &mut Vec<[f64; 3]>, pts: &[u32]| -> u32 {
-        let k = pts.len() as f64;
-        let mut m = [0.0; 3];
-        for &v in pts {
-            for (mk, x) in m.iter_mut().zip(pos[v as usize]) {
-                *mk += x / k;
-            }
-        }
-        pos.push(m);
+    // each new point: its position and the points it is the mean of
+    let mut made: Vec<Vec<u32>> = Vec::new();
+    let mut midpoint = |pos: &mut Vec<[f64; 3]>, pts: &[u32]| -> u32 {
+        pos.push(mean(pos, pts));
+        made.push(pts.to_vec());
         (pos.len() - 1) as u32
     };
-    while let Some(s) = polys.iter().position(|p| p.len() % 2 == 1) {
+    while polys.iter().any(|p| p.len() % 2 == 1) {
         let by_edge = edge_faces(&polys);
-        // another odd face first; the boundary when there is none
-        let (faces, shared) = path_from(s, &polys, &by_edge, false)
-            .or_else(|| path_from(s, &polys, &by_edge, true))?;
+        let (faces, shared) = paths::next(&polys, &by_edge)?;
+        let mut distinct = faces.clone();
+        distinct.sort_unstable();
+        distinct.dedup();
+        if distinct.len() != faces.len() {
+            return None; // a path through a face twice
+        }
         let points: Vec<u32> = shared
             .iter()
             .map(|&(a, b)| midpoint(&mut positions, &[a, b]))
@@ -244,10 +250,13 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
     }
     let mut cells = Vec::with_capacity(polys.len());
     let mut cell_origin = Vec::with_capacity(polys.len());
+    let degree = degrees(&polys, positions.len());
     for (p, &o) in polys.iter().zip(&origin) {
-        // fan of quads from corner 0 (even polygons)
-        for i in (1..p.len() - 1).step_by(2) {
-            cells.push([p[0], p[i], p[i + 1], p[(i + 2) % p.len()]]);
+        // fan of quads from the corner that leaves the best valences
+        let r = fan_corner(p, &degree);
+        let n = p.len();
+        for i in (1..n - 1).step_by(2) {
+            cells.push([p[r], p[(r + i) % n], p[(r + i + 1) % n], p[(r + i + 2) % n]]);
             cell_origin.push(o);
         }
     }
@@ -255,6 +264,7 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
         mesh: QuadMesh { positions, cells },
         paths,
         origin: cell_origin,
+        new_points: made,
     })
 }
 

@@ -22,7 +22,8 @@ fn an_extruded_doublet_column_is_dissolved() {
             Chains {
                 dissolved: 1,
                 edges: layers,
-                left: 0
+                left: 0,
+                rounds: 0,
             },
             "L = {layers}"
         );
@@ -74,5 +75,53 @@ fn an_extruded_folded_quad_is_collapsed() {
         assert_eq!(out.cells.len(), 2 * layers);
         assert_eq!(out.positions.len(), 6 * (layers + 1));
         check(&out);
+    }
+}
+
+/// `quads` stacked into `layers` layers of hexes, corners in the quads'
+/// order (no reorientation): vertex `v` of level `l` is `v + l·nv`.
+fn stack(nv: u32, quads: &[[u32; 4]], layers: u32) -> HexMesh {
+    let positions = vec![[0.0; 3]; (nv * (layers + 1)) as usize];
+    let mut cells = Vec::new();
+    for l in 0..layers {
+        for q in quads {
+            cells.push(std::array::from_fn(|i| q[i % 4] + (l + i as u32 / 4) * nv));
+        }
+    }
+    HexMesh { positions, cells }
+}
+
+/// Two nested doublets: `v` between `[v, a, x, b]` and `[v, b, y, a]`,
+/// and `a` (valence 3 with `[a, y, z, x]`) becomes one when `v` goes. One
+/// round leaves a valence-2 edge column; the rounds dissolve it too, as
+/// the 2D removal's queue does.
+#[test]
+fn a_doublet_made_by_dissolving_one_is_dissolved_in_a_second_round() {
+    let (v, a, b, x, y, z) = (0, 1, 2, 3, 4, 5);
+    let quads = [[v, a, x, b], [v, b, y, a], [a, y, z, x]];
+    for layers in [1, 2] {
+        let m = stack(6, &quads, layers);
+        check(&m);
+        let (once, rep) = dissolve(&m);
+        assert_eq!(
+            (rep.edges, once.cells.len()),
+            (layers as usize, 2 * layers as usize)
+        );
+        let r = check(&once);
+        assert_eq!(r.interior_edge_valence.get(&2), Some(&(layers as usize)));
+        let (out, rep, kept) = dissolve_all_traced(&m);
+        assert_eq!(
+            rep,
+            Chains {
+                dissolved: 2,
+                edges: 2 * layers as usize,
+                left: 0,
+                rounds: 1,
+            }
+        );
+        assert_eq!(out.cells.len(), layers as usize);
+        assert_eq!(kept.len(), out.cells.len());
+        let r = check(&out);
+        assert_eq!(r.interior_edge_valence.get(&2), None);
     }
 }
