@@ -29,7 +29,9 @@ fn help_version_and_the_subcommand_list() {
     let out = dualex(&[]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
     let all = format!("{}{}", stdout(&out), stderr(&out));
-    for sub in ["quad", "hex", "extrude", "view", "inspect", "generate"] {
+    for sub in [
+        "quad", "hex", "extrude", "view", "inspect", "generate", "remesh",
+    ] {
         assert!(
             all.contains(&format!("  {sub} ")),
             "bare dualex lists {sub}: {all}"
@@ -42,6 +44,22 @@ fn help_version_and_the_subcommand_list() {
         text(&out)
     );
     let options: &[(&str, &[&str])] = &[
+        (
+            "remesh",
+            &[
+                "--quads",
+                "--scale",
+                "--sharp",
+                "--rounding",
+                "--map-out",
+                "--png",
+                "--seed",
+                "--stats",
+                "--no-fairing",
+                "--uv",
+                "--strict",
+            ],
+        ),
         (
             "quad",
             &[
