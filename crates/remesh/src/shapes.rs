@@ -266,55 +266,6 @@ fn build(p: Vec<[f64; 3]>, t: Vec<[u32; 3]>) -> Surface {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn euler_characteristics_and_sizes() {
-        let s = icosphere(2);
-        assert_eq!(s.triangles.len(), 320);
-        assert_eq!(s.euler_characteristic(), 2);
-        assert_eq!(torus(3.0, 1.0, 12, 8).euler_characteristic(), 0);
-        assert_eq!(bumpy_square(6, 0.2).euler_characteristic(), 1);
-        assert_eq!(annulus(12, 3).euler_characteristic(), 0);
-        assert_eq!(flat_disk(8).euler_characteristic(), 1);
-        let two = disjoint_union(&icosphere(0), &bumpy_square(2, 0.0));
-        assert_eq!(two.euler_characteristic(), 3);
-        assert_eq!(two.triangles.len(), 28);
-        let c = cube(3);
-        assert_eq!(c.triangles.len(), 6 * 9 * 2);
-        assert_eq!(c.euler_characteristic(), 2);
-        assert!(c.boundary_vertex.iter().all(|&b| !b));
-        for holes in 1..=3 {
-            let s = plate_with_holes(holes, 2);
-            assert_eq!(s.euler_characteristic(), 2 - 2 * i64::from(holes));
-            assert!(s.boundary_vertex.iter().all(|&b| !b));
-        }
-    }
-
-    #[test]
-    fn closed_surfaces_face_outward() {
-        // signed volume > 0 with outward normals
-        for s in [
-            icosphere(1),
-            torus(3.0, 1.0, 10, 6),
-            cube(2),
-            plate_with_holes(3, 1),
-        ] {
-            let vol: f64 = s
-                .triangles
-                .iter()
-                .map(|t| {
-                    let [a, b, c] = t.map(|v| s.positions[v as usize]);
-                    crate::surface::dot(a, crate::surface::cross(b, c)) / 6.0
-                })
-                .sum();
-            assert!(vol > 0.0, "volume {vol}");
-        }
-    }
-}
-
 /// An icosphere with bumps: each vertex moved along its direction `d` to
 /// radius `1 + amplitude·sin(3·d.x)·sin(2·d.y + 1)·cos(d.z)`.
 pub fn bumpy_sphere(subdivisions: u32, amplitude: f64) -> Surface {
@@ -372,4 +323,53 @@ pub fn by_name(name: &str) -> Option<Surface> {
         "surface_disk" => bumpy_square(48, 0.2),
         _ => return None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn euler_characteristics_and_sizes() {
+        let s = icosphere(2);
+        assert_eq!(s.triangles.len(), 320);
+        assert_eq!(s.euler_characteristic(), 2);
+        assert_eq!(torus(3.0, 1.0, 12, 8).euler_characteristic(), 0);
+        assert_eq!(bumpy_square(6, 0.2).euler_characteristic(), 1);
+        assert_eq!(annulus(12, 3).euler_characteristic(), 0);
+        assert_eq!(flat_disk(8).euler_characteristic(), 1);
+        let two = disjoint_union(&icosphere(0), &bumpy_square(2, 0.0));
+        assert_eq!(two.euler_characteristic(), 3);
+        assert_eq!(two.triangles.len(), 28);
+        let c = cube(3);
+        assert_eq!(c.triangles.len(), 6 * 9 * 2);
+        assert_eq!(c.euler_characteristic(), 2);
+        assert!(c.boundary_vertex.iter().all(|&b| !b));
+        for holes in 1..=3 {
+            let s = plate_with_holes(holes, 2);
+            assert_eq!(s.euler_characteristic(), 2 - 2 * i64::from(holes));
+            assert!(s.boundary_vertex.iter().all(|&b| !b));
+        }
+    }
+
+    #[test]
+    fn closed_surfaces_face_outward() {
+        // signed volume > 0 with outward normals
+        for s in [
+            icosphere(1),
+            torus(3.0, 1.0, 10, 6),
+            cube(2),
+            plate_with_holes(3, 1),
+        ] {
+            let vol: f64 = s
+                .triangles
+                .iter()
+                .map(|t| {
+                    let [a, b, c] = t.map(|v| s.positions[v as usize]);
+                    crate::surface::dot(a, crate::surface::cross(b, c)) / 6.0
+                })
+                .sum();
+            assert!(vol > 0.0, "volume {vol}");
+        }
+    }
 }
