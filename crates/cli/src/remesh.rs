@@ -166,6 +166,8 @@ fn stats_json(s: &dualex_remesh::RemeshStats) -> serde_json::Value {
         "flipped": s.flipped,
         "degenerate": s.degenerate,
         "scale": s.scale,
+        "first_scale": s.first_scale,
+        "map_area": s.map_area,
         "rounded": s.rounded,
         "off_grid": s.off_grid,
         "max_rounding": s.max_rounding,

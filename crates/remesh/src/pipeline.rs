@@ -93,6 +93,11 @@ pub struct RemeshStats {
     pub degenerate: usize,
     /// Map units per model unit.
     pub scale: f64,
+    /// The scale before it was fitted to the map's area
+    /// ([`IntegrateOptions::fit_area`]).
+    pub first_scale: f64,
+    /// Signed area of the map (map units²): about the quad count.
+    pub map_area: f64,
     /// Integer unknowns rounded.
     pub rounded: usize,
     /// Integer unknowns left off the integers (0 when rounding).
@@ -166,6 +171,8 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         flipped,
         degenerate,
         scale: rep.scale,
+        first_scale: rep.first_scale,
+        map_area: rep.map_area,
         rounded: rep.quantize.rounded,
         off_grid: rep.quantize.off_grid,
         max_rounding: rep.quantize.max_rounding,

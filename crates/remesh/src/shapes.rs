@@ -266,6 +266,70 @@ fn build(p: Vec<[f64; 3]>, t: Vec<[u32; 3]>) -> Surface {
     }
 }
 
+/// An icosphere with bumps: each vertex moved along its direction `d` to
+/// radius `1 + amplitude·sin(3·d.x)·sin(2·d.y + 1)·cos(d.z)`.
+pub fn bumpy_sphere(subdivisions: u32, amplitude: f64) -> Surface {
+    let s = icosphere(subdivisions);
+    let positions = s
+        .positions
+        .iter()
+        .map(|&[x, y, z]| {
+            let r = 1.0 + amplitude * (3.0 * x).sin() * (2.0 * y + 1.0).sin() * z.cos();
+            [r * x, r * y, r * z]
+        })
+        .collect();
+    Surface::new(positions, s.triangles).expect("a bumpy sphere is a surface")
+}
+
+/// The surface `dualex remesh` runs on without INPUT: a bumpy sphere of
+/// 5 120 triangles, as positions and triangles.
+pub fn embedded() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+    let s = bumpy_sphere(4, 0.25);
+    (s.positions, s.triangles)
+}
+
+/// The generated surfaces by name (`dualex generate surface_NAME`), with
+/// what each is: the inputs of the remesher's tests besides the shared
+/// surfaces.
+pub const NAMED: &[(&str, &str)] = &[
+    (
+        "surface_sphere",
+        "icosphere, 5120 triangles (smooth, closed)",
+    ),
+    (
+        "surface_bumpy_sphere",
+        "bumpy icosphere, 5120 triangles (dualex remesh's embedded surface)",
+    ),
+    ("surface_torus", "torus, 6144 triangles (genus 1)"),
+    (
+        "surface_torus_large",
+        "torus, 98304 triangles (the speed benchmark's surface)",
+    ),
+    (
+        "surface_genus3",
+        "polycube plate with 3 holes (genus 3, sharp edges)",
+    ),
+    ("surface_cube", "cube, 8×8 per face (sharp edges)"),
+    (
+        "surface_disk",
+        "bumpy square, 48×48 (open: one boundary loop)",
+    ),
+];
+
+/// A generated surface by its name in [`NAMED`].
+pub fn by_name(name: &str) -> Option<Surface> {
+    Some(match name {
+        "surface_sphere" => icosphere(4),
+        "surface_bumpy_sphere" => bumpy_sphere(4, 0.25),
+        "surface_torus" => torus(1.0, 0.4, 96, 32),
+        "surface_torus_large" => torus(1.0, 0.4, 384, 128),
+        "surface_genus3" => plate_with_holes(3, 4),
+        "surface_cube" => cube(8),
+        "surface_disk" => bumpy_square(48, 0.2),
+        _ => return None,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -313,63 +377,4 @@ mod tests {
             assert!(vol > 0.0, "volume {vol}");
         }
     }
-}
-
-/// An icosphere with bumps: each vertex moved along its direction `d` to
-/// radius `1 + amplitude·sin(3·d.x)·sin(2·d.y + 1)·cos(d.z)`.
-pub fn bumpy_sphere(subdivisions: u32, amplitude: f64) -> Surface {
-    let s = icosphere(subdivisions);
-    let positions = s
-        .positions
-        .iter()
-        .map(|&[x, y, z]| {
-            let r = 1.0 + amplitude * (3.0 * x).sin() * (2.0 * y + 1.0).sin() * z.cos();
-            [r * x, r * y, r * z]
-        })
-        .collect();
-    Surface::new(positions, s.triangles).expect("a bumpy sphere is a surface")
-}
-
-/// The surface `dualex remesh` runs on without INPUT: a bumpy sphere of
-/// 5 120 triangles, as positions and triangles.
-pub fn embedded() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let s = bumpy_sphere(4, 0.25);
-    (s.positions, s.triangles)
-}
-
-/// The generated surfaces by name (`dualex generate surface_NAME`), with
-/// what each is: the inputs of the remesher's tests besides the shared
-/// surfaces.
-pub const NAMED: &[(&str, &str)] = &[
-    (
-        "surface_sphere",
-        "icosphere, 5120 triangles (smooth, closed)",
-    ),
-    (
-        "surface_bumpy_sphere",
-        "bumpy icosphere, 5120 triangles (dualex remesh's embedded surface)",
-    ),
-    ("surface_torus", "torus, 6144 triangles (genus 1)"),
-    (
-        "surface_genus3",
-        "polycube plate with 3 holes (genus 3, sharp edges)",
-    ),
-    ("surface_cube", "cube, 8×8 per face (sharp edges)"),
-    (
-        "surface_disk",
-        "bumpy square, 48×48 (open: one boundary loop)",
-    ),
-];
-
-/// A generated surface by its name in [`NAMED`].
-pub fn by_name(name: &str) -> Option<Surface> {
-    Some(match name {
-        "surface_sphere" => icosphere(4),
-        "surface_bumpy_sphere" => bumpy_sphere(4, 0.25),
-        "surface_torus" => torus(1.0, 0.4, 96, 32),
-        "surface_genus3" => plate_with_holes(3, 4),
-        "surface_cube" => cube(8),
-        "surface_disk" => bumpy_square(48, 0.2),
-        _ => return None,
-    })
 }

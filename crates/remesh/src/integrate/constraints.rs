@@ -246,6 +246,7 @@ mod tests {
         let gauge = Gauge {
             wedge: vec![1],
             component: vec![0; 3],
+            offset: [0.0, 0.0],
         };
         let difference = form(&[(0, 1.0), (2, -1.0)], 0.0);
         assert_eq!(gauge.rows([difference.clone()].iter()).len(), 2);
