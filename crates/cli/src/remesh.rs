@@ -168,6 +168,7 @@ fn stats_json(s: &dualex_remesh::RemeshStats) -> serde_json::Value {
         "scale": s.scale,
         "first_scale": s.first_scale,
         "map_area": s.map_area,
+        "roundings": s.roundings,
         "rounded": s.rounded,
         "off_grid": s.off_grid,
         "max_rounding": s.max_rounding,

@@ -98,6 +98,8 @@ pub struct RemeshStats {
     pub first_scale: f64,
     /// Signed area of the map (map units²): about the quad count.
     pub map_area: f64,
+    /// Roundings made (the area fit may round again at another scale).
+    pub roundings: usize,
     /// Integer unknowns rounded.
     pub rounded: usize,
     /// Integer unknowns left off the integers (0 when rounding).
@@ -173,6 +175,7 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         scale: rep.scale,
         first_scale: rep.first_scale,
         map_area: rep.map_area,
+        roundings: rep.roundings,
         rounded: rep.quantize.rounded,
         off_grid: rep.quantize.off_grid,
         max_rounding: rep.quantize.max_rounding,

@@ -30,6 +30,8 @@ pub mod system;
 pub mod test_cut;
 
 use crate::field::CrossField;
+use crate::integrate::constraints::Gauge;
+use crate::integrate::elim::Form;
 use crate::quantize::{quantize, QuantizeReport, Rounding};
 use crate::surface::Surface;
 use dualex_map::TriMap;
@@ -88,6 +90,8 @@ pub struct IntegrateReport {
     pub first_scale: f64,
     /// Signed area of the final map (map units²): about the quad count.
     pub map_area: f64,
+    /// Roundings made (1 + re-roundings of [`IntegrateOptions::fit_area`]).
+    pub roundings: usize,
     /// Wedges (chart vertices); the unknowns are twice as many.
     pub wedges: usize,
     /// Seam edges (cut interior edges).
@@ -140,14 +144,19 @@ pub fn integrate_report(
     // 3. energy, the scale fitted to the area (one continuous solve)
     let mut scale = first_scale;
     let mut energy = system::energy(surface, &charts, scale);
+    let mut fit = None;
+    let mut solves = 0;
     if let (true, None, Some(n)) = (opts.fit_area, opts.scale, opts.quads) {
+        let mut origin = cons.gauge.clone();
+        origin.offset = [0.0, 0.0];
         let (x, _) = quantize(
             &energy,
             &cons.rows,
-            &cons.gauge,
+            &origin,
             &[],
             0,
             Rounding::Continuous,
+            None,
         )?;
         let area = signed_area(&charts.corner_wedge, &x);
         // the continuous map is linear in s: its area goes as s²
@@ -155,6 +164,8 @@ pub fn integrate_report(
             scale *= (n as f64 / area).sqrt();
             energy = system::energy(surface, &charts, scale);
         }
+        fit = Some(x);
+        solves += 1;
     }
     // 4. solve, round, solve
     let first = if opts.round_singularities {
@@ -170,7 +181,12 @@ pub fn integrate_report(
     };
     let mut best: Option<(f64, Vec<f64>, QuantizeReport, f64)> = None;
     let (mut below, mut above) = (0.0f64, f64::INFINITY);
+    let mut roundings = 0;
     for _ in 0..=REFITS {
+        roundings += 1;
+        let start = fit
+            .as_ref()
+            .and_then(|x0| scaled_start(x0, scale / first_scale, &cons.rows, &cons.gauge));
         let (x, q) = quantize(
             &energy,
             &cons.rows,
@@ -178,7 +194,9 @@ pub fn integrate_report(
             &integers,
             first,
             opts.rounding,
+            start,
         )?;
+        solves += q.solves;
         let area = signed_area(&charts.corner_wedge, &x);
         let miss = target.map_or(0.0, |n| (area - n).abs() / n);
         if best.as_ref().is_none_or(|b| miss < b.0) {
@@ -201,9 +219,10 @@ pub fn integrate_report(
             _ => break,
         }
     }
-    let Some((_, x, quantize, scale)) = best else {
+    let Some((_, x, mut quantize, scale)) = best else {
         return Err("integrate: no solve".into());
     };
+    quantize.solves = solves;
     let coords = charts
         .corner_wedge
         .chunks_exact(3)
@@ -218,6 +237,7 @@ pub fn integrate_report(
         scale,
         first_scale,
         map_area: signed_area(&charts.corner_wedge, &x),
+        roundings,
         wedges: charts.wedges,
         seams: charts.seam.iter().flatten().count(),
         rotated_seams: charts.seam.iter().flatten().filter(|&&p| p != 0).count(),
@@ -225,6 +245,26 @@ pub fn integrate_report(
         quantize,
     };
     Ok((map, report))
+}
+
+/// The continuous minimizer at `k` times the scale of `x0` (the
+/// minimizer with the gauge at the origin), with the gauge at its offset:
+/// the energy is quadratic with a target linear in the scale and the rows
+/// are homogeneous, so the minimizer is `k·x0` plus the minimizer without
+/// target, which is the uniform translation to the offset whenever that
+/// translation satisfies every row (checked; `None` otherwise: solve).
+fn scaled_start(x0: &[f64], k: f64, rows: &[Form], gauge: &Gauge) -> Option<Vec<f64>> {
+    let x: Vec<f64> = x0
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| k * v + gauge.offset[i % 2])
+        .collect();
+    let size = x.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+    let feasible = rows
+        .iter()
+        .chain(&gauge.rows(rows.iter()))
+        .all(|r| r.eval(&x).abs() <= 1e-9 * size);
+    feasible.then_some(x)
 }
 
 /// Most re-roundings of [`IntegrateOptions::fit_area`] after the first.
