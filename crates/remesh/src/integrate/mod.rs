@@ -306,3 +306,5 @@ fn scale(surface: &Surface, opts: &IntegrateOptions) -> Result<f64, String> {
 mod test_meshes;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_fit;
