@@ -218,9 +218,11 @@ pub enum RoundingArg {
 #[command(
     after_help = "INPUT: .obj or .ply triangles (any map in it is ignored; cut meshes are \
                         welded). OUTPUT: .obj, .ply or .vtk. The map: a smoothest cross field \
-                        (aligned to the boundary and to edges sharper than --sharp), a cut \
-                        through its singularities, seamless least-squares integration, \
-                        rounding; then `dualex quad` on it."
+                        (aligned to the boundary and to feature curves of edges sharper \
+                        than --sharp; solved on the surface denoised along its normals), \
+                        a cut through its singularities, seamless least-squares \
+                        integration at a scale fitted to about N quads, rounding; then \
+                        `dualex quad` on it."
 )]
 pub struct RemeshArgs {
     /// The surface (.obj / .ply); without it, the embedded surface is
@@ -236,7 +238,8 @@ pub struct RemeshArgs {
     #[arg(long, value_name = "S", value_parser = positive_number)]
     pub scale: Option<f64>,
     /// Edges whose dihedral angle exceeds DEG degrees are features the
-    /// field follows (180 turns them off).
+    /// field follows, when they form curves (≥ 8 edges or 10 % of the
+    /// bounding box; shorter runs are noise); 180 turns them off.
     #[arg(long, value_name = "DEG", default_value_t = 35.0, value_parser = degrees)]
     pub sharp: f64,
     /// Rounding of the map's integer unknowns (seam translations,

@@ -7,6 +7,8 @@
 //! | step | module | input → output |
 //! |---|---|---|
 //! | connectivity, face frames | [`surface`] | positions, triangles → [`Surface`] |
+//! | feature curves | [`features`] | dihedral threshold → the sharp edges on curves (noise dropped) |
+//! | denoised surface for the field | [`denoise`] | [`Surface`] → the same smoothed along its normals |
 //! | smoothest 4-RoSy field | [`smooth`] (type in [`field`]) | [`Surface`] → [`CrossField`] (angle per face, matching per edge), aligned to boundary and sharp edges |
 //! | singular vertices | [`singularity`] | field → `(vertex, index·4)` |
 //! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
@@ -23,6 +25,8 @@
 #![forbid(unsafe_code)]
 
 pub mod cut;
+pub mod denoise;
+pub mod features;
 pub mod field;
 pub mod integrate;
 pub mod pipeline;

@@ -5,9 +5,17 @@
 //! triangles, which `dualex quad` extracts) and [`RemeshStats`].
 //!
 //! Steps, each its own module: the smoothest cross field aligned to the
-//! boundary and sharp edges ([`crate::smooth`]), its singular vertices, a
-//! cut through them to a disk per component ([`crate::cut`]), seamless
-//! least-squares integration and rounding ([`crate::integrate`]).
+//! boundary and feature curves ([`crate::features`]), solved on the
+//! surface denoised along its normals ([`crate::denoise`],
+//! [`crate::smooth`]), its singular vertices, a cut through them to a disk
+//! per component ([`crate::cut`]), seamless least-squares integration and
+//! rounding ([`crate::integrate`]) at a scale fitted so that the map
+//! covers about `N` cells ([`IntegrateOptions::fit_area`]).
+//!
+//! Measured defaults (crate README, "Realistic maps"): on the shared real
+//! surfaces 4–483 singularities (reference maps: 30–403) and 0–3.4 %
+//! flipped triangles at 2 000 quads on all but the dragon (5.7 %; 3.2 %
+//! at 5 000 quads), quad counts within 5 % of `N` at 2 000.
 //!
 //! The seed moves the grid against the surface (the gauge of every
 //! component: a random translation before rounding) and turns the field
@@ -53,7 +61,8 @@ pub enum Quantization {
 pub struct RemeshOptions {
     /// Quad size.
     pub target: Target,
-    /// Edges sharper than this (degrees between the normals) are features.
+    /// Edges sharper than this (degrees between the normals) are
+    /// features when they form feature curves ([`crate::features`]).
     pub sharp_degrees: f64,
     /// Rounding.
     pub quantization: Quantization,
@@ -93,6 +102,13 @@ pub struct RemeshStats {
     pub degenerate: usize,
     /// Map units per model unit.
     pub scale: f64,
+    /// The scale before it was fitted to the map's area
+    /// ([`IntegrateOptions::fit_area`]).
+    pub first_scale: f64,
+    /// Signed area of the map (map units²): about the quad count.
+    pub map_area: f64,
+    /// Roundings made (the area fit may round again at another scale).
+    pub roundings: usize,
     /// Integer unknowns rounded.
     pub rounded: usize,
     /// Integer unknowns left off the integers (0 when rounding).
@@ -166,6 +182,9 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         flipped,
         degenerate,
         scale: rep.scale,
+        first_scale: rep.first_scale,
+        map_area: rep.map_area,
+        roundings: rep.roundings,
         rounded: rep.quantize.rounded,
         off_grid: rep.quantize.off_grid,
         max_rounding: rep.quantize.max_rounding,

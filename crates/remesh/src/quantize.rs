@@ -63,14 +63,17 @@ pub struct QuantizeReport {
     pub off_grid: usize,
     /// Largest distance moved by a rounding.
     pub max_rounding: f64,
-    /// Sparse solves.
+    /// Sparse solves (in [`crate::integrate::IntegrateReport`]: of the
+    /// whole integration, area fit and re-roundings included).
     pub solves: usize,
 }
 
 /// Agreement asked of a redundant row.
 const TOLERANCE: f64 = 1e-6;
 
-/// Runs the quantization (module docs).
+/// Runs the quantization (module docs). `start`, when given, is the
+/// continuous minimizer already known (the caller's business to be
+/// right): the first solve is skipped.
 pub fn quantize(
     energy: &Energy,
     rows: &[Form],
@@ -78,7 +81,9 @@ pub fn quantize(
     integers: &[Form],
     first: usize,
     rounding: Rounding,
+    start: Option<Vec<f64>>,
 ) -> Result<(Vec<f64>, QuantizeReport), String> {
+    let mut start = start;
     let n = energy.b.len();
     let mut report = QuantizeReport {
         integer_unknowns: integers.len(),
@@ -94,13 +99,18 @@ pub fn quantize(
     let mut round = 0;
     loop {
         let el = eliminate(n, rows, &fixed, &mut report);
-        let mut gauged = el.clone();
-        for g in gauge.rows(rows.iter().chain(&fixed)) {
-            gauged.add_row(g, f64::INFINITY);
-        }
-        let (p, free) = gauged.finish();
-        let x = minimize(energy, &p, free)?;
-        report.solves += 1;
+        let x = match start.take() {
+            Some(x) if x.len() == n => x,
+            _ => {
+                let mut gauged = el.clone();
+                for g in gauge.rows(rows.iter().chain(&fixed)) {
+                    gauged.add_row(g, f64::INFINITY);
+                }
+                let (p, free) = gauged.finish();
+                report.solves += 1;
+                minimize(energy, &p, free)?
+            }
+        };
         let batch = if round < batches {
             let pending = Pending {
                 el: &el,

@@ -302,6 +302,10 @@ pub const NAMED: &[(&str, &str)] = &[
     ),
     ("surface_torus", "torus, 6144 triangles (genus 1)"),
     (
+        "surface_torus_large",
+        "torus, 98304 triangles (the speed benchmark's surface)",
+    ),
+    (
         "surface_genus3",
         "polycube plate with 3 holes (genus 3, sharp edges)",
     ),
@@ -318,6 +322,7 @@ pub fn by_name(name: &str) -> Option<Surface> {
         "surface_sphere" => icosphere(4),
         "surface_bumpy_sphere" => bumpy_sphere(4, 0.25),
         "surface_torus" => torus(1.0, 0.4, 96, 32),
+        "surface_torus_large" => torus(1.0, 0.4, 384, 128),
         "surface_genus3" => plate_with_holes(3, 4),
         "surface_cube" => cube(8),
         "surface_disk" => bumpy_square(48, 0.2),

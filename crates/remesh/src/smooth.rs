@@ -11,7 +11,11 @@
 //! (the transport of [`crate::field`]) and `w_e = |e|² / (A_f0 + A_f1)`.
 //! Faces beside a boundary edge or a sharp edge (dihedral angle above
 //! [`FieldOptions::sharp_degrees`]) are fixed to that edge's direction
-//! (the longest such edge of the face). The complex system is written as
+//! (the longest such edge of the face); sharp edges count only on
+//! feature curves ([`crate::features`]). The energy is that of the
+//! surface smoothed along its normals ([`crate::denoise`],
+//! [`FieldOptions::denoise_steps`]); the field is carried back to the
+//! input's frames, and its matchings and singularities are the input's. The complex system is written as
 //! a real one of twice the size and solved by sparse Cholesky
 //! ([`crate::sparse`]) of `L + ε·M` (`M` the face areas, `ε` tiny, which
 //! makes the matrix definite everywhere), iterated as
@@ -47,6 +51,8 @@
 //! 2.6 s on 328k faces (the fill-in grows faster than the size). Under
 //! a load of ~8 the same runs took about twice as long.
 
+pub use crate::features::sharp_edges;
+use crate::features::{feature_edges, MinCurve};
 use crate::field::CrossField;
 use crate::singularity::{boundary_indices, vertex_indices};
 use crate::sparse::HpdSolver;
@@ -60,6 +66,12 @@ pub struct FieldOptions {
     /// Interior edges whose faces' normals differ by more than this (in
     /// degrees) are sharp: the field follows them.
     pub sharp_degrees: f64,
+    /// Shortest feature curve followed: sharp edges on shorter curves are
+    /// noise ([`crate::features`]; `edges` 0 or 1: every sharp edge).
+    pub min_feature: MinCurve,
+    /// Normal smoothing steps of the surface the field is solved on
+    /// ([`crate::denoise`]; 0: the input itself).
+    pub denoise_steps: u32,
     /// Whether faces beside the boundary follow it.
     pub align_boundary: bool,
     /// Most solves of the linear iteration (one factorisation for all).
@@ -76,6 +88,11 @@ impl Default for FieldOptions {
     fn default() -> Self {
         FieldOptions {
             sharp_degrees: 35.0,
+            min_feature: MinCurve {
+                edges: 8,
+                fraction: 0.1,
+            },
+            denoise_steps: 2,
             align_boundary: true,
             max_iterations: 6,
             unit_steps: 6,
@@ -124,14 +141,26 @@ pub fn cross_field(surface: &Surface, opts: &FieldOptions) -> Result<FieldResult
     }
     let mut laps = Laps::start();
     check_manifold_vertices(surface)?;
-    let sharp = sharp_edges(surface, opts.sharp_degrees);
+    let sharp = feature_edges(surface, opts.sharp_degrees, opts.min_feature);
     let fixed_angle = fixed_directions(surface, &sharp, opts.align_boundary);
-    laps.lap("field: checks, constraints");
-    let z = solve_field(surface, &fixed_angle, opts, &mut laps)?;
+    // the field is solved on the denoised surface, then carried back
+    let denoised = crate::denoise::smoothed(surface, opts.denoise_steps, &sharp);
+    let on = denoised.as_ref().unwrap_or(surface);
+    let fixed_on = match &denoised {
+        Some(d) => fixed_directions(d, &sharp, opts.align_boundary),
+        None => fixed_angle.clone(),
+    };
+    laps.lap("field: checks, constraints, denoising");
+    let z = solve_field(on, &fixed_on, opts, &mut laps)?;
     let angle = (0..nf)
         .map(|f| match fixed_angle[f] {
             Some(a) => a,
-            None => z[f].arg() / 4.0,
+            None => {
+                z[f].arg() / 4.0
+                    + denoised
+                        .as_ref()
+                        .map_or(0.0, |d| crate::denoise::frame_turn(d, surface, f as u32))
+            }
         })
         .collect();
     let field = CrossField::from_angles(surface, angle);
@@ -176,24 +205,6 @@ fn check_manifold_vertices(surface: &Surface) -> Result<(), String> {
         }
     }
     Ok(())
-}
-
-/// Interior edges whose dihedral angle exceeds `degrees`.
-pub fn sharp_edges(surface: &Surface, degrees: f64) -> Vec<bool> {
-    let c = degrees.to_radians().cos();
-    surface
-        .edge_faces
-        .iter()
-        .map(|&[f0, f1]| {
-            f1 != NO_FACE && {
-                let (n0, n1) = (
-                    surface.frames[f0 as usize][2],
-                    surface.frames[f1 as usize][2],
-                );
-                dot(n0, n1) < c
-            }
-        })
-        .collect()
 }
 
 /// Per face: the direction of its longest boundary or sharp edge, if any.

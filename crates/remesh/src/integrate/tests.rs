@@ -406,7 +406,11 @@ fn square_with_a_hole_needs_a_seam() {
         (Rounding::Greedy { rounds: 1 }, 2..=2),
         (Rounding::Greedy { rounds: 20 }, 3..=21),
     ] {
-        let o = opts(89, rounding);
+        // the scale as asked: no fit to the area
+        let o = IntegrateOptions {
+            fit_area: false,
+            ..opts(89, rounding)
+        };
         let (map, report) = integrate_report(&s, &field, &cut, &[], &o).unwrap();
         assert!((report.scale - 10.0).abs() < 0.01, "{report:?}");
         assert_eq!((report.aligned_edges, report.rotated_seams), (80, 0));
