@@ -24,6 +24,7 @@
 
 use crate::field::CrossField;
 use crate::surface::{Surface, NO_FACE};
+use crate::union_find::{find, union};
 use std::collections::VecDeque;
 
 /// The edges to cut along.
@@ -253,20 +254,5 @@ impl Cut {
             )),
             None => Ok(()),
         }
-    }
-}
-
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        parent[x as usize] = parent[parent[x as usize] as usize];
-        x = parent[x as usize];
-    }
-    x
-}
-
-fn union(parent: &mut [u32], a: u32, b: u32) {
-    let (ra, rb) = (find(parent, a), find(parent, b));
-    if ra != rb {
-        parent[ra.max(rb) as usize] = ra.min(rb);
     }
 }

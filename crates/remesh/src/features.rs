@@ -34,6 +34,7 @@
 //! `min.edges ≤ 1` it is all of them.
 
 use crate::surface::{dot, norm, sub, Surface, NO_FACE};
+use crate::union_find::find;
 
 /// Largest turn, in degrees, between two sharp edges at a vertex for them
 /// to continue one curve.
@@ -174,15 +175,6 @@ fn far_end(surface: &Surface, e: u32, v: usize) -> [f64; 3] {
     let [a, b] = surface.edges[e as usize];
     let w = if a as usize == v { b } else { a };
     surface.positions[w as usize]
-}
-
-/// The root of `x` in a union–find forest, compressing the path.
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        parent[x as usize] = parent[parent[x as usize] as usize];
-        x = parent[x as usize];
-    }
-    x
 }
 
 #[cfg(test)]

@@ -36,6 +36,7 @@ pub mod singularity;
 pub mod smooth;
 pub mod sparse;
 pub mod surface;
+mod union_find;
 pub mod weld;
 
 pub use cut::{cut_to_disk, Cut};

@@ -30,6 +30,7 @@ use crate::integrate::{integrate_report, IntegrateOptions};
 use crate::quantize::Rounding;
 use crate::smooth::{cross_field, FieldOptions};
 use crate::surface::{Surface, NO_FACE};
+use crate::union_find::{find, union};
 use dualex_map::TriMap;
 use std::collections::BTreeMap;
 use std::time::Instant;
@@ -136,7 +137,7 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         ..FieldOptions::default()
     };
     let mut f = cross_field(surface, &fopts)?;
-    let mut rng = SplitMix(opts.seed);
+    let mut rng = dualex_map::rng::SplitMix::new(opts.seed);
     turn_free_components(
         surface,
         &mut f.field,
@@ -198,17 +199,9 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
 fn turn_free_components(surface: &Surface, field: &mut CrossField, fixed: &[bool], angle: f64) {
     let nf = surface.triangles.len();
     let mut parent: Vec<u32> = (0..nf as u32).collect();
-    fn find(p: &mut [u32], mut x: u32) -> u32 {
-        while p[x as usize] != x {
-            p[x as usize] = p[p[x as usize] as usize];
-            x = p[x as usize];
-        }
-        x
-    }
     for &[a, b] in &surface.edge_faces {
         if b != NO_FACE {
-            let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-            parent[ra as usize] = rb;
+            union(&mut parent, a, b);
         }
     }
     let mut pinned = vec![false; nf];
@@ -240,24 +233,6 @@ pub fn orientation_counts(map: &TriMap) -> (usize, usize) {
         }
     }
     (flipped, degenerate)
-}
-
-/// A small deterministic generator (SplitMix64).
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// A number in `[0, 1)`.
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
 }
 
 #[cfg(test)]

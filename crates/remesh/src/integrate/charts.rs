@@ -18,6 +18,7 @@
 
 use crate::field::CrossField;
 use crate::surface::{Surface, NO_FACE};
+use crate::union_find::UnionFind;
 use std::collections::VecDeque;
 use std::f64::consts::FRAC_PI_2;
 
@@ -204,51 +205,5 @@ fn check_disks(
             chi[p]
         )),
         None => Ok(()),
-    }
-}
-
-/// Union–find with path halving, for corners and faces.
-pub(crate) struct UnionFind {
-    parent: Vec<u32>,
-}
-
-impl UnionFind {
-    pub(crate) fn new(n: usize) -> Self {
-        UnionFind {
-            parent: (0..n as u32).collect(),
-        }
-    }
-
-    pub(crate) fn find(&mut self, mut x: usize) -> usize {
-        while self.parent[x] as usize != x {
-            let g = self.parent[self.parent[x] as usize];
-            self.parent[x] = g;
-            x = g as usize;
-        }
-        x
-    }
-
-    pub(crate) fn union(&mut self, a: usize, b: usize) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra != rb {
-            self.parent[ra.max(rb)] = ra.min(rb) as u32;
-        }
-    }
-
-    /// Dense labels `0..count` per element, in order of first appearance.
-    pub(crate) fn labels(&mut self) -> (Vec<u32>, usize) {
-        let n = self.parent.len();
-        let mut label = vec![u32::MAX; n];
-        let mut out = Vec::with_capacity(n);
-        let mut count = 0;
-        for x in 0..n {
-            let r = self.find(x);
-            if label[r] == u32::MAX {
-                label[r] = count;
-                count += 1;
-            }
-            out.push(label[r]);
-        }
-        (out, count as usize)
     }
 }

@@ -27,7 +27,8 @@ pub mod charts;
 pub mod constraints;
 pub mod elim;
 pub mod system;
-pub mod test_cut;
+#[cfg(test)]
+mod test_cut;
 
 use crate::field::CrossField;
 use crate::integrate::constraints::Gauge;
