@@ -246,8 +246,9 @@ pub struct RemeshArgs {
     /// singular vertices, feature lines).
     #[arg(long, value_name = "direct|greedy|off", default_value = "direct")]
     pub rounding: RoundingArg,
-    /// Also write the map (a triangle map, .obj or .ply) that was
-    /// extracted.
+    /// Also write the map (a triangle map, .obj or .ply) that is
+    /// extracted; written before the extraction, so that a map the
+    /// extraction refuses can be inspected (`dualex inspect`).
     #[arg(long, value_name = "MAP.obj")]
     pub map_out: Option<PathBuf>,
     /// A picture of the map in the (u, v) plane: reverted triangles
