@@ -197,6 +197,8 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     let mut glued = graph.glue();
     st.zipped_sides = zip_two_side_holes(&mut graph, &glued);
     if st.zipped_sides > 0 {
+        // a pair of adjacent sides of one node zipped is a folded corner
+        st.folded_corners_collapsed += graph.collapse_folded_corners();
         glued = graph.glue();
     }
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
