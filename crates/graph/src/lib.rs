@@ -14,10 +14,13 @@
 //!   and components counted on the graph;
 //! - [`fan`]: vertex fans (2D), read from the graph;
 //! - [`fair`]: index fairing by saddle lifts (2D, [`FairingStats`]);
+//! - [`collapse`], [`pillow`], [`bubble`]: folded corners, detached
+//!   pillows and closed components, the last resorts before gluing;
 //! - [`testgrid`]: regular, folded and singular-disk graphs for tests.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bubble;
 pub mod check;
 pub mod collapse;
 pub mod fair;
@@ -27,6 +30,7 @@ pub mod glue;
 pub mod graph;
 pub mod ids;
 pub mod ops;
+pub mod pillow;
 pub mod place;
 use dualex_map::rng;
 pub mod testgrid;

@@ -1,0 +1,113 @@
+//! Step 6d: one output component per input component — bubbles deleted.
+//!
+//! On maps with many folds (`dualex remesh` on coarse grids), untangling can
+//! close part of a fold into a small closed surface beside the real one (a
+//! sphere of a few quads), and where many walks are lost at singular
+//! vertices (singularities left on the isos) a few nodes can be cut off
+//! the rest (a strip of two quads): the output has more components than
+//! the input, a wrong mesh (the holes they leave in the surface are closed
+//! by step 8 like any other). Walks never leave an input component, so
+//! every component of the node graph lies in one input component (that of
+//! its nodes' triangles). Per input component the largest graph component
+//! is the surface; the strictly smaller others of genus 0 (Euler
+//! characteristic ≥ 1: a sphere or a disk; a piece with a handle is kept,
+//! and the mesh refused, rather than a handle silently lost) are bubbles
+//! and are deleted (`NodeGraph::delete_components`, which leaves the rest
+//! of the graph untouched).
+//!
+//! Input: the graph after untangling and fairing, the (split) map's
+//! topology, the triangle of each node. Output: the number of bubbles
+//! deleted. Maps whose graph is connected cost one labelling pass.
+
+use dualex_graph::{Node, NodeGraph};
+use dualex_map::Topology;
+
+/// Deletes the bubbles (see the module docs); returns how many.
+pub fn drop_bubbles(graph: &mut NodeGraph<2>, topo: &Topology<3>, tri_of_node: &[u32]) -> usize {
+    let (labels, k) = graph.component_labels();
+    if k <= 1 {
+        return 0;
+    }
+    let tri_comp = triangle_components(topo, topo.adj.len());
+    // per graph component: nodes, input component
+    let mut members: Vec<Vec<Node>> = vec![Vec::new(); k];
+    let mut input = vec![u32::MAX; k];
+    for x in graph.alive_nodes() {
+        let c = labels[x.idx()] as usize;
+        members[c].push(x);
+        if let Some(&t) = tri_of_node.get(x.idx()) {
+            input[c] = tri_comp.get(t as usize).copied().unwrap_or(u32::MAX);
+        }
+    }
+    let mut largest: std::collections::HashMap<u32, usize> = Default::default();
+    for c in 0..k {
+        let e = largest.entry(input[c]).or_insert(0);
+        *e = (*e).max(members[c].len());
+    }
+    let euler = component_euler(graph, &labels, k);
+    let mut deleted = 0;
+    for c in 0..k {
+        let biggest = largest.get(&input[c]).copied().unwrap_or(0);
+        if members[c].len() < biggest
+            && euler[c] >= 1
+            && graph.delete_components(&members[c]).is_ok()
+        {
+            deleted += 1;
+        }
+    }
+    deleted
+}
+
+/// Per graph component its Euler characteristic V − E + F (glued
+/// vertices; a glued pair of sides is one edge, an unmatched side one).
+fn component_euler(graph: &NodeGraph<2>, labels: &[u32], k: usize) -> Vec<i64> {
+    let glued = graph.glue();
+    // per component: vertices + faces, and twice the edges
+    let (mut vf, mut e2) = (vec![0i64; k], vec![0i64; k]);
+    let mut seen = vec![false; glued.n_vertices];
+    for x in graph.alive_nodes() {
+        let c = labels[x.idx()] as usize;
+        vf[c] += 1;
+        for d in 0..4 {
+            e2[c] += if graph.opposite(graph.side(x, d)).is_some() {
+                1
+            } else {
+                2
+            };
+        }
+        for code in 0..4 {
+            let v = glued.vertex(x, code) as usize;
+            if v < seen.len() && !seen[v] {
+                seen[v] = true;
+                vf[c] += 1;
+            }
+        }
+    }
+    vf.iter().zip(&e2).map(|(a, b)| a - b / 2).collect()
+}
+
+/// Per triangle its connected component (across shared edges).
+fn triangle_components(topo: &Topology<3>, n: usize) -> Vec<u32> {
+    let mut label = vec![u32::MAX; n];
+    let mut stack = Vec::new();
+    let mut k = 0u32;
+    for start in 0..n {
+        if label[start] != u32::MAX {
+            continue;
+        }
+        label[start] = k;
+        stack.push(start);
+        while let Some(s) = stack.pop() {
+            for f in 0..3 {
+                if let Some((t, _)) = topo.neighbour(s, f) {
+                    if label[t] == u32::MAX {
+                        label[t] = k;
+                        stack.push(t);
+                    }
+                }
+            }
+        }
+        k += 1;
+    }
+    label
+}
