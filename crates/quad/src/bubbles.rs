@@ -8,12 +8,15 @@
 //! the input, a wrong mesh (the holes they leave in the surface are closed
 //! by step 8 like any other). Walks never leave an input component, so
 //! every component of the node graph lies in one input component (that of
-//! its nodes' triangles). Per input component the largest graph component
-//! is the surface; the strictly smaller others of genus 0 (Euler
-//! characteristic ≥ 1: a sphere or a disk; a piece with a handle is kept,
-//! and the mesh refused, rather than a handle silently lost) are bubbles
-//! and are deleted (`NodeGraph::delete_components`, which leaves the rest
-//! of the graph untouched).
+//! its nodes' triangles). Per *closed* input component the largest graph
+//! component is the surface (an input with boundary can be cut into pieces
+//! legitimately: a cut map not welded has one piece per chart, so nothing
+//! is deleted there); the strictly smaller others are bubbles and are
+//! deleted when open (their sides are holes of the surface, closed by step
+//! 8) or spheres (a closed piece with a handle is kept, and the mesh
+//! refused, rather than a handle silently lost), by
+//! `NodeGraph::delete_components`, which leaves the rest of the graph
+//! untouched.
 //!
 //! Input: the graph after untangling and fairing, the (split) map's
 //! topology, the triangle of each node. Output: the number of bubbles
@@ -28,7 +31,7 @@ pub fn drop_bubbles(graph: &mut NodeGraph<2>, topo: &Topology<3>, tri_of_node: &
     if k <= 1 {
         return 0;
     }
-    let tri_comp = triangle_components(topo, topo.adj.len());
+    let (tri_comp, open) = triangle_components(topo, topo.adj.len());
     // per graph component: nodes, input component
     let mut members: Vec<Vec<Node>> = vec![Vec::new(); k];
     let mut input = vec![u32::MAX; k];
@@ -44,12 +47,14 @@ pub fn drop_bubbles(graph: &mut NodeGraph<2>, topo: &Topology<3>, tri_of_node: &
         let e = largest.entry(input[c]).or_insert(0);
         *e = (*e).max(members[c].len());
     }
-    let euler = component_euler(graph, &labels, k);
+    let (euler, open_piece) = component_shapes(graph, &labels, k);
     let mut deleted = 0;
     for c in 0..k {
         let biggest = largest.get(&input[c]).copied().unwrap_or(0);
-        if members[c].len() < biggest
-            && euler[c] >= 1
+        let closed_input = open.get(input[c] as usize) == Some(&false);
+        if closed_input
+            && members[c].len() < biggest
+            && (open_piece[c] || euler[c] == 2)
             && graph.delete_components(&members[c]).is_ok()
         {
             deleted += 1;
@@ -59,21 +64,24 @@ pub fn drop_bubbles(graph: &mut NodeGraph<2>, topo: &Topology<3>, tri_of_node: &
 }
 
 /// Per graph component its Euler characteristic V − E + F (glued
-/// vertices; a glued pair of sides is one edge, an unmatched side one).
-fn component_euler(graph: &NodeGraph<2>, labels: &[u32], k: usize) -> Vec<i64> {
+/// vertices; a glued pair of sides is one edge, an unmatched side one) and
+/// whether it has an unmatched side.
+fn component_shapes(graph: &NodeGraph<2>, labels: &[u32], k: usize) -> (Vec<i64>, Vec<bool>) {
     let glued = graph.glue();
     // per component: vertices + faces, and twice the edges
     let (mut vf, mut e2) = (vec![0i64; k], vec![0i64; k]);
+    let mut open = vec![false; k];
     let mut seen = vec![false; glued.n_vertices];
     for x in graph.alive_nodes() {
         let c = labels[x.idx()] as usize;
         vf[c] += 1;
         for d in 0..4 {
-            e2[c] += if graph.opposite(graph.side(x, d)).is_some() {
-                1
+            if graph.opposite(graph.side(x, d)).is_some() {
+                e2[c] += 1;
             } else {
-                2
-            };
+                e2[c] += 2;
+                open[c] = true;
+            }
         }
         for code in 0..4 {
             let v = glued.vertex(x, code) as usize;
@@ -83,12 +91,15 @@ fn component_euler(graph: &NodeGraph<2>, labels: &[u32], k: usize) -> Vec<i64> {
             }
         }
     }
-    vf.iter().zip(&e2).map(|(a, b)| a - b / 2).collect()
+    let euler = vf.iter().zip(&e2).map(|(a, b)| a - b / 2).collect();
+    (euler, open)
 }
 
-/// Per triangle its connected component (across shared edges).
-fn triangle_components(topo: &Topology<3>, n: usize) -> Vec<u32> {
+/// Per triangle its connected component (across shared edges), and per
+/// component whether it has a boundary edge.
+fn triangle_components(topo: &Topology<3>, n: usize) -> (Vec<u32>, Vec<bool>) {
     let mut label = vec![u32::MAX; n];
+    let mut open = Vec::new();
     let mut stack = Vec::new();
     let mut k = 0u32;
     for start in 0..n {
@@ -97,17 +108,20 @@ fn triangle_components(topo: &Topology<3>, n: usize) -> Vec<u32> {
         }
         label[start] = k;
         stack.push(start);
+        open.push(false);
         while let Some(s) = stack.pop() {
             for f in 0..3 {
-                if let Some((t, _)) = topo.neighbour(s, f) {
-                    if label[t] == u32::MAX {
+                match topo.neighbour(s, f) {
+                    Some((t, _)) if label[t] == u32::MAX => {
                         label[t] = k;
                         stack.push(t);
                     }
+                    Some(_) => {}
+                    None => open[k as usize] = true,
                 }
             }
         }
         k += 1;
     }
-    label
+    (label, open)
 }
