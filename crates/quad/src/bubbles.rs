@@ -125,3 +125,88 @@ fn triangle_components(topo: &Topology<3>, n: usize) -> (Vec<u32>, Vec<bool>) {
     }
     (label, open)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_graph::testgrid::GridSpec;
+    use dualex_map::{Rot2, TriMap};
+
+    /// A closed input: the octahedron (map coordinates do not matter here).
+    fn octahedron() -> Topology<3> {
+        let m = TriMap {
+            positions: vec![
+                [1.0, 0.0, 0.0],
+                [-1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                [0.0, -1.0, 0.0],
+                [0.0, 0.0, 1.0],
+                [0.0, 0.0, -1.0],
+            ],
+            simplices: vec![
+                [0, 2, 4],
+                [2, 1, 4],
+                [1, 3, 4],
+                [3, 0, 4],
+                [2, 0, 5],
+                [1, 2, 5],
+                [3, 1, 5],
+                [0, 3, 5],
+            ],
+            coords: vec![[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]; 8],
+        };
+        Topology::build(&m).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// A 3×3 grid (nodes 0..9), two nodes glued on all sides (9, 10: a
+    /// closed piece of two quads, a torus) and a strip of two (11, 12).
+    fn pieces() -> NodeGraph<2> {
+        let grid = GridSpec::regular([3, 3]).build();
+        let mut g = NodeGraph::<2>::new(vec![false; 13]);
+        for x in 0..9 {
+            for d in 0..4 {
+                let s = grid.side(Node(x), d);
+                if let (Some(t), Some(r)) = (grid.opposite(s), grid.rotation(s)) {
+                    if s.0 < t.0 {
+                        g.link(s, t, r).unwrap_or_else(|e| panic!("{e}"));
+                    }
+                }
+            }
+        }
+        for d in 0..4 {
+            g.link(g.side(Node(9), d), g.side(Node(10), d ^ 1), Rot2::IDENTITY)
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+        g.link(g.side(Node(11), 0), g.side(Node(12), 1), Rot2::IDENTITY)
+            .unwrap_or_else(|e| panic!("{e}"));
+        g
+    }
+
+    #[test]
+    fn open_pieces_go_and_the_surface_and_handles_stay() {
+        let topo = octahedron();
+        let mut g = pieces();
+        let (labels, k) = g.component_labels();
+        assert_eq!(k, 3);
+        let (euler, open) = component_shapes(&g, &labels, k);
+        assert_eq!((euler[1], open[1]), (0, false), "the pair is a torus");
+        assert!(open[2]);
+        assert_eq!(drop_bubbles(&mut g, &topo, &[0; 13]), 1);
+        g.check_structure().unwrap_or_else(|e| panic!("{e}"));
+        assert!(!g.is_alive(Node(11)) && !g.is_alive(Node(12)));
+        assert!((0..11).all(|x| g.is_alive(Node(x))));
+    }
+
+    #[test]
+    fn inputs_with_boundary_keep_their_pieces() {
+        let m = TriMap {
+            positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            simplices: vec![[0, 1, 2]],
+            coords: vec![[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]],
+        };
+        let topo = Topology::build(&m).unwrap_or_else(|e| panic!("{e}"));
+        let mut g = pieces();
+        assert_eq!(drop_bubbles(&mut g, &topo, &[0; 13]), 0);
+        assert_eq!(g.n_alive(), 13);
+    }
+}
