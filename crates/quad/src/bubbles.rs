@@ -14,7 +14,9 @@
 //! is deleted there); the strictly smaller others are bubbles and are
 //! deleted when open (their sides are holes of the surface, closed by step
 //! 8) or spheres (a closed piece with a handle is kept, and the mesh
-//! refused, rather than a handle silently lost), by
+//! refused, rather than a handle silently lost). A graph shattered into
+//! pieces none of which holds half of the nodes is left as it is (refused
+//! by the last check: there is no surface to keep). Deletion is by
 //! `NodeGraph::delete_components`, which leaves the rest of the graph
 //! untouched.
 //!
@@ -42,17 +44,19 @@ pub fn drop_bubbles(graph: &mut NodeGraph<2>, topo: &Topology<3>, tri_of_node: &
             input[c] = tri_comp.get(t as usize).copied().unwrap_or(u32::MAX);
         }
     }
-    let mut largest: std::collections::HashMap<u32, usize> = Default::default();
+    // per input component: (largest piece, all nodes)
+    let mut largest: std::collections::HashMap<u32, (usize, usize)> = Default::default();
     for c in 0..k {
-        let e = largest.entry(input[c]).or_insert(0);
-        *e = (*e).max(members[c].len());
+        let e = largest.entry(input[c]).or_insert((0, 0));
+        *e = (e.0.max(members[c].len()), e.1 + members[c].len());
     }
     let (euler, open_piece) = component_shapes(graph, &labels, k);
     let mut deleted = 0;
     for c in 0..k {
-        let biggest = largest.get(&input[c]).copied().unwrap_or(0);
+        let (biggest, all) = largest.get(&input[c]).copied().unwrap_or((0, 0));
         let closed_input = open.get(input[c] as usize) == Some(&false);
         if closed_input
+            && 2 * biggest >= all
             && members[c].len() < biggest
             && (open_piece[c] || euler[c] == 2)
             && graph.delete_components(&members[c]).is_ok()
