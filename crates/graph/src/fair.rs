@@ -353,17 +353,28 @@ impl NodeGraph<2> {
                 v.vertex_of(step.node, far) == Some(next)
             })
             .collect();
-        for (i, _) in fan.iter().enumerate().filter(|(i, _)| towards[*i]) {
-            for j in [(i + 4) % n, (i + n - 4) % n] {
+        // per trial, the nodes whose sides the lift reconnects and their
+        // loop sides before it (a lift must not add any)
+        let trials: Vec<(usize, usize, [Node; 4], usize)> = (0..n)
+            .filter(|&i| towards[i])
+            .flat_map(|i| [(i, (i + 4) % n), (i, (i + n - 4) % n)])
+            .map(|(i, j)| {
+                let touched = [i, (i + 1) % n, j, (j + 1) % n].map(|k| fan[k].node);
+                (i, j, touched, loop_sides(&mut v, &touched))
+            })
+            .collect();
+        for (i, j, touched, loops_before) in trials {
+            {
                 let Ok(u) = self.lift(sx, scode, i, j) else {
                     continue;
                 };
                 let mut after = LocalVertices::new(self);
-                let ok = match after.vertex_of(pc.0, pc.1) {
-                    None => false,
-                    Some(np) if dist == 1 => after.valence(np).is_some_and(|k| k > target),
-                    Some(np) => after.path(np, max_path).is_some_and(|p| p.len() == dist),
-                };
+                let ok = loop_sides(&mut after, &touched) <= loops_before
+                    && match after.vertex_of(pc.0, pc.1) {
+                        None => false,
+                        Some(np) if dist == 1 => after.valence(np).is_some_and(|k| k > target),
+                        Some(np) => after.path(np, max_path).is_some_and(|p| p.len() == dist),
+                    };
                 if ok {
                     return Some(u);
                 }
@@ -375,6 +386,22 @@ impl NodeGraph<2> {
         }
         None
     }
+}
+
+/// Sides of `nodes` whose two corners are one vertex (loop edges). A lift
+/// must not add any: on a fan that visits a node twice (the traced graphs
+/// of maps with holes at singular vertices), reconnecting its crossings can
+/// glue both ends of a side together, a vertex with two fans once glued.
+fn loop_sides(v: &mut LocalVertices, nodes: &[Node]) -> usize {
+    let mut n = 0;
+    for &x in nodes {
+        for (c, d) in [(0, 1), (0, 2), (1, 3), (2, 3)] {
+            if v.vertex_of(x, c).is_some() && v.vertex_of(x, c) == v.vertex_of(x, d) {
+                n += 1;
+            }
+        }
+    }
+    n
 }
 
 #[cfg(test)]

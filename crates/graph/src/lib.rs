@@ -16,10 +16,13 @@
 //! - [`fair`]: index fairing by saddle lifts (2D, [`FairingStats`]);
 //! - [`columns`]: the same on every layer of a 3D graph made of columns
 //!   (an extruded map's), [`ColumnFairing`];
+//! - [`collapse`], [`pillow`], [`bubble`]: folded corners, detached
+//!   pillows and closed components, the last resorts before gluing;
 //! - [`testgrid`]: regular, folded and singular-disk graphs for tests.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bubble;
 pub mod check;
 pub mod collapse;
 pub mod columns;
@@ -30,6 +33,7 @@ pub mod glue;
 pub mod graph;
 pub mod ids;
 pub mod ops;
+pub mod pillow;
 pub mod place;
 use dualex_map::rng;
 pub mod testgrid;

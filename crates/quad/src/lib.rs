@@ -7,9 +7,11 @@
 //! 3. [`nodes`]: integer points inside triangles, reverted flags;
 //! 4. [`trace`]: walk every side along its iso to the opposite side;
 //! 5. untangling (pleat removal, `dualex_graph`);
-//! 6. index fairing (`dualex_graph`, optional);
-//! 7. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
-//!    diagonal tracing;
+//! 6. index fairing (`dualex_graph`, optional); folded corners collapsed,
+//!    pillows and [`bubbles`] (components beyond one per input component)
+//!    deleted;
+//! 7. gluing (`dualex_graph`; [`digons`] pinched off) and [`geometry`]:
+//!    vertex positions by diagonal tracing;
 //! 8. [`repair`]: holes closed, faces quads cannot represent subdivided;
 //! 9. [`doublets`]: interior valence-2 vertices left by fairing dissolved;
 //! 10. [`corner_uv`]: each quad's corners in its node's chart (kept along
@@ -21,7 +23,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bubbles;
 pub mod corner_uv;
+pub mod digons;
 pub mod doublets;
 mod fairing;
 pub mod geometry;
@@ -192,11 +196,25 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     // 6b: a valence-1 vertex left (no partner for fairing) is a folded quad;
     // collapse it so the output has no repeated vertex
     st.folded_corners_collapsed = graph.collapse_folded_corners();
+    // 6c: two nodes glued only to each other (a fold pocket detached as a
+    // component of its own) are deleted
+    st.pillows_removed = graph.remove_pillows();
+    // 6d: bubbles beside the surface of their input component
+    st.bubbles_removed = bubbles::drop_bubbles(&mut graph, &topo, &nodes.tri);
     laps.lap("fairing");
     // 7
     let mut glued = graph.glue();
     st.zipped_sides = zip_two_side_holes(&mut graph, &glued);
     if st.zipped_sides > 0 {
+        // a pair of adjacent sides of one node zipped is a folded corner
+        st.folded_corners_collapsed += graph.collapse_folded_corners();
+        glued = graph.glue();
+    }
+    // 7b: two edges between the same two vertices pinched off, the smaller
+    // piece deleted as a bubble
+    st.digons_pinched = digons::pinch_digons(&mut graph, &glued);
+    if st.digons_pinched > 0 {
+        st.bubbles_removed += bubbles::drop_bubbles(&mut graph, &topo, &nodes.tri);
         glued = graph.glue();
     }
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
@@ -304,26 +322,8 @@ fn zip_two_side_holes(graph: &mut NodeGraph<2>, glued: &dualex_graph::Glued<2>) 
     let mut zipped = 0;
     for sides in by_ends.values() {
         let [s, t] = sides[..] else { continue };
-        let (x, y) = (graph.node_of(s), graph.node_of(t));
-        let (ds, dt) = (graph.dir_of(s), graph.dir_of(t));
         // the rotation ρ with the label rule's image of s and matching corners
-        let found = dualex_map::Rot2::all().into_iter().find(|r| {
-            let want = if graph.is_reverted(x) == graph.is_reverted(y) {
-                ds ^ 1
-            } else {
-                ds
-            };
-            if r.apply_dir(want) != dt {
-                return false;
-            }
-            // corner of X between s and p ↔ corner of Y between t and ρ(p)
-            let p = 2 * (1 - (ds >> 1)); // + direction of the other axis
-            let [_, xp] = side_corners(glued, x, ds);
-            let q = r.apply_dir(p);
-            let [yq0, yq1] = side_corners(glued, y, dt);
-            xp == if q & 1 == 0 { yq1 } else { yq0 }
-        });
-        if let Some(r) = found {
+        if let Some(r) = digons::matching_rotation(graph, glued, s, t) {
             if graph.link(s, t, r).is_ok() {
                 zipped += 1;
             }

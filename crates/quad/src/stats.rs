@@ -48,6 +48,15 @@ pub struct QuadStats {
     pub fairing: Option<serde_json::Value>,
     /// Folded quads (valence-1 vertices) collapsed after fairing.
     pub folded_corners_collapsed: usize,
+    /// Pillows (two nodes glued only to each other, a detached fold
+    /// pocket) deleted before gluing.
+    pub pillows_removed: usize,
+    /// Closed components beside the surface of their input component
+    /// (fold bubbles) deleted before gluing (`crate::bubbles`).
+    pub bubbles_removed: usize,
+    /// Digons (two glued edges between the same two vertices) pinched off
+    /// after gluing (`crate::digons`).
+    pub digons_pinched: usize,
     /// Holes of two unmatched sides with identified ends, glued explicitly.
     pub zipped_sides: usize,
     /// Holes (unmatched sides not on the input boundary) closed by a face.
@@ -142,6 +151,9 @@ impl QuadStats {
             "untangle": self.untangle.as_ref().map(|u| u.to_json()),
             "fairing": self.fairing,
             "folded_corners_collapsed": self.folded_corners_collapsed,
+            "pillows_removed": self.pillows_removed,
+            "bubbles_removed": self.bubbles_removed,
+            "digons_pinched": self.digons_pinched,
             "repair": {
                 "zipped_sides": self.zipped_sides,
                 "holes_filled": self.holes_filled,

@@ -1,0 +1,216 @@
+//! Step 6d: one output component per input component — bubbles deleted.
+//!
+//! On maps with many folds (`dualex remesh` on coarse grids), untangling can
+//! close part of a fold into a small closed surface beside the real one (a
+//! sphere of a few quads), and where many walks are lost at singular
+//! vertices (singularities left on the isos) a few nodes can be cut off
+//! the rest (a strip of two quads): the output has more components than
+//! the input, a wrong mesh (the holes they leave in the surface are closed
+//! by step 8 like any other). Walks never leave an input component, so
+//! every component of the node graph lies in one input component (that of
+//! its nodes' triangles). Per *closed* input component the largest graph
+//! component is the surface (an input with boundary can be cut into pieces
+//! legitimately: a cut map not welded has one piece per chart, so nothing
+//! is deleted there); the strictly smaller others are bubbles and are
+//! deleted when open (their sides are holes of the surface, closed by step
+//! 8) or spheres (a closed piece with a handle is kept, and the mesh
+//! refused, rather than a handle silently lost). A graph shattered into
+//! pieces none of which holds half of the nodes is left as it is (refused
+//! by the last check: there is no surface to keep). Deletion is by
+//! `NodeGraph::delete_components`, which leaves the rest of the graph
+//! untouched.
+//!
+//! Input: the graph after untangling and fairing, the (split) map's
+//! topology, the triangle of each node. Output: the number of bubbles
+//! deleted. Maps whose graph is connected cost one labelling pass.
+
+use dualex_graph::{Node, NodeGraph};
+use dualex_map::Topology;
+
+/// Deletes the bubbles (see the module docs); returns how many.
+pub fn drop_bubbles(graph: &mut NodeGraph<2>, topo: &Topology<3>, tri_of_node: &[u32]) -> usize {
+    let (labels, k) = graph.component_labels();
+    if k <= 1 {
+        return 0;
+    }
+    let (tri_comp, open) = triangle_components(topo, topo.adj.len());
+    // per graph component: nodes, input component
+    let mut members: Vec<Vec<Node>> = vec![Vec::new(); k];
+    let mut input = vec![u32::MAX; k];
+    for x in graph.alive_nodes() {
+        let c = labels[x.idx()] as usize;
+        members[c].push(x);
+        if let Some(&t) = tri_of_node.get(x.idx()) {
+            input[c] = tri_comp.get(t as usize).copied().unwrap_or(u32::MAX);
+        }
+    }
+    // per input component: (largest piece, all nodes)
+    let mut largest: std::collections::HashMap<u32, (usize, usize)> = Default::default();
+    for c in 0..k {
+        let e = largest.entry(input[c]).or_insert((0, 0));
+        *e = (e.0.max(members[c].len()), e.1 + members[c].len());
+    }
+    let (euler, open_piece) = component_shapes(graph, &labels, k);
+    let mut deleted = 0;
+    for c in 0..k {
+        let (biggest, all) = largest.get(&input[c]).copied().unwrap_or((0, 0));
+        let closed_input = open.get(input[c] as usize) == Some(&false);
+        if closed_input
+            && 2 * biggest >= all
+            && members[c].len() < biggest
+            && (open_piece[c] || euler[c] == 2)
+            && graph.delete_components(&members[c]).is_ok()
+        {
+            deleted += 1;
+        }
+    }
+    deleted
+}
+
+/// Per graph component its Euler characteristic V − E + F (glued
+/// vertices; a glued pair of sides is one edge, an unmatched side one) and
+/// whether it has an unmatched side.
+fn component_shapes(graph: &NodeGraph<2>, labels: &[u32], k: usize) -> (Vec<i64>, Vec<bool>) {
+    let glued = graph.glue();
+    // per component: vertices + faces, and twice the edges
+    let (mut vf, mut e2) = (vec![0i64; k], vec![0i64; k]);
+    let mut open = vec![false; k];
+    let mut seen = vec![false; glued.n_vertices];
+    for x in graph.alive_nodes() {
+        let c = labels[x.idx()] as usize;
+        vf[c] += 1;
+        for d in 0..4 {
+            if graph.opposite(graph.side(x, d)).is_some() {
+                e2[c] += 1;
+            } else {
+                e2[c] += 2;
+                open[c] = true;
+            }
+        }
+        for code in 0..4 {
+            let v = glued.vertex(x, code) as usize;
+            if v < seen.len() && !seen[v] {
+                seen[v] = true;
+                vf[c] += 1;
+            }
+        }
+    }
+    let euler = vf.iter().zip(&e2).map(|(a, b)| a - b / 2).collect();
+    (euler, open)
+}
+
+/// Per triangle its connected component (across shared edges), and per
+/// component whether it has a boundary edge.
+fn triangle_components(topo: &Topology<3>, n: usize) -> (Vec<u32>, Vec<bool>) {
+    let mut label = vec![u32::MAX; n];
+    let mut open = Vec::new();
+    let mut stack = Vec::new();
+    let mut k = 0u32;
+    for start in 0..n {
+        if label[start] != u32::MAX {
+            continue;
+        }
+        label[start] = k;
+        stack.push(start);
+        open.push(false);
+        while let Some(s) = stack.pop() {
+            for f in 0..3 {
+                match topo.neighbour(s, f) {
+                    Some((t, _)) if label[t] == u32::MAX => {
+                        label[t] = k;
+                        stack.push(t);
+                    }
+                    Some(_) => {}
+                    None => open[k as usize] = true,
+                }
+            }
+        }
+        k += 1;
+    }
+    (label, open)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_graph::testgrid::GridSpec;
+    use dualex_map::{Rot2, TriMap};
+
+    /// A closed input: the octahedron (map coordinates do not matter here).
+    fn octahedron() -> Topology<3> {
+        let m = TriMap {
+            positions: vec![
+                [1.0, 0.0, 0.0],
+                [-1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                [0.0, -1.0, 0.0],
+                [0.0, 0.0, 1.0],
+                [0.0, 0.0, -1.0],
+            ],
+            simplices: vec![
+                [0, 2, 4],
+                [2, 1, 4],
+                [1, 3, 4],
+                [3, 0, 4],
+                [2, 0, 5],
+                [1, 2, 5],
+                [3, 1, 5],
+                [0, 3, 5],
+            ],
+            coords: vec![[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]; 8],
+        };
+        Topology::build(&m).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// A 3×3 grid (nodes 0..9), two nodes glued on all sides (9, 10: a
+    /// closed piece of two quads, a torus) and a strip of two (11, 12).
+    fn pieces() -> NodeGraph<2> {
+        let grid = GridSpec::regular([3, 3]).build();
+        let mut g = NodeGraph::<2>::new(vec![false; 13]);
+        for x in 0..9 {
+            for d in 0..4 {
+                let s = grid.side(Node(x), d);
+                if let (Some(t), Some(r)) = (grid.opposite(s), grid.rotation(s)) {
+                    if s.0 < t.0 {
+                        g.link(s, t, r).unwrap_or_else(|e| panic!("{e}"));
+                    }
+                }
+            }
+        }
+        for d in 0..4 {
+            g.link(g.side(Node(9), d), g.side(Node(10), d ^ 1), Rot2::IDENTITY)
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+        g.link(g.side(Node(11), 0), g.side(Node(12), 1), Rot2::IDENTITY)
+            .unwrap_or_else(|e| panic!("{e}"));
+        g
+    }
+
+    #[test]
+    fn open_pieces_go_and_the_surface_and_handles_stay() {
+        let topo = octahedron();
+        let mut g = pieces();
+        let (labels, k) = g.component_labels();
+        assert_eq!(k, 3);
+        let (euler, open) = component_shapes(&g, &labels, k);
+        assert_eq!((euler[1], open[1]), (0, false), "the pair is a torus");
+        assert!(open[2]);
+        assert_eq!(drop_bubbles(&mut g, &topo, &[0; 13]), 1);
+        g.check_structure().unwrap_or_else(|e| panic!("{e}"));
+        assert!(!g.is_alive(Node(11)) && !g.is_alive(Node(12)));
+        assert!((0..11).all(|x| g.is_alive(Node(x))));
+    }
+
+    #[test]
+    fn inputs_with_boundary_keep_their_pieces() {
+        let m = TriMap {
+            positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            simplices: vec![[0, 1, 2]],
+            coords: vec![[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]],
+        };
+        let topo = Topology::build(&m).unwrap_or_else(|e| panic!("{e}"));
+        let mut g = pieces();
+        assert_eq!(drop_bubbles(&mut g, &topo, &[0; 13]), 0);
+        assert_eq!(g.n_alive(), 13);
+    }
+}

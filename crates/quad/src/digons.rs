@@ -1,0 +1,220 @@
+//! Step 7b: digons — two glued edges between the same two vertices —
+//! pinched off.
+//!
+//! On maps with many folds, the glued graph can join two vertices by two
+//! distinct edges (pairs of glued sides): the checker sees an edge of four
+//! faces. The two edges make a loop of two edges on the surface. Where the
+//! loop separates (it bounds a small pocket of the fold), regluing the four
+//! sides crosswise pinches the surface along it into two closed pieces,
+//! each with a single edge there; the smaller piece is then a bubble that
+//! `crate::bubbles` deletes.
+//!
+//! The crosswise pairing is the one that keeps the orientation: each new
+//! pair traverses the edge in opposite directions in its two cells. Its
+//! rotations are those that match the corners (as for the zipped holes of
+//! step 7). Preconditions, checked before any write: exactly two pairs on
+//! the vertex pair, both new pairs oriented and with a matching rotation.
+//! A loop that does not separate (around a handle) is left as it is:
+//! pinching it would change the topology (the re-pairing is undone when
+//! the graph has no more components after it). Invariant: only the four
+//! sides change; each end of a pinched digon becomes one vertex per piece.
+
+use crate::side_corners;
+use dualex_graph::{Glued, NodeGraph, Side};
+use dualex_map::Rot2;
+
+/// The rotation ρ that glues side `s` to side `t` by the label rule with
+/// matching corners (the corner of X between s and p ↔ the corner of Y
+/// between t and ρ(p)), if any.
+pub(crate) fn matching_rotation(
+    graph: &NodeGraph<2>,
+    glued: &Glued<2>,
+    s: Side,
+    t: Side,
+) -> Option<Rot2> {
+    let (x, y) = (graph.node_of(s), graph.node_of(t));
+    let (ds, dt) = (graph.dir_of(s), graph.dir_of(t));
+    Rot2::all().into_iter().find(|r| {
+        let want = if graph.is_reverted(x) == graph.is_reverted(y) {
+            ds ^ 1
+        } else {
+            ds
+        };
+        if r.apply_dir(want) != dt {
+            return false;
+        }
+        let p = 2 * (1 - (ds >> 1)); // + direction of the other axis
+        let [_, xp] = side_corners(glued, x, ds);
+        let q = r.apply_dir(p);
+        let [yq0, yq1] = side_corners(glued, y, dt);
+        xp == if q & 1 == 0 { yq1 } else { yq0 }
+    })
+}
+
+/// Whether the cell of side `s` traverses it from the smaller vertex to
+/// the larger.
+fn ascending(graph: &NodeGraph<2>, glued: &Glued<2>, s: Side) -> Option<bool> {
+    let node = graph.node_of(s);
+    let [a, b] = side_corners(glued, node, graph.dir_of(s));
+    let cell = glued.cells().find(|(n, _)| *n == node)?.1;
+    let forward = (0..4).any(|k| cell[k] == a && cell[(k + 1) % 4] == b);
+    Some(forward == (a < b))
+}
+
+/// Re-pairs the sides of every digon (see the module docs); returns how
+/// many digons were pinched.
+pub fn pinch_digons(graph: &mut NodeGraph<2>, glued: &Glued<2>) -> usize {
+    // one entry per glued pair, keyed by its two vertices, sorted
+    let mut by_edge: Vec<(u64, Side)> = Vec::new();
+    for (node, _) in glued.cells() {
+        for d in 0..4 {
+            let s = graph.side(node, d);
+            let Some(t) = graph.opposite(s) else {
+                continue;
+            };
+            let [a, b] = side_corners(glued, node, d);
+            if s.0 < t.0 && a != b {
+                by_edge.push(((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), s));
+            }
+        }
+    }
+    by_edge.sort_unstable();
+    let mut pinched = 0;
+    for run in by_edge.chunk_by(|x, y| x.0 == y.0) {
+        let [(_, p1), (_, p2)] = run[..] else {
+            continue;
+        };
+        let (Some(q1), Some(q2)) = (graph.opposite(p1), graph.opposite(p2)) else {
+            continue;
+        };
+        let up = |s| ascending(graph, glued, s);
+        let (Some(u1), Some(v1), Some(u2), Some(v2)) = (up(p1), up(q1), up(p2), up(q2)) else {
+            continue;
+        };
+        // each new pair runs the edge both ways
+        let new = if u1 != v2 && u2 != v1 {
+            [(p1, q2), (p2, q1)]
+        } else if u1 != u2 && v1 != v2 {
+            [(p1, p2), (q1, q2)]
+        } else {
+            continue;
+        };
+        let rots = new.map(|(s, t)| matching_rotation(graph, glued, s, t));
+        let [Some(r1), Some(r2)] = rots else { continue };
+        let (Some(o1), Some(o2)) = (graph.rotation(p1), graph.rotation(p2)) else {
+            continue;
+        };
+        let before = graph.component_labels().1;
+        repair(graph, [p1, p2], new, [r1, r2]);
+        if graph.component_labels().1 > before {
+            pinched += 1;
+        } else {
+            // the loop does not separate (a handle): pinching would change
+            // the topology, so the digon stays
+            repair(graph, [new[0].0, new[1].0], [(p1, q1), (p2, q2)], [o1, o2]);
+        }
+    }
+    pinched
+}
+
+/// Unglues `old` (one side of each pair) and glues the `new` pairs with
+/// their rotations; the sides were checked glued and alive before.
+fn repair(graph: &mut NodeGraph<2>, old: [Side; 2], new: [(Side, Side); 2], rots: [Rot2; 2]) {
+    for s in old {
+        if graph.unlink(s).is_err() {
+            unreachable_pair();
+        }
+    }
+    for ((s, t), r) in new.into_iter().zip(rots) {
+        if graph.link(s, t, r).is_err() {
+            unreachable_pair();
+        }
+    }
+}
+
+/// The four sides were checked glued and alive before any write.
+fn unreachable_pair() -> ! {
+    panic!("bug: a digon's sides changed while it was pinched")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dualex_graph::testgrid::GridSpec;
+    use dualex_graph::Node;
+
+    /// Two copies of a regular 4×3 grid (nodes 0..12, 12..24) whose edges
+    /// between the nodes at (1, 1) and (2, 1) (`+u ↔ −u`, both ends
+    /// interior vertices) are glued crosswise to the other copy's: the two
+    /// copies become one surface along a slit, and the slit's ends are
+    /// joined by two edges (a digon that separates).
+    fn crossed() -> (NodeGraph<2>, [Side; 4]) {
+        let spec = GridSpec::regular([4, 3]);
+        let grid = spec.build();
+        let n = grid.n_nodes();
+        let mut g = NodeGraph::<2>::new(vec![false; 2 * n]);
+        for copy in 0..2u32 {
+            let off = copy * n as u32;
+            for x in 0..n as u32 {
+                for d in 0..4 {
+                    let s = grid.side(Node(x), d);
+                    if let (Some(t), Some(r)) = (grid.opposite(s), grid.rotation(s)) {
+                        let (a, b) = (Side(s.0 + 4 * off), Side(t.0 + 4 * off));
+                        if s.0 < t.0 && g.link(a, b, r).is_err() {
+                            panic!("copy");
+                        }
+                    }
+                }
+            }
+        }
+        let a = g.side(spec.node_at(1, [0, 1]), 0);
+        let b = g.opposite(a).unwrap_or_else(|| panic!("glued along u"));
+        let (c, e) = (Side(a.0 + 4 * n as u32), Side(b.0 + 4 * n as u32));
+        for s in [a, c] {
+            g.unlink(s).unwrap_or_else(|e| panic!("{e}"));
+        }
+        for (s, t) in [(a, e), (c, b)] {
+            g.link(s, t, Rot2::IDENTITY)
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+        (g, [a, b, c, e])
+    }
+
+    fn double_edges(glued: &Glued<2>) -> usize {
+        let mut e = glued.edges();
+        let n = e.len();
+        e.sort_unstable();
+        e.dedup();
+        n - e.len()
+    }
+
+    #[test]
+    fn a_separating_digon_is_pinched_into_two_pieces() {
+        let (mut g, [a, b, c, e]) = crossed();
+        g.check().expect("valid before");
+        assert_eq!(g.component_labels().1, 1);
+        let glued = g.glue();
+        let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
+        let rep = dualex_check::check_quad_mesh(glued.n_vertices, &cells);
+        assert!(!rep.is_valid(), "the digon is an edge of four faces");
+        assert_eq!(pinch_digons(&mut g, &glued), 1);
+        g.check().expect("valid after");
+        assert_eq!(g.opposite(a), Some(b));
+        assert_eq!(g.opposite(c), Some(e));
+        assert_eq!(g.component_labels().1, 2);
+        let glued = g.glue();
+        let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
+        let rep = dualex_check::check_quad_mesh(glued.n_vertices, &cells);
+        assert!(rep.is_valid(), "{:?}", rep.errors());
+        assert_eq!(double_edges(&glued), 0);
+    }
+
+    #[test]
+    fn a_regular_grid_has_no_digon() {
+        let mut g = GridSpec::regular([3, 3]).build();
+        let before = g.clone();
+        let glued = g.glue();
+        assert_eq!(pinch_digons(&mut g, &glued), 0);
+        assert_eq!(g, before);
+    }
+}
