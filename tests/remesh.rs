@@ -234,6 +234,7 @@ fn the_embedded_surface_and_the_options() {
         vec!["remesh", "-o", "x.obj", "--sharp", "200"],
         vec!["remesh", "-o", "x.obj", "--quads", "0"],
         vec!["remesh", "-o", "x.obj", "--rounding", "sometimes"],
+        vec!["remesh", "-o", "x.vtk", "--uv"],
     ] {
         let o = dualex(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {}", text(&o));

@@ -186,7 +186,7 @@ pub fn quad_map(
 /// `--uv` with an output format that cannot carry per-corner map
 /// coordinates (`.vtk`) is a usage error (exit 2); an unknown extension is
 /// left to the output check.
-fn refuse_uv(output: &Path) {
+pub(crate) fn refuse_uv(output: &Path) {
     let ext = output
         .extension()
         .and_then(|e| e.to_str())

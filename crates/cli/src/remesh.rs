@@ -18,6 +18,9 @@ const EMBEDDED_SURFACE: &str = "a bumpy sphere of 5120 triangles";
 
 /// `dualex remesh`.
 pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
+    if a.uv {
+        crate::extract::refuse_uv(&a.output);
+    }
     let mut all = vec![(a.output.as_path(), Some(dualex_io::QUAD_MESH_EXTENSIONS))];
     if let Some(m) = &a.map_out {
         all.push((m.as_path(), Some(dualex_io::TRI_MAP_EXTENSIONS)));
