@@ -27,23 +27,7 @@ impl SpdSolver {
     /// Factorises the `n × n` matrix given by `triplets` (lower triangle
     /// read, duplicates summed).
     pub fn new(n: usize, triplets: &[(u32, u32, f64)]) -> Result<Self, String> {
-        let mut lower = Vec::with_capacity(triplets.len());
-        for &(r, c, v) in triplets {
-            let (r, c) = (r as usize, c as usize);
-            if r >= n || c >= n {
-                return Err(format!(
-                    "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
-                ));
-            }
-            if !v.is_finite() {
-                return Err(format!("sparse entry ({r}, {c}) is not finite"));
-            }
-            if r >= c {
-                lower.push(Triplet::new(r, c, v));
-            }
-        }
-        let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &lower)
-            .map_err(|e| format!("sparse matrix: {e:?}"))?;
+        let a = lower(n, triplets)?;
         let llt = a
             .sp_cholesky(Side::Lower)
             .map_err(|e| format!("sparse Cholesky ({n} unknowns): {e}"))?;
@@ -52,24 +36,7 @@ impl SpdSolver {
 
     /// Solves `A·x = rhs`.
     pub fn solve(&self, rhs: &[f64]) -> Result<Vec<f64>, String> {
-        if rhs.len() != self.n {
-            return Err(format!(
-                "right-hand side of length {} for {} unknowns",
-                rhs.len(),
-                self.n
-            ));
-        }
-        let mut x = rhs.to_vec();
-        self.llt
-            .solve_in_place(MatMut::from_column_major_slice_mut(&mut x, self.n, 1));
-        if x.iter().all(|v| v.is_finite()) {
-            Ok(x)
-        } else {
-            Err(format!(
-                "sparse solve ({} unknowns): non-finite solution",
-                self.n
-            ))
-        }
+        solve_with(&self.llt, self.n, rhs)
     }
 }
 
@@ -89,7 +56,7 @@ impl HpdSolver {
     /// Factorises the `n × n` matrix given by `triplets` (lower triangle
     /// read, duplicates summed).
     pub fn new(n: usize, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
-        let a = hermitian_lower(n, triplets)?;
+        let a = lower(n, triplets)?;
         let symbolic = SymbolicLlt::try_new(a.symbolic(), Side::Lower)
             .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e:?}"))?;
         Self::numeric(n, a, symbolic)
@@ -99,7 +66,7 @@ impl HpdSolver {
     /// positions), reusing the fill-reducing ordering and the symbolic
     /// factorisation (a quarter of the cost, measured).
     pub fn refactor(&self, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
-        let a = hermitian_lower(self.n, triplets)?;
+        let a = lower(self.n, triplets)?;
         let sym = a.symbolic();
         if sym.col_ptr() != self.pattern.0.as_slice() || sym.row_idx() != self.pattern.1.as_slice()
         {
@@ -129,32 +96,30 @@ impl HpdSolver {
 
     /// Solves `A·x = rhs`.
     pub fn solve(&self, rhs: &[c64]) -> Result<Vec<c64>, String> {
-        if rhs.len() != self.n {
-            return Err(format!(
-                "right-hand side of length {} for {} unknowns",
-                rhs.len(),
-                self.n
-            ));
-        }
-        let mut x = rhs.to_vec();
-        self.llt
-            .solve_in_place(MatMut::from_column_major_slice_mut(&mut x, self.n, 1));
-        if x.iter().all(|v| v.re.is_finite() && v.im.is_finite()) {
-            Ok(x)
-        } else {
-            Err(format!(
-                "sparse solve ({} unknowns): non-finite solution",
-                self.n
-            ))
-        }
+        solve_with(&self.llt, self.n, rhs)
     }
 }
 
-/// The lower triangle of the `n × n` matrix given by `triplets`.
-fn hermitian_lower(
-    n: usize,
-    triplets: &[(u32, u32, c64)],
-) -> Result<SparseColMat<usize, c64>, String> {
+/// The matrix entries both solvers take: real (SPD) or complex (HPD).
+trait Entry: faer::traits::ComplexField + Copy {
+    fn finite(&self) -> bool;
+}
+
+impl Entry for f64 {
+    fn finite(&self) -> bool {
+        self.is_finite()
+    }
+}
+
+impl Entry for c64 {
+    fn finite(&self) -> bool {
+        self.re.is_finite() && self.im.is_finite()
+    }
+}
+
+/// The lower triangle of the `n × n` matrix given by `triplets`
+/// (duplicates summed; indices and values checked).
+fn lower<T: Entry>(n: usize, triplets: &[(u32, u32, T)]) -> Result<SparseColMat<usize, T>, String> {
     let mut lower = Vec::with_capacity(triplets.len());
     for &(r, c, v) in triplets {
         let (r, c) = (r as usize, c as usize);
@@ -163,15 +128,32 @@ fn hermitian_lower(
                 "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
             ));
         }
-        if !(v.re.is_finite() && v.im.is_finite()) {
+        if !v.finite() {
             return Err(format!("sparse entry ({r}, {c}) is not finite"));
         }
         if r >= c {
             lower.push(Triplet::new(r, c, v));
         }
     }
-    SparseColMat::<usize, c64>::try_new_from_triplets(n, n, &lower)
+    SparseColMat::<usize, T>::try_new_from_triplets(n, n, &lower)
         .map_err(|e| format!("sparse matrix: {e:?}"))
+}
+
+/// Solves `A·x = rhs` with a factorisation of `A` (`n` unknowns).
+fn solve_with<T: Entry>(llt: &Llt<usize, T>, n: usize, rhs: &[T]) -> Result<Vec<T>, String> {
+    if rhs.len() != n {
+        return Err(format!(
+            "right-hand side of length {} for {n} unknowns",
+            rhs.len()
+        ));
+    }
+    let mut x = rhs.to_vec();
+    llt.solve_in_place(MatMut::from_column_major_slice_mut(&mut x, n, 1));
+    if x.iter().all(Entry::finite) {
+        Ok(x)
+    } else {
+        Err(format!("sparse solve ({n} unknowns): non-finite solution"))
+    }
 }
 
 /// Solves the symmetric positive definite system `A·x = rhs`, `A` given
