@@ -28,7 +28,7 @@ use dualex::{GridOffset, HexOptions, QuadOptions};
 use dualex_map::report::{inspect as inspect_map, InspectOptions};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyDict, PyTuple};
 use std::path::PathBuf;
 
 /// A facade error as a `ValueError` with its one-line message.
@@ -102,18 +102,9 @@ fn quad<'py>(
         })
         .map_err(value_error)?;
     let stats = dicts::quad_stats(py, &out.stats)?;
-    let mut items = vec![
-        positions_array(py, &out.mesh.positions)?,
-        cells_array(py, &out.mesh.cells)?,
-        stats.into_any(),
-    ];
-    if return_sources {
-        items.push(sources_array(py, out.sources.iter().copied())?);
-    }
-    if return_uv {
-        items.push(optional_corners_array(py, &out.corner_uv)?);
-    }
-    PyTuple::new(py, items)
+    let sources = return_sources.then(|| out.sources.iter().copied());
+    let uv = return_uv.then_some(out.corner_uv.as_slice());
+    extraction_tuple(py, &out.mesh.positions, &out.mesh.cells, stats, sources, uv)
 }
 
 /// Extracts the all-hex mesh of a tet mesh with a 3D map.
@@ -161,16 +152,31 @@ fn hex<'py>(
         })
         .map_err(value_error)?;
     let stats = dicts::hex_stats(py, &out.stats)?;
+    let sources = return_sources.then(|| out.sources.iter().map(|&s| Some(s)));
+    let uv = return_uv.then_some(out.corner_uvw.as_slice());
+    extraction_tuple(py, &out.mesh.positions, &out.mesh.cells, stats, sources, uv)
+}
+
+/// What `quad` and `hex` return: (positions, cells, stats), then the
+/// sources and the corner coordinates when asked.
+fn extraction_tuple<'py, const K: usize, const D: usize>(
+    py: Python<'py>,
+    positions: &[[f64; 3]],
+    cells: &[[u32; K]],
+    stats: Bound<'py, PyDict>,
+    sources: Option<impl Iterator<Item = Option<u32>>>,
+    uv: Option<&[Option<[[f64; D]; K]>]>,
+) -> PyResult<Bound<'py, PyTuple>> {
     let mut items = vec![
-        positions_array(py, &out.mesh.positions)?,
-        cells_array(py, &out.mesh.cells)?,
+        positions_array(py, positions)?,
+        cells_array(py, cells)?,
         stats.into_any(),
     ];
-    if return_sources {
-        items.push(sources_array(py, out.sources.iter().map(|&s| Some(s)))?);
+    if let Some(s) = sources {
+        items.push(sources_array(py, s)?);
     }
-    if return_uv {
-        items.push(optional_corners_array(py, &out.corner_uvw)?);
+    if let Some(uv) = uv {
+        items.push(optional_corners_array(py, uv)?);
     }
     PyTuple::new(py, items)
 }
