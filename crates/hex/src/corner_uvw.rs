@@ -12,7 +12,6 @@ use crate::local::LocalMap;
 use crate::nodes::Nodes;
 use dualex_graph::{cell_code, Glued, NodeGraph};
 use dualex_map::corners::{node_corner, Corners};
-use dualex_map::HexMesh;
 
 /// The map coordinates of a hex's corners (module docs).
 pub type HexCorners = Corners<3, 8>;
@@ -35,22 +34,4 @@ pub fn of_glued(
             }))
         })
         .collect()
-}
-
-/// [`dualex_map::corners::carry`] from `old` to `new` (cell `c` of `new`
-/// made from cell `origin[c]` of `old`).
-pub fn carry(
-    old: &HexMesh,
-    corners: &[HexCorners],
-    new: &HexMesh,
-    origin: &[u32],
-) -> Vec<HexCorners> {
-    dualex_map::corners::carry(
-        &old.cells,
-        &old.positions,
-        corners,
-        &new.cells,
-        &new.positions,
-        origin,
-    )
 }

@@ -224,7 +224,7 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         if let Some(rep) = columns::repair(&mesh, &open) {
             st.columns = rep.report;
             st.open_interior_faces -= open.len().min(st.open_interior_faces);
-            corners = corner_uvw::carry(&mesh, &corners, &rep.mesh, &rep.origin);
+            corners = dualex_map::corners::carry(&mesh, &corners, &rep.mesh, &rep.origin);
             mesh = rep.mesh;
             source = rep.origin.iter().map(|&o| source[o as usize]).collect();
             st.finish_mesh(&mesh);
@@ -244,8 +244,8 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         st.folded_collapsed = folded;
         st.doublets = chains;
         if folded + chains.edges > 0 {
-            corners = corner_uvw::carry(&mesh, &corners, &collapsed, &kept_folded);
-            corners = corner_uvw::carry(&collapsed, &corners, &dissolved, &kept_chains);
+            corners = dualex_map::corners::carry(&mesh, &corners, &collapsed, &kept_folded);
+            corners = dualex_map::corners::carry(&collapsed, &corners, &dissolved, &kept_chains);
             mesh = dissolved;
             source = kept_chains
                 .iter()

@@ -19,6 +19,7 @@
 //! vertices); a cell with a vertex that is not such a corner, or that two
 //! corners with different coordinates could be, has none.
 
+use crate::cells::CellMesh;
 use crate::local::LocalMap;
 
 /// The map coordinates of a cell's `K` corners in one chart, in the cell's
@@ -42,22 +43,24 @@ pub fn node_corner<const N: usize, const D: usize>(
     })
 }
 
-/// The corners of `new_cells` (with positions `new_pos`), each made from
-/// cell `origin[c]` of `old_cells` (positions `old_pos`, corners `old`);
-/// an origin past `old_cells` (a polygon added by the step) has none.
+/// The corners of the cells of `new`, each made from cell `origin[c]` of
+/// `old` (whose corners are `corners`); an origin past `old`'s cells (a
+/// polygon added by the step) has none.
 pub fn carry<const D: usize, const K: usize>(
-    old_cells: &[[u32; K]],
-    old_pos: &[[f64; 3]],
-    old: &[Corners<D, K>],
-    new_cells: &[[u32; K]],
-    new_pos: &[[f64; 3]],
+    old: &CellMesh<K>,
+    corners: &[Corners<D, K>],
+    new: &CellMesh<K>,
     origin: &[u32],
 ) -> Vec<Corners<D, K>> {
-    new_cells
+    let (old_pos, new_pos) = (&old.positions, &new.positions);
+    new.cells
         .iter()
         .zip(origin)
         .map(|(cell, &o)| {
-            let (oc, ov) = (old_cells.get(o as usize)?, old.get(o as usize)?.as_ref()?);
+            let (oc, ov) = (
+                old.cells.get(o as usize)?,
+                corners.get(o as usize)?.as_ref()?,
+            );
             let mut out = [[0.0; D]; K];
             for (x, &w) in out.iter_mut().zip(cell) {
                 let p = new_pos.get(w as usize)?;
@@ -90,22 +93,24 @@ mod tests {
             [1.0, 1.0, 0.0],
             [0.0, 1.0, 0.0],
         ];
-        let old_cells = [[0, 1, 2, 3]];
+        let mesh = |positions: &[[f64; 3]], cells: &[[u32; 4]]| CellMesh {
+            positions: positions.to_vec(),
+            cells: cells.to_vec(),
+        };
+        let before = mesh(&pos, &[[0, 1, 2, 3]]);
         let uv = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
         let old = [Some(uv)];
         // renumbered (reversed) and rotated
         let new_pos: Vec<[f64; 3]> = pos.iter().rev().copied().collect();
-        let got = carry(&old_cells, &pos, &old, &[[2, 1, 0, 3]], &new_pos, &[0]);
+        let got = carry(&before, &old, &mesh(&new_pos, &[[2, 1, 0, 3]]), &[0]);
         assert_eq!(got, [Some([uv[1], uv[2], uv[3], uv[0]])]);
         // a vertex that is no corner of the origin, an added polygon
         let mut far = new_pos.clone();
         far.push([5.0, 5.0, 0.0]);
         let got = carry(
-            &old_cells,
-            &pos,
+            &before,
             &old,
-            &[[4, 1, 0, 3], [0, 1, 2, 3]],
-            &far,
+            &mesh(&far, &[[4, 1, 0, 3], [0, 1, 2, 3]]),
             &[0, 1],
         );
         assert_eq!(got, [None, None]);

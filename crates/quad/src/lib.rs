@@ -243,7 +243,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         corners = if rep.subdivided {
             corner_uv::subdivided(&mesh, &corners, &rep.mesh, &rep.origin)
         } else {
-            carry(&mesh, &corners, &rep.mesh, &rep.origin)
+            dualex_map::corners::carry(&mesh, &corners, &rep.mesh, &rep.origin)
         };
         mesh = rep.mesh;
         source = rep
@@ -259,7 +259,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         let (dissolved, rep, kept) = doublets::dissolve_traced(&mesh);
         st.doublets = rep;
         if rep.dissolved > 0 {
-            corners = carry(&mesh, &corners, &dissolved, &kept);
+            corners = dualex_map::corners::carry(&mesh, &corners, &dissolved, &kept);
             mesh = dissolved;
             source = kept.iter().map(|&k| source[k as usize]).collect();
             st.finish_mesh(&mesh);
@@ -273,24 +273,6 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         sources: source,
         corner_uv: corners,
     })
-}
-
-/// [`dualex_map::corners::carry`] from `old` to `new` (cell `c` of `new`
-/// made from cell `origin[c]` of `old`).
-fn carry(
-    old: &QuadMesh,
-    corners: &[corner_uv::QuadCorners],
-    new: &QuadMesh,
-    origin: &[u32],
-) -> Vec<corner_uv::QuadCorners> {
-    dualex_map::corners::carry(
-        &old.cells,
-        &old.positions,
-        corners,
-        &new.cells,
-        &new.positions,
-        origin,
-    )
 }
 
 /// The two corners (vertex ids) of side `d` of `node`, in the order of the
