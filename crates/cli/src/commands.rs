@@ -13,11 +13,7 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
     let title = input
         .file_name()
         .map_or(name.clone(), |f| f.to_string_lossy().to_string());
-    let ext = input
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
+    let ext = dualex_io::lower_extension(input);
     let page = match ext.as_str() {
         "mesh" => {
             let mesh = dualex_io::read_hex_mesh(input).map_err(|e| e.to_string())?;
@@ -62,11 +58,7 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
 pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
     let path = &a.input;
     let name = path.display().to_string();
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
+    let ext = dualex_io::lower_extension(path);
     let opts = dualex_map::report::InspectOptions {
         weld: !a.weld.no_weld,
         round: a.round.round,

@@ -187,11 +187,7 @@ pub fn quad_map(
 /// coordinates (`.vtk`) is a usage error (exit 2); an unknown extension is
 /// left to the output check.
 pub(crate) fn refuse_uv(output: &Path) {
-    let ext = output
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
+    let ext = dualex_io::lower_extension(output);
     if dualex_io::QUAD_MESH_EXTENSIONS.contains(&ext.as_str())
         && !dualex_io::write_uv::UV_EXTENSIONS.contains(&ext.as_str())
     {

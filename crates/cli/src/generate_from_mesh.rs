@@ -21,11 +21,7 @@ pub enum Input {
 /// Reads MESH: `.mesh` hexes, `.obj` / `.ply` quads (other faces refused).
 pub fn read(path: &Path) -> Result<Input, String> {
     let name = path.display().to_string();
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
+    let ext = dualex_io::lower_extension(path);
     if ext == "mesh" {
         let m = dualex_io::read_hex_mesh(path).map_err(|e| e.to_string())?;
         return Ok(Input::Hexes(m, name));

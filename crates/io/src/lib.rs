@@ -98,13 +98,18 @@ fn read_bytes(path: &Path) -> Result<Vec<u8>, InputError> {
     })
 }
 
-/// The lower-case extension if it is one of `allowed`, else an error naming them.
-fn input_extension(path: &Path, allowed: &[&str]) -> Result<String, InputError> {
-    let ext = path
-        .extension()
+/// The extension of `path` in lower case (`""` when it has none): what
+/// the readers and writers choose the format by.
+pub fn lower_extension(path: &Path) -> String {
+    path.extension()
         .and_then(|e| e.to_str())
         .unwrap_or("")
-        .to_ascii_lowercase();
+        .to_ascii_lowercase()
+}
+
+/// The lower-case extension if it is one of `allowed`, else an error naming them.
+fn input_extension(path: &Path, allowed: &[&str]) -> Result<String, InputError> {
+    let ext = lower_extension(path);
     if allowed.contains(&ext.as_str()) {
         return Ok(ext);
     }

@@ -97,11 +97,7 @@ pub(crate) fn extension(
     path: &Path,
     allowed: &'static [&'static str],
 ) -> Result<String, OutputError> {
-    let found = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
+    let found = crate::lower_extension(path);
     if allowed.contains(&found.as_str()) {
         Ok(found)
     } else {
