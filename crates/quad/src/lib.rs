@@ -12,7 +12,8 @@
 //!    deleted;
 //! 7. gluing (`dualex_graph`; [`digons`] pinched off) and [`geometry`]:
 //!    vertex positions by diagonal tracing;
-//! 8. [`repair`]: holes closed, faces quads cannot represent subdivided;
+//! 8. [`ambiguous`]: parallel edges and folded cells split; [`repair`]:
+//!    holes closed, faces quads cannot represent repaired (or subdivided);
 //! 9. [`doublets`]: interior valence-2 vertices left by fairing dissolved;
 //! 10. [`corner_uv`]: each quad's corners in its node's chart (kept along
 //!     steps 7–9).
@@ -23,6 +24,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod ambiguous;
 pub mod bubbles;
 pub mod corner_uv;
 pub mod digons;
@@ -224,11 +226,17 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         .collect();
     let mut corners = corner_uv::of_glued(&glued, &graph, &local, &nodes);
     st.finish_output(&graph, &glued, &mesh);
-    // 8
-    let holes = hole_edges(&graph, &glued, &ends, topo.boundary_facets == 0);
-    let (fill, open) = repair::hole_polygons(&holes);
+    // 8a: parallel edges and folded cells split by their identity in the
+    // graph, so that vertex pairs name every edge of the repair
+    let slots = cell_slots(&graph, &glued);
+    let holes = hole_slots(&graph, &glued, &slots, &ends, topo.boundary_facets == 0);
+    let amb = ambiguous::split(&mesh, &slots.partner, &holes);
+    st.parallel_edges_split = amb.parallel_edges;
+    st.folded_cells_cut = amb.folded_cells;
+    // 8b: holes closed, faces quads cannot represent repaired
+    let (fill, open) = repair::hole_polygons(&amb.hole_edges);
     st.holes_left_open = open;
-    if let Some(rep) = repair::subdivide_if_odd(&mesh, &fill) {
+    if let Some(rep) = repair::repair_polygons(&amb.positions, &amb.polys, &fill, amb.changed()) {
         st.repair_triangles = repair::odd_cells(&mesh);
         st.holes_filled = fill.len();
         st.repair_dropped = rep.dropped;
@@ -240,17 +248,30 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         let collapsed = collapsed_unmatched_sides(&graph, &glued);
         st.unmatched_sides -= (collapsed + holes.len()).min(st.unmatched_sides);
         st.boundary_loops -= (collapsed + fill.len()).min(st.boundary_loops);
-        corners = if rep.subdivided {
-            corner_uv::subdivided(&mesh, &corners, &rep.mesh, &rep.origin)
-        } else {
-            dualex_map::corners::carry(&mesh, &corners, &rep.mesh, &rep.origin)
+        // origins: a polygon of `amb` (then its cell; its corners only
+        // where it is the cell unchanged) or a hole fill
+        let cell_of = |o: u32| amb.origin.get(o as usize).copied().unwrap_or(NO_SOURCE);
+        let intact_cell = |o: u32| match amb.intact.get(o as usize) {
+            Some(true) => cell_of(o),
+            _ => NO_SOURCE,
         };
-        mesh = rep.mesh;
+        let carried: Vec<u32> = rep.origin.iter().map(|&o| intact_cell(o)).collect();
+        corners = if rep.subdivided {
+            corner_uv::subdivided(&mesh, &corners, &rep.mesh, &carried)
+        } else {
+            dualex_map::corners::carry(&mesh, &corners, &rep.mesh, &carried)
+        };
         source = rep
             .origin
             .iter()
-            .map(|&o| source.get(o as usize).copied().unwrap_or(NO_SOURCE))
+            .map(|&o| {
+                source
+                    .get(cell_of(o) as usize)
+                    .copied()
+                    .unwrap_or(NO_SOURCE)
+            })
             .collect();
+        mesh = rep.mesh;
         st.finish_mesh(&mesh);
     }
     // 9: doublets that fairing found no partner for
@@ -314,21 +335,83 @@ fn zip_two_side_holes(graph: &mut NodeGraph<2>, glued: &dualex_graph::Glued<2>) 
     zipped
 }
 
-/// Unmatched sides that are holes, not boundary, as directed edges in
-/// their cells' order: all of them on a closed input; otherwise those whose
-/// walk got lost at a singular vertex.
-fn hole_edges(
+/// Each cell edge's side in the graph and its glued partner edge
+/// (`ambiguous::Slot`s: `4 · cell + k`, the edge from corner k to k + 1).
+struct CellSlots {
+    /// Per slot: the graph side it is.
+    side: Vec<Side>,
+    /// Per slot: the slot glued to it (`None`: unmatched, or glued to a
+    /// dead node).
+    partner: Vec<Option<ambiguous::Slot>>,
+}
+
+/// The direction of the side of a node holding cell edge `k` (corners k
+/// and k + 1 of the cell).
+fn edge_dir(k: usize, reverted: bool) -> usize {
+    let (a, b) = (
+        dualex_graph::cell_code::<2>(k, reverted),
+        dualex_graph::cell_code::<2>((k + 1) % 4, reverted),
+    );
+    // the axis on which the two corners agree, and their bit on it
+    let same = if (a ^ b) & 1 == 0 { 0 } else { 1 };
+    let bit = (a >> same) & 1;
+    2 * same + (1 - bit)
+}
+
+fn cell_slots(graph: &NodeGraph<2>, glued: &dualex_graph::Glued<2>) -> CellSlots {
+    let n = glued.nodes.len();
+    let mut cell_of = vec![u32::MAX; graph.n_nodes()];
+    for (c, node) in glued.nodes.iter().enumerate() {
+        cell_of[node.idx()] = c as u32;
+    }
+    let dir_slot: Vec<[usize; 4]> = [false, true]
+        .map(|rev| {
+            let mut m = [0; 4];
+            for k in 0..4 {
+                m[edge_dir(k, rev)] = k;
+            }
+            m
+        })
+        .to_vec();
+    let mut side = Vec::with_capacity(4 * n);
+    let mut partner = Vec::with_capacity(4 * n);
+    for node in &glued.nodes {
+        let rev = graph.is_reverted(*node);
+        for k in 0..4 {
+            let s = graph.side(*node, edge_dir(k, rev));
+            side.push(s);
+            partner.push(graph.opposite(s).and_then(|t| {
+                let y = graph.node_of(t);
+                let c = *cell_of.get(y.idx())?;
+                let k = dir_slot[usize::from(graph.is_reverted(y))][graph.dir_of(t)];
+                (c != u32::MAX).then_some(4 * c + k as u32)
+            }));
+        }
+    }
+    CellSlots { side, partner }
+}
+
+/// Unmatched sides that are holes, not boundary, as cell edges: all of
+/// them on a closed input; otherwise those whose walk got lost at a
+/// singular vertex. Sides whose two corners are one vertex are left out.
+fn hole_slots(
     graph: &NodeGraph<2>,
     glued: &dualex_graph::Glued<2>,
+    slots: &CellSlots,
     ends: &[trace::End],
     closed: bool,
-) -> Vec<(u32, u32)> {
-    let mut out = Vec::new();
-    for (node, cell) in glued.cells() {
-        for d in 0..4 {
-            let s = graph.side(node, d);
+) -> Vec<ambiguous::Slot> {
+    let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
+    // in the order of the cells, then of the sides' directions
+    let order = glued.nodes.iter().enumerate().flat_map(|(c, node)| {
+        let rev = graph.is_reverted(*node);
+        (0..4).map(move |d| 4 * c + (0..4).find(|&k| edge_dir(k, rev) == d).unwrap_or(0))
+    });
+    order
+        .filter(|&i| {
+            let s = slots.side[i];
             if graph.opposite(s).is_some() {
-                continue;
+                return false;
             }
             // on an input with boundary, only the walks that got lost at a
             // singular vertex leave holes; the others are boundary (reached
@@ -337,19 +420,11 @@ fn hole_edges(
                 ends.get(s.0 as usize),
                 Some(trace::End::Inconsistent | trace::End::Loop)
             );
-            if !closed && !lost {
-                continue;
-            }
-            let [a, b] = side_corners(glued, node, d);
-            if a == b {
-                continue;
-            }
-            // orient as the cell traverses it
-            let k = (0..4).find(|&k| cell[k] == a && cell[(k + 1) % 4] == b);
-            out.push(if k.is_some() { (a, b) } else { (b, a) });
-        }
-    }
-    out
+            let (c, k) = (i / 4, i % 4);
+            (closed || lost) && cells[c][k] != cells[c][(k + 1) % 4]
+        })
+        .map(|i| i as ambiguous::Slot)
+        .collect()
 }
 
 /// Unmatched sides whose two corners are the same vertex (a loop of one

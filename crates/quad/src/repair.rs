@@ -22,7 +22,12 @@ use std::collections::HashMap;
 
 /// The cell without consecutive repeated corners (cyclically).
 pub(crate) fn polygon(cell: &[u32; 4]) -> Vec<u32> {
-    let mut p: Vec<u32> = Vec::with_capacity(4);
+    polygon_of(cell)
+}
+
+/// [`polygon`] of any polygon.
+pub(crate) fn polygon_of(cell: &[u32]) -> Vec<u32> {
+    let mut p: Vec<u32> = Vec::with_capacity(cell.len());
     for &v in cell {
         if p.last() != Some(&v) {
             p.push(v);
@@ -62,24 +67,46 @@ pub struct Repaired {
 /// fewer than 3 distinct corners are dropped and counted. Quads in `extra`
 /// alone are added as they are.
 pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired> {
-    if odd_cells(mesh) == 0 && extra.iter().all(|p| p.len() == 4) {
-        if extra.is_empty() {
+    let polys: Vec<Vec<u32>> = mesh.cells.iter().map(polygon).collect();
+    repair_polygons(&mesh.positions, &polys, extra, false)
+}
+
+/// Whether `p` has four distinct corners.
+fn proper_quad(p: &[u32]) -> bool {
+    p.len() == 4 && (0..4).all(|i| (i + 1..4).all(|j| p[i] != p[j]))
+}
+
+/// [`subdivide_if_odd`] on polygons (the cells after
+/// `crate::ambiguous`): `None` when every polygon is a proper quad, there
+/// is no hole and `changed` is false; else the local repair when it gives
+/// a valid mesh, the subdivision otherwise. Origins index `polys` then
+/// `extra`.
+pub fn repair_polygons(
+    positions: &[[f64; 3]],
+    polys: &[Vec<u32>],
+    extra: &[Vec<u32>],
+    changed: bool,
+) -> Option<Repaired> {
+    let all = || polys.iter().chain(extra);
+    if all().all(|p| proper_quad(p)) {
+        if extra.is_empty() && !changed {
             return None;
         }
-        let mut out = mesh.clone();
-        out.cells
-            .extend(extra.iter().map(|p| [p[0], p[1], p[2], p[3]]));
         return Some(Repaired {
-            origin: (0..out.cells.len() as u32).collect(),
-            mesh: out,
+            mesh: QuadMesh {
+                positions: positions.to_vec(),
+                cells: all().map(|p| [p[0], p[1], p[2], p[3]]).collect(),
+            },
             dropped: 0,
             subdivided: false,
             local_paths: 0,
+            origin: (0..(polys.len() + extra.len()) as u32).collect(),
         });
     }
     // first choice: the local repair, kept when its result is a valid
     // all-quad mesh
-    if let Some(local) = crate::repair_local::repair(mesh, extra) {
+    let joined: Vec<Vec<u32>> = all().cloned().collect();
+    if let Some(local) = crate::repair_local::repair_polys(positions, &joined) {
         let out = &local.mesh;
         if dualex_check::check_quad_mesh(out.positions.len(), &out.cells).is_valid() {
             return Some(Repaired {
@@ -91,20 +118,31 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
             });
         }
     }
-    Some(subdivide(mesh, extra))
+    Some(subdivide_polys(positions, &joined))
 }
 
 /// One step of linear subdivision of the cells and the polygons of
 /// `extra` (module docs); cells of fewer than 3 distinct corners dropped.
 pub fn subdivide(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Repaired {
-    let polygons = mesh.cells.iter().map(polygon).chain(extra.iter().cloned());
+    let polys: Vec<Vec<u32>> = mesh
+        .cells
+        .iter()
+        .map(polygon)
+        .chain(extra.iter().cloned())
+        .collect();
+    subdivide_polys(&mesh.positions, &polys)
+}
+
+/// [`subdivide`] of polygons.
+fn subdivide_polys(positions: &[[f64; 3]], polys: &[Vec<u32>]) -> Repaired {
+    let polygons = polys.iter().cloned();
     let mut out = QuadMesh {
-        positions: mesh.positions.clone(),
-        cells: Vec::with_capacity(4 * mesh.cells.len()),
+        positions: positions.to_vec(),
+        cells: Vec::with_capacity(4 * polys.len()),
     };
     let mut edge_point: HashMap<(u32, u32), u32> = HashMap::new();
     let mut dropped = 0;
-    let mut origin = Vec::with_capacity(4 * mesh.cells.len());
+    let mut origin = Vec::with_capacity(4 * polys.len());
     for (polygon_id, p) in polygons.enumerate() {
         if p.len() < 3 {
             dropped += 1;

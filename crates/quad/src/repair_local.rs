@@ -170,13 +170,20 @@ pub struct Local {
 
 /// The local repair (module docs): `None` when it does not apply.
 pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
-    let mut positions = mesh.positions.clone();
-    let mut polys: Vec<Vec<u32>> = mesh
+    let polys: Vec<Vec<u32>> = mesh
         .cells
         .iter()
         .map(crate::repair::polygon)
         .chain(extra.iter().cloned())
         .collect();
+    repair_polys(&mesh.positions, &polys)
+}
+
+/// [`repair`] of polygons (origins index `polys`).
+pub fn repair_polys(positions: &[[f64; 3]], polys: &[Vec<u32>]) -> Option<Local> {
+    let n_input = polys.len();
+    let mut positions = positions.to_vec();
+    let mut polys = polys.to_vec();
     for p in &polys {
         let mut s = p.clone();
         s.sort_unstable();
@@ -244,7 +251,7 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
         polys = next;
         origin = next_origin;
         paths += 1;
-        if paths > mesh.cells.len() + extra.len() {
+        if paths > n_input {
             return None;
         }
     }

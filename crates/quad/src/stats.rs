@@ -59,6 +59,12 @@ pub struct QuadStats {
     pub digons_pinched: usize,
     /// Holes of two unmatched sides with identified ends, glued explicitly.
     pub zipped_sides: usize,
+    /// Edges given a point because another edge joins the same two
+    /// vertices ([`crate::ambiguous`]).
+    pub parallel_edges_split: usize,
+    /// Cells whose opposite corners are one vertex, cut in two
+    /// ([`crate::ambiguous`]).
+    pub folded_cells_cut: usize,
     /// Holes (unmatched sides not on the input boundary) closed by a face.
     pub holes_filled: usize,
     /// Holes that could not be closed (a cycle through a vertex twice).
@@ -156,6 +162,8 @@ impl QuadStats {
             "digons_pinched": self.digons_pinched,
             "repair": {
                 "zipped_sides": self.zipped_sides,
+                "parallel_edges_split": self.parallel_edges_split,
+                "folded_cells_cut": self.folded_cells_cut,
                 "holes_filled": self.holes_filled,
                 "holes_left_open": self.holes_left_open,
                 "triangles": self.repair_triangles,
