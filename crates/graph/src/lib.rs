@@ -37,7 +37,7 @@ pub mod pillow;
 pub mod place;
 use dualex_map::rng;
 pub mod testgrid;
-mod uf;
+pub mod uf;
 pub mod untangle;
 pub mod walk;
 

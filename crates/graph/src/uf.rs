@@ -2,14 +2,14 @@
 
 /// Disjoint sets over `0..n`.
 #[derive(Clone, Debug)]
-pub(crate) struct UnionFind {
+pub struct UnionFind {
     parent: Vec<u32>,
     size: Vec<u32>,
 }
 
 impl UnionFind {
     /// `n` singleton sets.
-    pub(crate) fn new(n: usize) -> Self {
+    pub fn new(n: usize) -> Self {
         UnionFind {
             parent: (0..n as u32).collect(),
             size: vec![1; n],
@@ -17,7 +17,7 @@ impl UnionFind {
     }
 
     /// The representative of `x`'s set.
-    pub(crate) fn find(&mut self, mut x: usize) -> usize {
+    pub fn find(&mut self, mut x: usize) -> usize {
         while self.parent[x] as usize != x {
             let p = self.parent[x] as usize;
             self.parent[x] = self.parent[p];
@@ -27,7 +27,7 @@ impl UnionFind {
     }
 
     /// Merges the sets of `a` and `b`.
-    pub(crate) fn union(&mut self, a: usize, b: usize) {
+    pub fn union(&mut self, a: usize, b: usize) {
         let (a, b) = (self.find(a), self.find(b));
         if a == b {
             return;

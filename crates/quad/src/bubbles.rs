@@ -130,6 +130,67 @@ fn triangle_components(topo: &Topology<3>, n: usize) -> (Vec<u32>, Vec<bool>) {
     (label, open)
 }
 
+/// The bubbles of a repaired *mesh* (after `crate::pinched` split a
+/// pinch point, a pocket of a fold can come apart from the surface): the
+/// same rule as [`drop_bubbles`] on the mesh's components — per closed
+/// input component (that of the cells' `sources`), the strictly smaller
+/// closed spheres beside a piece holding at least half of the cells.
+/// Returns the cells kept (indices) and how many components were deleted;
+/// `None` when nothing is deleted.
+pub fn drop_mesh_bubbles(
+    mesh: &dualex_map::QuadMesh,
+    topo: &Topology<3>,
+    sources: &[u32],
+) -> Option<(Vec<u32>, usize)> {
+    let n = mesh.cells.len();
+    let mut uf = dualex_graph::uf::UnionFind::new(mesh.positions.len());
+    for q in &mesh.cells {
+        for k in 1..4 {
+            uf.union(q[0] as usize, q[k] as usize);
+        }
+    }
+    let label: Vec<usize> = mesh.cells.iter().map(|q| uf.find(q[0] as usize)).collect();
+    let mut comps: std::collections::HashMap<usize, Vec<u32>> = Default::default();
+    for (c, &l) in label.iter().enumerate() {
+        comps.entry(l).or_default().push(c as u32);
+    }
+    if comps.len() <= 1 {
+        return None;
+    }
+    let (tri_comp, open) = triangle_components(topo, topo.adj.len());
+    let input_of = |cells: &[u32]| {
+        cells
+            .iter()
+            .find_map(|&c| tri_comp.get(*sources.get(c as usize)? as usize).copied())
+            .unwrap_or(u32::MAX)
+    };
+    let mut largest: std::collections::HashMap<u32, (usize, usize)> = Default::default();
+    for cells in comps.values() {
+        let e = largest.entry(input_of(cells)).or_insert((0, 0));
+        *e = (e.0.max(cells.len()), e.1 + cells.len());
+    }
+    let mut drop = vec![false; n];
+    let mut deleted = 0;
+    for cells in comps.values() {
+        let input = input_of(cells);
+        let (biggest, all) = largest.get(&input).copied().unwrap_or((0, 0));
+        let closed_input = open.get(input as usize) == Some(&false);
+        let piece: Vec<[u32; 4]> = cells.iter().map(|&c| mesh.cells[c as usize]).collect();
+        let shape = dualex_check::check_quad_mesh(mesh.positions.len(), &piece);
+        let sphere = shape.boundary_edges == 0 && shape.euler == 2;
+        if closed_input && 2 * biggest >= all && cells.len() < biggest && sphere {
+            cells.iter().for_each(|&c| drop[c as usize] = true);
+            deleted += 1;
+        }
+    }
+    (deleted > 0).then(|| {
+        (
+            (0..n as u32).filter(|&c| !drop[c as usize]).collect(),
+            deleted,
+        )
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -62,8 +62,11 @@ fn ascending(graph: &NodeGraph<2>, glued: &Glued<2>, s: Side) -> Option<bool> {
 }
 
 /// Re-pairs the sides of every digon (see the module docs); returns how
-/// many digons were pinched.
-pub fn pinch_digons(graph: &mut NodeGraph<2>, glued: &Glued<2>) -> usize {
+/// many digons were pinched. Up to `handles` digons that do not separate
+/// are pinched too (each removes a handle: the caller allows it only for
+/// the handles the graph has beyond its input's, see
+/// [`excess_handles`]).
+pub fn pinch_digons(graph: &mut NodeGraph<2>, glued: &Glued<2>, mut handles: usize) -> usize {
     // one entry per glued pair, keyed by its two vertices, sorted
     let mut by_edge: Vec<(u64, Side)> = Vec::new();
     for (node, _) in glued.cells() {
@@ -108,6 +111,10 @@ pub fn pinch_digons(graph: &mut NodeGraph<2>, glued: &Glued<2>) -> usize {
         repair(graph, [p1, p2], new, [r1, r2]);
         if graph.component_labels().1 > before {
             pinched += 1;
+        } else if handles > 0 {
+            // a handle the input does not have: cut through
+            handles -= 1;
+            pinched += 1;
         } else {
             // the loop does not separate (a handle): pinching would change
             // the topology, so the digon stays
@@ -115,6 +122,25 @@ pub fn pinch_digons(graph: &mut NodeGraph<2>, glued: &Glued<2>) -> usize {
         }
     }
     pinched
+}
+
+/// The handles the glued surface has beyond a closed connected input of
+/// Euler characteristic `input_euler`, once its holes are closed (each
+/// boundary loop of the graph is one face of the repair): `(χ_input −
+/// χ_graph) / 2` when positive. `2χ_graph = 2V − 2F − U + 2B` (V vertices,
+/// F cells, U unmatched sides, B boundary loops; every cell has 4 sides).
+pub fn excess_handles(glued: &Glued<2>, input_euler: i64) -> usize {
+    let v = glued.n_vertices as i64;
+    let f = glued.nodes.len() as i64;
+    let u = glued.unmatched_sides as i64;
+    let b = glued.boundary_loops as i64;
+    let twice = 2 * v - 2 * f - u + 2 * b;
+    let excess = 2 * input_euler - twice;
+    if excess > 0 && excess % 4 == 0 {
+        (excess / 4) as usize
+    } else {
+        0
+    }
 }
 
 /// Unglues `old` (one side of each pair) and glues the `new` pairs with
@@ -197,7 +223,7 @@ mod tests {
         let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
         let rep = dualex_check::check_quad_mesh(glued.n_vertices, &cells);
         assert!(!rep.is_valid(), "the digon is an edge of four faces");
-        assert_eq!(pinch_digons(&mut g, &glued), 1);
+        assert_eq!(pinch_digons(&mut g, &glued, 0), 1);
         g.check().expect("valid after");
         assert_eq!(g.opposite(a), Some(b));
         assert_eq!(g.opposite(c), Some(e));
@@ -214,7 +240,7 @@ mod tests {
         let mut g = GridSpec::regular([3, 3]).build();
         let before = g.clone();
         let glued = g.glue();
-        assert_eq!(pinch_digons(&mut g, &glued), 0);
+        assert_eq!(pinch_digons(&mut g, &glued, 0), 0);
         assert_eq!(g, before);
     }
 }

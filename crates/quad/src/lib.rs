@@ -33,6 +33,7 @@ mod fairing;
 pub mod geometry;
 pub mod local;
 pub mod nodes;
+pub mod pinched;
 pub mod repair;
 pub mod repair_local;
 use dualex_map::rng;
@@ -214,7 +215,19 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     }
     // 7b: two edges between the same two vertices pinched off, the smaller
     // piece deleted as a bubble
-    st.digons_pinched = digons::pinch_digons(&mut graph, &glued);
+    // (on a closed connected input, also digons around handles the input
+    // does not have)
+    let handles = if topo.boundary_facets == 0 && glued.components == 1 {
+        let shape = dualex_check::topology::surface_shape(map.positions.len(), &map.simplices);
+        if shape.components == 1 {
+            digons::excess_handles(&glued, shape.euler)
+        } else {
+            0
+        }
+    } else {
+        0
+    };
+    st.digons_pinched = digons::pinch_digons(&mut graph, &glued, handles);
     if st.digons_pinched > 0 {
         st.bubbles_removed += bubbles::drop_bubbles(&mut graph, &topo, &nodes.tri);
         glued = graph.glue();
@@ -242,6 +255,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         st.repair_dropped = rep.dropped;
         st.subdivided = rep.subdivided;
         st.repair_paths = rep.local_paths;
+        st.pinched_vertices_split = rep.pinched;
         // the collapsed sides of the triangles were unmatched sides whose
         // two corners are one vertex, and the filled holes' sides are glued
         // to the new faces: neither is boundary
@@ -272,6 +286,21 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
             })
             .collect();
         mesh = rep.mesh;
+        // 8c: a pinch point split can leave a pocket of a fold beside the
+        // surface: deleted as the bubbles of step 6d are
+        if rep.pinched > 0 {
+            if let Some((kept, deleted)) = bubbles::drop_mesh_bubbles(&mesh, &topo, &source) {
+                st.bubbles_removed += deleted;
+                let cells = kept.iter().map(|&c| mesh.cells[c as usize]).collect();
+                let pruned = QuadMesh {
+                    positions: mesh.positions.clone(),
+                    cells,
+                };
+                corners = dualex_map::corners::carry(&mesh, &corners, &pruned, &kept);
+                source = kept.iter().map(|&c| source[c as usize]).collect();
+                mesh = without_unused_vertices(pruned);
+            }
+        }
         st.finish_mesh(&mesh);
     }
     // 9: doublets that fairing found no partner for
@@ -444,6 +473,23 @@ fn collapsed_unmatched_sides(graph: &NodeGraph<2>, glued: &dualex_graph::Glued<2
         }
     }
     n
+}
+
+/// `mesh` with the vertices no cell uses removed (cells renumbered, order
+/// kept).
+fn without_unused_vertices(mesh: QuadMesh) -> QuadMesh {
+    let mut new_id = vec![u32::MAX; mesh.positions.len()];
+    let mut positions = Vec::with_capacity(mesh.positions.len());
+    let mut cells = mesh.cells;
+    for v in cells.iter_mut().flatten() {
+        let id = &mut new_id[*v as usize];
+        if *id == u32::MAX {
+            *id = positions.len() as u32;
+            positions.push(mesh.positions[*v as usize]);
+        }
+        *v = *id;
+    }
+    QuadMesh { positions, cells }
 }
 
 /// Positions of the glued vertices by diagonal tracing.

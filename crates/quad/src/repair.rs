@@ -60,6 +60,9 @@ pub struct Repaired {
     /// For each cell of `mesh`, the polygon it comes from: an index into
     /// the input cells followed by `extra`.
     pub origin: Vec<u32>,
+    /// Vertex copies made where the surface was pinched
+    /// (`crate::pinched`).
+    pub pinched: usize,
 }
 
 /// Subdivides every cell once when some cell is a triangle or some polygon
@@ -101,24 +104,89 @@ pub fn repair_polygons(
             subdivided: false,
             local_paths: 0,
             origin: (0..(polys.len() + extra.len()) as u32).collect(),
+            pinched: 0,
         });
     }
     // first choice: the local repair, kept when its result is a valid
-    // all-quad mesh
+    // all-quad mesh; polygons of fewer than 3 distinct corners (a cell
+    // folded flat) are dropped, as the subdivision drops them
+    // (and a polygon through one vertex twice is cut there into two)
     let joined: Vec<Vec<u32>> = all().cloned().collect();
-    if let Some(local) = crate::repair_local::repair_polys(positions, &joined) {
-        let out = &local.mesh;
-        if dualex_check::check_quad_mesh(out.positions.len(), &out.cells).is_valid() {
+    let (mut kept, mut polys_kept) = (Vec::new(), Vec::new());
+    for (i, p) in joined.iter().enumerate() {
+        for piece in cut_at_repeats(p) {
+            if distinct_corners(&piece) >= 3 {
+                kept.push(i as u32);
+                polys_kept.push(piece);
+            }
+        }
+    }
+    let dropped = joined
+        .iter()
+        .filter(|p| cut_at_repeats(p).iter().all(|q| distinct_corners(q) < 3))
+        .count();
+    if let Some(local) = crate::repair_local::repair_polys(positions, &polys_kept) {
+        let mut mesh = local.mesh;
+        let pinched = valid_or_unpinched(&mut mesh);
+        if let Some(pinched) = pinched {
             return Some(Repaired {
-                mesh: local.mesh,
-                dropped: 0,
+                mesh,
+                dropped,
                 subdivided: false,
                 local_paths: local.paths,
-                origin: local.origin,
+                origin: local.origin.iter().map(|&o| kept[o as usize]).collect(),
+                pinched,
             });
         }
     }
-    Some(subdivide_polys(positions, &joined))
+    let mut rep = subdivide_polys(positions, &joined);
+    rep.pinched = valid_or_unpinched(&mut rep.mesh).unwrap_or(0);
+    Some(rep)
+}
+
+/// `p` cut at its repeated corners into polygons through each vertex
+/// once (the corner belongs to both pieces).
+fn cut_at_repeats(p: &[u32]) -> Vec<Vec<u32>> {
+    let n = p.len();
+    for i in 0..n {
+        if let Some(d) = (1..n).find(|&d| p[(i + d) % n] == p[i]) {
+            let a: Vec<u32> = (0..d).map(|k| p[(i + k) % n]).collect();
+            let b: Vec<u32> = (d..n).map(|k| p[(i + k) % n]).collect();
+            let mut out = cut_at_repeats(&a);
+            out.extend(cut_at_repeats(&b));
+            return out;
+        }
+    }
+    vec![p.to_vec()]
+}
+
+/// Number of distinct corners of `p`.
+fn distinct_corners(p: &[u32]) -> usize {
+    let mut s = p.to_vec();
+    s.sort_unstable();
+    s.dedup();
+    s.len()
+}
+
+/// `Some(copies)` when `mesh` is valid, after splitting its pinched
+/// vertices (`crate::pinched`) if that is all that keeps it from being
+/// valid; `None` (mesh unchanged) otherwise.
+fn valid_or_unpinched(mesh: &mut QuadMesh) -> Option<usize> {
+    let r = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    if r.is_valid() {
+        return Some(0);
+    }
+    if r.non_manifold_vertices.is_empty() {
+        return None;
+    }
+    let mut split = mesh.clone();
+    let copies = crate::pinched::split_pinched(&mut split);
+    let r = dualex_check::check_quad_mesh(split.positions.len(), &split.cells);
+    if copies == 0 || !r.is_valid() {
+        return None;
+    }
+    *mesh = split;
+    Some(copies)
 }
 
 /// One step of linear subdivision of the cells and the polygons of
@@ -178,12 +246,30 @@ fn subdivide_polys(positions: &[[f64; 3]], polys: &[Vec<u32>]) -> Repaired {
         subdivided: true,
         local_paths: 0,
         origin,
+        pinched: 0,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_polygon_through_a_vertex_twice_is_cut_there() {
+        let pieces = cut_at_repeats(&[1, 2, 1, 3, 4]);
+        assert_eq!(pieces, vec![vec![1, 2], vec![1, 3, 4]]);
+        assert_eq!(cut_at_repeats(&[1, 2, 3]), vec![vec![1, 2, 3]]);
+        // every edge of the polygon is in one piece, in its direction
+        let pieces = cut_at_repeats(&[5, 1, 6, 1, 7, 8]);
+        let mut edges: Vec<(u32, u32)> = pieces
+            .iter()
+            .flat_map(|q| (0..q.len()).map(move |i| (q[i], q[(i + 1) % q.len()])))
+            .collect();
+        edges.sort_unstable();
+        let mut want = vec![(5, 1), (1, 6), (6, 1), (1, 7), (7, 8), (8, 5)];
+        want.sort_unstable();
+        assert_eq!(edges, want);
+    }
 
     #[test]
     fn a_triangle_and_a_quad_become_seven_quads() {

@@ -65,6 +65,9 @@ pub struct QuadStats {
     /// Cells whose opposite corners are one vertex, cut in two
     /// ([`crate::ambiguous`]).
     pub folded_cells_cut: usize,
+    /// Vertex copies made where the repaired surface was pinched
+    /// ([`crate::pinched`]).
+    pub pinched_vertices_split: usize,
     /// Holes (unmatched sides not on the input boundary) closed by a face.
     pub holes_filled: usize,
     /// Holes that could not be closed (a cycle through a vertex twice).
@@ -164,6 +167,7 @@ impl QuadStats {
                 "zipped_sides": self.zipped_sides,
                 "parallel_edges_split": self.parallel_edges_split,
                 "folded_cells_cut": self.folded_cells_cut,
+                "pinched_vertices_split": self.pinched_vertices_split,
                 "holes_filled": self.holes_filled,
                 "holes_left_open": self.holes_left_open,
                 "triangles": self.repair_triangles,
