@@ -117,19 +117,18 @@ pub fn split(mesh: &QuadMesh, partner: &[Option<Slot>], holes: &[Slot]) -> Split
             cut.push((c, r));
         }
     }
-    // parallel edges: group the edges by vertex pair, unmarked ones only
-    let mut by_pair: HashMap<(u32, u32), Vec<Slot>> = HashMap::new();
-    for s in 0..4 * cells.len() as Slot {
-        let (a, b) = ends(cells, s);
-        if a == b || edge_of(partner, s) != s || marked.contains_key(&s) {
-            continue;
-        }
-        by_pair.entry((a.min(b), a.max(b))).or_default().push(s);
-    }
-    let mut groups: Vec<Vec<Slot>> = by_pair.into_values().filter(|g| g.len() > 1).collect();
-    groups.sort_unstable();
-    for mut g in groups {
+    // parallel edges: the edges sorted by vertex pair, unmarked ones only
+    let mut by_pair: Vec<(u64, Slot)> = (0..4 * cells.len() as Slot)
+        .filter_map(|s| {
+            let (a, b) = ends(cells, s);
+            let skip = a == b || edge_of(partner, s) != s || marked.contains_key(&s);
+            (!skip).then(|| ((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), s))
+        })
+        .collect();
+    by_pair.sort_unstable();
+    for run in by_pair.chunk_by(|x, y| x.0 == y.0).filter(|r| r.len() > 1) {
         // keep a glued edge (a point there changes two cells), else the first
+        let mut g: Vec<Slot> = run.iter().map(|&(_, s)| s).collect();
         g.sort_unstable_by_key(|&s| (partner[s as usize].is_none(), s));
         for &s in &g[1..] {
             marked.insert(s, u32::MAX);

@@ -11,7 +11,9 @@
 //! its nodes' triangles). Per *closed* input component the largest graph
 //! component is the surface (an input with boundary can be cut into pieces
 //! legitimately: a cut map not welded has one piece per chart, so nothing
-//! is deleted there); the strictly smaller others are bubbles and are
+//! is deleted there but a lone node, none of whose sides is glued, beside
+//! a piece of more than half of the nodes: a sliver of the surface
+//! narrower than a grid cell); the strictly smaller others are bubbles and are
 //! deleted when open (their sides are holes of the surface, closed by step
 //! 8) or spheres (a closed piece with a handle is kept, and the mesh
 //! refused, rather than a handle silently lost). A graph shattered into
@@ -55,12 +57,19 @@ pub fn drop_bubbles(graph: &mut NodeGraph<2>, topo: &Topology<3>, tri_of_node: &
     for c in 0..k {
         let (biggest, all) = largest.get(&input[c]).copied().unwrap_or((0, 0));
         let closed_input = open.get(input[c] as usize) == Some(&false);
-        if closed_input
+        // on an input with boundary, only a lone node (no side glued: a
+        // sliver of the surface narrower than a grid cell) beside a surface
+        // of more than half of the nodes
+        let lone = match members[c][..] {
+            [x] => (0..4).all(|d| graph.opposite(graph.side(x, d)).is_none()),
+            _ => false,
+        } && 2 * biggest > all
+            && biggest > 1;
+        let bubble = closed_input
             && 2 * biggest >= all
             && members[c].len() < biggest
-            && (open_piece[c] || euler[c] == 2)
-            && graph.delete_components(&members[c]).is_ok()
-        {
+            && (open_piece[c] || euler[c] == 2);
+        if (bubble || lone && !closed_input) && graph.delete_components(&members[c]).is_ok() {
             deleted += 1;
         }
     }
@@ -272,6 +281,21 @@ mod tests {
         let topo = Topology::build(&m).unwrap_or_else(|e| panic!("{e}"));
         let mut g = pieces();
         assert_eq!(drop_bubbles(&mut g, &topo, &[0; 13]), 0);
+        assert_eq!(g.n_alive(), 13);
+        // a lone node (no side glued) beside them is a sliver: deleted
+        let mut g = pieces();
+        let mut lone = NodeGraph::<2>::new(vec![false; 14]);
+        for s in (0..g.n_sides() as u32).map(dualex_graph::Side) {
+            if let (Some(t), Some(r)) = (g.opposite(s), g.rotation(s)) {
+                if s.0 < t.0 {
+                    lone.link(s, t, r).unwrap_or_else(|e| panic!("{e}"));
+                }
+            }
+        }
+        g = lone;
+        assert_eq!(drop_bubbles(&mut g, &topo, &[0; 14]), 1);
+        g.check_structure().unwrap_or_else(|e| panic!("{e}"));
+        assert!(!g.is_alive(Node(13)));
         assert_eq!(g.n_alive(), 13);
     }
 }

@@ -16,7 +16,11 @@
 //! the vertex pair, both new pairs oriented and with a matching rotation.
 //! A loop that does not separate (around a handle) is left as it is:
 //! pinching it would change the topology (the re-pairing is undone when
-//! the graph has no more components after it). Invariant: only the four
+//! the graph has no more components after it) — unless the input is
+//! closed and connected and the glued surface, its holes closed, has more
+//! handles than the input ([`excess_handles`]): a loop of two edges round
+//! a handle is then the handle a fold made, and as many such digons as
+//! there are surplus handles are pinched, each cutting one. Invariant: only the four
 //! sides change; each end of a pinched digon becomes one vertex per piece.
 
 use crate::side_corners;
@@ -62,11 +66,17 @@ fn ascending(graph: &NodeGraph<2>, glued: &Glued<2>, s: Side) -> Option<bool> {
 }
 
 /// Re-pairs the sides of every digon (see the module docs); returns how
-/// many digons were pinched. Up to `handles` digons that do not separate
-/// are pinched too (each removes a handle: the caller allows it only for
-/// the handles the graph has beyond its input's, see
-/// [`excess_handles`]).
-pub fn pinch_digons(graph: &mut NodeGraph<2>, glued: &Glued<2>, mut handles: usize) -> usize {
+/// many digons were pinched. Up to `handles()` digons that do not
+/// separate are pinched too (each removes a handle: the caller allows it
+/// only for the handles the graph has beyond its input's, see
+/// [`excess_handles`]; asked once, at the first such digon).
+pub fn pinch_digons(
+    graph: &mut NodeGraph<2>,
+    glued: &Glued<2>,
+    handles: impl FnOnce() -> usize,
+) -> usize {
+    let mut handles = Some(handles);
+    let mut left = 0;
     // one entry per glued pair, keyed by its two vertices, sorted
     let mut by_edge: Vec<(u64, Side)> = Vec::new();
     for (node, _) in glued.cells() {
@@ -111,9 +121,9 @@ pub fn pinch_digons(graph: &mut NodeGraph<2>, glued: &Glued<2>, mut handles: usi
         repair(graph, [p1, p2], new, [r1, r2]);
         if graph.component_labels().1 > before {
             pinched += 1;
-        } else if handles > 0 {
+        } else if handle_left(&mut handles, &mut left) {
             // a handle the input does not have: cut through
-            handles -= 1;
+            left -= 1;
             pinched += 1;
         } else {
             // the loop does not separate (a handle): pinching would change
@@ -141,6 +151,15 @@ pub fn excess_handles(glued: &Glued<2>, input_euler: i64) -> usize {
     } else {
         0
     }
+}
+
+/// Whether a surplus handle may still be cut: the first call asks
+/// `handles` (then `None`), later ones read what is left.
+fn handle_left(handles: &mut Option<impl FnOnce() -> usize>, left: &mut usize) -> bool {
+    if let Some(h) = handles.take() {
+        *left = h();
+    }
+    *left > 0
 }
 
 /// Unglues `old` (one side of each pair) and glues the `new` pairs with
@@ -223,7 +242,7 @@ mod tests {
         let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
         let rep = dualex_check::check_quad_mesh(glued.n_vertices, &cells);
         assert!(!rep.is_valid(), "the digon is an edge of four faces");
-        assert_eq!(pinch_digons(&mut g, &glued, 0), 1);
+        assert_eq!(pinch_digons(&mut g, &glued, || 0), 1);
         g.check().expect("valid after");
         assert_eq!(g.opposite(a), Some(b));
         assert_eq!(g.opposite(c), Some(e));
@@ -236,11 +255,39 @@ mod tests {
     }
 
     #[test]
+    fn a_torus_has_one_handle_more_than_a_sphere() {
+        // a 3×3 grid whose opposite boundary sides are glued: a torus
+        let spec = GridSpec::regular([3, 3]);
+        let mut g = spec.build();
+        for j in 0..3 {
+            for axis in 0..2 {
+                // node_at(u, [_, v])
+                let at = |i: usize| {
+                    let (u, v) = if axis == 0 { (i, j) } else { (j, i) };
+                    spec.node_at(u, [0, v])
+                };
+                let s = g.side(at(2), 2 * axis);
+                let t = g.side(at(0), 2 * axis + 1);
+                g.link(s, t, Rot2::IDENTITY)
+                    .unwrap_or_else(|e| panic!("{e}"));
+            }
+        }
+        g.check().expect("a valid graph");
+        let glued = g.glue();
+        assert_eq!((glued.unmatched_sides, glued.boundary_loops), (0, 0));
+        assert_eq!(excess_handles(&glued, 2), 1);
+        assert_eq!(excess_handles(&glued, 0), 0);
+        // the open grid, its hole closed, is a sphere
+        let open = spec.build().glue();
+        assert_eq!(excess_handles(&open, 2), 0);
+    }
+
+    #[test]
     fn a_regular_grid_has_no_digon() {
         let mut g = GridSpec::regular([3, 3]).build();
         let before = g.clone();
         let glued = g.glue();
-        assert_eq!(pinch_digons(&mut g, &glued, 0), 0);
+        assert_eq!(pinch_digons(&mut g, &glued, || 0), 0);
         assert_eq!(g, before);
     }
 }

@@ -217,15 +217,16 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     // piece deleted as a bubble
     // (on a closed connected input, also digons around handles the input
     // does not have)
-    let handles = if topo.boundary_facets == 0 && glued.components == 1 {
-        let shape = dualex_check::topology::surface_shape(map.positions.len(), &map.simplices);
-        if shape.components == 1 {
-            digons::excess_handles(&glued, shape.euler)
-        } else {
-            0
+    let handles = || {
+        let closed = topo.boundary_facets == 0 && glued.components == 1;
+        let input_euler = || {
+            let shape = dualex_check::topology::surface_shape(map.positions.len(), &map.simplices);
+            (shape.components == 1).then_some(shape.euler)
+        };
+        match closed.then(input_euler).flatten() {
+            Some(e) => digons::excess_handles(&glued, e),
+            None => 0,
         }
-    } else {
-        0
     };
     st.digons_pinched = digons::pinch_digons(&mut graph, &glued, handles);
     if st.digons_pinched > 0 {
@@ -287,8 +288,9 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
             .collect();
         mesh = rep.mesh;
         // 8c: a pinch point split can leave a pocket of a fold beside the
-        // surface: deleted as the bubbles of step 6d are
-        if rep.pinched > 0 {
+        // surface, and a node cut off the rest closed by its hole fill is a
+        // pillow: deleted as the bubbles of step 6d are
+        {
             if let Some((kept, deleted)) = bubbles::drop_mesh_bubbles(&mesh, &topo, &source) {
                 st.bubbles_removed += deleted;
                 let cells = kept.iter().map(|&c| mesh.cells[c as usize]).collect();
