@@ -66,17 +66,16 @@ fn ascending(graph: &NodeGraph<2>, glued: &Glued<2>, s: Side) -> Option<bool> {
 }
 
 /// Re-pairs the sides of every digon (see the module docs); returns how
-/// many digons were pinched. Up to `handles()` digons that do not
+/// many digons were pinched. Up to `handles(graph)` digons that do not
 /// separate are pinched too (each removes a handle: the caller allows it
 /// only for the handles the graph has beyond its input's, see
-/// [`excess_handles`]; asked once, at the first such digon).
+/// [`excess_handles`]; asked once, before any change, when the graph has
+/// a digon at all).
 pub fn pinch_digons(
     graph: &mut NodeGraph<2>,
     glued: &Glued<2>,
-    handles: impl FnOnce() -> usize,
+    handles: impl FnOnce(&NodeGraph<2>) -> usize,
 ) -> usize {
-    let mut handles = Some(handles);
-    let mut left = 0;
     // one entry per glued pair, keyed by its two vertices, sorted
     let mut by_edge: Vec<(u64, Side)> = Vec::new();
     for (node, _) in glued.cells() {
@@ -92,6 +91,8 @@ pub fn pinch_digons(
         }
     }
     by_edge.sort_unstable();
+    let any = by_edge.windows(2).any(|w| w[0].0 == w[1].0);
+    let mut left = if any { handles(graph) } else { 0 };
     let mut pinched = 0;
     for run in by_edge.chunk_by(|x, y| x.0 == y.0) {
         let [(_, p1), (_, p2)] = run[..] else {
@@ -121,7 +122,7 @@ pub fn pinch_digons(
         repair(graph, [p1, p2], new, [r1, r2]);
         if graph.component_labels().1 > before {
             pinched += 1;
-        } else if handle_left(&mut handles, &mut left) {
+        } else if left > 0 {
             // a handle the input does not have: cut through
             left -= 1;
             pinched += 1;
@@ -135,31 +136,38 @@ pub fn pinch_digons(
 }
 
 /// The handles the glued surface has beyond a closed connected input of
-/// Euler characteristic `input_euler`, once its holes are closed (each
-/// boundary loop of the graph is one face of the repair): `(χ_input −
-/// χ_graph) / 2` when positive. `2χ_graph = 2V − 2F − U + 2B` (V vertices,
-/// F cells, U unmatched sides, B boundary loops; every cell has 4 sides).
-pub fn excess_handles(glued: &Glued<2>, input_euler: i64) -> usize {
+/// Euler characteristic `input_euler`, once step 8 closed its holes:
+/// `(χ_input − χ) / 2` when positive, where χ = V − E + F counts every
+/// glued pair and every hole side as an edge, and every cycle of hole
+/// sides as one more face (its fill); an unmatched side whose two corners
+/// are one vertex (the collapsed side of a triangle) is no edge at all.
+pub fn excess_handles(graph: &NodeGraph<2>, glued: &Glued<2>, input_euler: i64) -> usize {
+    let mut pairs = 0i64;
+    let mut holes = Vec::new();
+    for (node, cell) in glued.cells() {
+        for d in 0..4 {
+            let s = graph.side(node, d);
+            let [a, b] = side_corners(glued, node, d);
+            match graph.opposite(s) {
+                Some(t) => pairs += i64::from(s < t || !graph.is_alive(graph.node_of(t))),
+                None if a != b => {
+                    let forward = (0..4).any(|k| cell[k] == a && cell[(k + 1) % 4] == b);
+                    holes.push(if forward { (a, b) } else { (b, a) });
+                }
+                None => {}
+            }
+        }
+    }
+    let (fills, open) = crate::repair::hole_polygons(&holes);
     let v = glued.n_vertices as i64;
-    let f = glued.nodes.len() as i64;
-    let u = glued.unmatched_sides as i64;
-    let b = glued.boundary_loops as i64;
-    let twice = 2 * v - 2 * f - u + 2 * b;
-    let excess = 2 * input_euler - twice;
-    if excess > 0 && excess % 4 == 0 {
-        (excess / 4) as usize
+    let f = glued.nodes.len() as i64 + (fills.len() + open) as i64;
+    let euler = v - pairs - holes.len() as i64 + f;
+    let excess = input_euler - euler;
+    if excess > 0 && excess % 2 == 0 {
+        (excess / 2) as usize
     } else {
         0
     }
-}
-
-/// Whether a surplus handle may still be cut: the first call asks
-/// `handles` (then `None`), later ones read what is left.
-fn handle_left(handles: &mut Option<impl FnOnce() -> usize>, left: &mut usize) -> bool {
-    if let Some(h) = handles.take() {
-        *left = h();
-    }
-    *left > 0
 }
 
 /// Unglues `old` (one side of each pair) and glues the `new` pairs with
@@ -242,7 +250,7 @@ mod tests {
         let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
         let rep = dualex_check::check_quad_mesh(glued.n_vertices, &cells);
         assert!(!rep.is_valid(), "the digon is an edge of four faces");
-        assert_eq!(pinch_digons(&mut g, &glued, || 0), 1);
+        assert_eq!(pinch_digons(&mut g, &glued, |_| 0), 1);
         g.check().expect("valid after");
         assert_eq!(g.opposite(a), Some(b));
         assert_eq!(g.opposite(c), Some(e));
@@ -275,11 +283,11 @@ mod tests {
         g.check().expect("a valid graph");
         let glued = g.glue();
         assert_eq!((glued.unmatched_sides, glued.boundary_loops), (0, 0));
-        assert_eq!(excess_handles(&glued, 2), 1);
-        assert_eq!(excess_handles(&glued, 0), 0);
+        assert_eq!(excess_handles(&g, &glued, 2), 1);
+        assert_eq!(excess_handles(&g, &glued, 0), 0);
         // the open grid, its hole closed, is a sphere
-        let open = spec.build().glue();
-        assert_eq!(excess_handles(&open, 2), 0);
+        let open = spec.build();
+        assert_eq!(excess_handles(&open, &open.glue(), 2), 0);
     }
 
     #[test]
@@ -287,7 +295,7 @@ mod tests {
         let mut g = GridSpec::regular([3, 3]).build();
         let before = g.clone();
         let glued = g.glue();
-        assert_eq!(pinch_digons(&mut g, &glued, || 0), 0);
+        assert_eq!(pinch_digons(&mut g, &glued, |_| 0), 0);
         assert_eq!(g, before);
     }
 }

@@ -217,14 +217,14 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     // piece deleted as a bubble
     // (on a closed connected input, also digons around handles the input
     // does not have)
-    let handles = || {
+    let handles = |graph: &NodeGraph<2>| {
         let closed = topo.boundary_facets == 0 && glued.components == 1;
         let input_euler = || {
             let shape = dualex_check::topology::surface_shape(map.positions.len(), &map.simplices);
             (shape.components == 1).then_some(shape.euler)
         };
         match closed.then(input_euler).flatten() {
-            Some(e) => digons::excess_handles(&glued, e),
+            Some(e) => digons::excess_handles(graph, &glued, e),
             None => 0,
         }
     };
