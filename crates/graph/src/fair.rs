@@ -274,24 +274,7 @@ impl NodeGraph<2> {
             let mut given_up: Vec<(Node, usize)> = Vec::new();
             let bound = 2 * count + 1;
             for _ in 0..bound {
-                let v = Vertices::new(self);
-                let skip: Vec<u32> = given_up
-                    .iter()
-                    .map(|&(n, c)| v.glued.vertex(n, c))
-                    .collect();
-                let near: Vec<(usize, usize)> = (0..v.corners.len())
-                    .filter(|&p| v.valence(p) == Some(target) && !skip.contains(&(p as u32)))
-                    .filter_map(|p| v.distance(p, max_path).map(|d| (d, p)))
-                    .collect();
-                let Some(dist) = near.iter().map(|&(d, _)| d).min() else {
-                    break;
-                };
-                let nearest: Vec<(Node, usize)> = near
-                    .iter()
-                    .filter(|&&(d, _)| d == dist)
-                    .map(|&(_, p)| v.first[p])
-                    .collect();
-                let Some(start) = self.start_corner(&nearest) else {
+                let Some((start, dist)) = self.next_candidate(target, &given_up, max_path) else {
                     break;
                 };
                 if self.move_along(start, dist, max_path, target, &mut st) {
@@ -313,6 +296,34 @@ impl NodeGraph<2> {
             st.valence2_after = st.valence2_before;
         }
         st
+    }
+
+    /// The corner to move from and its distance: of the interior vertices
+    /// of valence `target` (but those of `given_up`'s corners) with a
+    /// vertex of valence ≥ 7 at most `max_path` edges away, the nearest;
+    /// among equally near ones, [`Self::start_corner`].
+    fn next_candidate(
+        &self,
+        target: usize,
+        given_up: &[(Node, usize)],
+        max_path: usize,
+    ) -> Option<((Node, usize), usize)> {
+        let v = Vertices::new(self);
+        let skip: Vec<u32> = given_up
+            .iter()
+            .map(|&(n, c)| v.glued.vertex(n, c))
+            .collect();
+        let near: Vec<(usize, usize)> = (0..v.corners.len())
+            .filter(|&p| v.valence(p) == Some(target) && !skip.contains(&(p as u32)))
+            .filter_map(|p| v.distance(p, max_path).map(|d| (d, p)))
+            .collect();
+        let dist = near.iter().map(|&(d, _)| d).min()?;
+        let nearest: Vec<(Node, usize)> = near
+            .iter()
+            .filter(|&&(d, _)| d == dist)
+            .map(|&(_, p)| v.first[p])
+            .collect();
+        Some((self.start_corner(&nearest)?, dist))
     }
 
     /// Among the vertices of the corners `nearest`, all equally near their
