@@ -20,9 +20,12 @@ fn the_dragon_is_welded_by_default() {
     let out = dualex::quad(&map, &dualex::QuadOptions::default()).unwrap();
     let s = &out.stats;
     assert!(s.welded_vertices > 0);
+    // 5077 quads whatever the order of the triangles (fairing breaks its
+    // ties without node numbers; 5084 before, other orders gave 5072 …
+    // 5084), and L × 5077 hexes from the map extruded (tests/extrude.rs)
     assert_eq!(
         (s.quads, s.components, s.euler, s.boundary_loops),
-        (5084, 1, 2, 0)
+        (5077, 1, 2, 0)
     );
     assert!(s.topology.matches());
     // split edges (knight, dragon) keep the input's triangle numbers

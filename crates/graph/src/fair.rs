@@ -20,9 +20,24 @@
 //! lift merges it with the target (valence 1 + 4 → 5, i.e. ¾ − 1 = −¼).
 //! Every lift is kept only if it brings the pair one edge closer (else it
 //! is undone by the inverse OP2), and a path that stalls is undone whole.
+//!
+//! Tried at v, for each crossing i towards the next vertex of the path:
+//! the lifts (i, i + 4) and (i − 4, i), the 4 corners split off on either
+//! side of i, each with the chart carried across them. (A fan read the
+//! other way round — a chart turned by a quarter — names them (i′ − 4, i′)
+//! and (i′, i′ + 4): the set does not depend on the turning sense.)
+//!
+//! Ties are broken without node or vertex numbers: the candidate among
+//! equally near ones, the path among equally short ones and the order of
+//! the trials follow [`crate::canon`], the graph seen from the
+//! candidate's corner. So a graph numbered otherwise, or with other
+//! charts, is faired into the same graph up to that renumbering (or a
+//! symmetry): the layer of an extruded map's columns ([`crate::columns`])
+//! as the map's own graph, whose nodes follow the tets, not the triangles.
 
+use crate::canon;
 use crate::fair_local::LocalVertices;
-use crate::fan::corner_sides;
+use crate::fan::{corner_sides, FanStep};
 use crate::glue::Glued;
 use crate::graph::NodeGraph;
 use crate::ids::{axis, Node, Side};
@@ -178,28 +193,24 @@ impl Vertices {
             .count()
     }
 
-    /// Shortest path p → … → s through interior vertices to the nearest
-    /// interior vertex of valence ≥ 7, at most `max` edges.
-    fn path(&self, p: usize, max: usize) -> Option<Vec<usize>> {
-        let mut parent = vec![usize::MAX; self.corners.len()];
+    /// Edges from p to the nearest interior vertex of valence ≥ 7 through
+    /// interior vertices, if at most `max` (breadth-first; the length does
+    /// not depend on the visiting order).
+    fn distance(&self, p: usize, max: usize) -> Option<usize> {
+        let mut seen = vec![false; self.corners.len()];
         let mut queue = VecDeque::from([(p, 0usize)]);
-        parent[p] = p;
+        seen[p] = true;
         while let Some((v, d)) = queue.pop_front() {
             if v != p && self.valence(v).is_some_and(|k| k >= 7) {
-                let mut path = vec![v];
-                while let Some(&last) = path.last().filter(|&&x| x != p) {
-                    path.push(parent[last]);
-                }
-                path.reverse();
-                return Some(path);
+                return Some(d);
             }
             if d == max {
                 continue;
             }
             for &w in &self.adj[self.adj_at[v] as usize..self.adj_at[v + 1] as usize] {
                 let w = w as usize;
-                if parent[w] == usize::MAX && self.interior[w] {
-                    parent[w] = v;
+                if !seen[w] && self.interior[w] {
+                    seen[w] = true;
                     queue.push_back((w, d + 1));
                 }
             }
@@ -263,21 +274,14 @@ impl NodeGraph<2> {
             let mut given_up: Vec<(Node, usize)> = Vec::new();
             let bound = 2 * count + 1;
             for _ in 0..bound {
-                let v = Vertices::new(self);
-                let skip: Vec<u32> = given_up
-                    .iter()
-                    .map(|&(n, c)| v.glued.vertex(n, c))
-                    .collect();
-                let best = (0..v.corners.len())
-                    .filter(|&p| v.valence(p) == Some(target) && !skip.contains(&(p as u32)))
-                    .filter_map(|p| v.path(p, max_path).map(|path| (path.len(), p)))
-                    .min();
-                let Some((len, p)) = best else { break };
-                if self.move_along(v.first[p], len - 1, max_path, target, &mut st) {
+                let Some((start, dist)) = self.next_candidate(target, &given_up, max_path) else {
+                    break;
+                };
+                if self.move_along(start, dist, max_path, target, &mut st) {
                     st.merged += 1;
                     changed = true;
                 } else {
-                    given_up.push(v.first[p]);
+                    given_up.push(start);
                     st.abandoned += 1;
                 }
             }
@@ -292,6 +296,49 @@ impl NodeGraph<2> {
             st.valence2_after = st.valence2_before;
         }
         st
+    }
+
+    /// The corner to move from and its distance: of the interior vertices
+    /// of valence `target` (but those of `given_up`'s corners) with a
+    /// vertex of valence ≥ 7 at most `max_path` edges away, the nearest;
+    /// among equally near ones, [`Self::start_corner`].
+    fn next_candidate(
+        &self,
+        target: usize,
+        given_up: &[(Node, usize)],
+        max_path: usize,
+    ) -> Option<((Node, usize), usize)> {
+        let v = Vertices::new(self);
+        let skip: Vec<u32> = given_up
+            .iter()
+            .map(|&(n, c)| v.glued.vertex(n, c))
+            .collect();
+        let near: Vec<(usize, usize)> = (0..v.corners.len())
+            .filter(|&p| v.valence(p) == Some(target) && !skip.contains(&(p as u32)))
+            .filter_map(|p| v.distance(p, max_path).map(|d| (d, p)))
+            .collect();
+        let dist = near.iter().map(|&(d, _)| d).min()?;
+        let nearest: Vec<(Node, usize)> = near
+            .iter()
+            .filter(|&&(d, _)| d == dist)
+            .map(|&(_, p)| v.first[p])
+            .collect();
+        Some((self.start_corner(&nearest)?, dist))
+    }
+
+    /// Among the vertices of the corners `nearest`, all equally near their
+    /// valence ≥ 7 vertex, the corner to move from: the least by
+    /// [`canon::compare`] of all their alive corners, so the choice does
+    /// not depend on the numbering of nodes or vertices (the searches from
+    /// all these corners are compared until they differ).
+    fn start_corner(&self, nearest: &[(Node, usize)]) -> Option<(Node, usize)> {
+        let mut corners = Vec::new();
+        for &pc in nearest {
+            let mut v = LocalVertices::new(self, pc);
+            let p = v.vertex_of(pc.0, pc.1)?;
+            corners.extend(v.corners(p));
+        }
+        canon::least(self, &corners)
     }
 
     /// Moves the singularity at distance `dist` from the vertex of corner
@@ -335,7 +382,7 @@ impl NodeGraph<2> {
     ) -> Option<LiftUndo> {
         // local queries: the same answers as a whole-graph rebuild (see
         // `fair_local`), at the cost of the region they touch
-        let mut v = LocalVertices::new(self);
+        let mut v = LocalVertices::new(self, pc);
         let p = v.vertex_of(pc.0, pc.1)?;
         let path = v.path(p, max_path).filter(|path| path.len() == dist + 1)?;
         let (s, next) = (path[dist], path[dist - 1]);
@@ -355,9 +402,8 @@ impl NodeGraph<2> {
             .collect();
         // per trial, the nodes whose sides the lift reconnects and their
         // loop sides before it (a lift must not add any)
-        let trials: Vec<(usize, usize, [Node; 4], usize)> = (0..n)
-            .filter(|&i| towards[i])
-            .flat_map(|i| [(i, (i + 4) % n), (i, (i + n - 4) % n)])
+        let trials: Vec<(usize, usize, [Node; 4], usize)> = trial_order(&mut v, &fan, &towards)
+            .into_iter()
             .map(|(i, j)| {
                 let touched = [i, (i + 1) % n, j, (j + 1) % n].map(|k| fan[k].node);
                 (i, j, touched, loop_sides(&mut v, &touched))
@@ -368,7 +414,7 @@ impl NodeGraph<2> {
                 let Ok(u) = self.lift(sx, scode, i, j) else {
                     continue;
                 };
-                let mut after = LocalVertices::new(self);
+                let mut after = LocalVertices::new(self, pc);
                 let ok = loop_sides(&mut after, &touched) <= loops_before
                     && match after.vertex_of(pc.0, pc.1) {
                         None => false,
@@ -388,6 +434,43 @@ impl NodeGraph<2> {
     }
 }
 
+/// The saddle lifts to try at a vertex with fan `fan`, as pairs `(i, j)`
+/// of [`NodeGraph::lift`]: for each crossing `i` towards the next vertex
+/// (`towards[i]`), the lifts carrying the chart across the 4 steps from
+/// `i` to `i + 4` and from `i − 4` to `i` (360° apart, one each way
+/// around). They are ordered by what they reconnect — the corner ranks of
+/// `v` (seen from the fairing's start) on both crossings, then of the
+/// corners walked — so neither the fan's first corner nor the turning
+/// sense of the charts (which reverses the fan) changes the order.
+fn trial_order(v: &mut LocalVertices, fan: &[FanStep], towards: &[bool]) -> Vec<(usize, usize)> {
+    let n = fan.len();
+    let ranks: Vec<u64> = fan
+        .iter()
+        .map(|f| v.corner_rank(f.node, f.code()))
+        .collect();
+    let crossing = |k: usize| {
+        let (a, b) = (ranks[k], ranks[(k + 1) % n]);
+        (a.min(b), a.max(b))
+    };
+    let mut keyed: Vec<_> = (0..n)
+        .filter(|&i| towards[i])
+        .flat_map(|i| [(i, (i + 4) % n), ((i + n - 4) % n, i)])
+        .map(|(i, j)| {
+            let (a, b) = (crossing(i), crossing(j));
+            let mut walked: Vec<u64> = (0..=(j + n - i) % n + 1)
+                .map(|k| ranks[(i + k) % n])
+                .collect();
+            walked.sort_unstable();
+            ((a.min(b), a.max(b), walked), i, j)
+        })
+        .collect();
+    keyed.sort_unstable();
+    // a lift reached from both its crossings (both towards the next
+    // vertex) is tried once
+    keyed.dedup_by(|x, y| x.0 == y.0);
+    keyed.into_iter().map(|(_, i, j)| (i, j)).collect()
+}
+
 /// Sides of `nodes` whose two corners are one vertex (loop edges). A lift
 /// must not add any: on a fan that visits a node twice (the traced graphs
 /// of maps with holes at singular vertices), reconnecting its crossings can
@@ -405,51 +488,4 @@ fn loop_sides(v: &mut LocalVertices, nodes: &[Node]) -> usize {
 }
 
 #[cfg(test)]
-mod local_tests {
-    use super::*;
-    use crate::testgrid::singular_disk;
-
-    /// Every alive corner: the local vertex has the glued vertex's corners,
-    /// valence, first corner and fairing path.
-    fn local_matches_global(g: &NodeGraph<2>) {
-        let global = Vertices::new(g);
-        let mut local = LocalVertices::new(g);
-        for n in g.alive_nodes() {
-            for c in 0..4 {
-                let gv = global.glued.vertex(n, c) as usize;
-                let Some(lv) = local.vertex_of(n, c) else {
-                    panic!("alive corner without a local vertex")
-                };
-                let first = local.first(lv).unwrap_or_else(|| panic!("no first corner"));
-                assert_eq!(first, global.first[gv], "first corner of {n:?}/{c}");
-                assert_eq!(local.corner_count(lv), global.corners[gv]);
-                assert_eq!(local.valence(lv), global.valence(gv));
-                let to_global = |l: &LocalVertices, v: usize| {
-                    let (fx, fc) = l.first(v).unwrap_or_else(|| panic!("no first corner"));
-                    global.glued.vertex(fx, fc) as usize
-                };
-                for max in [1, 3, 10] {
-                    let lp = local.path(lv, max);
-                    let lp =
-                        lp.map(|p| p.iter().map(|&v| to_global(&local, v)).collect::<Vec<_>>());
-                    assert_eq!(lp, global.path(gv, max), "path from {n:?}/{c}, max {max}");
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn local_vertices_answer_as_the_glued_table() {
-        for sectors in 3..=8 {
-            let mut g = singular_disk(sectors, 3);
-            local_matches_global(&g);
-            // split the centre by a saddle lift (valence 1 and n − 1 + …)
-            let centre = |s: usize| Node((s * 9) as u32);
-            let a = g.side(centre(0), 1);
-            let c = g.side(centre(0), 3);
-            if g.op2(a, c, Rot2::quarter_turns(3)).is_ok() {
-                local_matches_global(&g);
-            }
-        }
-    }
-}
+mod local_tests;

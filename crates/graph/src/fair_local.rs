@@ -2,26 +2,29 @@
 //! whole graph: what index fairing asks after each trial saddle lift.
 //!
 //! Input: a [`NodeGraph<2>`] (its opposite relation an involution, as
-//! [`NodeGraph::check`] requires). Output, for the vertex of any corner:
-//! the same answers as [`crate::glue::Glued`] and the fairing's vertex
-//! table built from it — the set of corners glued together (the same
-//! union–find links: a pair of sides is processed from its smaller side,
-//! when that side's node is alive, and only if all its corners match),
-//! the alive corners, the interior flag, the neighbours along cell edges,
-//! and a vertex order equal to the order of glued vertex ids (ids are
-//! given by first alive corner in node order, so they compare as the
-//! smallest alive corner `node·4 + code`). A vertex is explored on first
-//! use; the cost is proportional to the region the queries touch.
+//! [`NodeGraph::check`] requires) and a start corner. Output, for the
+//! vertex of any corner: the same answers as [`crate::glue::Glued`] and
+//! the fairing's vertex table built from it — the set of corners glued
+//! together (the same union–find links: a pair of sides is processed from
+//! its smaller side, when that side's node is alive, and only if all its
+//! corners match), the alive corners, the interior flag, the neighbours
+//! along cell edges — and a vertex order that does not depend on the
+//! numbering of nodes: the least [`Canon`] corner rank of its alive
+//! corners, seen from the start corner. Shortest paths are searched in
+//! that order, so the path taken among equally short ones is the same
+//! however the graph is numbered. A vertex is explored on first use; the
+//! cost is proportional to the region the queries touch.
 
+use crate::canon::Canon;
 use crate::fan::corner_sides;
 use crate::graph::NodeGraph;
 use crate::ids::{Node, Side};
 use std::collections::{HashMap, VecDeque};
 
-/// One vertex: its smallest alive corner (its order), its alive corners
-/// (sorted) and whether it is interior.
+/// One vertex: the least corner rank of its alive corners (its order),
+/// its alive corners (by corner rank) and whether it is interior.
 struct Vertex {
-    rep: usize,
+    rep: u64,
     alive: Vec<usize>,
     interior: bool,
 }
@@ -29,17 +32,33 @@ struct Vertex {
 /// Vertices explored so far (valid while the graph does not change).
 pub(crate) struct LocalVertices<'a> {
     g: &'a NodeGraph<2>,
+    order: Canon<'a>,
     of_corner: HashMap<usize, usize>,
     vertices: Vec<Vertex>,
 }
 
 impl<'a> LocalVertices<'a> {
-    pub(crate) fn new(g: &'a NodeGraph<2>) -> Self {
+    /// Vertices ordered as seen from corner `start` (module docs).
+    pub(crate) fn new(g: &'a NodeGraph<2>, start: (Node, usize)) -> Self {
         LocalVertices {
             g,
+            order: Canon::new(g, start),
             of_corner: HashMap::new(),
             vertices: Vec::new(),
         }
+    }
+
+    /// The corner rank of `corner` (`node·4 + code`) seen from the start;
+    /// corners outside the start's component (which no query starting
+    /// there reaches: glued corners and cell edges stay in it) last.
+    fn rank(&mut self, corner: usize) -> u64 {
+        let node = Node((corner / 4) as u32);
+        self.order.corner_rank(node, corner % 4).unwrap_or(u64::MAX)
+    }
+
+    /// [`Self::rank`] of corner `code` of `node`.
+    pub(crate) fn corner_rank(&mut self, node: Node, code: usize) -> u64 {
+        self.rank(node.idx() * 4 + code)
     }
 
     /// The corners glued to `corner` across side `s` of its node.
@@ -89,12 +108,15 @@ impl<'a> LocalVertices<'a> {
                 }
             }
         }
-        let mut alive: Vec<usize> = all
+        let mut alive: Vec<(u64, usize)> = all
             .iter()
             .copied()
             .filter(|&k| g.is_alive(Node((k / 4) as u32)))
+            .map(|k| (self.rank(k), k))
             .collect();
         alive.sort_unstable();
+        let rep = alive.first().map_or(u64::MAX, |&(r, _)| r);
+        let alive: Vec<usize> = alive.into_iter().map(|(_, k)| k).collect();
         let interior = alive.iter().all(|&k| {
             let (du, dv) = corner_sides(k % 4);
             let node = Node((k / 4) as u32);
@@ -107,7 +129,7 @@ impl<'a> LocalVertices<'a> {
             self.of_corner.insert(k, id);
         }
         self.vertices.push(Vertex {
-            rep: alive.first().copied().unwrap_or(usize::MAX),
+            rep,
             alive,
             interior,
         });
@@ -132,13 +154,22 @@ impl<'a> LocalVertices<'a> {
         self.vertices[v].alive.len()
     }
 
-    /// The first alive corner (in node order) as `(node, code)`.
+    /// The first alive corner (least corner rank) as `(node, code)`.
     pub(crate) fn first(&self, v: usize) -> Option<(Node, usize)> {
         let k = *self.vertices[v].alive.first()?;
         Some((Node((k / 4) as u32), k % 4))
     }
 
-    /// Neighbours along cell edges, in glued-id order, without repeats.
+    /// The alive corners, first to last, as `(node, code)`.
+    pub(crate) fn corners(&self, v: usize) -> Vec<(Node, usize)> {
+        let alive = &self.vertices[v].alive;
+        alive
+            .iter()
+            .map(|&k| (Node((k / 4) as u32), k % 4))
+            .collect()
+    }
+
+    /// Neighbours along cell edges, by vertex order, without repeats.
     fn neighbours(&mut self, v: usize) -> Vec<usize> {
         let corners = self.vertices[v].alive.clone();
         let mut out: Vec<usize> = Vec::with_capacity(2 * corners.len());
@@ -153,8 +184,8 @@ impl<'a> LocalVertices<'a> {
     }
 
     /// Shortest path p → … → s through interior vertices to the nearest
-    /// interior vertex of valence ≥ 7, at most `max` edges (the fairing's
-    /// breadth-first search, same visiting order).
+    /// interior vertex of valence ≥ 7, at most `max` edges: breadth-first,
+    /// neighbours in vertex order (module docs).
     pub(crate) fn path(&mut self, p: usize, max: usize) -> Option<Vec<usize>> {
         let mut parent: HashMap<usize, usize> = HashMap::from([(p, p)]);
         let mut queue = VecDeque::from([(p, 0usize)]);

@@ -13,7 +13,9 @@
 //! - [`glue`]: union–find over corners into cells ([`Glued`]), boundary
 //!   and components counted on the graph;
 //! - [`fan`]: vertex fans (2D), read from the graph;
-//! - [`fair`]: index fairing by saddle lifts (2D, [`FairingStats`]);
+//! - [`fair`]: index fairing by saddle lifts (2D, [`FairingStats`]), its
+//!   ties broken by `canon` (an order of the graph seen from one corner,
+//!   free of node numbers);
 //! - [`columns`]: the same on every layer of a 3D graph made of columns
 //!   (an extruded map's), [`ColumnFairing`];
 //! - [`collapse`], [`pillow`], [`bubble`]: folded corners, detached
@@ -23,6 +25,7 @@
 #![warn(missing_docs)]
 
 pub mod bubble;
+mod canon;
 pub mod check;
 pub mod collapse;
 pub mod columns;

@@ -176,6 +176,37 @@ pub fn rotate_charts<const D: usize>(g: &NodeGraph<D>, rots: &[Rot<D>]) -> NodeG
     out
 }
 
+/// Renumbers the nodes: node `n` becomes node `perm[n]` (`perm` a
+/// permutation of the node ids), with its flags, sides and rotations.
+pub fn renumber<const D: usize>(g: &NodeGraph<D>, perm: &[u32]) -> NodeGraph<D> {
+    let n = g.n_nodes();
+    let mut seen = vec![false; n];
+    let is_perm = perm.len() == n
+        && perm
+            .iter()
+            .all(|&p| (p as usize) < n && !std::mem::replace(&mut seen[p as usize], true));
+    assert!(is_perm, "bug: not a permutation of the {n} nodes");
+    let mut out = NodeGraph::new(vec![false; n]);
+    for (x, &p) in perm.iter().enumerate() {
+        out.reverted[p as usize] = g.reverted[x];
+        out.alive[p as usize] = g.alive[x];
+    }
+    let to = |s: Side| Node(perm[g.node_of(s).idx()]).side::<D>(g.dir_of(s));
+    for s in (0..g.n_sides() as u32).map(Side) {
+        if let Some(t) = g.opposite(s).filter(|&t| s < t) {
+            out.set_pair(to(s), to(t), g.rot[s.idx()]);
+        }
+    }
+    out
+}
+
+/// A permutation of `0..n` drawn uniformly (seeded).
+pub fn random_permutation(n: usize, seed: u64) -> Vec<u32> {
+    let mut p: Vec<u32> = (0..n as u32).collect();
+    SplitMix::new(seed).shuffle(&mut p);
+    p
+}
+
 /// The corner code that corner `code` gets when its node's chart is
 /// rotated by `r`.
 pub fn rotate_corner<const D: usize>(r: &Rot<D>, code: usize) -> usize {

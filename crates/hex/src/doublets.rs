@@ -17,7 +17,10 @@
 //! replacements agree across layers (two kept hexes meeting at `p` share
 //! the face at `p`'s level, whose diagonal corner is the same vertex).
 //! A chain that breaks a precondition, or where `y_p` would be a corner of
-//! `H1` already (a pillow), is left whole and counted.
+//! `H1` already (a pillow), is left whole and counted. So is a chain with
+//! a hex that a chain dissolved before it in the same pass changed (two
+//! doublets of one quad in 2D, which the 2D removal takes one after the
+//! other): [`dissolve_all_traced`] dissolves it in the next round.
 //!
 //! Input: a valid hex mesh (VTK corner order). Output: the mesh without
 //! the dissolved chains' vertices and hexes, vertices renumbered in order.
@@ -179,6 +182,15 @@ pub fn dissolve_traced(mesh: &HexMesh) -> (HexMesh, Chains, Vec<u32>) {
             k += 1;
         }
         match plan(&chain, &doublets, &by_edge, &by_vertex, cells) {
+            // a hex another chain of this round changed: the planned corners
+            // are stale, the chain is left for the next round
+            Some(changes)
+                if changes.iter().any(|&(keep, _, dead)| {
+                    [keep, dead].iter().any(|&i| new_cells[i] != Some(cells[i]))
+                }) =>
+            {
+                rep.left += chain.len();
+            }
             Some(changes) => {
                 for (keep, h, dead) in changes {
                     new_cells[keep] = Some(h);

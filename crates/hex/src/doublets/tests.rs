@@ -125,3 +125,43 @@ fn a_doublet_made_by_dissolving_one_is_dissolved_in_a_second_round() {
         assert_eq!(r.interior_edge_valence.get(&2), None);
     }
 }
+
+/// Two doublets of one quad: the centre cell of the 3×3 grid split by
+/// `v1` and `v2` into `[5, 6, 10, v1]`, `[5, v1, 10, v2]`, `[5, v2, 10, 9]`
+/// (both of valence 2, sharing the middle quad). The 2D removal takes one
+/// after the other; extruded, both columns are chains of the first pass,
+/// so the second (whose middle hex the first changed) waits for the next
+/// round: the extruded 3×3 grid is left, valid.
+#[test]
+fn two_doublets_of_one_quad_are_dissolved_one_after_the_other() {
+    let mut g = grid_with_doublet();
+    g.cells.truncate(8);
+    g.positions.truncate(16);
+    g.positions.extend([[1.7, 1.4, 0.0], [1.3, 1.6, 0.0]]);
+    let (v1, v2) = (16, 17);
+    g.cells
+        .extend([[5, 6, 10, v1], [5, v1, 10, v2], [5, v2, 10, 9]]);
+    for layers in [1, 3] {
+        let m = extrude(&g, layers);
+        check(&m);
+        let (once, rep) = dissolve(&m);
+        check(&once);
+        assert_eq!((rep.dissolved, rep.edges, rep.left), (1, layers, layers));
+        let (out, rep, kept) = dissolve_all_traced(&m);
+        assert_eq!(
+            rep,
+            Chains {
+                dissolved: 2,
+                edges: 2 * layers,
+                left: 0,
+                rounds: 1,
+            },
+            "L = {layers}"
+        );
+        assert_eq!((out.cells.len(), kept.len()), (9 * layers, 9 * layers));
+        assert_eq!(out.positions.len(), 16 * (layers + 1));
+        let r = check(&out);
+        assert_eq!(r.interior_edge_valence.get(&2), None);
+        assert_eq!(r.boundary_faces, 2 * 9 + 4 * 3 * layers);
+    }
+}
