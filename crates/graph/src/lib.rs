@@ -16,6 +16,8 @@
 //! - [`fair`]: index fairing by saddle lifts (2D, [`FairingStats`]);
 //! - [`columns`]: the same on every layer of a 3D graph made of columns
 //!   (an extruded map's), [`ColumnFairing`];
+//! - [`doublet`]: doublet removal, one merge for both dimensions (a
+//!   valence-2 vertex, a chain of valence-2 edges), [`Takeover`];
 //! - [`collapse`], [`pillow`], [`bubble`]: folded corners, detached
 //!   pillows and closed components, the last resorts before gluing;
 //! - [`testgrid`]: regular, folded and singular-disk graphs for tests.
@@ -26,6 +28,7 @@ pub mod bubble;
 pub mod check;
 pub mod collapse;
 pub mod columns;
+pub mod doublet;
 pub mod fair;
 mod fair_local;
 pub mod fan;
@@ -46,6 +49,7 @@ mod tests;
 
 pub use check::GraphError;
 pub use columns::ColumnFairing;
+pub use doublet::{DoubletMerge, DoubletStats, Takeover};
 pub use fair::{FairingStats, LiftUndo};
 pub use glue::{cell_code, Glued, NO_VERTEX};
 pub use graph::NodeGraph;

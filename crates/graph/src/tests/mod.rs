@@ -3,5 +3,5 @@
 mod fair_tests;
 mod glue_tests;
 mod ops_tests;
-mod support;
+pub(crate) mod support;
 mod untangle_tests;
