@@ -88,6 +88,15 @@ pub(crate) fn corner_across<const D: usize>(
     Some(out)
 }
 
+/// The corner code that corner `code` gets when its node's chart is
+/// rotated by `r`.
+pub fn rotate_corner<const D: usize>(r: &Rot<D>, code: usize) -> usize {
+    (0..D).fold(0, |acc, a| {
+        let q = r.apply_dir(2 * a + usize::from(code >> a & 1 == 0));
+        acc | (usize::from(positive(q)) << axis(q))
+    })
+}
+
 /// Corner codes of a node lying on side `dir`.
 pub(crate) fn corners_on<const D: usize>(dir: usize) -> impl Iterator<Item = usize> {
     let bit = 1usize << axis(dir);

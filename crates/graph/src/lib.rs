@@ -18,6 +18,8 @@
 //!   free of node numbers);
 //! - [`columns`]: the same on every layer of a 3D graph made of columns
 //!   (an extruded map's), [`ColumnFairing`];
+//! - [`doublet`]: doublet removal, one merge for both dimensions (a
+//!   valence-2 vertex, a chain of valence-2 edges), [`Takeover`];
 //! - [`collapse`], [`pillow`], [`bubble`]: folded corners, detached
 //!   pillows and closed components, the last resorts before gluing;
 //! - [`testgrid`]: regular, folded and singular-disk graphs for tests.
@@ -29,6 +31,7 @@ mod canon;
 pub mod check;
 pub mod collapse;
 pub mod columns;
+pub mod doublet;
 pub mod fair;
 mod fair_local;
 pub mod fan;
@@ -49,6 +52,7 @@ mod tests;
 
 pub use check::GraphError;
 pub use columns::ColumnFairing;
+pub use doublet::{DoubletMerge, DoubletStats, Takeover};
 pub use fair::{FairingStats, LiftUndo};
 pub use glue::{cell_code, Glued, NO_VERTEX};
 pub use graph::NodeGraph;

@@ -36,6 +36,14 @@ pub enum OpError {
     /// A saddle lift at a corner of this node: the vertex is not interior,
     /// or the two fan crossings are invalid.
     BadLift(Node),
+    /// No doublet at that corner (edge) of this node: the two sides are
+    /// not glued to one other node of the same orientation closing a
+    /// valence-2 vertex (edge chain), or the chain is inconsistent.
+    NotDoublet(Node),
+    /// A doublet whose outer side is glued into the doublet itself.
+    DoubletPartner(Node),
+    /// Merging the doublet at this node would repeat a vertex in a cell.
+    RepeatedCorner(Node),
 }
 
 impl fmt::Display for OpError {
@@ -57,6 +65,13 @@ impl fmt::Display for OpError {
                 )
             }
             OpError::BadLift(x) => write!(f, "node {}: no saddle lift at that corner", x.0),
+            OpError::NotDoublet(x) => write!(f, "node {}: no doublet there", x.0),
+            OpError::DoubletPartner(x) => {
+                write!(f, "node {}: the doublet's outer side is glued into it", x.0)
+            }
+            OpError::RepeatedCorner(x) => {
+                write!(f, "node {}: the merged cell would repeat a vertex", x.0)
+            }
         }
     }
 }

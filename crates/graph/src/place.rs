@@ -1,15 +1,19 @@
 //! The choice of one candidate per output vertex, shared by quad and hex
 //! vertex placement.
 //!
-//! Input: a [`Glued`] mesh and a candidate function `(node, corner code) →
-//! C` with a distance (0 = exact). Output: per vertex, the candidate with
-//! the smallest distance among the corners of that vertex, taken in cell
-//! order then corner-code order, the first one on ties; candidates after an
-//! exact one (distance 0) are not computed. Vertices are processed in
+//! Input: a [`Glued`] mesh, what doublet merges took over ([`Takeover`]:
+//! a merged node's corner is traced from the corners it took over) and a
+//! candidate function `(node, corner code) → C` with a distance (0 =
+//! exact). Output: per vertex, the candidate with the smallest distance
+//! among the corners of that vertex (their origins), taken in node order
+//! then corner-code order, the first one on ties (so, the same as before
+//! the merges); candidates after an exact one (distance 0) are not
+//! computed. Vertices are processed in
 //! parallel (rayon); each vertex's corners are visited in the same order
 //! as a sequential sweep over the cells would, so the result does not
 //! depend on the thread count.
 
+use crate::doublet::Takeover;
 use crate::glue::Glued;
 use crate::ids::Node;
 use rayon::prelude::*;
@@ -19,12 +23,13 @@ impl<const D: usize> Glued<D> {
     /// a vertex no alive corner uses.
     pub fn best_per_vertex<C: Send>(
         &self,
+        takeover: &Takeover<D>,
         candidate: impl Fn(Node, usize) -> C + Sync,
         dist: impl Fn(&C) -> f64 + Sync,
     ) -> Vec<Option<C>> {
         let k = 1usize << D;
         let nv = self.n_vertices;
-        // the corners of each vertex, in (cell, code) order (CSR)
+        // the corners (origins) of each vertex, in (node, code) order (CSR)
         let mut offsets = vec![0u32; nv + 1];
         for n in &self.nodes {
             for code in 0..k {
@@ -32,7 +37,7 @@ impl<const D: usize> Glued<D> {
                 let Some(count) = offsets.get_mut(v + 1) else {
                     panic!("bug: corner {code} of node {} has no vertex", n.idx());
                 };
-                *count += 1;
+                *count += takeover.n_origins(*n, code) as u32;
             }
         }
         for v in 0..nv {
@@ -43,8 +48,15 @@ impl<const D: usize> Glued<D> {
         for n in &self.nodes {
             for code in 0..k {
                 let slot = &mut fill[self.vertex(*n, code) as usize];
-                corners[*slot as usize] = (*n, code as u8);
-                *slot += 1;
+                takeover.for_each_origin(*n, code, |m, c| {
+                    corners[*slot as usize] = (m, c as u8);
+                    *slot += 1;
+                });
+            }
+        }
+        if !takeover.is_empty() {
+            for v in 0..nv {
+                corners[offsets[v] as usize..offsets[v + 1] as usize].sort_unstable();
             }
         }
         (0..nv)

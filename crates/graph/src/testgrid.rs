@@ -15,7 +15,7 @@
 //! the regular grid; a fold-back removes the last layer.
 
 use crate::graph::NodeGraph;
-use crate::ids::{axis, positive, Node, Side};
+use crate::ids::{Node, Side};
 use crate::rng::SplitMix;
 use dualex_map::Rot;
 
@@ -207,14 +207,7 @@ pub fn random_permutation(n: usize, seed: u64) -> Vec<u32> {
     p
 }
 
-/// The corner code that corner `code` gets when its node's chart is
-/// rotated by `r`.
-pub fn rotate_corner<const D: usize>(r: &Rot<D>, code: usize) -> usize {
-    (0..D).fold(0, |acc, a| {
-        let q = r.apply_dir(2 * a + usize::from(code >> a & 1 == 0));
-        acc | (usize::from(positive(q)) << axis(q))
-    })
-}
+pub use crate::glue::rotate_corner;
 
 /// `n` rotations drawn uniformly from the group (seeded).
 pub fn random_rotations<const D: usize>(n: usize, seed: u64) -> Vec<Rot<D>> {

@@ -5,28 +5,33 @@
 //!
 //! Input: the glued cells with their nodes, then the cells step 7 remakes.
 //! Output: per hex, its 8 corners' coordinates in its cell (VTK) order, or
-//! `None` (a hex merged from a doublet chain whose corners are not all
-//! corners of its first cell).
+//! `None` (a hex merged from a doublet chain: in the graph, or on the mesh
+//! when its corners are not all corners of its first cell).
 
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
-use dualex_graph::{cell_code, Glued, NodeGraph};
+use dualex_graph::{cell_code, Glued, NodeGraph, Takeover};
 use dualex_map::corners::{node_corner, Corners};
 
 /// The map coordinates of a hex's corners (module docs).
 pub type HexCorners = Corners<3, 8>;
 
-/// The corners of the glued cells, in [`Glued::cells`] order.
+/// The corners of the glued cells, in [`Glued::cells`] order (none for a
+/// node that took over another one's corners: a merged doublet chain).
 pub fn of_glued(
     glued: &Glued<3>,
     graph: &NodeGraph<3>,
     local: &LocalMap,
     nodes: &Nodes,
+    takeover: &Takeover<3>,
 ) -> Vec<HexCorners> {
     glued
         .nodes
         .iter()
         .map(|&n| {
+            if takeover.is_merged(n) {
+                return None;
+            }
             let rev = graph.is_reverted(n);
             let (s, ijk) = (nodes.tet[n.idx()] as usize, &nodes.ijk[n.idx()]);
             Some(std::array::from_fn(|k| {

@@ -1,5 +1,8 @@
-//! Step 7: doublet chains — the 3D analogue of the 2D doublet removal
-//! (`dualex_quad::doublets`), and its extrusion.
+//! Step 7: doublet chains on the mesh — the fallback of the graph's merge
+//! (`dualex_graph::doublet`, step 5c) for the chains it did not merge: those
+//! made by collapsing folded hexes here, and those whose vertices the
+//! gluing identified beyond the graph's corners. The 3D analogue of the 2D
+//! doublet removal (`dualex_quad::doublets`), and its extrusion.
 //!
 //! An interior edge `e = p–q` in exactly two hexes `H1`, `H2` (valence 2)
 //! means the two hexes share both faces that contain `e`. Dissolving `e`
@@ -38,8 +41,11 @@ pub struct Chains {
     /// Valence-2 interior edges left (their chain broke a precondition).
     pub left: usize,
     /// Rounds after the first that dissolved chains made by earlier ones
-    /// ([`dissolve_all_traced`]).
+    /// ([`dissolve_all_traced`]; the graph's passes, step 5c, included).
     pub rounds: usize,
+    /// Of `dissolved`, the chains merged in the graph (step 5c,
+    /// `NodeGraph::dissolve_doublets`).
+    pub in_graph: usize,
 }
 
 /// Cube corner code (bit 0: u, bit 1: v, bit 2: w) of each VTK corner.

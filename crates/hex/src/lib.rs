@@ -11,13 +11,14 @@
 //! 4. [`trace`]: walk every side along its iso-line to the opposite side;
 //! 5. untangling (pleat removal, `dualex_graph`); 5b. on a graph made of
 //!    columns (an extruded map's), index fairing and the collapse of
-//!    folded corners in every layer (`dualex_graph::columns`);
+//!    folded corners in every layer (`dualex_graph::columns`); 5c. chains
+//!    of valence-2 edges merged in the graph (`dualex_graph::doublet`);
 //! 6. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
 //!    diagonal tracing; 6b. [`columns`]: holes through columns (singular
 //!    edges through dual nodes) repaired as the 2D local repair, replayed
 //!    in every layer;
 //! 7. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
-//!    edges dissolved (in rounds);
+//!    edges the graph did not merge dissolved (in rounds);
 //! 8. [`corner_uvw`]: each hex's corners in its node's chart (kept along
 //!    steps 6b and 7).
 //!
@@ -44,7 +45,7 @@ pub mod split;
 pub mod stats;
 pub mod trace;
 
-use dualex_graph::NodeGraph;
+use dualex_graph::{NodeGraph, Takeover};
 pub use dualex_map::grid_offset::GridOffset;
 use dualex_map::singularity::{edge_singularities_with_stars, quality};
 use dualex_map::timing::Laps;
@@ -86,7 +87,7 @@ pub fn extract(map: &TetMap, opts: &HexOptions) -> Result<(HexMesh, HexStats), I
 }
 
 /// [`extract`], also returning for each hex the tet of `map` that holds
-/// its node (a hex merged from a pair, step 7, names the first one's).
+/// its node (a hex merged from a pair, steps 5c and 7, names the kept one's).
 pub fn extract_traced(
     map: &TetMap,
     opts: &HexOptions,
@@ -190,7 +191,7 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     st.reverted_nodes = nodes.reverted.iter().filter(|&&r| r).count();
     laps.lap("nodes");
     // 4
-    let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
+    let (mut ends, trep) = trace::trace_all(&local, &topo, &nodes);
     st.trace = trep;
     let mut graph = NodeGraph::<3>::new(nodes.reverted.clone());
     st.links = graph.link_mutual(&ends);
@@ -206,14 +207,23 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         st.column_fairing = graph.fair_columns(FAIRING_MAX_PATH);
         laps.lap("fairing");
     }
+    // 5c: chains of valence-2 edges merged in the graph (a merged node's
+    // corners traced from the nodes it took them over from)
+    let mut takeover = Takeover::default();
+    let merged = graph.dissolve_doublets(&mut takeover);
+    takeover.carry_sides(&mut ends);
+    st.doublets.dissolved = merged.merged;
+    st.doublets.edges = merged.pairs;
+    st.doublets.rounds = merged.rounds;
+    st.doublets.in_graph = merged.merged;
     // 6
     let glued = graph.glue();
-    let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
+    let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued, &takeover);
     let mut source: Vec<u32> = glued
         .cells()
         .map(|(node, _)| parent[nodes.tet[node.idx()] as usize])
         .collect();
-    let mut corners = corner_uvw::of_glued(&glued, &graph, &local, &nodes);
+    let mut corners = corner_uvw::of_glued(&glued, &graph, &local, &nodes, &takeover);
     st.finish_output(&graph, &glued, &mesh);
     // cracks: unmatched sides that are not on the input's boundary
     st.open_interior_faces = graph.lost_unmatched_sides(&ends, topo.boundary_facets == 0);
@@ -242,7 +252,10 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         let (collapsed, folded, kept_folded) = doublets::collapse_folded_traced(&mesh);
         let (dissolved, chains, kept_chains) = doublets::dissolve_all_traced(&collapsed);
         st.folded_collapsed = folded;
-        st.doublets = chains;
+        st.doublets.dissolved += chains.dissolved;
+        st.doublets.edges += chains.edges;
+        st.doublets.rounds += chains.rounds;
+        st.doublets.left = chains.left;
         if folded + chains.edges > 0 {
             corners = dualex_map::corners::carry(&mesh, &corners, &collapsed, &kept_folded);
             corners = dualex_map::corners::carry(&collapsed, &corners, &dissolved, &kept_chains);
@@ -289,15 +302,18 @@ fn open_faces(
 }
 
 /// Positions of the glued vertices by diagonal tracing (corner code bits:
-/// bit0 u, bit1 v, bit2 w, set = + side).
+/// bit0 u, bit1 v, bit2 w, set = + side; a corner taken over by a doublet
+/// merge traced from the node it belonged to).
 fn place_vertices(
     map: &TetMap,
     local: &local::LocalMap,
     topo: &Topology<4>,
     nodes: &nodes::Nodes,
     glued: &dualex_graph::Glued<3>,
+    takeover: &Takeover<3>,
 ) -> HexMesh {
     let best = glued.best_per_vertex(
+        takeover,
         |node, code| {
             let sgn = [0, 1, 2].map(|a| if code >> a & 1 == 1 { 1.0 } else { -1.0 });
             geometry::diagonal(map, local, topo, nodes, node.idx(), sgn)

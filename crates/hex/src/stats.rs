@@ -37,7 +37,8 @@ pub struct HexStats {
     pub grid_offset: dualex_map::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
-    /// Doublet chains (valence-2 interior edges) dissolved after gluing.
+    /// Doublet chains (valence-2 interior edges) dissolved, in the graph
+    /// (step 5c) and after gluing (step 7).
     pub doublets: crate::doublets::Chains,
     /// Isolated nodes dropped: no side glued, every walk lost (noise).
     pub isolated_dropped: usize,
@@ -167,6 +168,7 @@ impl HexStats {
                 "doublet_chains_dissolved": self.doublets.dissolved,
                 "doublet_edges_dissolved": self.doublets.edges,
                 "doublet_edges_left": self.doublets.left,
+                "doublet_chains_in_graph": self.doublets.in_graph,
             },
             "fairing": self.column_fairing.as_ref().map(|f| {
                 let mut j = f.fairing.to_json();

@@ -163,3 +163,37 @@ fn an_isolated_node_in_a_sliver_is_dropped() {
     );
     assert_eq!(st.open_interior_faces, 0);
 }
+
+/// The grid with a doublet extruded (`grid_with_doublet`, 2 layers,
+/// refined twice: the doublet's two hexes share two faces, which their tets
+/// cannot split conformally unrefined): the chain of valence-2 edges
+/// through the 4 layers is merged in the graph, and the merged hexes'
+/// corners sit on the refined mesh's vertices other than the doublet's
+/// (those at the chain traced from the deleted nodes, not from the kept
+/// ones' own corners, which would land on the doublet's vertices).
+#[test]
+fn a_doublet_chain_is_merged_in_the_graph_with_its_vertices_in_place() {
+    use dualex_gen::from_mesh::{from_hexes, meshes, FromMeshOptions};
+    let input = meshes::extrude(&meshes::grid_with_doublet(), 2);
+    let opts = FromMeshOptions {
+        scale: 2,
+        ..Default::default()
+    };
+    let fh = from_hexes(&input, &opts).expect("map");
+    let (mesh, st) = extract(&fh.map, &HexOptions::default()).expect("extract");
+    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    assert!(rep.is_valid(), "{:?}", rep.errors());
+    assert_eq!(mesh.cells.len(), 8 * 20 - 4, "{}", st.to_json());
+    let d = st.doublets;
+    assert_eq!((d.dissolved, d.edges, d.in_graph, d.left), (1, 4, 1, 0));
+    assert_eq!(rep.interior_edge_valence.get(&2), None);
+    // (sanitization moves vertices by ~1e-6; the doublet's are 0.35 away
+    // from any other)
+    for p in &mesh.positions {
+        let refined = fh.refined.positions.iter().any(|q| {
+            let doublet = (q[0] - 1.5).abs() < 1e-9 && (q[1] - 1.5).abs() < 1e-9;
+            !doublet && (0..3).all(|k| (p[k] - q[k]).abs() < 1e-3)
+        });
+        assert!(refined, "vertex {p:?} is not a vertex of the refined mesh");
+    }
+}

@@ -13,24 +13,29 @@
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
 use crate::repair::polygon;
-use dualex_graph::{cell_code, Glued, NodeGraph};
+use dualex_graph::{cell_code, Glued, NodeGraph, Takeover};
 use dualex_map::corners::{node_corner, Corners};
 use dualex_map::QuadMesh;
 
 /// The map coordinates of a quad's corners (module docs).
 pub type QuadCorners = Corners<2, 4>;
 
-/// The corners of the glued cells, in [`Glued::cells`] order.
+/// The corners of the glued cells, in [`Glued::cells`] order (none for a
+/// node that took over another one's corners: a merged doublet).
 pub fn of_glued(
     glued: &Glued<2>,
     graph: &NodeGraph<2>,
     local: &LocalMap,
     nodes: &Nodes,
+    takeover: &Takeover<2>,
 ) -> Vec<QuadCorners> {
     glued
         .nodes
         .iter()
         .map(|&n| {
+            if takeover.is_merged(n) {
+                return None;
+            }
             let rev = graph.is_reverted(n);
             let (s, ij) = (nodes.tri[n.idx()] as usize, &nodes.ij[n.idx()]);
             Some(std::array::from_fn(|k| {

@@ -1,5 +1,8 @@
-//! Step 9: doublet removal — interior vertices of valence 2 that index
-//! fairing found no partner for are dissolved (issue: clean output).
+//! Step 9: doublet removal on the mesh — the fallback of the graph's
+//! (`dualex_graph::doublet`, step 6e) for the interior vertices of valence
+//! 2 that it did not merge: those made after it (a zipped hole's folded
+//! corner collapsed, the repairs of step 8) and those whose vertex the
+//! gluing identified beyond the graph's corners (union–find over corners).
 //!
 //! A valence-2 interior vertex `v` lies in exactly two quads that share
 //! the two edges at `v`:
@@ -26,13 +29,17 @@
 use dualex_map::QuadMesh;
 use std::collections::VecDeque;
 
-/// What [`dissolve`] did.
+/// What doublet removal did (the graph's merges, step 6e, and this
+/// fallback on the mesh, step 9).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Doublets {
-    /// Valence-2 interior vertices dissolved.
+    /// Valence-2 interior vertices dissolved (in the graph and on the mesh).
     pub dissolved: usize,
     /// Interior vertices of valence ≤ 2 left (preconditions not met).
     pub left: usize,
+    /// Of `dissolved`, those merged in the graph
+    /// (`NodeGraph::dissolve_doublets`).
+    pub in_graph: usize,
 }
 
 /// The quads around each vertex (alive ones, by index into `cells`).
@@ -180,7 +187,8 @@ mod tests {
             rep,
             Doublets {
                 dissolved: 1,
-                left: 0
+                left: 0,
+                in_graph: 0,
             }
         );
         assert_eq!((out.cells.len(), out.positions.len()), (9, 16));
@@ -206,7 +214,8 @@ mod tests {
             rep,
             Doublets {
                 dissolved: 0,
-                left: 4
+                left: 4,
+                in_graph: 0,
             }
         );
         assert_eq!(out.cells, m.cells);

@@ -9,14 +9,17 @@
 //! 5. untangling (pleat removal, `dualex_graph`);
 //! 6. index fairing (`dualex_graph`, optional); folded corners collapsed,
 //!    pillows and [`bubbles`] (components beyond one per input component)
-//!    deleted;
+//!    deleted; doublets (valence-2 vertices fairing found no partner for)
+//!    merged in the graph (`dualex_graph::doublet`, with fairing);
 //! 7. gluing (`dualex_graph`; [`digons`] pinched off) and [`geometry`]:
 //!    vertex positions by diagonal tracing;
 //! 8. [`ambiguous`]: parallel edges and folded cells split; [`repair`]:
 //!    holes closed, faces quads cannot represent repaired (or subdivided);
-//! 9. [`doublets`]: interior valence-2 vertices left by fairing dissolved;
+//!    [`pinched`] vertices split, bubbles left by it deleted;
+//! 9. [`doublets`]: interior valence-2 vertices the graph did not merge
+//!    (made by steps 7–8) dissolved on the mesh;
 //! 10. [`corner_uv`]: each quad's corners in its node's chart (kept along
-//!     steps 7–9).
+//!     steps 7–9; none for a quad merged from a doublet).
 //!
 //! Input: a validated [`TriMap`]. Output: a [`QuadMesh`] and [`QuadStats`]
 //! ([`extract_traced`]: also the input triangle holding each quad's node;
@@ -42,7 +45,7 @@ pub mod split;
 pub mod stats;
 pub mod trace;
 
-use dualex_graph::{Node, NodeGraph, Side};
+use dualex_graph::{Node, NodeGraph, Side, Takeover};
 pub use dualex_map::grid_offset::GridOffset;
 use dualex_map::timing::Laps;
 use dualex_map::{InputError, QuadMesh, Stars, Topology, TransitionOptions, Transitions, TriMap};
@@ -90,7 +93,7 @@ pub const NO_SOURCE: u32 = u32::MAX;
 /// [`extract`], also returning for each quad the triangle of `map` that
 /// holds its node ([`NO_SOURCE`] for a face closing a hole). Quads of a
 /// subdivision (step 8) name their parent's triangle; a quad merged from
-/// two (step 9) names the first one's.
+/// two (steps 6e and 9) names the first one's.
 pub fn extract_traced(
     map: &TriMap,
     opts: &QuadOptions,
@@ -182,7 +185,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     st.reverted_nodes = nodes.reverted.iter().filter(|&&r| r).count();
     laps.lap("nodes");
     // 4
-    let (ends, trep) = trace::trace_all(&local, &topo, &nodes);
+    let (mut ends, trep) = trace::trace_all(&local, &topo, &nodes);
     st.trace = trep;
     let mut graph = NodeGraph::<2>::new(nodes.reverted.clone());
     st.links = graph.link_mutual(&ends);
@@ -204,6 +207,15 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     st.pillows_removed = graph.remove_pillows();
     // 6d: bubbles beside the surface of their input component
     st.bubbles_removed = bubbles::drop_bubbles(&mut graph, &topo, &nodes.tri);
+    // 6e: doublets that fairing found no partner for, merged in the graph
+    // (a merged node's corner traced from the node it took it over from)
+    let mut takeover = Takeover::default();
+    if opts.fairing {
+        let merged = graph.dissolve_doublets(&mut takeover);
+        takeover.carry_sides(&mut ends);
+        st.doublets.dissolved = merged.merged;
+        st.doublets.in_graph = merged.merged;
+    }
     laps.lap("fairing");
     // 7
     let mut glued = graph.glue();
@@ -233,12 +245,12 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         st.bubbles_removed += bubbles::drop_bubbles(&mut graph, &topo, &nodes.tri);
         glued = graph.glue();
     }
-    let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued);
+    let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued, &takeover);
     let mut source: Vec<u32> = glued
         .cells()
         .map(|(node, _)| parent[nodes.tri[node.idx()] as usize])
         .collect();
-    let mut corners = corner_uv::of_glued(&glued, &graph, &local, &nodes);
+    let mut corners = corner_uv::of_glued(&glued, &graph, &local, &nodes, &takeover);
     st.finish_output(&graph, &glued, &mesh);
     // 8a: parallel edges and folded cells split by their identity in the
     // graph, so that vertex pairs name every edge of the repair
@@ -305,11 +317,12 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         }
         st.finish_mesh(&mesh);
     }
-    // 9: doublets that fairing found no partner for
-    // (only when the counts show an interior vertex of valence 2)
+    // 9: doublets the graph did not merge (only when the counts show an
+    // interior vertex of valence 2)
     if opts.fairing && st.valence_interior.contains_key(&2) {
         let (dissolved, rep, kept) = doublets::dissolve_traced(&mesh);
-        st.doublets = rep;
+        st.doublets.dissolved += rep.dissolved;
+        st.doublets.left = rep.left;
         if rep.dissolved > 0 {
             corners = dualex_map::corners::carry(&mesh, &corners, &dissolved, &kept);
             mesh = dissolved;
@@ -494,15 +507,18 @@ fn without_unused_vertices(mesh: QuadMesh) -> QuadMesh {
     QuadMesh { positions, cells }
 }
 
-/// Positions of the glued vertices by diagonal tracing.
+/// Positions of the glued vertices by diagonal tracing (a corner taken
+/// over by a doublet merge from the node it belonged to).
 fn place_vertices(
     map: &TriMap,
     local: &local::LocalMap,
     topo: &Topology<3>,
     nodes: &nodes::Nodes,
     glued: &dualex_graph::Glued<2>,
+    takeover: &Takeover<2>,
 ) -> QuadMesh {
     let best = glued.best_per_vertex(
+        takeover,
         |node, code| {
             let su = if code & 1 == 1 { 1.0 } else { -1.0 };
             let sv = if code & 2 == 2 { 1.0 } else { -1.0 };

@@ -83,8 +83,9 @@ pub struct QuadStats {
     pub subdivided: bool,
     /// Paths of the local repair of faces quads cannot represent.
     pub repair_paths: usize,
-    /// Interior valence-2 vertices dissolved after gluing
-    /// ([`crate::doublets`]) and those left (preconditions not met).
+    /// Interior valence-2 vertices dissolved (in the graph, step 6e, and
+    /// after gluing, [`crate::doublets`]) and those left (preconditions not
+    /// met).
     pub doublets: crate::doublets::Doublets,
     /// Output: quads.
     pub quads: usize,
@@ -176,6 +177,7 @@ impl QuadStats {
                 "dropped_cells": self.repair_dropped,
                 "doublets_dissolved": self.doublets.dissolved,
                 "doublets_left": self.doublets.left,
+                "doublets_in_graph": self.doublets.in_graph,
             },
             "output": {
                 "quads": self.quads,

@@ -143,3 +143,44 @@ fn singularity_on_an_iso_but_not_a_node() {
         }
     }
 }
+
+/// The maps of the 3×3 grid whose centre is split by a valence-2 vertex
+/// (`grid_with_doublet`) and of that centre's two quads alone: fairing
+/// finds no partner, the graph merges the two nodes, and the merged quad's
+/// corners are the centre square's vertices — the corner at the doublet
+/// traced from the deleted node (a trace from the kept node's own corner
+/// lands on the doublet's vertex, (1.5, 1.5); in the grid the far corner's
+/// other quads place it anyway, alone nothing else does).
+#[test]
+fn a_doublet_is_merged_in_the_graph_with_its_vertices_in_place() {
+    use dualex_gen::from_mesh::{from_quads, meshes::grid_with_doublet, FromMeshOptions};
+    let grid = grid_with_doublet();
+    let pair = QuadMesh {
+        positions: [16, 5, 6, 10, 9].map(|v| grid.positions[v]).to_vec(),
+        cells: vec![[0, 1, 2, 3], [0, 3, 4, 1]],
+    };
+    for (input, quads, interior4) in [(&grid, 9, Some(&4)), (&pair, 1, None)] {
+        let fq = from_quads(input, &FromMeshOptions::default()).expect("map");
+        let (mesh, st) = extract(&fq.map, &QuadOptions::default()).expect("extract");
+        let rep = check_valid(&mesh, "doublet");
+        let (nq, nv) = (mesh.cells.len(), mesh.positions.len());
+        assert_eq!(
+            (nq, nv),
+            (quads, input.positions.len() - 1),
+            "{}",
+            st.to_json()
+        );
+        let d = st.doublets;
+        assert_eq!((d.dissolved, d.in_graph, d.left), (1, 1, 0));
+        assert_eq!(rep.interior_valence.get(&4), interior4);
+        // (sanitization moves vertices by ~1e-5; the doublet's is 0.7 away
+        // from any other)
+        for p in &mesh.positions {
+            let near = input.positions.iter().any(|q| {
+                let doublet = (q[0] - 1.5).abs() < 1e-9 && (q[1] - 1.5).abs() < 1e-9;
+                !doublet && (0..3).all(|k| (p[k] - q[k]).abs() < 1e-3)
+            });
+            assert!(near, "vertex {p:?} is not a grid point");
+        }
+    }
+}

@@ -4,5 +4,5 @@ mod fair_order_tests;
 mod fair_tests;
 mod glue_tests;
 mod ops_tests;
-mod support;
+pub(crate) mod support;
 mod untangle_tests;

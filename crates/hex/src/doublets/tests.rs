@@ -24,6 +24,7 @@ fn an_extruded_doublet_column_is_dissolved() {
                 edges: layers,
                 left: 0,
                 rounds: 0,
+                in_graph: 0,
             },
             "L = {layers}"
         );
@@ -117,6 +118,7 @@ fn a_doublet_made_by_dissolving_one_is_dissolved_in_a_second_round() {
                 edges: 2 * layers as usize,
                 left: 0,
                 rounds: 1,
+                in_graph: 0,
             }
         );
         assert_eq!(out.cells.len(), layers as usize);
@@ -155,6 +157,7 @@ fn two_doublets_of_one_quad_are_dissolved_one_after_the_other() {
                 edges: 2 * layers,
                 left: 0,
                 rounds: 1,
+                in_graph: 0,
             },
             "L = {layers}"
         );
