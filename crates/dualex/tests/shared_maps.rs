@@ -38,8 +38,12 @@ fn the_dragon_is_welded_by_default() {
         weld: false,
         ..Default::default()
     };
+    // not welded, the charts come apart: many pieces (46 before lone nodes
+    // of charts narrower than a grid cell were deleted as slivers, 12 now),
+    // and the output's shape is not the input's
     let out = dualex::quad(&map, &apart).unwrap();
-    assert_eq!(out.stats.components, 46);
+    assert!(out.stats.components > 1, "{}", out.stats.components);
+    assert!(!out.stats.topology.matches());
 }
 
 #[test]
