@@ -42,7 +42,9 @@ pub mod weld;
 pub use cut::{cut_to_disk, Cut};
 pub use field::CrossField;
 pub use integrate::{integrate, integrate_report, IntegrateOptions, IntegrateReport};
-pub use pipeline::{remesh, Quantization, RemeshOptions, RemeshStats, Remeshed, Target};
+pub use pipeline::{
+    remesh, remesh_counted, CountQuads, Quantization, RemeshOptions, RemeshStats, Remeshed, Target,
+};
 pub use quantize::Rounding;
 pub use smooth::{cross_field, FieldOptions, FieldResult};
 pub use surface::{Surface, SurfaceError, NO_FACE};

@@ -10,7 +10,11 @@
 //! [`crate::smooth`]), its singular vertices, a cut through them to a disk
 //! per component ([`crate::cut`]), seamless least-squares integration and
 //! rounding ([`crate::integrate`]) at a scale fitted so that the map
-//! covers about `N` cells ([`IntegrateOptions::fit_area`]).
+//! covers about `N` cells ([`IntegrateOptions::fit_area`]). With
+//! [`remesh_counted`] the extraction's quad count of that map is
+//! measured and, when it misses `N` by more than [`RECOUNT_TOLERANCE`],
+//! the map is made once more for the area that count asks (`dualex
+//! remesh` does; the extraction is not a dependency of this crate).
 //!
 //! Measured defaults (crate README, "Realistic maps"): on the shared real
 //! surfaces 4–483 singularities (reference maps: 30–403) and 0–3.4 %
@@ -33,7 +37,7 @@ use crate::surface::{Surface, NO_FACE};
 use crate::union_find::{find, union};
 use dualex_map::TriMap;
 use std::collections::BTreeMap;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// How big the quads are.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -116,8 +120,14 @@ pub struct RemeshStats {
     pub off_grid: usize,
     /// Largest move of a rounding, in map units.
     pub max_rounding: f64,
-    /// Wall-clock milliseconds: field, cut, integration (with rounding).
-    pub time_ms: [f64; 3],
+    /// The extraction's quad count of each map made
+    /// ([`remesh_counted`]: one, or two when the first missed `N`;
+    /// `None`: the extraction refused that map); empty without a count.
+    pub counted: Vec<Option<usize>>,
+    /// Wall-clock milliseconds: field, cut, integration (with rounding;
+    /// both maps when made twice), the extraction's counts
+    /// ([`remesh_counted`]).
+    pub time_ms: [f64; 4],
 }
 
 /// A map and its numbers.
@@ -131,6 +141,44 @@ pub struct Remeshed {
 
 /// The map of `surface` (module docs).
 pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, String> {
+    make(surface, opts, None)
+}
+
+/// How many quads the extraction makes of a map (`None`: it refuses
+/// the map, or the mesh would not be written), for [`remesh_counted`].
+pub type CountQuads<'a> = dyn FnMut(&TriMap) -> Option<usize> + 'a;
+
+/// Most relative miss of the extraction's quad count that
+/// [`remesh_counted`] accepts without making the map again.
+pub const RECOUNT_TOLERANCE: f64 = 0.05;
+
+/// [`remesh`] with the extraction's quad count in the loop (for
+/// [`Target::Quads`]). `count` tells how many quads the extraction makes
+/// of a map (`None`: it cannot tell, e.g. it refuses the map). The area
+/// fit makes the map's area about `N`, but the extraction does not make
+/// one quad per cell: its repair adds quads near singular vertices off
+/// the grid (up to ~25 % at 100 quads), its doublet removal takes some,
+/// a global fallback subdivides (×4). When the first map's count `Q`
+/// misses `N` by more than [`RECOUNT_TOLERANCE`] with a share of quads per
+/// cell within [`RECOUNT_MAX_RATIO`] (not a subdivision), the quads are taken as
+/// proportional to the area `A` (`Q/A` quads per cell) and the map is
+/// made once more for the area `N·A/Q` (field and cut reused); the map
+/// whose count is closer to `N` is kept, and a map the extraction
+/// refuses never replaces one it takes.
+pub fn remesh_counted(
+    surface: &Surface,
+    opts: &RemeshOptions,
+    count: &mut CountQuads<'_>,
+) -> Result<Remeshed, String> {
+    make(surface, opts, Some(count))
+}
+
+/// [`remesh`], and [`remesh_counted`] when `count` is given.
+fn make(
+    surface: &Surface,
+    opts: &RemeshOptions,
+    count: Option<&mut CountQuads<'_>>,
+) -> Result<Remeshed, String> {
     let t0 = Instant::now();
     let fopts = FieldOptions {
         sharp_degrees: opts.sharp_degrees,
@@ -148,7 +196,7 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
     let cut = cut_to_disk(surface, &f.singularities)?;
     let t2 = Instant::now();
     let singular: Vec<u32> = f.singularities.iter().map(|&(v, _)| v).collect();
-    let iopts = IntegrateOptions {
+    let mut iopts = IntegrateOptions {
         quads: match opts.target {
             Target::Quads(n) => Some(n),
             Target::EdgeLength(_) => None,
@@ -165,7 +213,29 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         gauge_offset: [rng.unit(), rng.unit()],
         ..IntegrateOptions::default()
     };
-    let (map, rep) = integrate_report(surface, &f.field, &cut.is_cut, &singular, &iopts)?;
+    let (mut map, mut rep) = integrate_report(surface, &f.field, &cut.is_cut, &singular, &iopts)?;
+    let mut counted = Vec::new();
+    let mut counting = Duration::ZERO;
+    if let (Target::Quads(n), Some(count)) = (opts.target, count) {
+        let mut count = |m: &TriMap| {
+            let t = Instant::now();
+            let q = count(m);
+            counting += t.elapsed();
+            q
+        };
+        let first = count(&map);
+        counted.push(first);
+        let area_target = first.and_then(|q| recount_target(n, rep.map_area, q));
+        if let (Some(q), Some(area)) = (first, area_target) {
+            iopts.quads = Some(area);
+            let (map2, rep2) = integrate_report(surface, &f.field, &cut.is_cut, &singular, &iopts)?;
+            let second = count(&map2);
+            counted.push(second);
+            if second.is_some_and(|q2| q2.abs_diff(n) < q.abs_diff(n)) {
+                (map, rep) = (map2, rep2);
+            }
+        }
+    }
     let t3 = Instant::now();
     let mut singularity_index = BTreeMap::new();
     for &(_, q) in &f.singularities {
@@ -189,9 +259,41 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         rounded: rep.quantize.rounded,
         off_grid: rep.quantize.off_grid,
         max_rounding: rep.quantize.max_rounding,
-        time_ms: [ms(t0, t1), ms(t1, t2), ms(t2, t3)],
+        counted,
+        time_ms: [
+            ms(t0, t1),
+            ms(t1, t2),
+            ms(t2, t3) - counting.as_secs_f64() * 1e3,
+            counting.as_secs_f64() * 1e3,
+        ],
     };
     Ok(Remeshed { map, stats })
+}
+
+/// Most quads per cell (and least, its inverse) that [`remesh_counted`]
+/// corrects for: the extraction's local repairs add or take a fraction of
+/// the quads, but a count 4× the area is the global fallback's
+/// subdivision, a different event: asking for a quarter of the cells
+/// would give a mesh of a quarter of the quads whenever the coarser map
+/// is not subdivided (measured: 16–27 quads for 100 on the horse).
+pub const RECOUNT_MAX_RATIO: f64 = 1.5;
+
+/// The area to make the map again for, when the extraction made `quads`
+/// of a map of area `area` for `n` ([`remesh_counted`]); `None` when the
+/// count is within [`RECOUNT_TOLERANCE`], when quads per cell are beyond
+/// [`RECOUNT_MAX_RATIO`], when the new area would be the old target (the
+/// same map again) or is not a count.
+fn recount_target(n: usize, area: f64, quads: usize) -> Option<usize> {
+    let miss = (quads as f64 - n as f64).abs() / n as f64;
+    if miss <= RECOUNT_TOLERANCE || quads == 0 || !(area.is_finite() && area > 0.0) {
+        return None;
+    }
+    let ratio = quads as f64 / area;
+    if !(1.0 / RECOUNT_MAX_RATIO..=RECOUNT_MAX_RATIO).contains(&ratio) {
+        return None;
+    }
+    let target = (n as f64 * area / quads as f64).round();
+    (target >= 1.0 && target != n as f64).then_some(target as usize)
 }
 
 /// Turns the field by `angle` on every component with no fixed face
@@ -265,5 +367,76 @@ mod tests {
             "seed 2 gives the same map as seed 1"
         );
         assert_eq!(run(1).map.coords, a.map.coords, "a seed gives one map");
+    }
+
+    /// The map's signed area (map units²).
+    fn area(map: &TriMap) -> f64 {
+        map.coords
+            .iter()
+            .map(|[a, b, d]| 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0])))
+            .sum()
+    }
+
+    /// An extraction that makes 30 % more quads than cells: the map is
+    /// made again for a smaller area and that one is kept; one that
+    /// refuses the second map keeps the first; no count, one map.
+    #[test]
+    fn the_extractions_count_retargets_the_map_once() {
+        let s = crate::shapes::icosphere(3);
+        let opts = RemeshOptions {
+            target: Target::Quads(300),
+            ..RemeshOptions::default()
+        };
+        let plain = remesh(&s, &opts).expect("the sphere's map");
+        assert!(plain.stats.counted.is_empty(), "no count, no entry");
+        let mut calls = 0;
+        let mut more = |m: &TriMap| {
+            calls += 1;
+            Some((1.3 * area(m)).round() as usize)
+        };
+        let r = remesh_counted(&s, &opts, &mut more).expect("the sphere's map");
+        assert_eq!(calls, 2);
+        let [Some(q1), Some(q2)] = r.stats.counted[..] else {
+            panic!("two counts: {:?}", r.stats.counted);
+        };
+        assert!(q1.abs_diff(300) > 15, "{q1}: no recount needed");
+        assert!(q2.abs_diff(300) <= 15, "{q2} for 300");
+        assert_eq!(
+            (1.3 * area(&r.map)).round() as usize,
+            q2,
+            "the second map kept"
+        );
+        // the second map refused: the first kept
+        let mut first_only =
+            |m: &TriMap| (area(m) > 260.0).then(|| (1.3 * area(m)).round() as usize);
+        let r = remesh_counted(&s, &opts, &mut first_only).expect("the sphere's map");
+        assert_eq!(r.stats.counted, vec![Some(q1), None]);
+        assert_eq!(r.map.coords, plain.map.coords);
+        // a count within the tolerance: one map, the plain one
+        let mut exact = |m: &TriMap| Some(area(m).round() as usize);
+        let r = remesh_counted(&s, &opts, &mut exact).expect("the sphere's map");
+        assert_eq!(r.stats.counted.len(), 1);
+        assert_eq!(r.map.coords, plain.map.coords);
+    }
+
+    #[test]
+    fn recount_targets() {
+        // 5 % off or closer: no second map
+        assert_eq!(recount_target(100, 100.0, 105), None);
+        assert_eq!(recount_target(100, 100.0, 95), None);
+        // 20 % more quads than cells: 100 · 100 / 120
+        assert_eq!(recount_target(100, 100.0, 120), Some(83));
+        // 40 % more quads than cells: 500 · 490 / 686
+        assert_eq!(recount_target(500, 490.0, 686), Some(357));
+        // subdivided once (4 quads per cell), or a third of a quad per
+        // cell: not a repair's share, no second map
+        assert_eq!(recount_target(500, 490.0, 1960), None);
+        assert_eq!(recount_target(500, 490.0, 160), None);
+        // the same target again: the same map, not made
+        assert_eq!(recount_target(100, 89.0, 89), None);
+        // nothing to go by
+        assert_eq!(recount_target(100, 100.0, 0), None);
+        assert_eq!(recount_target(100, f64::NAN, 130), None);
+        assert_eq!(recount_target(100, -3.0, 130), None);
     }
 }

@@ -26,6 +26,7 @@
 pub mod charts;
 pub mod constraints;
 pub mod elim;
+pub mod fit;
 pub mod system;
 #[cfg(test)]
 mod test_cut;
@@ -174,14 +175,15 @@ pub fn integrate_report(
     } else {
         0
     };
-    // the rounding moves the area again: refit and round anew (at most
-    // `REFITS` times), keeping the map whose area is closest to `N`
+    // the rounding moves the area again: round anew at the scales of
+    // [`fit::ScaleSearch`] (at most `REFITS` times), keeping the map whose
+    // area is closest to `N`
     let target = match (opts.fit_area, opts.scale, opts.quads) {
         (true, None, Some(n)) => Some(n as f64),
         _ => None,
     };
     let mut best: Option<(f64, Vec<f64>, QuantizeReport, f64)> = None;
-    let (mut below, mut above) = (0.0f64, f64::INFINITY);
+    let mut search = target.map(fit::ScaleSearch::new);
     let mut roundings = 0;
     for _ in 0..=REFITS {
         roundings += 1;
@@ -203,18 +205,13 @@ pub fn integrate_report(
         if best.as_ref().is_none_or(|b| miss < b.0) {
             best = Some((miss, x, q, scale));
         }
-        match target {
-            Some(n) if miss > REFIT_TOLERANCE && area > 0.0 && area.is_finite() => {
-                // the rounded area is not monotone in the scale: bracket
-                if area < n {
-                    below = below.max(scale);
-                } else {
-                    above = above.min(scale);
+        match search.as_mut() {
+            Some(search) if miss > REFIT_TOLERANCE => {
+                let next = search.next(scale, area);
+                if next == scale {
+                    break;
                 }
-                scale *= (n / area).sqrt();
-                if below > 0.0 && above.is_finite() {
-                    scale = (below * above).sqrt();
-                }
+                scale = next;
                 energy = system::energy(surface, &charts, scale);
             }
             _ => break,
