@@ -9,10 +9,11 @@
 //! surface denoised along its normals ([`crate::denoise`],
 //! [`crate::smooth`]), its singular vertices, a cut through them to a disk
 //! per component ([`crate::cut`]), seamless least-squares integration and
-//! rounding ([`crate::integrate`]) at a scale fitted so that the map
+//! rounding ([`crate::integrate`](mod@crate::integrate)) at a scale fitted so that the map
 //! covers about `N` cells ([`IntegrateOptions::fit_area`]). With
 //! [`remesh_counted`] the extraction's quad count of that map is
-//! measured and, when it misses `N` by more than [`RECOUNT_TOLERANCE`],
+//! measured and, when it misses `N` by more than
+//! [`recount::RECOUNT_TOLERANCE`],
 //! the map is made once more for the area that count asks (`dualex
 //! remesh` does; the extraction is not a dependency of this crate).
 //!
@@ -32,6 +33,7 @@ use crate::cut::cut_to_disk;
 use crate::field::CrossField;
 use crate::integrate::{integrate_report, IntegrateOptions};
 use crate::quantize::Rounding;
+use crate::recount::{self, CountQuads};
 use crate::smooth::{cross_field, FieldOptions};
 use crate::surface::{Surface, NO_FACE};
 use crate::union_find::{find, union};
@@ -144,14 +146,6 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
     make(surface, opts, None)
 }
 
-/// How many quads the extraction makes of a map (`None`: it refuses
-/// the map, or the mesh would not be written), for [`remesh_counted`].
-pub type CountQuads<'a> = dyn FnMut(&TriMap) -> Option<usize> + 'a;
-
-/// Most relative miss of the extraction's quad count that
-/// [`remesh_counted`] accepts without making the map again.
-pub const RECOUNT_TOLERANCE: f64 = 0.05;
-
 /// [`remesh`] with the extraction's quad count in the loop (for
 /// [`Target::Quads`]). `count` tells how many quads the extraction makes
 /// of a map (`None`: it cannot tell, e.g. it refuses the map). The area
@@ -159,11 +153,13 @@ pub const RECOUNT_TOLERANCE: f64 = 0.05;
 /// one quad per cell: its repair adds quads near singular vertices off
 /// the grid (up to ~25 % at 100 quads), its doublet removal takes some,
 /// a global fallback subdivides (×4). When the first map's count `Q`
-/// misses `N` by more than [`RECOUNT_TOLERANCE`] with a share of quads per
-/// cell within [`RECOUNT_MAX_RATIO`] (not a subdivision), the quads are taken as
+/// misses `N` by more than [`recount::RECOUNT_TOLERANCE`] with a share of quads per
+/// cell within [`recount::RECOUNT_MAX_RATIO`] (not a subdivision), the quads are taken as
 /// proportional to the area `A` (`Q/A` quads per cell) and the map is
-/// made once more for the area `N·A/Q` (field and cut reused); the map
-/// whose count is closer to `N` is kept, and a map the extraction
+/// made once more for the area `N·A/Q` (field and cut reused; the area
+/// fit starts from the first map's roundings and has what they left of
+/// its budget, two roundings at least);
+/// the map whose count is closer to `N` is kept, and a map the extraction
 /// refuses never replaces one it takes.
 pub fn remesh_counted(
     surface: &Surface,
@@ -196,7 +192,7 @@ fn make(
     let cut = cut_to_disk(surface, &f.singularities)?;
     let t2 = Instant::now();
     let singular: Vec<u32> = f.singularities.iter().map(|&(v, _)| v).collect();
-    let mut iopts = IntegrateOptions {
+    let iopts = IntegrateOptions {
         quads: match opts.target {
             Target::Quads(n) => Some(n),
             Target::EdgeLength(_) => None,
@@ -213,29 +209,14 @@ fn make(
         gauge_offset: [rng.unit(), rng.unit()],
         ..IntegrateOptions::default()
     };
-    let (mut map, mut rep) = integrate_report(surface, &f.field, &cut.is_cut, &singular, &iopts)?;
-    let mut counted = Vec::new();
-    let mut counting = Duration::ZERO;
-    if let (Target::Quads(n), Some(count)) = (opts.target, count) {
-        let mut count = |m: &TriMap| {
-            let t = Instant::now();
-            let q = count(m);
-            counting += t.elapsed();
-            q
-        };
-        let first = count(&map);
-        counted.push(first);
-        let area_target = first.and_then(|q| recount_target(n, rep.map_area, q));
-        if let (Some(q), Some(area)) = (first, area_target) {
-            iopts.quads = Some(area);
-            let (map2, rep2) = integrate_report(surface, &f.field, &cut.is_cut, &singular, &iopts)?;
-            let second = count(&map2);
-            counted.push(second);
-            if second.is_some_and(|q2| q2.abs_diff(n) < q.abs_diff(n)) {
-                (map, rep) = (map2, rep2);
-            }
+    let run = |o: &IntegrateOptions| integrate_report(surface, &f.field, &cut.is_cut, &singular, o);
+    let (map, rep, counted, counting) = match (opts.target, count) {
+        (Target::Quads(n), Some(count)) => recount::integrate_counted(run, iopts, n, count)?,
+        _ => {
+            let (map, rep) = run(&iopts)?;
+            (map, rep, Vec::new(), Duration::ZERO)
         }
-    }
+    };
     let t3 = Instant::now();
     let mut singularity_index = BTreeMap::new();
     for &(_, q) in &f.singularities {
@@ -268,32 +249,6 @@ fn make(
         ],
     };
     Ok(Remeshed { map, stats })
-}
-
-/// Most quads per cell (and least, its inverse) that [`remesh_counted`]
-/// corrects for: the extraction's local repairs add or take a fraction of
-/// the quads, but a count 4× the area is the global fallback's
-/// subdivision, a different event: asking for a quarter of the cells
-/// would give a mesh of a quarter of the quads whenever the coarser map
-/// is not subdivided (measured: 16–27 quads for 100 on the horse).
-pub const RECOUNT_MAX_RATIO: f64 = 1.5;
-
-/// The area to make the map again for, when the extraction made `quads`
-/// of a map of area `area` for `n` ([`remesh_counted`]); `None` when the
-/// count is within [`RECOUNT_TOLERANCE`], when quads per cell are beyond
-/// [`RECOUNT_MAX_RATIO`], when the new area would be the old target (the
-/// same map again) or is not a count.
-fn recount_target(n: usize, area: f64, quads: usize) -> Option<usize> {
-    let miss = (quads as f64 - n as f64).abs() / n as f64;
-    if miss <= RECOUNT_TOLERANCE || quads == 0 || !(area.is_finite() && area > 0.0) {
-        return None;
-    }
-    let ratio = quads as f64 / area;
-    if !(1.0 / RECOUNT_MAX_RATIO..=RECOUNT_MAX_RATIO).contains(&ratio) {
-        return None;
-    }
-    let target = (n as f64 * area / quads as f64).round();
-    (target >= 1.0 && target != n as f64).then_some(target as usize)
 }
 
 /// Turns the field by `angle` on every component with no fixed face
@@ -417,26 +372,5 @@ mod tests {
         let r = remesh_counted(&s, &opts, &mut exact).expect("the sphere's map");
         assert_eq!(r.stats.counted.len(), 1);
         assert_eq!(r.map.coords, plain.map.coords);
-    }
-
-    #[test]
-    fn recount_targets() {
-        // 5 % off or closer: no second map
-        assert_eq!(recount_target(100, 100.0, 105), None);
-        assert_eq!(recount_target(100, 100.0, 95), None);
-        // 20 % more quads than cells: 100 · 100 / 120
-        assert_eq!(recount_target(100, 100.0, 120), Some(83));
-        // 40 % more quads than cells: 500 · 490 / 686
-        assert_eq!(recount_target(500, 490.0, 686), Some(357));
-        // subdivided once (4 quads per cell), or a third of a quad per
-        // cell: not a repair's share, no second map
-        assert_eq!(recount_target(500, 490.0, 1960), None);
-        assert_eq!(recount_target(500, 490.0, 160), None);
-        // the same target again: the same map, not made
-        assert_eq!(recount_target(100, 89.0, 89), None);
-        // nothing to go by
-        assert_eq!(recount_target(100, 100.0, 0), None);
-        assert_eq!(recount_target(100, f64::NAN, 130), None);
-        assert_eq!(recount_target(100, -3.0, 130), None);
     }
 }

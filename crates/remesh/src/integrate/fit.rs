@@ -21,6 +21,12 @@
 //!   every step near the other end; the bisection halves the bracket
 //!   every step whatever the areas.
 //!
+//! A search may start from the roundings of an earlier one for another
+//! target on the same map ([`ScaleSearch::with_seen`]): the rounded area
+//! at a scale is a fact whatever the target, so the closest area below
+//! and above the new target bracket it at once, and a seen area close
+//! enough is rounded again rather than searched for.
+//!
 //! Invariant: every scale returned is positive and finite when the inputs
 //! are (a non-positive or non-finite area leaves the scale as it is).
 
@@ -48,6 +54,35 @@ impl ScaleSearch {
         }
     }
 
+    /// A search for `target` knowing the roundings `seen` (`(scale,
+    /// area)`, any order) of an earlier search on the same map: its
+    /// bracket is the seen area closest below `target` and the one
+    /// closest above. Also returns the scale to round at first: the seen
+    /// one whose area is closest to `target` when that area is within
+    /// `tolerance` (relative), else the bracket's middle when there is a
+    /// bracket (something not seen yet), else `None` (the caller's own
+    /// guess).
+    pub fn with_seen(target: f64, seen: &[(f64, f64)], tolerance: f64) -> (Self, Option<f64>) {
+        let mut search = ScaleSearch::new(target);
+        let good = |&&(s, a): &&(f64, f64)| s.is_finite() && s > 0.0 && a.is_finite() && a > 0.0;
+        let miss = |a: f64| (a - target).abs();
+        let closest = |side: &dyn Fn(f64) -> bool| {
+            seen.iter()
+                .filter(good)
+                .filter(|&&(_, a)| side(a))
+                .min_by(|x, y| miss(x.1).total_cmp(&miss(y.1)))
+                .copied()
+        };
+        search.below = closest(&|a| a < target);
+        search.above = closest(&|a| a > target);
+        let start = match (closest(&|_| true), search.below, search.above) {
+            (Some((s, a)), _, _) if miss(a) <= tolerance * target => Some(s),
+            (_, Some((sb, _)), Some((sa, _))) => Some(bisect(sb, sa)),
+            _ => None,
+        };
+        (search, start)
+    }
+
     /// The scale to try after a rounding at `scale` gave `area`.
     pub fn next(&mut self, scale: f64, area: f64) -> f64 {
         let n = self.target;
@@ -62,10 +97,15 @@ impl ScaleSearch {
             return scale;
         }
         match (self.below, self.above) {
-            (Some((sb, _)), Some((sa, _))) => (0.5 * (sb * sb + sa * sa)).sqrt(),
+            (Some((sb, _)), Some((sa, _))) => bisect(sb, sa),
             _ => scale * ((2.0 * n - area).max(LEAST_TARGET * n) / n).sqrt(),
         }
     }
+}
+
+/// The middle of `[a, b]` in `s²` (the middle of the continuous areas).
+fn bisect(a: f64, b: f64) -> f64 {
+    (0.5 * (a * a + b * b)).sqrt()
 }
 
 #[cfg(test)]
@@ -128,6 +168,44 @@ mod tests {
             let s = search.next(2.2, 150.0);
             assert!((s * s - 0.5 * (4.0 + 4.84)).abs() < 1e-12, "{s}");
         }
+    }
+
+    /// Seen roundings bracket a new target at once and give the one to
+    /// make again when close enough; bad samples are ignored.
+    #[test]
+    fn seen_roundings_bracket_and_start() {
+        let seen = [
+            (2.54, 72.0),
+            (2.88, 117.0),
+            (2.71, 114.0),
+            (2.63, 109.0),
+            (2.59, 89.0),
+        ];
+        let (mut search, start) = ScaleSearch::with_seen(87.0, &seen, 0.05);
+        assert_eq!(start, Some(2.59));
+        assert_eq!(
+            (search.below, search.above),
+            (Some((2.54, 72.0)), Some((2.59, 89.0)))
+        );
+        // a rounding at 2.59 gives 89 again (above 87): bisect [2.54, 2.59]
+        let s = search.next(2.59, 89.0);
+        assert!((s * s - 0.5 * (2.54f64.powi(2) + 2.59f64.powi(2))).abs() < 1e-12);
+        let (search, start) = ScaleSearch::with_seen(100.0, &seen, 0.05);
+        assert_eq!(start, Some(bisect(2.59, 2.63)), "nothing within 5 % of 100");
+        assert_eq!(
+            (search.below, search.above),
+            (Some((2.59, 89.0)), Some((2.63, 109.0)))
+        );
+        let (_, start) = ScaleSearch::with_seen(50.0, &seen, 0.05);
+        assert_eq!(start, None, "no bracket, nothing close");
+        let bad = [
+            (f64::NAN, 100.0),
+            (2.0, f64::INFINITY),
+            (-1.0, 90.0),
+            (2.0, 0.0),
+        ];
+        let (search, start) = ScaleSearch::with_seen(100.0, &bad, 0.05);
+        assert_eq!((search.below, search.above, start), (None, None, None));
     }
 
     /// Without a bracket the step follows the deficit; a huge excess is
