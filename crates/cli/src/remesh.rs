@@ -10,6 +10,7 @@
 use crate::args::{ExtractArgs, Global, QuadArgs, RemeshArgs, RoundArgs, RoundingArg, WeldArgs};
 use crate::summary::count;
 use crate::{outputs, timing, PNG_SIZE};
+use dualex_check::topology;
 use dualex_map::grid_offset::GridOffset;
 use dualex_remesh::{Quantization, Target};
 
@@ -77,7 +78,24 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
         },
         seed: a.seed,
     };
-    let made = dualex_remesh::remesh(&surface, &opts).map_err(|e| format!("{name}: {e}"))?;
+    // the extraction's quad count steers the quad count (see
+    // `remesh_counted`): the same options as the extraction below, and
+    // only a mesh it would write counts (valid, the surface's topology)
+    let qopts = dualex_quad::QuadOptions {
+        fairing: !a.no_fairing,
+        seed: a.seed,
+        grid_offset: GridOffset::Auto,
+        ..dualex_quad::QuadOptions::default()
+    };
+    let shape = topology::surface_shape(surface.positions.len(), &surface.triangles);
+    let mut quads_of = |m: &dualex_map::TriMap| {
+        let (mesh, _) = dualex_quad::extract(m, &qopts).ok()?;
+        let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+        let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
+        same.then_some(mesh.cells.len())
+    };
+    let made = dualex_remesh::remesh_counted(&surface, &opts, &mut quads_of)
+        .map_err(|e| format!("{name}: {e}"))?;
     laps.lap("map");
     let s = &made.stats;
     if !g.quiet {
@@ -175,6 +193,12 @@ fn stats_json(s: &dualex_remesh::RemeshStats) -> serde_json::Value {
         "rounded": s.rounded,
         "off_grid": s.off_grid,
         "max_rounding": s.max_rounding,
-        "time_ms": { "field": s.time_ms[0], "cut": s.time_ms[1], "integrate": s.time_ms[2] },
+        "counted": s.counted,
+        "time_ms": {
+            "field": s.time_ms[0],
+            "cut": s.time_ms[1],
+            "integrate": s.time_ms[2],
+            "count": s.time_ms[3],
+        },
     })
 }

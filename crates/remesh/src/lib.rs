@@ -14,6 +14,7 @@
 //! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
 //! | seamless integration | [`integrate`](mod@integrate) | field + cut → per-corner `(u, v)` |
 //! | direct rounding | [`quantize`] | integer unknowns rounded at once, one more solve |
+//! | the extraction's count | [`recount`] | a count that misses `N` → the map once more for the area it asks |
 //!
 //! The output is a [`dualex_map::TriMap`] that `dualex quad` extracts.
 //! Beside the steps: [`sparse`] (the sparse Cholesky solves, over `faer`)
@@ -31,6 +32,7 @@ pub mod field;
 pub mod integrate;
 pub mod pipeline;
 pub mod quantize;
+pub mod recount;
 pub mod shapes;
 pub mod singularity;
 pub mod smooth;
@@ -42,7 +44,10 @@ pub mod weld;
 pub use cut::{cut_to_disk, Cut};
 pub use field::CrossField;
 pub use integrate::{integrate, integrate_report, IntegrateOptions, IntegrateReport};
-pub use pipeline::{remesh, Quantization, RemeshOptions, RemeshStats, Remeshed, Target};
+pub use pipeline::{
+    remesh, remesh_counted, Quantization, RemeshOptions, RemeshStats, Remeshed, Target,
+};
 pub use quantize::Rounding;
+pub use recount::CountQuads;
 pub use smooth::{cross_field, FieldOptions, FieldResult};
 pub use surface::{Surface, SurfaceError, NO_FACE};

@@ -9,8 +9,13 @@
 //! surface denoised along its normals ([`crate::denoise`],
 //! [`crate::smooth`]), its singular vertices, a cut through them to a disk
 //! per component ([`crate::cut`]), seamless least-squares integration and
-//! rounding ([`crate::integrate`]) at a scale fitted so that the map
-//! covers about `N` cells ([`IntegrateOptions::fit_area`]).
+//! rounding ([`crate::integrate`](mod@crate::integrate)) at a scale fitted so that the map
+//! covers about `N` cells ([`IntegrateOptions::fit_area`]). With
+//! [`remesh_counted`] the extraction's quad count of that map is
+//! measured and, when it misses `N` by more than
+//! [`recount::RECOUNT_TOLERANCE`],
+//! the map is made once more for the area that count asks (`dualex
+//! remesh` does; the extraction is not a dependency of this crate).
 //!
 //! Measured defaults (crate README, "Realistic maps"): on the shared real
 //! surfaces 4–483 singularities (reference maps: 30–403) and 0–3.4 %
@@ -28,12 +33,13 @@ use crate::cut::cut_to_disk;
 use crate::field::CrossField;
 use crate::integrate::{integrate_report, IntegrateOptions};
 use crate::quantize::Rounding;
+use crate::recount::{self, CountQuads};
 use crate::smooth::{cross_field, FieldOptions};
 use crate::surface::{Surface, NO_FACE};
 use crate::union_find::{find, union};
 use dualex_map::TriMap;
 use std::collections::BTreeMap;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// How big the quads are.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -116,8 +122,14 @@ pub struct RemeshStats {
     pub off_grid: usize,
     /// Largest move of a rounding, in map units.
     pub max_rounding: f64,
-    /// Wall-clock milliseconds: field, cut, integration (with rounding).
-    pub time_ms: [f64; 3],
+    /// The extraction's quad count of each map made
+    /// ([`remesh_counted`]: one, or two when the first missed `N`;
+    /// `None`: the extraction refused that map); empty without a count.
+    pub counted: Vec<Option<usize>>,
+    /// Wall-clock milliseconds: field, cut, integration (with rounding;
+    /// both maps when made twice), the extraction's counts
+    /// ([`remesh_counted`]).
+    pub time_ms: [f64; 4],
 }
 
 /// A map and its numbers.
@@ -131,6 +143,38 @@ pub struct Remeshed {
 
 /// The map of `surface` (module docs).
 pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, String> {
+    make(surface, opts, None)
+}
+
+/// [`remesh`] with the extraction's quad count in the loop (for
+/// [`Target::Quads`]). `count` tells how many quads the extraction makes
+/// of a map (`None`: it cannot tell, e.g. it refuses the map). The area
+/// fit makes the map's area about `N`, but the extraction does not make
+/// one quad per cell: its repair adds quads near singular vertices off
+/// the grid (up to ~25 % at 100 quads), its doublet removal takes some,
+/// a global fallback subdivides (×4). When the first map's count `Q`
+/// misses `N` by more than [`recount::RECOUNT_TOLERANCE`] with a share of quads per
+/// cell within [`recount::RECOUNT_MAX_RATIO`] (not a subdivision), the quads are taken as
+/// proportional to the area `A` (`Q/A` quads per cell) and the map is
+/// made once more for the area `N·A/Q` (field and cut reused; the area
+/// fit starts from the first map's roundings and has what they left of
+/// its budget, two roundings at least);
+/// the map whose count is closer to `N` is kept, and a map the extraction
+/// refuses never replaces one it takes.
+pub fn remesh_counted(
+    surface: &Surface,
+    opts: &RemeshOptions,
+    count: &mut CountQuads<'_>,
+) -> Result<Remeshed, String> {
+    make(surface, opts, Some(count))
+}
+
+/// [`remesh`], and [`remesh_counted`] when `count` is given.
+fn make(
+    surface: &Surface,
+    opts: &RemeshOptions,
+    count: Option<&mut CountQuads<'_>>,
+) -> Result<Remeshed, String> {
     let t0 = Instant::now();
     let fopts = FieldOptions {
         sharp_degrees: opts.sharp_degrees,
@@ -165,7 +209,14 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         gauge_offset: [rng.unit(), rng.unit()],
         ..IntegrateOptions::default()
     };
-    let (map, rep) = integrate_report(surface, &f.field, &cut.is_cut, &singular, &iopts)?;
+    let run = |o: &IntegrateOptions| integrate_report(surface, &f.field, &cut.is_cut, &singular, o);
+    let (map, rep, counted, counting) = match (opts.target, count) {
+        (Target::Quads(n), Some(count)) => recount::integrate_counted(run, iopts, n, count)?,
+        _ => {
+            let (map, rep) = run(&iopts)?;
+            (map, rep, Vec::new(), Duration::ZERO)
+        }
+    };
     let t3 = Instant::now();
     let mut singularity_index = BTreeMap::new();
     for &(_, q) in &f.singularities {
@@ -189,7 +240,13 @@ pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, Strin
         rounded: rep.quantize.rounded,
         off_grid: rep.quantize.off_grid,
         max_rounding: rep.quantize.max_rounding,
-        time_ms: [ms(t0, t1), ms(t1, t2), ms(t2, t3)],
+        counted,
+        time_ms: [
+            ms(t0, t1),
+            ms(t1, t2),
+            ms(t2, t3) - counting.as_secs_f64() * 1e3,
+            counting.as_secs_f64() * 1e3,
+        ],
     };
     Ok(Remeshed { map, stats })
 }
@@ -265,5 +322,55 @@ mod tests {
             "seed 2 gives the same map as seed 1"
         );
         assert_eq!(run(1).map.coords, a.map.coords, "a seed gives one map");
+    }
+
+    /// The map's signed area (map units²).
+    fn area(map: &TriMap) -> f64 {
+        map.coords
+            .iter()
+            .map(|[a, b, d]| 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0])))
+            .sum()
+    }
+
+    /// An extraction that makes 30 % more quads than cells: the map is
+    /// made again for a smaller area and that one is kept; one that
+    /// refuses the second map keeps the first; no count, one map.
+    #[test]
+    fn the_extractions_count_retargets_the_map_once() {
+        let s = crate::shapes::icosphere(3);
+        let opts = RemeshOptions {
+            target: Target::Quads(300),
+            ..RemeshOptions::default()
+        };
+        let plain = remesh(&s, &opts).expect("the sphere's map");
+        assert!(plain.stats.counted.is_empty(), "no count, no entry");
+        let mut calls = 0;
+        let mut more = |m: &TriMap| {
+            calls += 1;
+            Some((1.3 * area(m)).round() as usize)
+        };
+        let r = remesh_counted(&s, &opts, &mut more).expect("the sphere's map");
+        assert_eq!(calls, 2);
+        let [Some(q1), Some(q2)] = r.stats.counted[..] else {
+            panic!("two counts: {:?}", r.stats.counted);
+        };
+        assert!(q1.abs_diff(300) > 15, "{q1}: no recount needed");
+        assert!(q2.abs_diff(300) <= 15, "{q2} for 300");
+        assert_eq!(
+            (1.3 * area(&r.map)).round() as usize,
+            q2,
+            "the second map kept"
+        );
+        // the second map refused: the first kept
+        let mut first_only =
+            |m: &TriMap| (area(m) > 260.0).then(|| (1.3 * area(m)).round() as usize);
+        let r = remesh_counted(&s, &opts, &mut first_only).expect("the sphere's map");
+        assert_eq!(r.stats.counted, vec![Some(q1), None]);
+        assert_eq!(r.map.coords, plain.map.coords);
+        // a count within the tolerance: one map, the plain one
+        let mut exact = |m: &TriMap| Some(area(m).round() as usize);
+        let r = remesh_counted(&s, &opts, &mut exact).expect("the sphere's map");
+        assert_eq!(r.stats.counted.len(), 1);
+        assert_eq!(r.map.coords, plain.map.coords);
     }
 }

@@ -26,6 +26,7 @@
 pub mod charts;
 pub mod constraints;
 pub mod elim;
+pub mod fit;
 pub mod system;
 #[cfg(test)]
 mod test_cut;
@@ -65,6 +66,15 @@ pub struct IntegrateOptions {
     /// asked: 107 cells for 500 on the dragon, 457 on the horse. Default:
     /// on (one more solve).
     pub fit_area: bool,
+    /// Most roundings of the area fit (the first and the re-roundings at
+    /// the scales of [`fit::ScaleSearch`]; at least 1): each is a sparse
+    /// solve, the integration's main cost. Default: [`ROUNDINGS`].
+    pub max_roundings: usize,
+    /// Roundings of an earlier integration of the same surface, field,
+    /// cut and options but `quads` ([`IntegrateReport::roundings_seen`]):
+    /// the area fit starts from them ([`fit::ScaleSearch::with_seen`]).
+    /// Default: none.
+    pub seen: Vec<(f64, f64)>,
 }
 
 impl Default for IntegrateOptions {
@@ -77,6 +87,8 @@ impl Default for IntegrateOptions {
             align_boundary: Some(std::f64::consts::FRAC_PI_8),
             gauge_offset: [0.0, 0.0],
             fit_area: true,
+            max_roundings: ROUNDINGS,
+            seen: Vec::new(),
         }
     }
 }
@@ -93,6 +105,8 @@ pub struct IntegrateReport {
     pub map_area: f64,
     /// Roundings made (1 + re-roundings of [`IntegrateOptions::fit_area`]).
     pub roundings: usize,
+    /// `(scale, signed area)` of every rounding made, in order.
+    pub roundings_seen: Vec<(f64, f64)>,
     /// Wedges (chart vertices); the unknowns are twice as many.
     pub wedges: usize,
     /// Seam edges (cut interior edges).
@@ -174,17 +188,25 @@ pub fn integrate_report(
     } else {
         0
     };
-    // the rounding moves the area again: refit and round anew (at most
-    // `REFITS` times), keeping the map whose area is closest to `N`
+    // the rounding moves the area again: round anew at the scales of
+    // [`fit::ScaleSearch`] (at most `max_roundings` in all), keeping the map whose
+    // area is closest to `N`
     let target = match (opts.fit_area, opts.scale, opts.quads) {
         (true, None, Some(n)) => Some(n as f64),
         _ => None,
     };
     let mut best: Option<(f64, Vec<f64>, QuantizeReport, f64)> = None;
-    let (mut below, mut above) = (0.0f64, f64::INFINITY);
-    let mut roundings = 0;
-    for _ in 0..=REFITS {
-        roundings += 1;
+    let mut search = None;
+    if let Some(n) = target {
+        let (seeded, again) = fit::ScaleSearch::with_seen(n, &opts.seen, REFIT_TOLERANCE);
+        search = Some(seeded);
+        if let Some(s) = again {
+            scale = s;
+            energy = system::energy(surface, &charts, scale);
+        }
+    }
+    let mut roundings_seen = Vec::new();
+    for _ in 0..opts.max_roundings.max(1) {
         let start = fit
             .as_ref()
             .and_then(|x0| scaled_start(x0, scale / first_scale, &cons.rows, &cons.gauge));
@@ -199,22 +221,18 @@ pub fn integrate_report(
         )?;
         solves += q.solves;
         let area = signed_area(&charts.corner_wedge, &x);
+        roundings_seen.push((scale, area));
         let miss = target.map_or(0.0, |n| (area - n).abs() / n);
         if best.as_ref().is_none_or(|b| miss < b.0) {
             best = Some((miss, x, q, scale));
         }
-        match target {
-            Some(n) if miss > REFIT_TOLERANCE && area > 0.0 && area.is_finite() => {
-                // the rounded area is not monotone in the scale: bracket
-                if area < n {
-                    below = below.max(scale);
-                } else {
-                    above = above.min(scale);
+        match search.as_mut() {
+            Some(search) if miss > REFIT_TOLERANCE => {
+                let next = search.next(scale, area);
+                if next == scale {
+                    break;
                 }
-                scale *= (n / area).sqrt();
-                if below > 0.0 && above.is_finite() {
-                    scale = (below * above).sqrt();
-                }
+                scale = next;
                 energy = system::energy(surface, &charts, scale);
             }
             _ => break,
@@ -238,7 +256,8 @@ pub fn integrate_report(
         scale,
         first_scale,
         map_area: signed_area(&charts.corner_wedge, &x),
-        roundings,
+        roundings: roundings_seen.len(),
+        roundings_seen,
         wedges: charts.wedges,
         seams: charts.seam.iter().flatten().count(),
         rotated_seams: charts.seam.iter().flatten().filter(|&&p| p != 0).count(),
@@ -268,8 +287,9 @@ fn scaled_start(x0: &[f64], k: f64, rows: &[Form], gauge: &Gauge) -> Option<Vec<
     feasible.then_some(x)
 }
 
-/// Most re-roundings of [`IntegrateOptions::fit_area`] after the first.
-const REFITS: usize = 4;
+/// Default of [`IntegrateOptions::max_roundings`]: the first rounding and
+/// at most 4 re-roundings.
+pub const ROUNDINGS: usize = 5;
 
 /// Relative miss of the rounded map's area that asks for a re-rounding.
 const REFIT_TOLERANCE: f64 = 0.05;
