@@ -112,6 +112,13 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             }
         );
     }
+    let refused = s.counted.iter().take_while(|c| c.is_none()).count();
+    if refused > 0 && refused < s.counted.len() && !g.quiet {
+        eprintln!(
+            "dualex: {name}: the extraction refused the map at the seed's grid position; the grid was moved {} (remesh.counted in the stats)",
+            count(refused, "time", "times")
+        );
+    }
     if let Some(path) = &a.map_out {
         dualex_io::write_tri_map(path, &made.map).map_err(|e| e.to_string())?;
     }

@@ -123,7 +123,8 @@ pub struct RemeshStats {
     /// Largest move of a rounding, in map units.
     pub max_rounding: f64,
     /// The extraction's quad count of each map made
-    /// ([`remesh_counted`]: one, or two when the first missed `N`;
+    /// ([`remesh_counted`]: one, or two when the first missed `N`, after
+    /// the maps refused with the grid where the seed puts it;
     /// `None`: the extraction refused that map); empty without a count.
     pub counted: Vec<Option<usize>>,
     /// Wall-clock milliseconds: field, cut, integration (with rounding;
@@ -371,6 +372,22 @@ mod tests {
         let mut exact = |m: &TriMap| Some(area(m).round() as usize);
         let r = remesh_counted(&s, &opts, &mut exact).expect("the sphere's map");
         assert_eq!(r.stats.counted.len(), 1);
+        assert_eq!(r.map.coords, plain.map.coords);
+        // the first map refused: made again with the grid moved, kept
+        let mut calls = 0;
+        let mut refuse_first = |m: &TriMap| {
+            calls += 1;
+            (calls > 1).then(|| area(m).round() as usize)
+        };
+        let r = remesh_counted(&s, &opts, &mut refuse_first).expect("the sphere's map");
+        assert_eq!(r.stats.counted.len(), 2);
+        assert_eq!(r.stats.counted[0], None);
+        assert!(r.stats.counted[1].is_some());
+        assert_ne!(r.map.coords, plain.map.coords, "the grid moved");
+        // every map refused: all the moves tried, the first map returned
+        let mut never = |_: &TriMap| None;
+        let r = remesh_counted(&s, &opts, &mut never).expect("the sphere's map");
+        assert_eq!(r.stats.counted, vec![None; 1 + crate::recount::MOVES.len()]);
         assert_eq!(r.map.coords, plain.map.coords);
     }
 }

@@ -14,8 +14,15 @@
 //! ([`IntegrateOptions::seen`]) with what they left of the budget
 //! ([`ROUNDINGS`]; two at least).
 //!
-//! Invariants: at most two maps; the one kept has the count closer to `N`
-//! (the first on a tie); a map counted `None` never replaces one counted.
+//! A first map the extraction refuses (on coarse grids over many
+//! singularities the glued graph can shatter into pieces none of which
+//! is most of the surface) is made again with the grid moved: the gauge
+//! offset shifted by [`MOVES`], up to their number of times, until one is
+//! taken; every map made is in the counts (`None` for a refused one).
+//!
+//! Invariants: at most `1 + MOVES.len()` maps for a refusal, then two for
+//! the count; the one kept has the count closer to `N` (the first on a
+//! tie); a map counted `None` never replaces one counted.
 
 use crate::integrate::{IntegrateOptions, IntegrateReport, ROUNDINGS};
 use dualex_map::TriMap;
@@ -24,6 +31,11 @@ use std::time::{Duration, Instant};
 /// How many quads the extraction makes of a map (`None`: it refuses
 /// the map, or the mesh would not be written), for [`crate::remesh_counted`].
 pub type CountQuads<'a> = dyn FnMut(&TriMap) -> Option<usize> + 'a;
+
+/// The shifts of the gauge offset (map units, both axes) that move the
+/// grid against the surface when the extraction refuses a map: half a
+/// cell first (the farthest position), then a quarter and three quarters.
+pub const MOVES: [[f64; 2]; 2] = [[0.5, 0.5], [0.25, 0.75]];
 
 /// Most relative miss of the extraction's quad count that
 /// [`crate::remesh_counted`] accepts without making the map again.
@@ -48,8 +60,25 @@ pub fn integrate_counted(
         q
     };
     let (mut map, mut rep) = integrate(&opts)?;
-    let first = count(&map);
+    let mut first = count(&map);
     let mut counted = vec![first];
+    let gauge = opts.gauge_offset;
+    for shift in MOVES {
+        if first.is_some() {
+            break;
+        }
+        // refused: the grid moved against the surface
+        let moved = IntegrateOptions {
+            gauge_offset: [0, 1].map(|i| (gauge[i] + shift[i]).rem_euclid(1.0)),
+            ..opts.clone()
+        };
+        let (m, r) = integrate(&moved)?;
+        first = count(&m);
+        counted.push(first);
+        if first.is_some() {
+            (map, rep, opts) = (m, r, moved);
+        }
+    }
     let area_target = first.and_then(|q| recount_target(n, rep.map_area, q));
     if let (Some(q), Some(area)) = (first, area_target) {
         // the second map shares the first's budget of roundings (the
