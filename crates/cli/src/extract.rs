@@ -63,21 +63,10 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
     quad_map(&map, &name, done, a, g, laps, None)
 }
 
-/// The quad extraction of a map read or made (`quad`, `remesh`): extract,
-/// check, write; `done` starts the summary line, `extra` is one more
-/// section of the stats (`remesh`'s).
-pub fn quad_map(
-    map: &dualex_map::TriMap,
-    name: &str,
-    done: &str,
-    a: &QuadArgs,
-    g: &Global,
-    mut laps: timing::Laps,
-    extra: Option<(&str, serde_json::Value)>,
-) -> Result<(), String> {
+/// The extraction options of `quad` (and `remesh`) from the arguments.
+pub fn quad_options(a: &QuadArgs, g: &Global) -> dualex_quad::QuadOptions {
     let x = &a.extract;
-    let name = name.to_string();
-    let opts = dualex_quad::QuadOptions {
+    dualex_quad::QuadOptions {
         fairing: !a.no_fairing,
         transitions: dualex_map::TransitionOptions {
             round: x.round.round,
@@ -86,7 +75,37 @@ pub fn quad_map(
         seed: x.seed,
         grid_offset: x.grid_offset,
         singularity_stats: x.stats.is_some() || g.verbose,
+    }
+}
+
+/// What the caller of [`quad_map`] made before: one more section of the
+/// stats, and the map's extraction with [`quad_options`] if it has it
+/// (`remesh` extracts its maps to count their quads).
+pub struct Before<'a> {
+    /// The stats section (key, value).
+    pub section: (&'a str, serde_json::Value),
+    /// The extraction of this very map.
+    pub extracted: Option<dualex_quad::Extracted>,
+}
+
+/// The quad extraction of a map read or made (`quad`, `remesh`): extract
+/// (unless `before` has it), check, write; `done` starts the summary
+/// line.
+pub fn quad_map(
+    map: &dualex_map::TriMap,
+    name: &str,
+    done: &str,
+    a: &QuadArgs,
+    g: &Global,
+    mut laps: timing::Laps,
+    before: Option<Before>,
+) -> Result<(), String> {
+    let (extra, done_before) = match before {
+        Some(b) => (Some(b.section), b.extracted),
+        None => (None, None),
     };
+    let x = &a.extract;
+    let name = name.to_string();
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting quads");
     let dualex_quad::Extracted {
@@ -94,7 +113,12 @@ pub fn quad_map(
         stats,
         corner_uv,
         ..
-    } = dualex_quad::extract_full(map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
+    } = match done_before {
+        // the same map, extracted with the same options already
+        Some(x) => x,
+        None => dualex_quad::extract_full(map, &quad_options(a, g))
+            .map_err(|e| e.in_file(name.clone()).to_string())?,
+    };
     laps.lap("extract");
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
     laps.lap("check");

@@ -78,21 +78,35 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
         },
         seed: a.seed,
     };
-    // the extraction's quad count steers the quad count (see
-    // `remesh_counted`): the same options as the extraction below, and
-    // only a mesh it would write counts (valid, the surface's topology)
-    let qopts = dualex_quad::QuadOptions {
-        fairing: !a.no_fairing,
-        seed: a.seed,
-        grid_offset: GridOffset::Auto,
-        ..dualex_quad::QuadOptions::default()
+    let quad = QuadArgs {
+        input: a.input.clone(),
+        output: a.output.clone(),
+        png: None,
+        no_fairing: a.no_fairing,
+        uv: a.uv,
+        extract: ExtractArgs {
+            stats: a.stats.clone(),
+            grid_offset: GridOffset::Auto,
+            strict: a.strict,
+            seed: a.seed,
+            round: RoundArgs { round: false },
+        },
+        weld: WeldArgs { no_weld: true },
     };
+    // the extraction's quad count steers the quad count (see
+    // `remesh_counted`): the extraction below, and only a mesh it would
+    // write counts (valid, the surface's topology); the extraction of each
+    // map counted is kept, so the map kept is not extracted again
+    let qopts = crate::extract::quad_options(&quad, g);
     let shape = topology::surface_shape(surface.positions.len(), &surface.triangles);
+    let mut extracted: Vec<(Vec<[[f64; 2]; 3]>, dualex_quad::Extracted)> = Vec::new();
     let mut quads_of = |m: &dualex_map::TriMap| {
-        let (mesh, _) = dualex_quad::extract(m, &qopts).ok()?;
-        let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+        let x = dualex_quad::extract_full(m, &qopts).ok()?;
+        let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
         let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
-        same.then_some(mesh.cells.len())
+        let n = x.mesh.cells.len();
+        extracted.push((m.coords.clone(), x));
+        same.then_some(n)
     };
     let made = dualex_remesh::remesh_counted(&surface, &opts, &mut quads_of)
         .map_err(|e| format!("{name}: {e}"))?;
@@ -127,21 +141,10 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             .map_err(|e| format!("{name}: {e}"))?;
         outputs::write_png(path, &bytes)?;
     }
-    let quad = QuadArgs {
-        input: a.input.clone(),
-        output: a.output.clone(),
-        png: None,
-        no_fairing: a.no_fairing,
-        uv: a.uv,
-        extract: ExtractArgs {
-            stats: a.stats.clone(),
-            grid_offset: GridOffset::Auto,
-            strict: a.strict,
-            seed: a.seed,
-            round: RoundArgs { round: false },
-        },
-        weld: WeldArgs { no_weld: true },
-    };
+    let done_before = extracted
+        .into_iter()
+        .find(|(coords, _)| *coords == made.map.coords)
+        .map(|(_, x)| x);
     let done = if a.input.is_some() {
         "done"
     } else {
@@ -154,7 +157,10 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
         &quad,
         g,
         laps,
-        Some(("remesh", stats_json(s))),
+        Some(crate::extract::Before {
+            section: ("remesh", stats_json(s)),
+            extracted: done_before,
+        }),
     )
 }
 

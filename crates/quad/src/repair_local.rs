@@ -24,8 +24,9 @@
 //! caller like any output.
 
 use dualex_map::QuadMesh;
-use std::collections::HashMap;
+use fast_hash::FastMap as HashMap;
 
+mod fast_hash;
 mod paths;
 
 /// The oriented edges of polygon `p`.
@@ -39,7 +40,7 @@ fn key(a: u32, b: u32) -> (u32, u32) {
 
 /// Faces of each undirected edge.
 fn edge_faces(polys: &[Vec<u32>]) -> HashMap<(u32, u32), Vec<usize>> {
-    let mut m: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+    let mut m: HashMap<(u32, u32), Vec<usize>> = HashMap::default();
     for (f, p) in polys.iter().enumerate() {
         for (a, b) in edges(p) {
             m.entry(key(a, b)).or_default().push(f);

@@ -17,9 +17,10 @@
 //! Invariants: only quads are crossed; a path never enters a face twice
 //! (it would cost more than leaving that face directly).
 
+use super::fast_hash::FastMap as HashMap;
 use super::{edges, key, Path};
 use std::cmp::Reverse;
-use std::collections::{BinaryHeap, HashMap};
+use std::collections::BinaryHeap;
 
 /// Odd faces up to which the matching is exact (2^k subsets).
 pub const EXACT_MATCHING: usize = 16;
@@ -63,19 +64,30 @@ fn step(q: &[u32], ein: Option<Edge>, eout: Edge) -> u32 {
     }
 }
 
-/// Dijkstra from odd face `s` (module docs).
-fn reach(s: usize, polys: &[Vec<u32>], by_edge: &HashMap<Edge, Vec<usize>>) -> Reach {
+/// Dijkstra from odd face `s` (module docs); with `nearest`, it stops
+/// once every state as cheap as the nearest odd face is settled (all the
+/// odd faces at that least cost are found; the boundary then is not).
+fn reach(
+    s: usize,
+    polys: &[Vec<u32>],
+    by_edge: &HashMap<Edge, Vec<usize>>,
+    nearest: bool,
+) -> Reach {
     let mut out = Reach {
-        to_face: HashMap::new(),
+        to_face: HashMap::default(),
         boundary: None,
     };
-    let mut dist: HashMap<State, u32> = HashMap::new();
-    let mut prev: HashMap<State, State> = HashMap::new();
+    let mut dist: HashMap<State, u32> = HashMap::default();
+    let mut prev: HashMap<State, State> = HashMap::default();
     let mut heap = BinaryHeap::new();
     let mut seq = 0u64;
     dist.insert((s, None), 0);
     heap.push(Reverse((0u32, seq, s, None::<Edge>)));
+    let mut found: Option<u32> = None;
     while let Some(Reverse((cost, _, f, ein))) = heap.pop() {
+        if nearest && found.is_some_and(|c| cost > c) {
+            break;
+        }
         if dist.get(&(f, ein)).is_some_and(|&d| d < cost) {
             continue;
         }
@@ -83,6 +95,7 @@ fn reach(s: usize, polys: &[Vec<u32>], by_edge: &HashMap<Edge, Vec<usize>>) -> R
             out.to_face
                 .entry(f)
                 .or_insert_with(|| (cost, unwind((f, ein), &prev)));
+            found.get_or_insert(cost);
             continue;
         }
         if f != s && polys[f].len() != 4 {
@@ -124,14 +137,20 @@ pub fn next(polys: &[Vec<u32>], by_edge: &HashMap<Edge, Vec<usize>>) -> Option<P
         .collect();
     let first = *odd.first()?;
     if odd.len() > EXACT_MATCHING {
-        let r = reach(first, polys, by_edge);
+        // the nearest odd face (the least cost, then the least faces);
+        // the boundary only when no odd face is in reach (then the search
+        // went everywhere)
+        let r = reach(first, polys, by_edge, true);
         let best = r
             .to_face
             .into_values()
             .min_by_key(|(c, p)| (*c, p.0.clone()));
         return best.or(r.boundary).map(|(_, p)| p);
     }
-    let reaches: Vec<Reach> = odd.iter().map(|&s| reach(s, polys, by_edge)).collect();
+    let reaches: Vec<Reach> = odd
+        .iter()
+        .map(|&s| reach(s, polys, by_edge, false))
+        .collect();
     let k = odd.len();
     const INF: u32 = u32::MAX / 4;
     let pair = |i: usize, j: usize| reaches[i].to_face.get(&odd[j]).map_or(INF, |(c, _)| *c);
