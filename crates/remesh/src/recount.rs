@@ -20,8 +20,15 @@
 //! offset shifted by [`MOVES`], up to their number of times, until one is
 //! taken; every map made is in the counts (`None` for a refused one).
 //!
-//! Invariants: at most `1 + MOVES.len()` maps for a refusal, then two for
-//! the count; the one kept has the count closer to `N` (the first on a
+//! When the closer of the two maps still misses `N` by more than
+//! [`SECANT_MISS`], a third is made at the area the two counts
+//! interpolate ([`secant_target`]), with two roundings.
+//!
+//! (A refused second or third map is not made again: measured on the
+//! shared surfaces, moving the grid there changed no count.)
+//!
+//! Invariants: at most `1 + MOVES.len()` maps for a refusal, then three
+//! for the count; the one kept has the count closer to `N` (the first on a
 //! tie); a map counted `None` never replaces one counted.
 
 use crate::integrate::{IntegrateOptions, IntegrateReport, ROUNDINGS};
@@ -59,26 +66,10 @@ pub fn integrate_counted(
         counting += t.elapsed();
         q
     };
-    let (mut map, mut rep) = integrate(&opts)?;
-    let mut first = count(&map);
-    let mut counted = vec![first];
-    let gauge = opts.gauge_offset;
-    for shift in MOVES {
-        if first.is_some() {
-            break;
-        }
-        // refused: the grid moved against the surface
-        let moved = IntegrateOptions {
-            gauge_offset: [0, 1].map(|i| (gauge[i] + shift[i]).rem_euclid(1.0)),
-            ..opts.clone()
-        };
-        let (m, r) = integrate(&moved)?;
-        first = count(&m);
-        counted.push(first);
-        if first.is_some() {
-            (map, rep, opts) = (m, r, moved);
-        }
-    }
+    let mut counted = Vec::new();
+    let (mut map, mut rep, first, moved) =
+        taken(&mut integrate, &mut count, &opts, MOVES.len(), &mut counted)?;
+    opts = moved;
     let area_target = first.and_then(|q| recount_target(n, rep.map_area, q));
     if let (Some(q), Some(area)) = (first, area_target) {
         // the second map shares the first's budget of roundings (the
@@ -87,14 +78,85 @@ pub fn integrate_counted(
         opts.quads = Some(area);
         opts.max_roundings = ROUNDINGS.saturating_sub(rep.roundings).max(2);
         opts.seen = rep.roundings_seen.clone();
-        let (map2, rep2) = integrate(&opts)?;
-        let second = count(&map2);
-        counted.push(second);
-        if second.is_some_and(|q2| q2.abs_diff(n) < q.abs_diff(n)) {
-            (map, rep) = (map2, rep2);
+        let (map2, rep2, second, _) = taken(&mut integrate, &mut count, &opts, 0, &mut counted)?;
+        let (a1, a2) = (rep.map_area, rep2.map_area);
+        let mut best = q;
+        if let Some(q2) = second.filter(|q2| q2.abs_diff(n) < q.abs_diff(n)) {
+            best = q2;
+            (map, rep) = (map2, rep2.clone());
+        }
+        // still more than 10 % off: one more map, at the area the two
+        // counts interpolate (a secant step), from what both searches saw
+        let third = second.and_then(|q2| secant_target(n, (a1, q), (a2, q2)));
+        if let Some(area) = third.filter(|_| best.abs_diff(n) as f64 > SECANT_MISS * n as f64) {
+            opts.quads = Some(area);
+            opts.max_roundings = 2;
+            opts.seen.extend(rep2.roundings_seen.iter().cloned());
+            let (map3, rep3, q3, _) = taken(&mut integrate, &mut count, &opts, 0, &mut counted)?;
+            if q3.is_some_and(|q3| q3.abs_diff(n) < best.abs_diff(n)) {
+                (map, rep) = (map3, rep3);
+            }
         }
     }
     Ok((map, rep, counted, counting))
+}
+
+/// The map of `opts` and its count, made again with the grid moved
+/// ([`MOVES`], at most `moves` of them) while the extraction refuses it;
+/// every count is pushed to `counted`. Returns the map taken (the first
+/// one when every one is refused), its report, its count and the options
+/// it was made with.
+fn taken(
+    integrate: &mut impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), String>,
+    count: &mut impl FnMut(&TriMap) -> Option<usize>,
+    opts: &IntegrateOptions,
+    moves: usize,
+    counted: &mut Vec<Option<usize>>,
+) -> Result<(TriMap, IntegrateReport, Option<usize>, IntegrateOptions), String> {
+    let (map, rep) = integrate(opts)?;
+    let q = count(&map);
+    counted.push(q);
+    if q.is_some() {
+        return Ok((map, rep, q, opts.clone()));
+    }
+    let gauge = opts.gauge_offset;
+    for shift in MOVES.iter().take(moves) {
+        // refused: the grid moved against the surface
+        let moved = IntegrateOptions {
+            gauge_offset: [0, 1].map(|i| (gauge[i] + shift[i]).rem_euclid(1.0)),
+            ..opts.clone()
+        };
+        let (m, r) = integrate(&moved)?;
+        let q = count(&m);
+        counted.push(q);
+        if q.is_some() {
+            return Ok((m, r, q, moved));
+        }
+    }
+    Ok((map, rep, None, opts.clone()))
+}
+
+/// Relative miss of the closer of two maps above which a third is made
+/// at the area their counts interpolate ([`secant_target`]).
+pub const SECANT_MISS: f64 = 0.10;
+
+/// The area whose count the two maps' (area, count) points interpolate
+/// to `n`: `None` when the counts do not grow with the area, or the
+/// area is outside the two by more than their gap (no extrapolation far
+/// out), or is one already made.
+fn secant_target(n: usize, (a1, q1): (f64, usize), (a2, q2): (f64, usize)) -> Option<usize> {
+    let (dq, da) = (q2 as f64 - q1 as f64, a2 - a1);
+    if dq == 0.0 || da == 0.0 || dq / da <= 0.0 || !(a1.is_finite() && a2.is_finite()) {
+        return None;
+    }
+    let a = a1 + (n as f64 - q1 as f64) * da / dq;
+    let (lo, hi) = (a1.min(a2), a1.max(a2));
+    let gap = hi - lo;
+    if !(lo - gap..=hi + gap).contains(&a) || a < 1.0 {
+        return None;
+    }
+    let t = a.round() as usize;
+    (t != a1.round() as usize && t != a2.round() as usize).then_some(t)
 }
 
 /// Most quads per cell (and least, its inverse) that [`crate::remesh_counted`]
@@ -126,6 +188,18 @@ fn recount_target(n: usize, area: f64, quads: usize) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn secant_targets() {
+        // 88 quads at area 100, 112 at 120: 100 quads at area 110
+        assert_eq!(secant_target(100, (100.0, 88), (120.0, 112)), Some(110));
+        // counts that fall as the area grows: no step
+        assert_eq!(secant_target(100, (100.0, 112), (120.0, 88)), None);
+        // far outside the two areas: no step
+        assert_eq!(secant_target(100, (100.0, 10), (101.0, 11)), None);
+        // the same count twice: no step
+        assert_eq!(secant_target(100, (100.0, 90), (110.0, 90)), None);
+    }
 
     #[test]
     fn recount_targets() {
