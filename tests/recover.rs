@@ -129,21 +129,15 @@ fn shared_surfaces_that_broke_the_gluing_are_repaired() {
         let name = format!("{surface} {quads} {rounding} {seed}");
         let input = dir.join(format!("{surface}.obj"));
         let (out, stats) = (scratch.arg("q.obj"), scratch.arg("st.json"));
-        let o = dualex(&[
-            "remesh",
-            &input.display().to_string(),
-            "-o",
-            &out,
-            "--quads",
-            &quads.to_string(),
-            "--rounding",
+        let o = Remesh {
+            input: &input.display().to_string(),
+            output: &out,
+            quads,
             rounding,
-            "--seed",
-            &seed.to_string(),
-            "--stats",
-            &stats,
-            "-q",
-        ]);
+            seed,
+            stats: &stats,
+        }
+        .run();
         assert!(o.status.success(), "{name}: {}", text(&o));
         let (_, rep) = read_valid_quads(&scratch.path("q.obj"), &name);
         assert_eq!((rep.components, rep.euler), (1, 2), "{name}");

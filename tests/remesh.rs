@@ -47,21 +47,15 @@ fn run(
 ) -> Option<String> {
     let out = dir.arg(&format!("{surface}-{quads}-{rounding}-{seed}.obj"));
     let stats = dir.path(&format!("{surface}-{quads}-{rounding}-{seed}.json"));
-    let o = dualex(&[
-        "remesh",
-        &dir.arg(&format!("{surface}.obj")),
-        "-o",
-        &out,
-        "--quads",
-        &quads.to_string(),
-        "--rounding",
+    let o = Remesh {
+        input: &dir.arg(&format!("{surface}.obj")),
+        output: &out,
+        quads,
         rounding,
-        "--seed",
-        &seed.to_string(),
-        "--stats",
-        &stats.display().to_string(),
-        "-q",
-    ]);
+        seed,
+        stats: &stats.display().to_string(),
+    }
+    .run();
     if !o.status.success() {
         let err = String::from_utf8_lossy(&o.stderr);
         return Some(format!(

@@ -13,6 +13,43 @@ pub fn dualex(args: &[&str]) -> Output {
         .expect("run the dualex binary")
 }
 
+/// One quieted `dualex remesh` run with its stats written.
+pub struct Remesh<'a> {
+    /// The surface.
+    pub input: &'a str,
+    /// The quad mesh written.
+    pub output: &'a str,
+    /// `--quads`.
+    pub quads: usize,
+    /// `--rounding`.
+    pub rounding: &'a str,
+    /// `--seed`.
+    pub seed: u64,
+    /// `--stats`.
+    pub stats: &'a str,
+}
+
+impl Remesh<'_> {
+    /// Runs it.
+    pub fn run(&self) -> Output {
+        dualex(&[
+            "remesh",
+            self.input,
+            "-o",
+            self.output,
+            "--quads",
+            &self.quads.to_string(),
+            "--rounding",
+            self.rounding,
+            "--seed",
+            &self.seed.to_string(),
+            "--stats",
+            self.stats,
+            "-q",
+        ])
+    }
+}
+
 /// stdout and stderr of a run, for assertion messages.
 pub fn text(out: &Output) -> String {
     format!(
