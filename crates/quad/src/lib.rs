@@ -41,6 +41,7 @@ pub mod repair;
 pub mod repair_local;
 use dualex_map::rng;
 pub mod sanitize;
+mod slots;
 pub mod split;
 pub mod stats;
 pub mod trace;
@@ -254,8 +255,8 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     st.finish_output(&graph, &glued, &mesh);
     // 8a: parallel edges and folded cells split by their identity in the
     // graph, so that vertex pairs name every edge of the repair
-    let slots = cell_slots(&graph, &glued);
-    let holes = hole_slots(&graph, &glued, &slots, &ends, topo.boundary_facets == 0);
+    let slots = slots::cell_slots(&graph, &glued);
+    let holes = slots::hole_slots(&graph, &glued, &slots, &ends, topo.boundary_facets == 0);
     let amb = ambiguous::split(&mesh, &slots.partner, &holes);
     st.parallel_edges_split = amb.parallel_edges;
     st.folded_cells_cut = amb.folded_cells;
@@ -302,18 +303,16 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         // 8c: a pinch point split can leave a pocket of a fold beside the
         // surface, and a node cut off the rest closed by its hole fill is a
         // pillow: deleted as the bubbles of step 6d are
-        {
-            if let Some((kept, deleted)) = bubbles::drop_mesh_bubbles(&mesh, &topo, &source) {
-                st.bubbles_removed += deleted;
-                let cells = kept.iter().map(|&c| mesh.cells[c as usize]).collect();
-                let pruned = QuadMesh {
-                    positions: mesh.positions.clone(),
-                    cells,
-                };
-                corners = dualex_map::corners::carry(&mesh, &corners, &pruned, &kept);
-                source = kept.iter().map(|&c| source[c as usize]).collect();
-                mesh = without_unused_vertices(pruned);
-            }
+        if let Some((kept, deleted)) = bubbles::drop_mesh_bubbles(&mesh, &topo, &source) {
+            st.bubbles_removed += deleted;
+            let cells = kept.iter().map(|&c| mesh.cells[c as usize]).collect();
+            let pruned = QuadMesh {
+                positions: mesh.positions.clone(),
+                cells,
+            };
+            corners = dualex_map::corners::carry(&mesh, &corners, &pruned, &kept);
+            source = kept.iter().map(|&c| source[c as usize]).collect();
+            mesh = without_unused_vertices(pruned);
         }
         st.finish_mesh(&mesh);
     }
@@ -377,98 +376,6 @@ fn zip_two_side_holes(graph: &mut NodeGraph<2>, glued: &dualex_graph::Glued<2>) 
         }
     }
     zipped
-}
-
-/// Each cell edge's side in the graph and its glued partner edge
-/// (`ambiguous::Slot`s: `4 · cell + k`, the edge from corner k to k + 1).
-struct CellSlots {
-    /// Per slot: the graph side it is.
-    side: Vec<Side>,
-    /// Per slot: the slot glued to it (`None`: unmatched, or glued to a
-    /// dead node).
-    partner: Vec<Option<ambiguous::Slot>>,
-}
-
-/// The direction of the side of a node holding cell edge `k` (corners k
-/// and k + 1 of the cell).
-fn edge_dir(k: usize, reverted: bool) -> usize {
-    let (a, b) = (
-        dualex_graph::cell_code::<2>(k, reverted),
-        dualex_graph::cell_code::<2>((k + 1) % 4, reverted),
-    );
-    // the axis on which the two corners agree, and their bit on it
-    let same = if (a ^ b) & 1 == 0 { 0 } else { 1 };
-    let bit = (a >> same) & 1;
-    2 * same + (1 - bit)
-}
-
-fn cell_slots(graph: &NodeGraph<2>, glued: &dualex_graph::Glued<2>) -> CellSlots {
-    let n = glued.nodes.len();
-    let mut cell_of = vec![u32::MAX; graph.n_nodes()];
-    for (c, node) in glued.nodes.iter().enumerate() {
-        cell_of[node.idx()] = c as u32;
-    }
-    let dir_slot: Vec<[usize; 4]> = [false, true]
-        .map(|rev| {
-            let mut m = [0; 4];
-            for k in 0..4 {
-                m[edge_dir(k, rev)] = k;
-            }
-            m
-        })
-        .to_vec();
-    let mut side = Vec::with_capacity(4 * n);
-    let mut partner = Vec::with_capacity(4 * n);
-    for node in &glued.nodes {
-        let rev = graph.is_reverted(*node);
-        for k in 0..4 {
-            let s = graph.side(*node, edge_dir(k, rev));
-            side.push(s);
-            partner.push(graph.opposite(s).and_then(|t| {
-                let y = graph.node_of(t);
-                let c = *cell_of.get(y.idx())?;
-                let k = dir_slot[usize::from(graph.is_reverted(y))][graph.dir_of(t)];
-                (c != u32::MAX).then_some(4 * c + k as u32)
-            }));
-        }
-    }
-    CellSlots { side, partner }
-}
-
-/// Unmatched sides that are holes, not boundary, as cell edges: all of
-/// them on a closed input; otherwise those whose walk got lost at a
-/// singular vertex. Sides whose two corners are one vertex are left out.
-fn hole_slots(
-    graph: &NodeGraph<2>,
-    glued: &dualex_graph::Glued<2>,
-    slots: &CellSlots,
-    ends: &[trace::End],
-    closed: bool,
-) -> Vec<ambiguous::Slot> {
-    let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
-    // in the order of the cells, then of the sides' directions
-    let order = glued.nodes.iter().enumerate().flat_map(|(c, node)| {
-        let rev = graph.is_reverted(*node);
-        (0..4).map(move |d| 4 * c + (0..4).find(|&k| edge_dir(k, rev) == d).unwrap_or(0))
-    });
-    order
-        .filter(|&i| {
-            let s = slots.side[i];
-            if graph.opposite(s).is_some() {
-                return false;
-            }
-            // on an input with boundary, only the walks that got lost at a
-            // singular vertex leave holes; the others are boundary (reached
-            // directly, or handed over by a reconnection during untangling)
-            let lost = matches!(
-                ends.get(s.0 as usize),
-                Some(trace::End::Inconsistent | trace::End::Loop)
-            );
-            let (c, k) = (i / 4, i % 4);
-            (closed || lost) && cells[c][k] != cells[c][(k + 1) % 4]
-        })
-        .map(|i| i as ambiguous::Slot)
-        .collect()
 }
 
 /// Unmatched sides whose two corners are the same vertex (a loop of one
