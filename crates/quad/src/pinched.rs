@@ -39,9 +39,7 @@ pub fn split_pinched(mesh: &mut QuadMesh) -> usize {
     }
     for corners in at_edge.values() {
         match corners[..] {
-            [a] => {
-                let _ = a;
-            }
+            [_] => {} // a boundary edge
             [a, b] => uf.union(a, b),
             _ => return 0, // an edge used more than twice: not ours to fix
         }
