@@ -112,19 +112,17 @@ pub fn repair_polygons(
     // folded flat) are dropped, as the subdivision drops them
     // (and a polygon through one vertex twice is cut there into two)
     let joined: Vec<Vec<u32>> = all().cloned().collect();
-    let (mut kept, mut polys_kept) = (Vec::new(), Vec::new());
+    let (mut kept, mut polys_kept, mut dropped) = (Vec::new(), Vec::new(), 0);
     for (i, p) in joined.iter().enumerate() {
-        for piece in cut_at_repeats(p) {
-            if distinct_corners(&piece) >= 3 {
-                kept.push(i as u32);
-                polys_kept.push(piece);
-            }
+        let before = kept.len();
+        // the pieces pass through each vertex once: their length is their
+        // number of distinct corners
+        for piece in cut_at_repeats(p).into_iter().filter(|q| q.len() >= 3) {
+            kept.push(i as u32);
+            polys_kept.push(piece);
         }
+        dropped += usize::from(kept.len() == before);
     }
-    let dropped = joined
-        .iter()
-        .filter(|p| cut_at_repeats(p).iter().all(|q| distinct_corners(q) < 3))
-        .count();
     if let Some(local) = crate::repair_local::repair_polys(positions, &polys_kept) {
         let mut mesh = local.mesh;
         let pinched = valid_or_unpinched(&mut mesh);
@@ -158,14 +156,6 @@ fn cut_at_repeats(p: &[u32]) -> Vec<Vec<u32>> {
         }
     }
     vec![p.to_vec()]
-}
-
-/// Number of distinct corners of `p`.
-fn distinct_corners(p: &[u32]) -> usize {
-    let mut s = p.to_vec();
-    s.sort_unstable();
-    s.dedup();
-    s.len()
 }
 
 /// `Some(copies)` when `mesh` is valid, after splitting its pinched
