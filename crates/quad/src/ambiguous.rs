@@ -73,7 +73,7 @@ fn edge_of(partner: &[Option<Slot>], s: Slot) -> Slot {
 }
 
 /// The ends of slot `s` in `cells`, as traversed by its cell.
-fn ends(cells: &[[u32; 4]], s: Slot) -> (u32, u32) {
+pub(crate) fn ends(cells: &[[u32; 4]], s: Slot) -> (u32, u32) {
     let (c, k) = (s as usize / 4, s as usize % 4);
     (cells[c][k], cells[c][(k + 1) % 4])
 }

@@ -142,22 +142,23 @@ pub fn pinch_digons(
 /// sides as one more face (its fill); an unmatched side whose two corners
 /// are one vertex (the collapsed side of a triangle) is no edge at all.
 pub fn excess_handles(graph: &NodeGraph<2>, glued: &Glued<2>, input_euler: i64) -> usize {
-    let mut pairs = 0i64;
-    let mut holes = Vec::new();
-    for (node, cell) in glued.cells() {
-        for d in 0..4 {
-            let s = graph.side(node, d);
-            let [a, b] = side_corners(glued, node, d);
-            match graph.opposite(s) {
-                Some(t) => pairs += i64::from(s < t || !graph.is_alive(graph.node_of(t))),
-                None if a != b => {
-                    let forward = (0..4).any(|k| cell[k] == a && cell[(k + 1) % 4] == b);
-                    holes.push(if forward { (a, b) } else { (b, a) });
-                }
-                None => {}
-            }
-        }
-    }
+    let slots = crate::slots::cell_slots(graph, glued);
+    let pairs = slots
+        .side
+        .iter()
+        .filter(|&&s| {
+            graph
+                .opposite(s)
+                .is_some_and(|t| s < t || !graph.is_alive(graph.node_of(t)))
+        })
+        .count() as i64;
+    // on a closed input every unmatched side is a hole (collapsed ones
+    // left out)
+    let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
+    let holes: Vec<(u32, u32)> = crate::slots::hole_slots(graph, glued, &slots, &[], true)
+        .into_iter()
+        .map(|s| crate::ambiguous::ends(&cells, s))
+        .collect();
     let (fills, open) = crate::repair::hole_polygons(&holes);
     let v = glued.n_vertices as i64;
     let f = glued.nodes.len() as i64 + (fills.len() + open) as i64;

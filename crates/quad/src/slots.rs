@@ -33,21 +33,26 @@ fn edge_dir(k: usize, reverted: bool) -> usize {
     2 * same + (1 - bit)
 }
 
+/// The inverse of [`edge_dir`]: the cell edge of each side direction, for
+/// a node not reverted (`[0]`) and reverted (`[1]`).
+fn dir_edges() -> [[usize; 4]; 2] {
+    [false, true].map(|rev| {
+        let mut m = [0; 4];
+        for k in 0..4 {
+            m[edge_dir(k, rev)] = k;
+        }
+        m
+    })
+}
+
+/// Each cell edge's side and partner (module docs).
 pub(crate) fn cell_slots(graph: &NodeGraph<2>, glued: &dualex_graph::Glued<2>) -> CellSlots {
     let n = glued.nodes.len();
     let mut cell_of = vec![u32::MAX; graph.n_nodes()];
     for (c, node) in glued.nodes.iter().enumerate() {
         cell_of[node.idx()] = c as u32;
     }
-    let dir_slot: Vec<[usize; 4]> = [false, true]
-        .map(|rev| {
-            let mut m = [0; 4];
-            for k in 0..4 {
-                m[edge_dir(k, rev)] = k;
-            }
-            m
-        })
-        .to_vec();
+    let dir_slot = dir_edges();
     let mut side = Vec::with_capacity(4 * n);
     let mut partner = Vec::with_capacity(4 * n);
     for node in &glued.nodes {
@@ -78,9 +83,10 @@ pub(crate) fn hole_slots(
 ) -> Vec<crate::ambiguous::Slot> {
     let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
     // in the order of the cells, then of the sides' directions
-    let order = glued.nodes.iter().enumerate().flat_map(|(c, node)| {
-        let rev = graph.is_reverted(*node);
-        (0..4).map(move |d| 4 * c + (0..4).find(|&k| edge_dir(k, rev) == d).unwrap_or(0))
+    let dir_slot = dir_edges();
+    let order = glued.nodes.iter().enumerate().flat_map(move |(c, node)| {
+        let edges = dir_slot[usize::from(graph.is_reverted(*node))];
+        edges.map(|k| 4 * c + k)
     });
     order
         .filter(|&i| {
