@@ -99,14 +99,17 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
     // map counted is kept, so the map kept is not extracted again
     let qopts = crate::extract::quad_options(&quad, g);
     let shape = topology::surface_shape(surface.positions.len(), &surface.triangles);
-    let mut extracted: Vec<(Vec<[[f64; 2]; 3]>, dualex_quad::Extracted)> = Vec::new();
+    // (one entry per map counted, in the order of `remesh.counted`)
+    let mut extracted: Vec<Option<dualex_quad::Extracted>> = Vec::new();
     let mut quads_of = |m: &dualex_map::TriMap| {
-        let x = dualex_quad::extract_full(m, &qopts).ok()?;
-        let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
-        let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
-        let n = x.mesh.cells.len();
-        extracted.push((m.coords.clone(), x));
-        same.then_some(n)
+        let x = dualex_quad::extract_full(m, &qopts).ok();
+        let n = x.as_ref().and_then(|x| {
+            let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
+            let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
+            same.then_some(x.mesh.cells.len())
+        });
+        extracted.push(x);
+        n
     };
     let made = dualex_remesh::remesh_counted(&surface, &opts, &mut quads_of)
         .map_err(|e| format!("{name}: {e}"))?;
@@ -141,10 +144,11 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             .map_err(|e| format!("{name}: {e}"))?;
         outputs::write_png(path, &bytes)?;
     }
-    let done_before = extracted
-        .into_iter()
-        .find(|(coords, _)| *coords == made.map.coords)
-        .map(|(_, x)| x);
+    let done_before = made
+        .stats
+        .kept
+        .and_then(|k| extracted.into_iter().nth(k))
+        .flatten();
     let done = if a.input.is_some() {
         "done"
     } else {
@@ -207,6 +211,7 @@ fn stats_json(s: &dualex_remesh::RemeshStats) -> serde_json::Value {
         "off_grid": s.off_grid,
         "max_rounding": s.max_rounding,
         "counted": s.counted,
+        "kept": s.kept,
         "time_ms": {
             "field": s.time_ms[0],
             "cut": s.time_ms[1],

@@ -127,6 +127,8 @@ pub struct RemeshStats {
     /// the maps refused with the grid where the seed puts it;
     /// `None`: the extraction refused that map); empty without a count.
     pub counted: Vec<Option<usize>>,
+    /// The index in `counted` of the map kept (`None` without a count).
+    pub kept: Option<usize>,
     /// Wall-clock milliseconds: field, cut, integration (with rounding;
     /// both maps when made twice), the extraction's counts
     /// ([`remesh_counted`]).
@@ -211,11 +213,14 @@ fn make(
         ..IntegrateOptions::default()
     };
     let run = |o: &IntegrateOptions| integrate_report(surface, &f.field, &cut.is_cut, &singular, o);
-    let (map, rep, counted, counting) = match (opts.target, count) {
-        (Target::Quads(n), Some(count)) => recount::integrate_counted(run, iopts, n, count)?,
+    let (map, rep, counted, kept, counting) = match (opts.target, count) {
+        (Target::Quads(n), Some(count)) => {
+            let c = recount::integrate_counted(run, iopts, n, count)?;
+            (c.map, c.report, c.counted, Some(c.kept), c.counting)
+        }
         _ => {
             let (map, rep) = run(&iopts)?;
-            (map, rep, Vec::new(), Duration::ZERO)
+            (map, rep, Vec::new(), None, Duration::ZERO)
         }
     };
     let t3 = Instant::now();
@@ -242,6 +247,7 @@ fn make(
         off_grid: rep.quantize.off_grid,
         max_rounding: rep.quantize.max_rounding,
         counted,
+        kept,
         time_ms: [
             ms(t0, t1),
             ms(t1, t2),
@@ -345,6 +351,7 @@ mod tests {
         };
         let plain = remesh(&s, &opts).expect("the sphere's map");
         assert!(plain.stats.counted.is_empty(), "no count, no entry");
+        assert_eq!(plain.stats.kept, None);
         let mut calls = 0;
         let mut more = |m: &TriMap| {
             calls += 1;
@@ -362,11 +369,13 @@ mod tests {
             q2,
             "the second map kept"
         );
+        assert_eq!(r.stats.kept, Some(1));
         // the second map refused: the first kept
         let mut first_only =
             |m: &TriMap| (area(m) > 260.0).then(|| (1.3 * area(m)).round() as usize);
         let r = remesh_counted(&s, &opts, &mut first_only).expect("the sphere's map");
         assert_eq!(r.stats.counted, vec![Some(q1), None]);
+        assert_eq!(r.stats.kept, Some(0));
         assert_eq!(r.map.coords, plain.map.coords);
         // a count within the tolerance: one map, the plain one
         let mut exact = |m: &TriMap| Some(area(m).round() as usize);
@@ -381,6 +390,7 @@ mod tests {
         };
         let r = remesh_counted(&s, &opts, &mut refuse_first).expect("the sphere's map");
         assert_eq!(r.stats.counted.len(), 2);
+        assert_eq!(r.stats.kept, Some(1), "the map the grid move made");
         assert_eq!(r.stats.counted[0], None);
         assert!(r.stats.counted[1].is_some());
         assert_ne!(r.map.coords, plain.map.coords, "the grid moved");
@@ -388,6 +398,7 @@ mod tests {
         let mut never = |_: &TriMap| None;
         let r = remesh_counted(&s, &opts, &mut never).expect("the sphere's map");
         assert_eq!(r.stats.counted, vec![None; 1 + crate::recount::MOVES.len()]);
+        assert_eq!(r.stats.kept, Some(0), "all refused: the first map");
         assert_eq!(r.map.coords, plain.map.coords);
     }
 }

@@ -25,7 +25,7 @@
 //! interpolate ([`secant_target`]), with two roundings.
 //!
 //! (A refused second or third map is not made again: measured on the
-//! shared surfaces, moving the grid there changed no count.)
+//! shared surfaces, moving its grid brought no run within 10 % of `N`.)
 //!
 //! Invariants: at most `1 + MOVES.len()` maps for a refusal, then three
 //! for the count; the one kept has the count closer to `N` (the first on a
@@ -48,14 +48,34 @@ pub const MOVES: [[f64; 2]; 2] = [[0.5, 0.5], [0.25, 0.75]];
 /// [`crate::remesh_counted`] accepts without making the map again.
 pub const RECOUNT_TOLERANCE: f64 = 0.05;
 
-/// A map, its report, the count of each map made, the time counting.
-pub type Counted = (TriMap, IntegrateReport, Vec<Option<usize>>, Duration);
+/// What [`integrate_counted`] made.
+pub struct Counted {
+    /// The map kept.
+    pub map: TriMap,
+    /// Its report.
+    pub report: IntegrateReport,
+    /// The count of each map made, in order (`None`: refused).
+    pub counted: Vec<Option<usize>>,
+    /// The index in `counted` of the map kept.
+    pub kept: usize,
+    /// The time spent counting.
+    pub counting: Duration,
+}
+
+/// A map made by [`taken`], with its count and where that count stands.
+struct Taken {
+    map: TriMap,
+    rep: IntegrateReport,
+    count: Option<usize>,
+    opts: IntegrateOptions,
+    index: usize,
+}
 
 /// Integrates with `opts` (for `n` quads), counts, and integrates once
 /// more when the count asks for it (module docs).
 pub fn integrate_counted(
     mut integrate: impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), String>,
-    mut opts: IntegrateOptions,
+    opts: IntegrateOptions,
     n: usize,
     count: &mut CountQuads<'_>,
 ) -> Result<Counted, String> {
@@ -67,57 +87,73 @@ pub fn integrate_counted(
         q
     };
     let mut counted = Vec::new();
-    let (mut map, mut rep, first, moved) =
-        taken(&mut integrate, &mut count, &opts, MOVES.len(), &mut counted)?;
-    opts = moved;
-    let area_target = first.and_then(|q| recount_target(n, rep.map_area, q));
-    if let (Some(q), Some(area)) = (first, area_target) {
+    let mut best = taken(&mut integrate, &mut count, &opts, MOVES.len(), &mut counted)?;
+    let area_target = best
+        .count
+        .and_then(|q| recount_target(n, best.rep.map_area, q));
+    if let (Some(q), Some(area)) = (best.count, area_target) {
         // the second map shares the first's budget of roundings (the
         // integration's cost): `ROUNDINGS` in all, but two at least
         // (one at what the first search left unseen, one more step)
-        opts.quads = Some(area);
-        opts.max_roundings = ROUNDINGS.saturating_sub(rep.roundings).max(2);
-        opts.seen = rep.roundings_seen.clone();
-        let (map2, rep2, second, _) = taken(&mut integrate, &mut count, &opts, 0, &mut counted)?;
-        let (a1, a2) = (rep.map_area, rep2.map_area);
-        let mut best = q;
-        if let Some(q2) = second.filter(|q2| q2.abs_diff(n) < q.abs_diff(n)) {
-            best = q2;
-            (map, rep) = (map2, rep2.clone());
+        let mut opts = IntegrateOptions {
+            quads: Some(area),
+            max_roundings: ROUNDINGS.saturating_sub(best.rep.roundings).max(2),
+            seen: best.rep.roundings_seen.clone(),
+            ..best.opts.clone()
+        };
+        let second = taken(&mut integrate, &mut count, &opts, 0, &mut counted)?;
+        let (a1, a2) = (best.rep.map_area, second.rep.map_area);
+        // (what the second search saw, for a third)
+        opts.seen.extend(second.rep.roundings_seen.iter().cloned());
+        let q2 = second.count;
+        if q2.is_some_and(|q2| q2.abs_diff(n) < q.abs_diff(n)) {
+            best = second;
         }
         // still more than 10 % off: one more map, at the area the two
         // counts interpolate (a secant step), from what both searches saw
-        let third = second.and_then(|q2| secant_target(n, (a1, q), (a2, q2)));
-        if let Some(area) = third.filter(|_| best.abs_diff(n) as f64 > SECANT_MISS * n as f64) {
+        let third = q2.and_then(|q2| secant_target(n, (a1, q), (a2, q2)));
+        let miss = |t: &Taken| t.count.map_or(usize::MAX, |q| q.abs_diff(n));
+        if let Some(area) = third.filter(|_| miss(&best) as f64 > SECANT_MISS * n as f64) {
             opts.quads = Some(area);
             opts.max_roundings = 2;
-            opts.seen.extend(rep2.roundings_seen.iter().cloned());
-            let (map3, rep3, q3, _) = taken(&mut integrate, &mut count, &opts, 0, &mut counted)?;
-            if q3.is_some_and(|q3| q3.abs_diff(n) < best.abs_diff(n)) {
-                (map, rep) = (map3, rep3);
+            let third = taken(&mut integrate, &mut count, &opts, 0, &mut counted)?;
+            if miss(&third) < miss(&best) {
+                best = third;
             }
         }
     }
-    Ok((map, rep, counted, counting))
+    Ok(Counted {
+        map: best.map,
+        report: best.rep,
+        counted,
+        kept: best.index,
+        counting,
+    })
 }
 
 /// The map of `opts` and its count, made again with the grid moved
 /// ([`MOVES`], at most `moves` of them) while the extraction refuses it;
 /// every count is pushed to `counted`. Returns the map taken (the first
-/// one when every one is refused), its report, its count and the options
-/// it was made with.
+/// one when every one is refused) with its report, count, options and
+/// index in `counted`.
 fn taken(
     integrate: &mut impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), String>,
     count: &mut impl FnMut(&TriMap) -> Option<usize>,
     opts: &IntegrateOptions,
     moves: usize,
     counted: &mut Vec<Option<usize>>,
-) -> Result<(TriMap, IntegrateReport, Option<usize>, IntegrateOptions), String> {
+) -> Result<Taken, String> {
     let (map, rep) = integrate(opts)?;
-    let q = count(&map);
-    counted.push(q);
-    if q.is_some() {
-        return Ok((map, rep, q, opts.clone()));
+    let first = Taken {
+        count: count(&map),
+        map,
+        rep,
+        opts: opts.clone(),
+        index: counted.len(),
+    };
+    counted.push(first.count);
+    if first.count.is_some() {
+        return Ok(first);
     }
     let gauge = opts.gauge_offset;
     for shift in MOVES.iter().take(moves) {
@@ -126,14 +162,20 @@ fn taken(
             gauge_offset: [0, 1].map(|i| (gauge[i] + shift[i]).rem_euclid(1.0)),
             ..opts.clone()
         };
-        let (m, r) = integrate(&moved)?;
-        let q = count(&m);
+        let (map, rep) = integrate(&moved)?;
+        let q = count(&map);
         counted.push(q);
         if q.is_some() {
-            return Ok((m, r, q, moved));
+            return Ok(Taken {
+                map,
+                rep,
+                count: q,
+                opts: moved,
+                index: counted.len() - 1,
+            });
         }
     }
-    Ok((map, rep, None, opts.clone()))
+    Ok(first)
 }
 
 /// Relative miss of the closer of two maps above which a third is made
