@@ -14,11 +14,37 @@
 //! depend on the thread count.
 
 use crate::doublet::Takeover;
-use crate::glue::Glued;
+use crate::glue::{cell_code, Glued};
+use crate::graph::NodeGraph;
 use crate::ids::Node;
 use rayon::prelude::*;
 
 impl<const D: usize> Glued<D> {
+    /// Per cell, in [`Glued::cells`] order, `corner(node, code)` at each of
+    /// its `K = 2^D` corners in output order ([`cell_code`]: a reverted
+    /// node's cell is mirrored); `None` for a node that took over another
+    /// one's corners (a merged doublet: its corners are not where its node
+    /// says). The map coordinates of the corners (`--uv`) in both
+    /// pipelines.
+    pub fn cell_corners<T, const K: usize>(
+        &self,
+        graph: &NodeGraph<D>,
+        takeover: &Takeover<D>,
+        corner: impl Fn(Node, usize) -> T,
+    ) -> Vec<Option<[T; K]>> {
+        assert_eq!(K, 1 << D, "bug: a cell of dimension {D} has 2^{D} corners");
+        self.nodes
+            .iter()
+            .map(|&n| {
+                if takeover.is_merged(n) {
+                    return None;
+                }
+                let rev = graph.is_reverted(n);
+                Some(std::array::from_fn(|k| corner(n, cell_code::<D>(k, rev))))
+            })
+            .collect()
+    }
+
     /// The best candidate of every vertex (see the module docs); `None` for
     /// a vertex no alive corner uses.
     pub fn best_per_vertex<C: Send>(

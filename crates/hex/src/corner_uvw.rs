@@ -10,7 +10,7 @@
 
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
-use dualex_graph::{cell_code, Glued, NodeGraph, Takeover};
+use dualex_graph::{Glued, NodeGraph, Takeover};
 use dualex_map::corners::{node_corner, Corners};
 
 /// The map coordinates of a hex's corners (module docs).
@@ -25,18 +25,8 @@ pub fn of_glued(
     nodes: &Nodes,
     takeover: &Takeover<3>,
 ) -> Vec<HexCorners> {
-    glued
-        .nodes
-        .iter()
-        .map(|&n| {
-            if takeover.is_merged(n) {
-                return None;
-            }
-            let rev = graph.is_reverted(n);
-            let (s, ijk) = (nodes.tet[n.idx()] as usize, &nodes.ijk[n.idx()]);
-            Some(std::array::from_fn(|k| {
-                node_corner(local, s, ijk, cell_code::<3>(k, rev))
-            }))
-        })
-        .collect()
+    glued.cell_corners(graph, takeover, |n, code| {
+        let (s, ijk) = (nodes.tet[n.idx()] as usize, &nodes.ijk[n.idx()]);
+        node_corner(local, s, ijk, code)
+    })
 }

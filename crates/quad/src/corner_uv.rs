@@ -13,7 +13,7 @@
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
 use crate::repair::polygon;
-use dualex_graph::{cell_code, Glued, NodeGraph, Takeover};
+use dualex_graph::{Glued, NodeGraph, Takeover};
 use dualex_map::corners::{node_corner, Corners};
 use dualex_map::QuadMesh;
 
@@ -29,20 +29,10 @@ pub fn of_glued(
     nodes: &Nodes,
     takeover: &Takeover<2>,
 ) -> Vec<QuadCorners> {
-    glued
-        .nodes
-        .iter()
-        .map(|&n| {
-            if takeover.is_merged(n) {
-                return None;
-            }
-            let rev = graph.is_reverted(n);
-            let (s, ij) = (nodes.tri[n.idx()] as usize, &nodes.ij[n.idx()]);
-            Some(std::array::from_fn(|k| {
-                node_corner(local, s, ij, cell_code::<2>(k, rev))
-            }))
-        })
-        .collect()
+    glued.cell_corners(graph, takeover, |n, code| {
+        let (s, ij) = (nodes.tri[n.idx()] as usize, &nodes.ij[n.idx()]);
+        node_corner(local, s, ij, code)
+    })
 }
 
 /// The corners after a subdivision of every cell of `old` (see
