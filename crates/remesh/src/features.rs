@@ -197,14 +197,7 @@ mod tests {
                 p.push([f64::from(i), f64::from(j), z]);
             }
         }
-        let id = |i: u32, j: u32| j * (n + 1) + i;
-        let mut t = Vec::new();
-        for j in 0..n {
-            for i in 0..n {
-                t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-                t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-            }
-        }
+        let t = crate::shapes::grid_triangles(n, n, |i, j| j * (n + 1) + i);
         Surface::new(p, t).expect("a grid is a surface")
     }
 

@@ -106,15 +106,22 @@ pub fn bumpy_square(n: u32, amplitude: f64) -> Surface {
             p.push([x, y, z]);
         }
     }
-    let id = |i: u32, j: u32| j * (n + 1) + i;
-    let mut t = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
+    build(p, grid_triangles(n, n, |i, j| j * (n + 1) + i))
+}
+
+/// The two triangles of each cell `(i, j)` of an `ni × nj` grid (rows `j`
+/// outer), split along the diagonal from corner `(i, j)` to `(i+1, j+1)`;
+/// `id(i, j)` numbers the grid's vertices (`i` up to `ni`, `j` up to `nj`:
+/// a wrapping grid maps `ni` back to 0).
+pub(crate) fn grid_triangles(ni: u32, nj: u32, id: impl Fn(u32, u32) -> u32) -> Vec<[u32; 3]> {
+    let mut t = Vec::with_capacity(2 * (ni * nj) as usize);
+    for j in 0..nj {
+        for i in 0..ni {
             t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
             t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
         }
     }
-    build(p, t)
+    t
 }
 
 /// The flat unit disk: an `n × n` grid of `[−1, 1]²` mapped onto it by
@@ -162,15 +169,7 @@ pub fn annulus(nphi: u32, nr: u32) -> Surface {
             p.push([r * a.cos(), r * a.sin(), 0.0]);
         }
     }
-    let id = |i: u32, j: u32| j * nphi + i % nphi;
-    let mut t = Vec::new();
-    for j in 0..nr {
-        for i in 0..nphi {
-            t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-            t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-        }
-    }
-    build(p, t)
+    build(p, grid_triangles(nphi, nr, |i, j| j * nphi + i % nphi))
 }
 
 /// Two surfaces as one (the second's vertices renumbered after the
