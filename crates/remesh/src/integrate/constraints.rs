@@ -231,13 +231,7 @@ fn align(surface: &Surface, charts: &Charts, tolerance: f64, out: &mut Constrain
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn form(terms: &[(u32, f64)], constant: f64) -> Form {
-        Form {
-            terms: terms.to_vec(),
-            constant,
-        }
-    }
+    use crate::integrate::elim::form;
 
     /// Fixed directions per row kind: differences fix none, a pinned
     /// coordinate one, a quarter-turn translation the direction (1, −1).

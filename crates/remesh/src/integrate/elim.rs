@@ -25,6 +25,15 @@ pub struct Form {
     pub constant: f64,
 }
 
+#[cfg(test)]
+/// A form of `terms` and `constant` (the tests' shorthand).
+pub(crate) fn form(terms: &[(u32, f64)], constant: f64) -> Form {
+    Form {
+        terms: terms.to_vec(),
+        constant,
+    }
+}
+
 /// Coefficients below this are zero.
 const EPS: f64 = 1e-10;
 
@@ -165,13 +174,6 @@ impl Eliminator {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn form(terms: &[(u32, f64)], constant: f64) -> Form {
-        Form {
-            terms: terms.to_vec(),
-            constant,
-        }
-    }
 
     #[test]
     fn chain_resolves_to_free_unknowns() {
