@@ -53,7 +53,43 @@ pub struct CellMesh<const K: usize> {
     pub cells: Vec<[u32; K]>,
 }
 
+impl<const K: usize> CellMesh<K> {
+    /// The mesh without the vertices no cell uses: vertices renumbered in
+    /// the order the cells first use them, cells kept as they are.
+    pub fn without_unused_vertices(self) -> Self {
+        let mut new_id = vec![u32::MAX; self.positions.len()];
+        let mut positions = Vec::with_capacity(self.positions.len());
+        let mut cells = self.cells;
+        for v in cells.iter_mut().flatten() {
+            let id = &mut new_id[*v as usize];
+            if *id == u32::MAX {
+                *id = positions.len() as u32;
+                positions.push(self.positions[*v as usize]);
+            }
+            *v = *id;
+        }
+        CellMesh { positions, cells }
+    }
+}
+
 /// An all-quad surface mesh.
 pub type QuadMesh = CellMesh<4>;
 /// An all-hex volume mesh.
 pub type HexMesh = CellMesh<8>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unused_vertices_go_and_positions_follow_their_cells() {
+        let p = |x: f64| [x, 0.0, 0.0];
+        let mesh = QuadMesh {
+            positions: (0..7).map(|i| p(i as f64)).collect(),
+            cells: vec![[5, 1, 6, 3]],
+        };
+        let out = mesh.without_unused_vertices();
+        assert_eq!(out.cells, vec![[0, 1, 2, 3]]);
+        assert_eq!(out.positions, vec![p(5.0), p(1.0), p(6.0), p(3.0)]);
+    }
+}

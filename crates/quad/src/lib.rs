@@ -312,7 +312,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
             };
             corners = dualex_map::corners::carry(&mesh, &corners, &pruned, &kept);
             source = kept.iter().map(|&c| source[c as usize]).collect();
-            mesh = without_unused_vertices(pruned);
+            mesh = pruned.without_unused_vertices();
         }
         st.finish_mesh(&mesh);
     }
@@ -395,23 +395,6 @@ fn collapsed_unmatched_sides(graph: &NodeGraph<2>, glued: &dualex_graph::Glued<2
         }
     }
     n
-}
-
-/// `mesh` with the vertices no cell uses removed (cells renumbered, order
-/// kept).
-fn without_unused_vertices(mesh: QuadMesh) -> QuadMesh {
-    let mut new_id = vec![u32::MAX; mesh.positions.len()];
-    let mut positions = Vec::with_capacity(mesh.positions.len());
-    let mut cells = mesh.cells;
-    for v in cells.iter_mut().flatten() {
-        let id = &mut new_id[*v as usize];
-        if *id == u32::MAX {
-            *id = positions.len() as u32;
-            positions.push(mesh.positions[*v as usize]);
-        }
-        *v = *id;
-    }
-    QuadMesh { positions, cells }
 }
 
 /// Positions of the glued vertices by diagonal tracing (a corner taken

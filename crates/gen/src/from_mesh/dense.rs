@@ -63,24 +63,7 @@ pub fn grid_cells(n: usize, keep: impl Fn([usize; 3]) -> bool) -> HexMesh {
     let positions = (0..m * m * m)
         .map(|v| [v % m, v / m % m, v / (m * m)].map(|x| x as f64 - h))
         .collect();
-    compact(HexMesh { positions, cells })
-}
-
-/// Drops the vertices no hex uses (order kept).
-pub fn compact(mesh: HexMesh) -> HexMesh {
-    let mut new = vec![u32::MAX; mesh.positions.len()];
-    let mut positions = Vec::new();
-    let mut cells = mesh.cells;
-    for c in &mut cells {
-        for v in c.iter_mut() {
-            if new[*v as usize] == u32::MAX {
-                new[*v as usize] = positions.len() as u32;
-                positions.push(mesh.positions[*v as usize]);
-            }
-            *v = new[*v as usize];
-        }
-    }
-    HexMesh { positions, cells }
+    HexMesh { positions, cells }.without_unused_vertices()
 }
 
 /// The boundary quads (faces of one hex), outward, in hex order.
