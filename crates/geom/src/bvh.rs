@@ -1,0 +1,205 @@
+//! A bounding-volume hierarchy over boxes (triangles, segments), for
+//! closest-point queries with a filter.
+//!
+//! Input: one axis-aligned box per primitive. Output: the primitive nearest
+//! a point among those a filter accepts, by a caller's distance function.
+//! Invariants: every node's box holds its primitives' boxes; leaves hold
+//! at most [`LEAF`] primitives; the build is deterministic (median splits
+//! on the longest axis of the centroids, ties by index).
+
+/// Most primitives in a leaf.
+const LEAF: usize = 4;
+
+/// An axis-aligned box.
+#[derive(Clone, Copy, Debug)]
+pub struct Aabb {
+    /// Least corner.
+    pub min: [f64; 3],
+    /// Greatest corner.
+    pub max: [f64; 3],
+}
+
+impl Aabb {
+    /// The box of some points.
+    pub fn of(points: &[[f64; 3]]) -> Aabb {
+        let mut b = Aabb {
+            min: [f64::INFINITY; 3],
+            max: [f64::NEG_INFINITY; 3],
+        };
+        for p in points {
+            b.grow(&Aabb { min: *p, max: *p });
+        }
+        b
+    }
+
+    fn grow(&mut self, o: &Aabb) {
+        for k in 0..3 {
+            self.min[k] = self.min[k].min(o.min[k]);
+            self.max[k] = self.max[k].max(o.max[k]);
+        }
+    }
+
+    /// Squared distance from `p` to the box (0 inside).
+    pub fn dist2(&self, p: [f64; 3]) -> f64 {
+        (0..3)
+            .map(|k| {
+                let d = (self.min[k] - p[k]).max(p[k] - self.max[k]).max(0.0);
+                d * d
+            })
+            .sum()
+    }
+
+    /// Length of the diagonal.
+    pub fn diagonal(&self) -> f64 {
+        if self.min[0] > self.max[0] {
+            return 0.0;
+        }
+        (0..3)
+            .map(|k| (self.max[k] - self.min[k]).powi(2))
+            .sum::<f64>()
+            .sqrt()
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    bbox: Aabb,
+    /// Leaf: first primitive in `order`; inner: the right child.
+    first: u32,
+    /// Leaf: primitive count; inner: 0 (the left child follows the node).
+    count: u32,
+}
+
+/// The hierarchy.
+#[derive(Clone, Debug, Default)]
+pub struct Bvh {
+    nodes: Vec<Node>,
+    order: Vec<u32>,
+}
+
+impl Bvh {
+    /// Builds the hierarchy over `boxes`.
+    pub fn new(boxes: &[Aabb]) -> Bvh {
+        let mut b = Bvh {
+            nodes: Vec::with_capacity(2 * boxes.len() / LEAF + 1),
+            order: (0..boxes.len() as u32).collect(),
+        };
+        if !boxes.is_empty() {
+            let centre = |i: u32| {
+                let x = &boxes[i as usize];
+                [0, 1, 2].map(|k| 0.5 * (x.min[k] + x.max[k]))
+            };
+            let n = boxes.len();
+            b.build(boxes, &centre, 0, n);
+        }
+        b
+    }
+
+    fn build(&mut self, boxes: &[Aabb], centre: &dyn Fn(u32) -> [f64; 3], lo: usize, hi: usize) {
+        let mut bbox = boxes[self.order[lo] as usize];
+        for &i in &self.order[lo + 1..hi] {
+            bbox.grow(&boxes[i as usize]);
+        }
+        let at = self.nodes.len();
+        self.nodes.push(Node {
+            bbox,
+            first: lo as u32,
+            count: (hi - lo) as u32,
+        });
+        if hi - lo <= LEAF {
+            return;
+        }
+        let cb = Aabb::of(&self.order[lo..hi].iter().map(|&i| centre(i)).collect::<Vec<_>>());
+        let axis = (0..3)
+            .max_by(|&a, &b| (cb.max[a] - cb.min[a]).total_cmp(&(cb.max[b] - cb.min[b])))
+            .unwrap_or(0);
+        let mid = (lo + hi) / 2;
+        self.order[lo..hi].select_nth_unstable_by(mid - lo, |&a, &b| {
+            centre(a)[axis].total_cmp(&centre(b)[axis]).then(a.cmp(&b))
+        });
+        self.build(boxes, centre, lo, mid);
+        let right = self.nodes.len() as u32;
+        self.build(boxes, centre, mid, hi);
+        self.nodes[at].first = right;
+        self.nodes[at].count = 0;
+    }
+
+    /// The primitive nearest `p` by `dist2(primitive) -> Option<squared
+    /// distance>` (`None`: filtered out), with its squared distance; ties
+    /// go to the lower index.
+    pub fn nearest(&self, p: [f64; 3], dist2: impl Fn(u32) -> Option<f64>) -> Option<(u32, f64)> {
+        let mut best: Option<(u32, f64)> = None;
+        if self.nodes.is_empty() {
+            return None;
+        }
+        let mut stack = vec![0u32];
+        while let Some(n) = stack.pop() {
+            let node = &self.nodes[n as usize];
+            let bound = node.bbox.dist2(p);
+            if best.is_some_and(|(_, d)| bound > d) {
+                continue;
+            }
+            if node.count > 0 {
+                let first = node.first as usize;
+                for &i in &self.order[first..first + node.count as usize] {
+                    if let Some(d) = dist2(i) {
+                        let better = match best {
+                            None => true,
+                            Some((bi, bd)) => d < bd || (d == bd && i < bi),
+                        };
+                        if better {
+                            best = Some((i, d));
+                        }
+                    }
+                }
+            } else {
+                let (l, r) = (n + 1, node.first);
+                let dl = self.nodes[l as usize].bbox.dist2(p);
+                let dr = self.nodes[r as usize].bbox.dist2(p);
+                // the nearer child is searched first (pushed last)
+                if dl <= dr {
+                    stack.push(r);
+                    stack.push(l);
+                } else {
+                    stack.push(l);
+                    stack.push(r);
+                }
+            }
+        }
+        best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nearest_point_by_brute_force() {
+        let mut s = 12345u64;
+        let mut rnd = || {
+            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let pts: Vec<[f64; 3]> = (0..500).map(|_| [rnd(), rnd(), rnd()]).collect();
+        let boxes: Vec<Aabb> = pts.iter().map(|p| Aabb::of(&[*p])).collect();
+        let bvh = Bvh::new(&boxes);
+        let d2 = |a: [f64; 3], b: [f64; 3]| (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>();
+        for _ in 0..200 {
+            let q = [rnd(), rnd(), rnd()];
+            let got = bvh.nearest(q, |i| Some(d2(q, pts[i as usize])));
+            let want = (0..pts.len())
+                .min_by(|&a, &b| d2(q, pts[a]).total_cmp(&d2(q, pts[b])))
+                .map(|i| i as u32);
+            assert_eq!(got.map(|g| g.0), want);
+            // a filter: only even primitives
+            let got = bvh.nearest(q, |i| (i % 2 == 0).then(|| d2(q, pts[i as usize])));
+            let want = (0..pts.len())
+                .filter(|i| i % 2 == 0)
+                .min_by(|&a, &b| d2(q, pts[a]).total_cmp(&d2(q, pts[b])))
+                .map(|i| i as u32);
+            assert_eq!(got.map(|g| g.0), want);
+        }
+        assert!(Bvh::new(&[]).nearest([0.; 3], |_| Some(0.0)).is_none());
+    }
+}

@@ -1,0 +1,161 @@
+//! How each output vertex may move: freely (3D interior), on the
+//! reference surface, along its curves (boundary, features) or not at all
+//! (corners).
+//!
+//! Input: the output vertices, which of them are on the output's boundary,
+//! a normal hint per vertex (the side of the surface it faces) and the
+//! [`Reference`]. Output: a [`Kind`] per vertex, a linear tangent basis
+//! at its current position, and the projection back onto its set.
+//! Invariants: a vertex's basis spans exactly its [`Kind::dof`]
+//! directions, orthonormal; projecting a point of the set leaves it there.
+
+use crate::quality::{cross, dot, norm, sub};
+use crate::reference::Reference;
+
+/// The set a vertex stays on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// Anywhere (interior vertices of a volume mesh).
+    Free,
+    /// On the reference surface.
+    Surface,
+    /// On the reference's curves (only its boundary curves when `boundary`).
+    Curve {
+        /// Only boundary segments.
+        boundary: bool,
+    },
+    /// Not moved (corners of the curves).
+    Fixed,
+}
+
+impl Kind {
+    /// Degrees of freedom.
+    pub fn dof(self) -> usize {
+        match self {
+            Kind::Free => 3,
+            Kind::Surface => 2,
+            Kind::Curve { .. } => 1,
+            Kind::Fixed => 0,
+        }
+    }
+}
+
+/// The kinds of a mesh's vertices.
+#[derive(Clone, Debug)]
+pub struct Constraints {
+    /// Per vertex.
+    pub kind: Vec<Kind>,
+    /// Per vertex, a normal the surface under it must agree with.
+    pub hint: Vec<[f64; 3]>,
+}
+
+/// Whether the mesh is a surface (D = 2: every vertex on the reference)
+/// or a volume (D = 3: only boundary vertices on it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// Quads on the reference surface.
+    Surface,
+    /// Hexes whose boundary lies on the reference.
+    Volume,
+}
+
+impl Constraints {
+    /// Classifies every vertex (see the module docs); `tol`: the distance
+    /// under which a vertex is on a curve or a corner.
+    pub fn classify(
+        r: &Reference,
+        positions: &[[f64; 3]],
+        on_boundary: &[bool],
+        hint: Vec<[f64; 3]>,
+        role: Role,
+        tol: f64,
+    ) -> Self {
+        let has_boundary = r.has_boundary();
+        let kind = positions
+            .iter()
+            .zip(on_boundary)
+            .map(|(&p, &b)| {
+                let on_ref = role == Role::Surface || b;
+                if !on_ref {
+                    return Kind::Free;
+                }
+                // a 2D boundary vertex goes onto the boundary curves
+                let boundary_only = role == Role::Surface && b && has_boundary;
+                match r.closest_on_curves(p, boundary_only) {
+                    Some((s, _, d)) if d <= tol || boundary_only => {
+                        let seg = r.segments[s as usize];
+                        let at_corner = seg.ends.iter().any(|&e| {
+                            r.corner[e as usize] && norm(sub(r.positions[e as usize], p)) <= tol
+                        });
+                        if at_corner {
+                            Kind::Fixed
+                        } else {
+                            Kind::Curve {
+                                boundary: boundary_only,
+                            }
+                        }
+                    }
+                    _ => Kind::Surface,
+                }
+            })
+            .collect();
+        Constraints { kind, hint }
+    }
+
+    /// The point of vertex `v`'s set nearest `p`.
+    pub fn project(&self, r: &Reference, v: usize, p: [f64; 3]) -> [f64; 3] {
+        match self.kind[v] {
+            Kind::Free | Kind::Fixed => p,
+            Kind::Surface => r.closest(p, Some(self.hint[v])).map_or(p, |f| f.point),
+            Kind::Curve { boundary } => r.closest_on_curves(p, boundary).map_or(p, |c| c.1),
+        }
+    }
+
+    /// An orthonormal basis of the directions vertex `v` may move in at
+    /// `p` (on its set), and their count.
+    pub fn basis(&self, r: Option<&Reference>, v: usize, p: [f64; 3]) -> (usize, [[f64; 3]; 3]) {
+        let id = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        match (self.kind[v], r) {
+            (Kind::Free, _) => (3, id),
+            (Kind::Surface, Some(r)) => {
+                let n = r
+                    .closest(p, Some(self.hint[v]))
+                    .map(|f| r.normals[f.triangle as usize])
+                    .filter(|n| norm(*n) > 0.0)
+                    .unwrap_or_else(|| unit(self.hint[v]));
+                if norm(n) == 0.0 {
+                    return (0, id);
+                }
+                let t1 = unit(perpendicular(n));
+                (2, [t1, cross(n, t1), [0.0; 3]])
+            }
+            (Kind::Curve { boundary }, Some(r)) => match r.closest_on_curves(p, boundary) {
+                Some((s, _, _)) if norm(r.direction(s)) > 0.0 => (1, [r.direction(s), [0.0; 3], [0.0; 3]]),
+                _ => (0, id),
+            },
+            _ => (0, id),
+        }
+    }
+}
+
+/// `a / |a|`, or zero.
+pub(crate) fn unit(a: [f64; 3]) -> [f64; 3] {
+    let l = norm(a);
+    if l > 0.0 {
+        a.map(|x| x / l)
+    } else {
+        [0.0; 3]
+    }
+}
+
+/// A vector perpendicular to `n` (not unit).
+pub(crate) fn perpendicular(n: [f64; 3]) -> [f64; 3] {
+    let axis = if n[0].abs() < 0.6 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let t = cross(n, axis);
+    debug_assert!(dot(t, n).abs() < 1e-9 * norm(n).max(1.0));
+    t
+}

@@ -1,0 +1,279 @@
+//! The optimisation loop, generic over the dimension `D` of the corner
+//! simplices and the corner count `K` of the cells.
+//!
+//! Input: cells with a frame per cell (`D` orthonormal rows: the tangent
+//! plane of a quad, the identity for a hex), a reference edge length per
+//! cell, the movable vertices and their [`Constraints`]. Output: new
+//! positions of the movable vertices, on their sets. Each round minimises
+//! the [`energy`](crate::energy) of every corner simplex of the cells that
+//! touch a movable vertex by L-BFGS in the vertices' tangent bases, then
+//! projects the moved vertices onto their sets and lowers ε by the rule of
+//! Garanzha et al. (2021). Vertices that do not move are never written.
+
+use crate::constraint::Constraints;
+use crate::energy::energy;
+use crate::lbfgs;
+use crate::quality::sub;
+use crate::reference::Reference;
+use rayon::prelude::*;
+
+/// The cells and their per-cell data.
+pub struct Cells<'a, const D: usize, const K: usize> {
+    /// Cells (vertex indices).
+    pub cells: &'a [[u32; K]],
+    /// The corner simplices of a cell: corner, then its `D` neighbours
+    /// (right-handed); entries past `D` unused.
+    pub corners: &'a [[usize; 4]],
+    /// Per cell, the `D` rows of its frame.
+    pub frames: Vec<[[f64; 3]; D]>,
+    /// Per cell, its reference edge length.
+    pub h: Vec<f64>,
+}
+
+/// Parameters of [`optimize`].
+#[derive(Clone, Copy, Debug)]
+pub struct Params {
+    /// Weight of the size term.
+    pub theta: f64,
+    /// Most rounds.
+    pub rounds: usize,
+    /// Most L-BFGS iterations per round.
+    pub iterations: usize,
+    /// Stop once nothing is inverted (untangling) instead of when the
+    /// energy settles (smoothing).
+    pub stop_when_untangled: bool,
+}
+
+/// What [`optimize`] did.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Outcome {
+    /// Rounds made.
+    pub rounds: usize,
+    /// The least corner determinant at the end (> 0: none inverted).
+    pub det_min: f64,
+}
+
+struct Local<'a, const D: usize, const K: usize> {
+    c: &'a Cells<'a, D, K>,
+    /// Active cells (touching a movable vertex).
+    cells: Vec<u32>,
+    /// Per corner simplex of the active cells: (active cell, corner).
+    simplices: Vec<(u32, u8)>,
+    /// Movable vertices (global ids).
+    vars: Vec<u32>,
+    /// Per global vertex: its index in `vars`, or `u32::MAX`.
+    var_of: Vec<u32>,
+    /// CSR: per var, the (simplex, slot) pairs it appears in.
+    start: Vec<usize>,
+    uses: Vec<(u32, u8)>,
+}
+
+impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
+    fn new(c: &'a Cells<'a, D, K>, movable: &[bool], n: usize) -> Self {
+        let cells: Vec<u32> = (0..c.cells.len() as u32)
+            .filter(|&i| c.cells[i as usize].iter().any(|&v| movable[v as usize]))
+            .collect();
+        let mut var_of = vec![u32::MAX; n];
+        let mut vars = Vec::new();
+        for &ci in &cells {
+            for &v in &c.cells[ci as usize] {
+                if movable[v as usize] && var_of[v as usize] == u32::MAX {
+                    var_of[v as usize] = vars.len() as u32;
+                    vars.push(v);
+                }
+            }
+        }
+        let simplices: Vec<(u32, u8)> = (0..cells.len() as u32)
+            .flat_map(|a| (0..c.corners.len() as u8).map(move |k| (a, k)))
+            .collect();
+        let mut count = vec![0usize; vars.len() + 1];
+        let slot_var = |s: &(u32, u8), slot: usize| {
+            let cell = &c.cells[cells[s.0 as usize] as usize];
+            var_of[cell[c.corners[s.1 as usize][slot]] as usize]
+        };
+        for s in &simplices {
+            for slot in 0..=D {
+                let v = slot_var(s, slot);
+                if v != u32::MAX {
+                    count[v as usize + 1] += 1;
+                }
+            }
+        }
+        for i in 0..vars.len() {
+            count[i + 1] += count[i];
+        }
+        let mut fill = count.clone();
+        let mut uses = vec![(0u32, 0u8); count[vars.len()]];
+        for (si, s) in simplices.iter().enumerate() {
+            for slot in 0..=D {
+                let v = slot_var(s, slot);
+                if v != u32::MAX {
+                    uses[fill[v as usize]] = (si as u32, slot as u8);
+                    fill[v as usize] += 1;
+                }
+            }
+        }
+        Local {
+            c,
+            cells,
+            simplices,
+            vars,
+            var_of,
+            start: count,
+            uses,
+        }
+    }
+
+    /// The Jacobian of simplex `s` at positions `x`.
+    fn jacobian(&self, s: (u32, u8), x: &[[f64; 3]]) -> [[f64; D]; D] {
+        let ci = self.cells[s.0 as usize] as usize;
+        let cell = &self.c.cells[ci];
+        let corner = &self.c.corners[s.1 as usize];
+        let p0 = x[cell[corner[0]] as usize];
+        let inv_h = 1.0 / self.c.h[ci];
+        let frame = &self.c.frames[ci];
+        let mut j = [[0.0; D]; D];
+        for k in 0..D {
+            let e = sub(x[cell[corner[k + 1]] as usize], p0);
+            for (r, row) in frame.iter().enumerate() {
+                j[r][k] = (row[0] * e[0] + row[1] * e[1] + row[2] * e[2]) * inv_h;
+            }
+        }
+        j
+    }
+
+    /// Energy, least determinant, and per simplex the gradient on its
+    /// `D + 1` vertices.
+    fn evaluate(&self, x: &[[f64; 3]], eps: f64, theta: f64, grads: &mut [[[f64; 3]; 4]]) -> (f64, f64) {
+        let per: Vec<(f64, f64)> = self
+            .simplices
+            .par_iter()
+            .zip(grads.par_iter_mut())
+            .map(|(&s, g)| {
+                let ci = self.cells[s.0 as usize] as usize;
+                let j = self.jacobian(s, x);
+                let (e, de) = energy::<D>(&j, eps, theta);
+                let h = self.c.h[ci];
+                let w = h.powi(D as i32);
+                let frame = &self.c.frames[ci];
+                let det = crate::energy::det_cofactor(&j).0;
+                let mut g0 = [0.0; 3];
+                for k in 0..D {
+                    let mut gk = [0.0; 3];
+                    for (r, row) in frame.iter().enumerate() {
+                        for a in 0..3 {
+                            gk[a] += row[a] * de[r][k] * w / h;
+                        }
+                    }
+                    for a in 0..3 {
+                        g0[a] -= gk[a];
+                    }
+                    g[k + 1] = gk;
+                }
+                g[0] = g0;
+                (e * w, det)
+            })
+            .collect();
+        // a fixed-order sum: the same bits whatever the thread count
+        let e = per.chunks(4096).map(|c| c.iter().map(|p| p.0).sum::<f64>()).sum();
+        let d = per.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        (e, d)
+    }
+}
+
+/// Moves the `movable` vertices of `x` (see the module docs).
+pub fn optimize<const D: usize, const K: usize>(
+    cells: &Cells<D, K>,
+    x: &mut [[f64; 3]],
+    movable: &[bool],
+    cons: &Constraints,
+    r: Option<&Reference>,
+    p: Params,
+) -> Outcome {
+    let l = Local::new(cells, movable, x.len());
+    let mut out = Outcome {
+        det_min: f64::INFINITY,
+        ..Default::default()
+    };
+    if l.vars.is_empty() {
+        return out;
+    }
+    let mut grads = vec![[[0.0; 3]; 4]; l.simplices.len()];
+    let mean_h = l.cells.iter().map(|&c| cells.h[c as usize]).sum::<f64>() / l.cells.len() as f64;
+    let mut eps = 1.0;
+    let (_, mut det_min) = l.evaluate(x, eps, p.theta, &mut grads);
+    for round in 0..p.rounds {
+        out.rounds = round + 1;
+        let bases: Vec<(usize, [[f64; 3]; 3])> =
+            l.vars.iter().map(|&v| cons.basis(r, v as usize, x[v as usize])).collect();
+        let mut offset = vec![0usize; l.vars.len() + 1];
+        for (i, b) in bases.iter().enumerate() {
+            offset[i + 1] = offset[i] + b.0;
+        }
+        let x0: Vec<[f64; 3]> = l.vars.iter().map(|&v| x[v as usize]).collect();
+        let mut xt = x.to_vec();
+        let place = |y: &[f64], xt: &mut [[f64; 3]]| {
+            for (i, &v) in l.vars.iter().enumerate() {
+                let mut q = x0[i];
+                for k in 0..bases[i].0 {
+                    for a in 0..3 {
+                        q[a] += y[offset[i] + k] * bases[i].1[k][a];
+                    }
+                }
+                xt[v as usize] = q;
+            }
+        };
+        let mut y = vec![0.0; offset[l.vars.len()]];
+        let (e_prev, _) = l.evaluate(x, eps, p.theta, &mut grads);
+        let mut gx = vec![[0.0; 3]; l.vars.len()];
+        lbfgs::minimize(
+            &mut y,
+            |y, gy| {
+                place(y, &mut xt);
+                let (e, _) = l.evaluate(&xt, eps, p.theta, &mut grads);
+                gx.par_iter_mut().enumerate().for_each(|(i, g)| {
+                    *g = [0.0; 3];
+                    for &(s, slot) in &l.uses[l.start[i]..l.start[i + 1]] {
+                        let gs = grads[s as usize][slot as usize];
+                        for a in 0..3 {
+                            g[a] += gs[a];
+                        }
+                    }
+                });
+                for (i, b) in bases.iter().enumerate() {
+                    for k in 0..b.0 {
+                        gy[offset[i] + k] = (0..3).map(|a| b.1[k][a] * gx[i][a]).sum();
+                    }
+                }
+                e
+            },
+            p.iterations,
+            1e-9 * mean_h,
+            0.05 * mean_h,
+        );
+        place(&y, &mut xt);
+        for &v in &l.vars {
+            x[v as usize] = match r {
+                Some(r) => cons.project(r, v as usize, xt[v as usize]),
+                None => xt[v as usize],
+            };
+        }
+        let (e, d) = l.evaluate(x, eps, p.theta, &mut grads);
+        det_min = d;
+        // ε by the rule of Garanzha et al.
+        let sigma = (1.0 - e / e_prev).max(0.1);
+        let mu = (1.0 - sigma) * crate::energy::chi(det_min, eps);
+        eps = if det_min < mu {
+            2.0 * (mu * (mu - det_min)).sqrt()
+        } else {
+            1e-10
+        };
+        let settled = (e_prev - e).abs() <= 1e-5 * e.abs();
+        if det_min > 0.0 && (p.stop_when_untangled || settled) {
+            break;
+        }
+    }
+    out.det_min = det_min;
+    let _ = &l.var_of;
+    out
+}

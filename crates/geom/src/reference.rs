@@ -1,0 +1,332 @@
+//! The reference an output mesh lives on: a triangle surface (the input
+//! surface of a quad mesh, the boundary of the input volume of a hex
+//! mesh), its curves (boundary edges, and feature edges whose dihedral
+//! angle exceeds a threshold) and its corners.
+//!
+//! Input: positions and triangles (or tets, whose boundary is taken,
+//! oriented outward). Output: closest points on the surface (with a normal
+//! filter, so that a point never jumps to the far side of a thin part) and
+//! on the curves. Invariants: triangle normals are unit or zero
+//! (degenerate triangles); a curve segment is a boundary edge or a feature
+//! edge, never both; a corner is a curve vertex with other than 2 curve
+//! edges, or where its 2 curve edges turn by more than the threshold.
+
+use crate::bvh::{Aabb, Bvh};
+use crate::quality::{cross, dot, norm, sub};
+use std::collections::HashMap;
+
+/// A curve segment of the reference.
+#[derive(Clone, Copy, Debug)]
+pub struct Segment {
+    /// Its end vertices.
+    pub ends: [u32; 2],
+    /// A boundary edge (one triangle); otherwise a feature edge.
+    pub boundary: bool,
+}
+
+/// A point of the reference surface nearest a query.
+#[derive(Clone, Copy, Debug)]
+pub struct Foot {
+    /// The triangle it lies on.
+    pub triangle: u32,
+    /// The point.
+    pub point: [f64; 3],
+    /// Its distance to the query.
+    pub distance: f64,
+}
+
+/// The reference surface (see the module docs).
+#[derive(Clone, Debug)]
+pub struct Reference {
+    /// Vertex positions.
+    pub positions: Vec<[f64; 3]>,
+    /// Triangles.
+    pub triangles: Vec<[u32; 3]>,
+    /// Unit normal of each triangle (zero when degenerate).
+    pub normals: Vec<[f64; 3]>,
+    /// Curve segments.
+    pub segments: Vec<Segment>,
+    /// Per vertex: a corner of the curves.
+    pub corner: Vec<bool>,
+    /// Bounding-box diagonal.
+    pub diagonal: f64,
+    triangle_bvh: Bvh,
+    segment_bvh: Bvh,
+}
+
+impl Reference {
+    /// The reference of a triangle surface; `feature_deg`: edges whose
+    /// normals differ by more than this angle are features (180: none).
+    pub fn surface(positions: &[[f64; 3]], triangles: &[[u32; 3]], feature_deg: f64) -> Self {
+        let normals: Vec<[f64; 3]> = triangles
+            .iter()
+            .map(|t| {
+                let n = cross(
+                    sub(positions[t[1] as usize], positions[t[0] as usize]),
+                    sub(positions[t[2] as usize], positions[t[0] as usize]),
+                );
+                let l = norm(n);
+                if l > 0.0 {
+                    n.map(|x| x / l)
+                } else {
+                    [0.0; 3]
+                }
+            })
+            .collect();
+        let mut edges: HashMap<[u32; 2], Vec<u32>> = HashMap::new();
+        for (i, t) in triangles.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                edges.entry([a.min(b), a.max(b)]).or_default().push(i as u32);
+            }
+        }
+        let cos = feature_deg.to_radians().cos();
+        let mut segments: Vec<Segment> = edges
+            .into_iter()
+            .filter_map(|(e, ts)| {
+                let boundary = ts.len() == 1;
+                let feature = ts.len() > 2
+                    || (ts.len() == 2 && {
+                        let (n0, n1) = (normals[ts[0] as usize], normals[ts[1] as usize]);
+                        norm(n0) > 0.0 && norm(n1) > 0.0 && dot(n0, n1) < cos
+                    });
+                (boundary || feature).then_some(Segment { ends: e, boundary })
+            })
+            .collect();
+        segments.sort_unstable_by_key(|s| s.ends);
+        let corner = corners(positions, &segments, cos);
+        let bbox = Aabb::of(positions);
+        let triangle_bvh = Bvh::new(
+            &triangles
+                .iter()
+                .map(|t| Aabb::of(&t.map(|v| positions[v as usize])))
+                .collect::<Vec<_>>(),
+        );
+        let segment_bvh = Bvh::new(
+            &segments
+                .iter()
+                .map(|s| Aabb::of(&s.ends.map(|v| positions[v as usize])))
+                .collect::<Vec<_>>(),
+        );
+        Reference {
+            positions: positions.to_vec(),
+            triangles: triangles.to_vec(),
+            normals,
+            segments,
+            corner,
+            diagonal: bbox.diagonal(),
+            triangle_bvh,
+            segment_bvh,
+        }
+    }
+
+    /// The reference of a tet mesh: its boundary triangles, outward.
+    pub fn volume_boundary(positions: &[[f64; 3]], tets: &[[u32; 4]], feature_deg: f64) -> Self {
+        let mut count: HashMap<[u32; 3], (u32, [u32; 3])> = HashMap::new();
+        for t in tets {
+            let p = t.map(|v| positions[v as usize]);
+            let vol = dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
+            // faces opposite 0..3, outward for a positive tet
+            for f in [[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]] {
+                let mut tri = f.map(|k| t[k]);
+                if vol < 0.0 {
+                    tri.swap(1, 2);
+                }
+                let mut key = tri;
+                key.sort_unstable();
+                count.entry(key).or_insert((0, tri)).0 += 1;
+            }
+        }
+        let mut tris: Vec<[u32; 3]> = count
+            .into_values()
+            .filter(|(n, _)| *n == 1)
+            .map(|(_, t)| t)
+            .collect();
+        tris.sort_unstable();
+        Self::surface(positions, &tris, feature_deg)
+    }
+
+    /// The nearest point of the surface to `p` on a triangle whose normal
+    /// agrees with `hint` (positive dot product; any triangle without a
+    /// hint, or when none agrees).
+    pub fn closest(&self, p: [f64; 3], hint: Option<[f64; 3]>) -> Option<Foot> {
+        let near = |ok: &dyn Fn(u32) -> bool| {
+            self.triangle_bvh.nearest(p, |t| {
+                ok(t).then(|| {
+                    let q = self.closest_on_triangle(t, p);
+                    let d = sub(q, p);
+                    dot(d, d)
+                })
+            })
+        };
+        let found = match hint {
+            Some(h) => near(&|t| dot(self.normals[t as usize], h) > 0.0).or_else(|| near(&|_| true)),
+            None => near(&|_| true),
+        }?;
+        let point = self.closest_on_triangle(found.0, p);
+        Some(Foot {
+            triangle: found.0,
+            point,
+            distance: found.1.sqrt(),
+        })
+    }
+
+    /// The nearest point to `p` on the curves (only boundary segments when
+    /// `boundary_only`): the segment, the point, the distance.
+    pub fn closest_on_curves(&self, p: [f64; 3], boundary_only: bool) -> Option<(u32, [f64; 3], f64)> {
+        let (s, d2) = self.segment_bvh.nearest(p, |s| {
+            let seg = self.segments[s as usize];
+            (!boundary_only || seg.boundary).then(|| {
+                let q = self.closest_on_segment(s, p);
+                let d = sub(q, p);
+                dot(d, d)
+            })
+        })?;
+        Some((s, self.closest_on_segment(s, p), d2.sqrt()))
+    }
+
+    /// Whether the reference has boundary segments.
+    pub fn has_boundary(&self) -> bool {
+        self.segments.iter().any(|s| s.boundary)
+    }
+
+    /// The unit direction of segment `s` (zero when degenerate).
+    pub fn direction(&self, s: u32) -> [f64; 3] {
+        let [a, b] = self.segments[s as usize].ends;
+        let d = sub(self.positions[b as usize], self.positions[a as usize]);
+        let l = norm(d);
+        if l > 0.0 {
+            d.map(|x| x / l)
+        } else {
+            [0.0; 3]
+        }
+    }
+
+    fn closest_on_segment(&self, s: u32, p: [f64; 3]) -> [f64; 3] {
+        let [a, b] = self.segments[s as usize].ends.map(|v| self.positions[v as usize]);
+        let d = sub(b, a);
+        let l2 = dot(d, d);
+        let t = if l2 > 0.0 {
+            (dot(sub(p, a), d) / l2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        [0, 1, 2].map(|k| a[k] + t * d[k])
+    }
+
+    /// The point of triangle `t` nearest `p` (Ericson, *Real-Time
+    /// Collision Detection*, 5.1.5: by the Voronoi regions of its
+    /// features).
+    pub fn closest_on_triangle(&self, t: u32, p: [f64; 3]) -> [f64; 3] {
+        let [a, b, c] = self.triangles[t as usize].map(|v| self.positions[v as usize]);
+        let lerp = |x: [f64; 3], y: [f64; 3], s: f64| [0, 1, 2].map(|k| x[k] + s * (y[k] - x[k]));
+        let (ab, ac, ap) = (sub(b, a), sub(c, a), sub(p, a));
+        let (d1, d2) = (dot(ab, ap), dot(ac, ap));
+        if d1 <= 0.0 && d2 <= 0.0 {
+            return a;
+        }
+        let bp = sub(p, b);
+        let (d3, d4) = (dot(ab, bp), dot(ac, bp));
+        if d3 >= 0.0 && d4 <= d3 {
+            return b;
+        }
+        let vc = d1 * d4 - d3 * d2;
+        if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+            return lerp(a, b, d1 / (d1 - d3));
+        }
+        let cp = sub(p, c);
+        let (d5, d6) = (dot(ab, cp), dot(ac, cp));
+        if d6 >= 0.0 && d5 <= d6 {
+            return c;
+        }
+        let vb = d5 * d2 - d1 * d6;
+        if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+            return lerp(a, c, d2 / (d2 - d6));
+        }
+        let va = d3 * d6 - d5 * d4;
+        if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
+            return lerp(b, c, (d4 - d3) / ((d4 - d3) + (d5 - d6)));
+        }
+        let denom = va + vb + vc;
+        if denom.abs() < f64::MIN_POSITIVE {
+            return a; // a degenerate triangle whose edges all failed above
+        }
+        let (v, w) = (vb / denom, vc / denom);
+        [0, 1, 2].map(|k| a[k] + ab[k] * v + ac[k] * w)
+    }
+}
+
+/// Per vertex: a corner of the curves (see the module docs).
+fn corners(positions: &[[f64; 3]], segments: &[Segment], cos: f64) -> Vec<bool> {
+    let mut around: Vec<Vec<u32>> = vec![Vec::new(); positions.len()];
+    for s in segments {
+        around[s.ends[0] as usize].push(s.ends[1]);
+        around[s.ends[1] as usize].push(s.ends[0]);
+    }
+    around
+        .iter()
+        .enumerate()
+        .map(|(v, n)| match n.len() {
+            0 => false,
+            2 => {
+                let p = positions[v];
+                let a = sub(p, positions[n[0] as usize]);
+                let b = sub(positions[n[1] as usize], p);
+                let l = norm(a) * norm(b);
+                l > 0.0 && dot(a, b) < cos * l
+            }
+            _ => true,
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The unit square [0,1]² as 2 triangles, and a unit cube of 6 tets.
+    #[test]
+    fn square_curves_corners_and_closest_points() {
+        let p = [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.]];
+        let r = Reference::surface(&p, &[[0, 1, 2], [0, 2, 3]], 35.0);
+        assert_eq!(r.segments.len(), 4);
+        assert!(r.segments.iter().all(|s| s.boundary));
+        assert_eq!(r.corner, vec![true; 4]);
+        let f = r.closest([0.3, 0.6, 2.0], Some([0., 0., 1.])).unwrap();
+        assert!((f.distance - 2.0).abs() < 1e-12);
+        assert!((0..3).all(|k| (f.point[k] - [0.3, 0.6, 0.0][k]).abs() < 1e-12));
+        let (_, q, d) = r.closest_on_curves([0.5, 0.2, 0.0], true).unwrap();
+        assert_eq!(q, [0.5, 0.0, 0.0]);
+        assert!((d - 0.2).abs() < 1e-15);
+        // outside the square: the nearest point on its border
+        let f = r.closest([2.0, 0.5, 0.0], None).unwrap();
+        assert!((f.point[0] - 1.0).abs() < 1e-15 && (f.point[1] - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn cube_boundary_has_12_feature_edges() {
+        let p: Vec<[f64; 3]> = (0..8)
+            .map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2 & 1) as f64])
+            .collect();
+        let tets = [
+            [0, 1, 3, 7],
+            [0, 3, 2, 7],
+            [0, 2, 6, 7],
+            [0, 6, 4, 7],
+            [0, 4, 5, 7],
+            [0, 5, 1, 7],
+        ];
+        let r = Reference::volume_boundary(&p, &tets, 35.0);
+        assert_eq!(r.triangles.len(), 12);
+        assert_eq!(r.segments.len(), 12);
+        assert!(r.segments.iter().all(|s| !s.boundary));
+        assert_eq!(r.corner, vec![true; 8]);
+        // outward normals: the face z = 1 points up
+        let f = r.closest([0.5, 0.5, 1.5], Some([0., 0., 1.])).unwrap();
+        assert!(r.normals[f.triangle as usize][2] > 0.99);
+        // a thin-part hint: from inside near the top, asking for a face
+        // that looks down finds the bottom
+        let f = r.closest([0.5, 0.5, 0.9], Some([0., 0., -1.])).unwrap();
+        assert!(f.point[2].abs() < 1e-15);
+    }
+}

@@ -1,0 +1,407 @@
+//! The stage's driver, one generic function for quads and hexes
+//! ([`quads`] and [`hexes`] only gather what differs: corner tables,
+//! frames, the measure, the reference and which vertices lie on it).
+
+use crate::constraint::{unit, Constraints, Kind, Role};
+use crate::optimize::{optimize, Cells, Params};
+use crate::quality::{self, cross, norm, sub, Summary, HEX_CORNER_EDGES, QUAD_CORNER_EDGES};
+use crate::reference::Reference;
+use crate::{Mode, Options};
+use dualex_map::cells::{HEX_EDGES, HEX_FACES};
+use std::time::Instant;
+
+/// What the stage measured and did.
+#[derive(Clone, Debug, Default)]
+pub struct Report {
+    /// The mode's name (`off`, `auto`, `smooth`).
+    pub mode: &'static str,
+    /// Quality of the positions it was given.
+    pub before: Summary,
+    /// Quality of the positions it returned.
+    pub after: Summary,
+    /// Vertices it moved.
+    pub moved_vertices: usize,
+    /// The largest move, in model units.
+    pub max_move: f64,
+    /// The mean edge length of the mesh it was given.
+    pub mean_edge: f64,
+    /// Output boundary vertices.
+    pub boundary_vertices: usize,
+    /// Of them, those farther than 1e-9 of the bounding box from the
+    /// input's boundary before the stage (projected onto it).
+    pub boundary_off: usize,
+    /// The largest distance of a boundary vertex to the input's boundary,
+    /// before and after (model units; 0 when not measured).
+    pub boundary_distance: [f64; 2],
+    /// Optimisation rounds, and the rings of the last region (auto).
+    pub rounds: usize,
+    /// Rings around the inverted elements that were moved (auto).
+    pub rings: usize,
+    /// Time of the stage, ms.
+    pub time_ms: f64,
+}
+
+impl Report {
+    /// The largest move in mean edge lengths.
+    pub fn max_move_edges(&self) -> f64 {
+        if self.mean_edge > 0.0 {
+            self.max_move / self.mean_edge
+        } else {
+            0.0
+        }
+    }
+
+    /// Whether it moved anything.
+    pub fn moved(&self) -> bool {
+        self.moved_vertices > 0
+    }
+
+    /// As JSON (the `geometry` section of the stats).
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "mode": self.mode,
+            "measure": "scaled Jacobian",
+            "before": self.before.to_json(),
+            "after": self.after.to_json(),
+            "moved_vertices": self.moved_vertices,
+            "max_move": self.max_move,
+            "max_move_edges": self.max_move_edges(),
+            "mean_edge": self.mean_edge,
+            "boundary": {
+                "vertices": self.boundary_vertices,
+                "off_input_boundary_before": self.boundary_off,
+                "max_distance_before": self.boundary_distance[0],
+                "max_distance_after": self.boundary_distance[1],
+            },
+            "rounds": self.rounds,
+            "rings": self.rings,
+            "time_ms": self.time_ms,
+        })
+    }
+}
+
+/// The stage on a quad mesh lying on the triangle surface
+/// (`surface_positions`, `triangles`); `sources[q]`: the triangle holding
+/// quad `q`'s node (`u32::MAX`: none, then the triangle nearest its
+/// centre is taken), whose normal is the quad's.
+pub fn quads(
+    positions: &mut [[f64; 3]],
+    cells: &[[u32; 4]],
+    surface_positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    sources: &[u32],
+    opts: &Options,
+) -> Report {
+    let t = Instant::now();
+    let mut reference: Option<Reference> = None;
+    let make = || Reference::surface(surface_positions, triangles, opts.feature_angle);
+    let tri_normal = |t: u32| {
+        let [a, b, c] = triangles[t as usize].map(|v| surface_positions[v as usize]);
+        unit(cross(sub(b, a), sub(c, a)))
+    };
+    let mut normals = Vec::with_capacity(cells.len());
+    for (q, cell) in cells.iter().enumerate() {
+        let n = match sources.get(q) {
+            Some(&s) if (s as usize) < triangles.len() => tri_normal(s),
+            _ => {
+                let r = reference.get_or_insert_with(make);
+                let p = quality::corners(positions, cell);
+                let centre = [0, 1, 2].map(|k| p.iter().map(|x| x[k]).sum::<f64>() / 4.0);
+                let newell = cross(sub(p[2], p[0]), sub(p[3], p[1]));
+                r.closest(centre, Some(newell))
+                    .map_or(unit(newell), |f| r.normals[f.triangle as usize])
+            }
+        };
+        normals.push(n);
+    }
+    let frames: Vec<[[f64; 3]; 2]> = normals
+        .iter()
+        .map(|&n| {
+            let t1 = unit(crate::constraint::perpendicular(n));
+            [t1, cross(n, t1)]
+        })
+        .collect();
+    let on_boundary = boundary_vertices(positions.len(), cells, &[[0, 1], [1, 2], [2, 3], [3, 0]]);
+    let mut hint = vec![[0.0; 3]; positions.len()];
+    for (cell, n) in cells.iter().zip(&normals) {
+        for &v in cell {
+            for k in 0..3 {
+                hint[v as usize][k] += n[k];
+            }
+        }
+    }
+    let measure = |x: &[[f64; 3]]| quality::quad_values(x, cells, &normals);
+    let input = Input {
+        cells,
+        corners: &QUAD_CORNER_EDGES.map(|[c, a, b]| [c, a, b, 0]),
+        frames,
+        edges: &[[0, 1], [1, 2], [2, 3], [3, 0]],
+        role: Role::Surface,
+        on_boundary,
+        hint,
+    };
+    let mut rep = run(positions, input, &measure, reference, &make, opts);
+    rep.time_ms = t.elapsed().as_secs_f64() * 1e3;
+    rep
+}
+
+/// The stage on a hex mesh inside the tet mesh (`volume_positions`,
+/// `tets`): boundary vertices on its boundary surface.
+pub fn hexes(
+    positions: &mut [[f64; 3]],
+    cells: &[[u32; 8]],
+    volume_positions: &[[f64; 3]],
+    tets: &[[u32; 4]],
+    opts: &Options,
+) -> Report {
+    let t = Instant::now();
+    let make = || Reference::volume_boundary(volume_positions, tets, opts.feature_angle);
+    let faces = HEX_FACES;
+    let mut count = std::collections::HashMap::new();
+    for (h, cell) in cells.iter().enumerate() {
+        for (f, face) in faces.iter().enumerate() {
+            let mut key = face.map(|k| cell[k]);
+            key.sort_unstable();
+            count.entry(key).or_insert((0u32, h, f)).0 += 1;
+        }
+    }
+    let mut on_boundary = vec![false; positions.len()];
+    let mut hint = vec![[0.0; 3]; positions.len()];
+    let mut outer: Vec<(usize, usize)> = count
+        .into_values()
+        .filter(|c| c.0 == 1)
+        .map(|c| (c.1, c.2))
+        .collect();
+    outer.sort_unstable();
+    for (h, f) in outer {
+        let q = faces[f].map(|k| cells[h][k]);
+        let p = q.map(|v| positions[v as usize]);
+        let n = cross(sub(p[2], p[0]), sub(p[3], p[1]));
+        for v in q {
+            on_boundary[v as usize] = true;
+            for k in 0..3 {
+                hint[v as usize][k] += n[k];
+            }
+        }
+    }
+    let measure = |x: &[[f64; 3]]| quality::hex_values(x, cells);
+    let id = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let input = Input {
+        cells,
+        corners: &HEX_CORNER_EDGES,
+        frames: vec![id; cells.len()],
+        edges: &HEX_EDGES,
+        role: Role::Volume,
+        on_boundary,
+        hint,
+    };
+    let mut rep = run(positions, input, &measure, None, &make, opts);
+    rep.time_ms = t.elapsed().as_secs_f64() * 1e3;
+    rep
+}
+
+
+/// Vertices on edges of one quad.
+fn boundary_vertices(n: usize, cells: &[[u32; 4]], edges: &[[usize; 2]]) -> Vec<bool> {
+    let mut count: std::collections::HashMap<[u32; 2], u32> = std::collections::HashMap::new();
+    for c in cells {
+        for e in edges {
+            let (a, b) = (c[e[0]], c[e[1]]);
+            *count.entry([a.min(b), a.max(b)]).or_default() += 1;
+        }
+    }
+    let mut out = vec![false; n];
+    for (e, k) in count {
+        if k == 1 {
+            out[e[0] as usize] = true;
+            out[e[1] as usize] = true;
+        }
+    }
+    out
+}
+
+/// What differs between the dimensions.
+struct Input<'a, const D: usize, const K: usize> {
+    cells: &'a [[u32; K]],
+    corners: &'a [[usize; 4]],
+    frames: Vec<[[f64; 3]; D]>,
+    edges: &'a [[usize; 2]],
+    role: Role,
+    on_boundary: Vec<bool>,
+    hint: Vec<[f64; 3]>,
+}
+
+/// Rings tried around the inverted elements, then the whole mesh.
+const RINGS: [usize; 4] = [2, 4, 8, 16];
+
+fn run<const D: usize, const K: usize>(
+    x: &mut [[f64; 3]],
+    input: Input<D, K>,
+    measure: &dyn Fn(&[[f64; 3]]) -> Vec<f64>,
+    reference: Option<Reference>,
+    make: &dyn Fn() -> Reference,
+    opts: &Options,
+) -> Report {
+    let cells = input.cells;
+    let values = measure(x);
+    let mut rep = Report {
+        mode: opts.mode.name(),
+        before: Summary::of(&values),
+        boundary_vertices: input.on_boundary.iter().filter(|&&b| b).count(),
+        ..Default::default()
+    };
+    rep.after = rep.before;
+    let (mut sum, mut n) = (0.0, 0usize);
+    for c in cells {
+        for e in input.edges {
+            sum += norm(sub(x[c[e[1]] as usize], x[c[e[0]] as usize]));
+            n += 1;
+        }
+    }
+    rep.mean_edge = if n > 0 { sum / n as f64 } else { 0.0 };
+    let boundary = opts.boundary && rep.boundary_vertices > 0;
+    if opts.mode == Mode::Off || (!boundary && rep.before.inverted == 0 && opts.mode == Mode::Auto) {
+        return rep;
+    }
+    let r = reference.unwrap_or_else(make);
+    let tol = 1e-9 * r.diagonal;
+    let cons = Constraints::classify(
+        &r,
+        x,
+        &input.on_boundary,
+        input.hint.clone(),
+        input.role,
+        1e-7 * r.diagonal,
+    );
+    let start = x.to_vec();
+    // 3. boundary vertices onto the input's boundary
+    let mut seeds: Vec<bool> = vec![false; x.len()];
+    if boundary {
+        for v in 0..x.len() {
+            if !input.on_boundary[v] || cons.kind[v] == Kind::Fixed {
+                continue;
+            }
+            let q = cons.project(&r, v, x[v]);
+            let d = norm(sub(q, x[v]));
+            rep.boundary_distance[0] = rep.boundary_distance[0].max(d);
+            if d > tol {
+                rep.boundary_off += 1;
+                x[v] = q;
+                seeds[v] = true;
+            }
+        }
+    }
+    if rep.boundary_off == 0 && rep.before.inverted == 0 && opts.mode == Mode::Auto {
+        return rep;
+    }
+    // 4. the optimisation
+    let h: Vec<f64> = cells
+        .iter()
+        .map(|c| {
+            let l = input.edges.iter().map(|e| norm(sub(start[c[e[1]] as usize], start[c[e[0]] as usize])));
+            let m = l.sum::<f64>() / input.edges.len() as f64;
+            if m > 0.0 {
+                m
+            } else if rep.mean_edge > 0.0 {
+                rep.mean_edge
+            } else {
+                1.0
+            }
+        })
+        .collect();
+    let c = Cells::<D, K> {
+        cells,
+        corners: input.corners,
+        frames: input.frames,
+        h,
+    };
+    let movable_kind: Vec<bool> = cons.kind.iter().map(|k| k.dof() > 0).collect();
+    match opts.mode {
+        Mode::Smooth(rounds) => {
+            let p = Params {
+                theta: 0.5,
+                rounds: rounds.max(1),
+                iterations: 100,
+                stop_when_untangled: false,
+            };
+            rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p).rounds;
+        }
+        _ => {
+            let around = vertex_cells(x.len(), cells);
+            for (i, &rings) in RINGS.iter().enumerate() {
+                let bad = measure(x);
+                if bad.iter().all(|&v| v > 0.0) && (i > 0 || !seeds.iter().any(|&s| s)) {
+                    break;
+                }
+                let mut region = seeds.clone();
+                for (ci, &v) in bad.iter().enumerate() {
+                    if v <= 0.0 {
+                        for &u in &cells[ci] {
+                            region[u as usize] = true;
+                        }
+                    }
+                }
+                grow(&mut region, &around, cells, rings);
+                let movable: Vec<bool> = region.iter().zip(&movable_kind).map(|(a, b)| *a && *b).collect();
+                let p = Params {
+                    theta: 0.5,
+                    rounds: 50,
+                    iterations: 200,
+                    stop_when_untangled: false,
+                };
+                rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p).rounds;
+                rep.rings = rings;
+                seeds.iter_mut().for_each(|s| *s = false);
+            }
+        }
+    }
+    rep.after = Summary::of(&measure(x));
+    for v in 0..x.len() {
+        let d = norm(sub(x[v], start[v]));
+        if d > 0.0 {
+            rep.moved_vertices += 1;
+            rep.max_move = rep.max_move.max(d);
+        }
+        if boundary && input.on_boundary[v] && cons.kind[v] != Kind::Fixed {
+            let q = cons.project(&r, v, x[v]);
+            rep.boundary_distance[1] = rep.boundary_distance[1].max(norm(sub(q, x[v])));
+        }
+    }
+    rep
+}
+
+/// CSR of the cells around each vertex.
+fn vertex_cells<const K: usize>(n: usize, cells: &[[u32; K]]) -> (Vec<usize>, Vec<u32>) {
+    let mut start = vec![0usize; n + 1];
+    for c in cells {
+        for &v in c {
+            start[v as usize + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut list = vec![0u32; start[n]];
+    for (ci, c) in cells.iter().enumerate() {
+        for &v in c {
+            list[fill[v as usize]] = ci as u32;
+            fill[v as usize] += 1;
+        }
+    }
+    (start, list)
+}
+
+/// Adds `rings` rings of cells around `region`.
+fn grow<const K: usize>(region: &mut [bool], around: &(Vec<usize>, Vec<u32>), cells: &[[u32; K]], rings: usize) {
+    for _ in 0..rings {
+        let now: Vec<usize> = (0..region.len()).filter(|&v| region[v]).collect();
+        for v in now {
+            for &c in &around.1[around.0[v]..around.0[v + 1]] {
+                for &u in &cells[c as usize] {
+                    region[u as usize] = true;
+                }
+            }
+        }
+    }
+}
