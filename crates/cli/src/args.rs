@@ -97,9 +97,10 @@ pub struct ExtractArgs {
     #[arg(long, value_name = "auto|half|zero", default_value = "auto", value_parser = grid_offset)]
     pub grid_offset: GridOffset,
     /// An output whose topology (components, Euler characteristic, boundary
-    /// components) differs from the input's, or vertices that
-    /// sanitization left on the dual grid, are an error (nothing written)
-    /// instead of a warning.
+    /// components) differs from the input's, vertices that sanitization
+    /// left on the dual grid, or inverted elements the geometric stage
+    /// could not remove, are an error (nothing written) instead of a
+    /// warning.
     #[arg(long)]
     pub strict: bool,
     /// Seed of the sanitization perturbations.
@@ -107,6 +108,63 @@ pub struct ExtractArgs {
     pub seed: u64,
     #[command(flatten)]
     pub round: RoundArgs,
+    #[command(flatten)]
+    pub geometry: GeometryArgs,
+}
+
+/// The geometric stage after the extraction (`dualex_geom`): it moves
+/// vertices, never the mesh's combinatorics.
+#[derive(Clone, Debug, Default, Args)]
+pub struct GeometryArgs {
+    /// `auto` (the default of quad and hex): untangle only where elements
+    /// are inverted (scaled Jacobian ≤ 0), moving the vertices within a
+    /// few rings of them, and put boundary vertices on the input's
+    /// boundary; a mesh with neither is written as the map places it.
+    /// `off`: keep the map's positions (as --no-untangle).
+    #[arg(long, value_name = "auto|off", value_parser = ["auto", "off"], conflicts_with_all = ["smooth", "no_untangle"])]
+    pub untangle: Option<String>,
+    /// Keep the map's positions: measure the elements only.
+    #[arg(long, conflicts_with = "smooth")]
+    pub no_untangle: bool,
+    /// Optimise the shape of every element (the same functional, on the
+    /// whole mesh), in at most ITER rounds [default ITER: 10]; the
+    /// default of remesh.
+    #[arg(long, value_name = "ITER", num_args = 0..=1, default_missing_value = "10", value_parser = at_least_one)]
+    pub smooth: Option<usize>,
+    /// Leave boundary vertices where the map puts them, even off the
+    /// input's boundary.
+    #[arg(long)]
+    pub keep_boundary: bool,
+    /// Input edges whose faces' normals differ by more than DEG degrees
+    /// are feature curves: vertices on them stay on them.
+    #[arg(long, value_name = "DEG", default_value_t = 35.0, value_parser = degrees)]
+    pub feature_angle: f64,
+}
+
+impl GeometryArgs {
+    /// These, smoothing when no mode is given (remesh's default).
+    pub fn smooth_by_default(&self) -> Self {
+        let mut g = self.clone();
+        if g.smooth.is_none() && !g.no_untangle && g.untangle.is_none() {
+            g.smooth = Some(dualex_geom::SMOOTH_ROUNDS);
+        }
+        g
+    }
+
+    /// The stage's options.
+    pub fn options(&self) -> dualex_geom::Options {
+        use dualex_geom::Mode;
+        let mode = match (self.smooth, self.no_untangle, self.untangle.as_deref()) {
+            (Some(n), _, _) => Mode::Smooth(n),
+            (None, true, _) | (None, _, Some("off")) => Mode::Off,
+            _ => Mode::Auto,
+        };
+        dualex_geom::Options {
+            mode,
+            boundary: !self.keep_boundary,
+            feature_angle: self.feature_angle,
+        }
+    }
 }
 
 /// `dualex quad`.
@@ -272,9 +330,13 @@ pub struct RemeshArgs {
     /// face `texcoord`), as `quad --uv`.
     #[arg(long)]
     pub uv: bool,
-    /// An output whose topology differs from the surface's is an error.
+    /// An output whose topology differs from the surface's, or inverted
+    /// quads left, are an error.
     #[arg(long)]
     pub strict: bool,
+    /// The geometric stage (remesh smooths by default).
+    #[command(flatten)]
+    pub geometry: GeometryArgs,
 }
 
 fn degrees(s: &str) -> Result<f64, String> {

@@ -8,7 +8,7 @@
 
 use crate::args::{ExtractArgs, Global, HexArgs, QuadArgs};
 use crate::summary::{count, problems_suffix};
-use crate::{outputs, progress, summary, timing, verify, EMBEDDED, PNG_SIZE};
+use crate::{geometry, outputs, progress, summary, timing, verify, EMBEDDED, PNG_SIZE};
 use dualex_check::topology as topo;
 use std::path::Path;
 
@@ -109,10 +109,10 @@ pub fn quad_map(
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting quads");
     let dualex_quad::Extracted {
-        mesh,
+        mut mesh,
         stats,
         corner_uv,
-        ..
+        sources,
     } = match done_before {
         // the same map, extracted with the same options already
         Some(x) => x,
@@ -141,6 +141,10 @@ pub fn quad_map(
     };
     verify::last_check(&name, &summary, x.strict)?;
     verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
+    progress.stage("geometry");
+    let geo = geometry::quads(&mut mesh, map, &sources, &x.geometry);
+    laps.lap("geometry");
+    geometry::check(&name, &geo, ("quad", "quads"), x.strict)?;
     let png = match (&a.png, mesh.cells.is_empty()) {
         (Some(_), false) => Some(
             dualex_render::quad_png_bytes(&mesh, PNG_SIZE).map_err(|e| format!("{name}: {e}"))?,
@@ -158,8 +162,11 @@ pub fn quad_map(
     drop(progress);
     let mut json = stats.to_json();
     verify::add_to_stats(&mut json, &topology);
-    if let (Some((key, value)), Some(obj)) = (extra, json.as_object_mut()) {
-        obj.insert(key.to_string(), value);
+    if let Some(obj) = json.as_object_mut() {
+        obj.insert("geometry".to_string(), geo.to_json());
+        if let Some((key, value)) = extra {
+            obj.insert(key.to_string(), value);
+        }
     }
     finish_stats(x, g, &json, &laps, &stats.time_ms)?;
     if let (Some(path), Some(bytes)) = (&a.png, &png) {
@@ -171,6 +178,7 @@ pub fn quad_map(
         );
     }
     warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    geometry::warn(&geo, ("quad", "quads"));
     if stats.repair_paths > 0 {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(
@@ -194,12 +202,13 @@ pub fn quad_map(
     }
     if !g.quiet {
         eprintln!(
-            "dualex: {}: {}, {}, {}, {} -> {}{}",
+            "dualex: {}: {}, {}, {}, {}{} -> {}{}",
             done,
             count(stats.quads, "quad", "quads"),
             count(stats.vertices, "vertex", "vertices"),
             count(stats.boundary_loops, "boundary loop", "boundary loops"),
             count(stats.components, "component", "components"),
+            geometry::done_words(&geo),
             a.output.display(),
             problems_suffix(&summary::quad_problems(&stats)),
         );
@@ -240,7 +249,7 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
     };
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting hexes");
-    let (mesh, stats) =
+    let (mut mesh, stats) =
         dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
     laps.lap("extract");
     // combinatorial validity (hexes of a messy map may be geometrically
@@ -266,14 +275,22 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
     };
     verify::last_check(&name, &summary, x.strict)?;
     verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
+    progress.stage("geometry");
+    let geo = geometry::hexes(&mut mesh, &map, &x.geometry);
+    laps.lap("geometry");
+    geometry::check(&name, &geo, ("hex", "hexes"), x.strict)?;
     progress.stage("writing");
     dualex_io::write_hex_mesh(&a.output, &mesh).map_err(|e| e.to_string())?;
     laps.lap("write");
     drop(progress);
     let mut json = stats.to_json();
     verify::add_to_stats(&mut json, &topology);
+    if let Some(obj) = json.as_object_mut() {
+        obj.insert("geometry".to_string(), geo.to_json());
+    }
     finish_stats(x, g, &json, &laps, &stats.time_ms)?;
     warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    geometry::warn(&geo, ("hex", "hexes"));
     if stats.columns.holes > 0 {
         // printed under -q too: the output is not the map's own mesh
         let c = &stats.columns;
@@ -295,9 +312,10 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
     }
     if !g.quiet {
         eprintln!(
-            "dualex: done: {}, {} -> {}{}",
+            "dualex: done: {}, {}{} -> {}{}",
             count(mesh.cells.len(), "hex", "hexes"),
             count(mesh.positions.len(), "vertex", "vertices"),
+            geometry::done_words(&geo),
             a.output.display(),
             problems_suffix(&summary::hex_problems(&stats)),
         );

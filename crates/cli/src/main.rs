@@ -11,6 +11,7 @@ mod args;
 mod commands;
 mod extract;
 mod generate;
+mod geometry;
 mod generate_from_mesh;
 mod outputs;
 mod progress;

@@ -90,6 +90,7 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             strict: a.strict,
             seed: a.seed,
             round: RoundArgs { round: false },
+            geometry: a.geometry.smooth_by_default(),
         },
         weld: WeldArgs { no_weld: true },
     };

@@ -53,6 +53,10 @@ pub struct Outcome {
     pub det_min: f64,
 }
 
+/// Most a vertex on the reference moves in one round, in mean edge
+/// lengths of the cells optimised.
+const MAX_STEP: f64 = 0.25;
+
 struct Local<'a, const D: usize, const K: usize> {
     c: &'a Cells<'a, D, K>,
     /// Active cells (touching a movable vertex).
@@ -200,8 +204,11 @@ pub fn optimize<const D: usize, const K: usize>(
     }
     let mut grads = vec![[[0.0; 3]; 4]; l.simplices.len()];
     let mean_h = l.cells.iter().map(|&c| cells.h[c as usize]).sum::<f64>() / l.cells.len() as f64;
-    let mut eps = 1.0;
-    let (_, mut det_min) = l.evaluate(x, eps, p.theta, &mut grads);
+    let max_step = MAX_STEP * mean_h;
+    let (_, mut det_min) = l.evaluate(x, 1.0, p.theta, &mut grads);
+    // untangled already: the barrier (ε → 0) keeps it so; else ε = 1 as
+    // in the paper, lowered round by round
+    let mut eps = if det_min > 0.0 { 1e-10 } else { 1.0 };
     for round in 0..p.rounds {
         out.rounds = round + 1;
         let bases: Vec<(usize, [[f64; 3]; 3])> =
@@ -252,16 +259,29 @@ pub fn optimize<const D: usize, const K: usize>(
             0.05 * mean_h,
         );
         place(&y, &mut xt);
-        for &v in &l.vars {
-            x[v as usize] = match r {
-                Some(r) => cons.project(r, v as usize, xt[v as usize]),
-                None => xt[v as usize],
+        // the energy the minimisation reached, before the projection
+        let (e_min, _) = l.evaluate(&xt, eps, p.theta, &mut grads);
+        for (i, &v) in l.vars.iter().enumerate() {
+            let v = v as usize;
+            let q = match r {
+                // a vertex on a set moves at most `max_step` per round, so
+                // that its tangent plane stays a good guide and its
+                // projection stays on its own sheet of the surface
+                Some(r) if cons.kind[v] != crate::constraint::Kind::Free => {
+                    let d = sub(xt[v], x0[i]);
+                    let len = crate::quality::norm(d);
+                    let k = if len > max_step { max_step / len } else { 1.0 };
+                    cons.project(r, v, [0, 1, 2].map(|a| x0[i][a] + k * d[a]))
+                }
+                _ => xt[v],
             };
+            x[v] = q;
         }
         let (e, d) = l.evaluate(x, eps, p.theta, &mut grads);
         det_min = d;
         // ε by the rule of Garanzha et al.
         let sigma = (1.0 - e / e_prev).max(0.1);
+        let _ = e_min;
         let mu = (1.0 - sigma) * crate::energy::chi(det_min, eps);
         eps = if det_min < mu {
             2.0 * (mu * (mu - det_min)).sqrt()
@@ -269,6 +289,10 @@ pub fn optimize<const D: usize, const K: usize>(
             1e-10
         };
         let settled = (e_prev - e).abs() <= 1e-5 * e.abs();
+        if std::env::var_os("DUALEX_GEOM_DEBUG").is_some() {
+            let inv = l.simplices.iter().filter(|&&s| crate::energy::det_cofactor(&l.jacobian(s, x)).0 <= 0.0).count();
+            eprintln!("round {round}: vars {} cells {} E {e_prev:.6e} -> {e:.6e} det_min {det_min:.3e} inverted simplices {inv} eps {eps:.2e}", l.vars.len(), l.cells.len());
+        }
         if det_min > 0.0 && (p.stop_when_untangled || settled) {
             break;
         }

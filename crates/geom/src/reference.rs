@@ -48,6 +48,9 @@ pub struct Reference {
     pub segments: Vec<Segment>,
     /// Per vertex: a corner of the curves.
     pub corner: Vec<bool>,
+    /// Per vertex: the sum of its triangles' angles there (radians; at a
+    /// boundary vertex of a surface, the surface's interior angle).
+    pub angle: Vec<f64>,
     /// Bounding-box diagonal.
     pub diagonal: f64,
     triangle_bvh: Bvh,
@@ -94,7 +97,19 @@ impl Reference {
             })
             .collect();
         segments.sort_unstable_by_key(|s| s.ends);
+        drop_short_features(&mut segments, positions.len());
         let corner = corners(positions, &segments, cos);
+        let mut angle = vec![0.0; positions.len()];
+        for t in triangles {
+            let p = t.map(|v| positions[v as usize]);
+            for k in 0..3 {
+                let (a, b) = (sub(p[(k + 1) % 3], p[k]), sub(p[(k + 2) % 3], p[k]));
+                let l = norm(a) * norm(b);
+                if l > 0.0 {
+                    angle[t[k] as usize] += (dot(a, b) / l).clamp(-1.0, 1.0).acos();
+                }
+            }
+        }
         let bbox = Aabb::of(positions);
         let triangle_bvh = Bvh::new(
             &triangles
@@ -114,6 +129,7 @@ impl Reference {
             normals,
             segments,
             corner,
+            angle,
             diagonal: bbox.diagonal(),
             triangle_bvh,
             segment_bvh,
@@ -185,6 +201,24 @@ impl Reference {
         Some((s, self.closest_on_segment(s, p), d2.sqrt()))
     }
 
+    /// The corner of the curves nearest `p` within `radius` whose
+    /// [`angle`](Self::angle) is at most `max_angle`.
+    pub fn nearest_corner(&self, p: [f64; 3], radius: f64, max_angle: f64) -> Option<[f64; 3]> {
+        let (s, _, d) = self.closest_on_curves(p, false)?;
+        if d > radius {
+            return None;
+        }
+        // the corners of the nearest segment, else of the segments sharing
+        // its ends (a corner is where curves turn, so it ends a segment
+        // near p)
+        let ends = self.segments[s as usize].ends;
+        ends.iter()
+            .map(|&e| (e, norm(sub(self.positions[e as usize], p))))
+            .filter(|&(e, d)| self.corner[e as usize] && d <= radius && self.angle[e as usize] <= max_angle)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(e, _)| self.positions[e as usize])
+    }
+
     /// Whether the reference has boundary segments.
     pub fn has_boundary(&self) -> bool {
         self.segments.iter().any(|s| s.boundary)
@@ -254,6 +288,32 @@ impl Reference {
         let (v, w) = (vb / denom, vc / denom);
         [0, 1, 2].map(|k| a[k] + ab[k] * v + ac[k] * w)
     }
+}
+
+/// Feature curves (connected sets of feature segments) of fewer than this
+/// many segments are noise (a coarse smooth surface), not features.
+pub const MIN_FEATURE_SEGMENTS: usize = 4;
+
+/// Drops the feature segments of curves shorter than
+/// [`MIN_FEATURE_SEGMENTS`]; boundary segments stay.
+fn drop_short_features(segments: &mut Vec<Segment>, n: usize) {
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    fn find(p: &mut [u32], mut v: u32) -> u32 {
+        while p[v as usize] != v {
+            p[v as usize] = p[p[v as usize] as usize];
+            v = p[v as usize];
+        }
+        v
+    }
+    for s in segments.iter().filter(|s| !s.boundary) {
+        let (a, b) = (find(&mut parent, s.ends[0]), find(&mut parent, s.ends[1]));
+        parent[a.max(b) as usize] = a.min(b);
+    }
+    let mut size: HashMap<u32, usize> = HashMap::new();
+    for s in segments.iter().filter(|s| !s.boundary) {
+        *size.entry(find(&mut parent, s.ends[0])).or_default() += 1;
+    }
+    segments.retain(|s| s.boundary || size[&find(&mut parent, s.ends[0])] >= MIN_FEATURE_SEGMENTS);
 }
 
 /// Per vertex: a corner of the curves (see the module docs).

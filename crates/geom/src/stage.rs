@@ -27,9 +27,17 @@ pub struct Report {
     pub mean_edge: f64,
     /// Output boundary vertices.
     pub boundary_vertices: usize,
-    /// Of them, those farther than 1e-9 of the bounding box from the
-    /// input's boundary before the stage (projected onto it).
+    /// Of them, those farther than [`ON_BOUNDARY`] mean edge lengths from
+    /// the input's boundary before the stage, put onto it.
     pub boundary_off: usize,
+    /// Boundary vertices released from the input's boundary (left where
+    /// the map puts them, free on the surface or in the volume): corners
+    /// of the mesh (vertices of one cell) without a corner of the input's
+    /// curves within half an edge (for quads: one whose interior angle is
+    /// at most [`MESH_CORNER_ANGLE`]), and their neighbours in that cell;
+    /// on a smooth or concave boundary that cell would be flat or
+    /// inverted.
+    pub boundary_released: usize,
     /// The largest distance of a boundary vertex to the input's boundary,
     /// before and after (model units; 0 when not measured).
     pub boundary_distance: [f64; 2],
@@ -70,6 +78,8 @@ impl Report {
             "boundary": {
                 "vertices": self.boundary_vertices,
                 "off_input_boundary_before": self.boundary_off,
+                "put_on_boundary": self.boundary_off,
+                "released_mesh_corners": self.boundary_released,
                 "max_distance_before": self.boundary_distance[0],
                 "max_distance_after": self.boundary_distance[1],
             },
@@ -231,6 +241,28 @@ struct Input<'a, const D: usize, const K: usize> {
     hint: Vec<[f64; 3]>,
 }
 
+/// A boundary vertex nearer the input's boundary than this many mean edge
+/// lengths is on it (a valid map's file rounds its numbers: its boundary
+/// grid points lie within ~1e-7 edge lengths of the boundary, and are left
+/// where they are).
+pub const ON_BOUNDARY: f64 = 1e-4;
+
+/// A corner of a quad mesh (a boundary vertex of one quad) goes onto a
+/// corner of the input's boundary only where the input's interior angle is
+/// at most this (degrees).
+pub const MESH_CORNER_ANGLE: f64 = 150.0;
+
+/// A cell at a corner of the mesh whose value is at most this once its
+/// boundary vertices are on the input's boundary is flat there.
+pub const FLAT: f64 = 0.1;
+
+/// Most rounds of one untangling attempt (one ring count).
+const UNTANGLE_ROUNDS: usize = 100;
+
+/// L-BFGS iterations per round: few, so that a vertex on the reference
+/// stays near its tangent plane between projections.
+const ITERATIONS: usize = 20;
+
 /// Rings tried around the inverted elements, then the whole mesh.
 const RINGS: [usize; 4] = [2, 4, 8, 16];
 
@@ -264,19 +296,13 @@ fn run<const D: usize, const K: usize>(
         return rep;
     }
     let r = reference.unwrap_or_else(make);
-    let tol = 1e-9 * r.diagonal;
-    let cons = Constraints::classify(
-        &r,
-        x,
-        &input.on_boundary,
-        input.hint.clone(),
-        input.role,
-        1e-7 * r.diagonal,
-    );
+    let tol = ON_BOUNDARY * rep.mean_edge.max(f64::MIN_POSITIVE);
+    let mut cons = Constraints::classify(&r, x, &input.on_boundary, input.hint.clone(), input.role, tol);
     let start = x.to_vec();
+    let around = vertex_cells(x.len(), cells);
     // 3. boundary vertices onto the input's boundary
-    let mut seeds: Vec<bool> = vec![false; x.len()];
     if boundary {
+        let corners = mesh_corners_to_input_corners(x, &input, &r, &around, &mut cons, rep.mean_edge);
         for v in 0..x.len() {
             if !input.on_boundary[v] || cons.kind[v] == Kind::Fixed {
                 continue;
@@ -285,11 +311,12 @@ fn run<const D: usize, const K: usize>(
             let d = norm(sub(q, x[v]));
             rep.boundary_distance[0] = rep.boundary_distance[0].max(d);
             if d > tol {
-                rep.boundary_off += 1;
                 x[v] = q;
-                seeds[v] = true;
+                rep.boundary_off += 1;
             }
         }
+        rep.boundary_off += corners;
+        rep.boundary_released = release_flat_corners(x, &start, &input, &around, &mut cons, measure);
     }
     if rep.boundary_off == 0 && rep.before.inverted == 0 && opts.mode == Mode::Auto {
         return rep;
@@ -321,19 +348,18 @@ fn run<const D: usize, const K: usize>(
             let p = Params {
                 theta: 0.5,
                 rounds: rounds.max(1),
-                iterations: 100,
+                iterations: ITERATIONS,
                 stop_when_untangled: false,
             };
             rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p).rounds;
         }
         _ => {
-            let around = vertex_cells(x.len(), cells);
-            for (i, &rings) in RINGS.iter().enumerate() {
+            for &rings in &RINGS {
                 let bad = measure(x);
-                if bad.iter().all(|&v| v > 0.0) && (i > 0 || !seeds.iter().any(|&s| s)) {
+                if bad.iter().all(|&v| v > 0.0) {
                     break;
                 }
-                let mut region = seeds.clone();
+                let mut region = vec![false; x.len()];
                 for (ci, &v) in bad.iter().enumerate() {
                     if v <= 0.0 {
                         for &u in &cells[ci] {
@@ -345,29 +371,113 @@ fn run<const D: usize, const K: usize>(
                 let movable: Vec<bool> = region.iter().zip(&movable_kind).map(|(a, b)| *a && *b).collect();
                 let p = Params {
                     theta: 0.5,
-                    rounds: 50,
-                    iterations: 200,
-                    stop_when_untangled: false,
+                    rounds: UNTANGLE_ROUNDS,
+                    iterations: ITERATIONS,
+                    stop_when_untangled: true,
                 };
                 rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p).rounds;
                 rep.rings = rings;
-                seeds.iter_mut().for_each(|s| *s = false);
             }
         }
     }
     rep.after = Summary::of(&measure(x));
+    if std::env::var_os("DUALEX_GEOM_DEBUG").is_some() {
+        for (ci, v) in measure(x).iter().enumerate() {
+            if *v <= 0.0 {
+                let k: Vec<_> = cells[ci].iter().map(|&u| (u, cons.kind[u as usize], around.0[u as usize + 1] - around.0[u as usize], norm(sub(x[u as usize], start[u as usize])) / rep.mean_edge)).collect();
+                eprintln!("inverted {ci} {v:.3}: {k:?}");
+            }
+        }
+    }
     for v in 0..x.len() {
         let d = norm(sub(x[v], start[v]));
         if d > 0.0 {
             rep.moved_vertices += 1;
             rep.max_move = rep.max_move.max(d);
         }
-        if boundary && input.on_boundary[v] && cons.kind[v] != Kind::Fixed {
+        let on_curve_or_surface = match input.role {
+            Role::Surface => matches!(cons.kind[v], Kind::Curve { boundary: true }),
+            Role::Volume => cons.kind[v] != Kind::Free && cons.kind[v] != Kind::Fixed,
+        };
+        if boundary && input.on_boundary[v] && on_curve_or_surface {
             let q = cons.project(&r, v, x[v]);
             rep.boundary_distance[1] = rep.boundary_distance[1].max(norm(sub(q, x[v])));
         }
     }
     rep
+}
+
+/// The corners of the mesh (boundary vertices of one cell) go onto a
+/// corner of the input's curves within half an edge (on a surface: one
+/// whose interior angle is at most [`MESH_CORNER_ANGLE`]) and become
+/// fixed there; the count of those moved.
+fn mesh_corners_to_input_corners<const D: usize, const K: usize>(
+    x: &mut [[f64; 3]],
+    input: &Input<D, K>,
+    r: &Reference,
+    around: &(Vec<usize>, Vec<u32>),
+    cons: &mut Constraints,
+    mean_edge: f64,
+) -> usize {
+    let max_angle = match input.role {
+        Role::Surface => MESH_CORNER_ANGLE.to_radians(),
+        Role::Volume => f64::INFINITY,
+    };
+    let mut moved = 0;
+    for v in 0..x.len() {
+        if !input.on_boundary[v] || around.0[v + 1] - around.0[v] != 1 || cons.kind[v] == Kind::Fixed {
+            continue;
+        }
+        let q = cons.project(r, v, x[v]);
+        if let Some(c) = r.nearest_corner(q, 0.5 * mean_edge, max_angle) {
+            moved += usize::from(c != x[v]);
+            x[v] = c;
+            cons.kind[v] = Kind::Fixed;
+        }
+    }
+    moved
+}
+
+/// A corner of the mesh on a smooth or concave part of the input's
+/// boundary, its cell's neighbours on the boundary too, leaves that cell
+/// flat or inverted there (value ≤ [`FLAT`]): those neighbours go back
+/// where the map put them (`start`) and are released from the boundary
+/// (free on the surface or in the volume). The count released.
+fn release_flat_corners<const D: usize, const K: usize>(
+    x: &mut [[f64; 3]],
+    start: &[[f64; 3]],
+    input: &Input<D, K>,
+    around: &(Vec<usize>, Vec<u32>),
+    cons: &mut Constraints,
+    measure: &dyn Fn(&[[f64; 3]]) -> Vec<f64>,
+) -> usize {
+    let free = match input.role {
+        Role::Surface => Kind::Surface,
+        Role::Volume => Kind::Free,
+    };
+    let values = measure(x);
+    let mut released = 0;
+    for v in 0..x.len() {
+        if !input.on_boundary[v] || around.0[v + 1] - around.0[v] != 1 {
+            continue;
+        }
+        let ci = around.1[around.0[v]] as usize;
+        if values[ci] > FLAT {
+            continue;
+        }
+        let cell = &input.cells[ci];
+        for e in input.edges {
+            let (a, b) = (cell[e[0]] as usize, cell[e[1]] as usize);
+            for (u, w) in [(a, b), (b, a)] {
+                if u == v && input.on_boundary[w] && cons.kind[w] != Kind::Fixed && cons.kind[w] != free {
+                    x[w] = start[w];
+                    cons.kind[w] = free;
+                    released += 1;
+                }
+            }
+        }
+    }
+    released
 }
 
 /// CSR of the cells around each vertex.

@@ -1,0 +1,86 @@
+//! The geometric stage as `quad`, `hex` and `remesh` run it: options from
+//! the command line, the stage ([`dualex_geom`]), and what is said about
+//! its result (the done line's quality, the warning or `--strict` error
+//! for inverted elements left).
+
+use crate::args::GeometryArgs;
+use crate::summary::{count, plural};
+use dualex_geom::Report;
+
+/// The stage on a quad mesh lying on `map`'s surface.
+pub fn quads(
+    mesh: &mut dualex_map::QuadMesh,
+    map: &dualex_map::TriMap,
+    sources: &[u32],
+    a: &GeometryArgs,
+) -> Report {
+    dualex_geom::quads(
+        &mut mesh.positions,
+        &mesh.cells,
+        &map.positions,
+        &map.simplices,
+        sources,
+        &a.options(),
+    )
+}
+
+/// The stage on a hex mesh inside `map`'s volume.
+pub fn hexes(mesh: &mut dualex_map::HexMesh, map: &dualex_map::TetMap, a: &GeometryArgs) -> Report {
+    dualex_geom::hexes(
+        &mut mesh.positions,
+        &mesh.cells,
+        &map.positions,
+        &map.simplices,
+        &a.options(),
+    )
+}
+
+/// Inverted elements left: an error under `strict` (nothing written),
+/// else `Ok` (the warning is [`warn`]'s, after writing).
+pub fn check(name: &str, r: &Report, cell: (&str, &str), strict: bool) -> Result<(), String> {
+    let n = r.after.inverted;
+    if strict && n > 0 {
+        return Err(format!(
+            "{name}: {} (scaled Jacobian ≤ 0) {} after the geometric stage ({}); nothing written (--strict)",
+            count(n, &format!("inverted {}", cell.0), &format!("inverted {}", cell.1)),
+            plural(n, "remains", "remain"),
+            r.mode,
+        ));
+    }
+    Ok(())
+}
+
+/// The warning for inverted elements left, printed under `-q` too.
+pub fn warn(r: &Report, cell: (&str, &str)) {
+    let n = r.after.inverted;
+    if n == 0 {
+        return;
+    }
+    let why = if r.mode == "off" {
+        "--no-untangle kept the map's positions"
+    } else {
+        "the combinatorics may force them: see docs/messy-cases.md"
+    };
+    eprintln!(
+        "dualex: WARNING: {} (scaled Jacobian ≤ 0) {} ({why}); see \"geometry\" in the stats",
+        count(n, &format!("inverted {}", cell.0), &format!("inverted {}", cell.1)),
+        plural(n, "remains", "remain"),
+    );
+}
+
+/// The done line's words on quality: the least scaled Jacobian, and what
+/// the stage changed.
+pub fn done_words(r: &Report) -> String {
+    let mut s = format!(", scaled Jacobian min {:.2}", r.after.min);
+    if r.moved() {
+        s += &format!(
+            " (was {:.2}; {} inverted before, {} after",
+            r.before.min, r.before.inverted, r.after.inverted
+        );
+        if r.boundary_off > 0 {
+            s += &format!(", {} put on the input's boundary", count(r.boundary_off, "boundary vertex", "boundary vertices"));
+        }
+        s += &format!("; moved ≤ {:.2} edge lengths)", r.max_move_edges());
+    }
+    s
+}
