@@ -316,7 +316,7 @@ fn run<const D: usize, const K: usize>(
             }
         }
         rep.boundary_off += corners;
-        rep.boundary_released = release_flat_corners(x, &start, &input, &around, &mut cons, measure);
+        rep.boundary_released = release_flat_corners(x, &start, &input, &around, &mut cons);
     }
     if rep.boundary_off == 0 && rep.before.inverted == 0 && opts.mode == Mode::Auto {
         return rep;
@@ -449,23 +449,21 @@ fn release_flat_corners<const D: usize, const K: usize>(
     input: &Input<D, K>,
     around: &(Vec<usize>, Vec<u32>),
     cons: &mut Constraints,
-    measure: &dyn Fn(&[[f64; 3]]) -> Vec<f64>,
 ) -> usize {
     let free = match input.role {
         Role::Surface => Kind::Surface,
         Role::Volume => Kind::Free,
     };
-    let values = measure(x);
     let mut released = 0;
     for v in 0..x.len() {
         if !input.on_boundary[v] || around.0[v + 1] - around.0[v] != 1 {
             continue;
         }
         let ci = around.1[around.0[v]] as usize;
-        if values[ci] > FLAT {
+        let cell = &input.cells[ci];
+        if corner_value(x, input, ci, v) > FLAT {
             continue;
         }
-        let cell = &input.cells[ci];
         for e in input.edges {
             let (a, b) = (cell[e[0]] as usize, cell[e[1]] as usize);
             for (u, w) in [(a, b), (b, a)] {
@@ -478,6 +476,31 @@ fn release_flat_corners<const D: usize, const K: usize>(
         }
     }
     released
+}
+
+/// The scaled Jacobian of cell `ci` at its corner on vertex `v` (in the
+/// cell's frame: against its normal for a quad).
+fn corner_value<const D: usize, const K: usize>(x: &[[f64; 3]], input: &Input<D, K>, ci: usize, v: usize) -> f64 {
+    let cell = &input.cells[ci];
+    let Some(k) = cell.iter().position(|&u| u as usize == v) else {
+        return 1.0;
+    };
+    let corner = input.corners[k];
+    let frame = &input.frames[ci];
+    let mut j = [[0.0; D]; D];
+    let mut lengths = 1.0;
+    for c in 0..D {
+        let e = sub(x[cell[corner[c + 1]] as usize], x[v]);
+        lengths *= norm(e);
+        for (r, row) in frame.iter().enumerate() {
+            j[r][c] = quality::dot(*row, e);
+        }
+    }
+    if lengths > 0.0 {
+        crate::energy::det_cofactor(&j).0 / lengths
+    } else {
+        0.0
+    }
 }
 
 /// CSR of the cells around each vertex.
