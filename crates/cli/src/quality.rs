@@ -22,6 +22,7 @@ use std::path::Path;
 use dualex_geom::quality::{hex_values, quad_values};
 use dualex_geom::Reference;
 use dualex_map::{HexMesh, QuadMesh};
+use rayon::prelude::*;
 
 /// A mesh read for its quality.
 pub enum Mesh {
@@ -211,7 +212,7 @@ fn surface_normals(
         ));
     }
     let reference = Reference::surface(&poly.positions, &triangles, 180.0);
-    let normals = mesh.cells.iter().zip(newell).map(|(q, &n)| {
+    let normals = mesh.cells.par_iter().zip(newell).map(|(q, &n)| {
         let mut centre = [0.0; 3];
         for &v in q {
             for (c, x) in centre.iter_mut().zip(mesh.positions[v as usize]) {
