@@ -21,7 +21,7 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
             let (values, normals) = quality::quad_quality(m, a.surface.as_deref())?;
             let q = dualex_render::Quality {
                 values: &values,
-                note: normals.note(),
+                note: normals.short(),
             };
             dualex_render::view_html_quality(m, &title, &q)
         }

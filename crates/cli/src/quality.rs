@@ -50,6 +50,14 @@ impl Normals {
         }
     }
 
+    /// A short note for the view page.
+    pub fn short(self) -> &'static str {
+        match self {
+            Normals::Surface => "normals from the surface",
+            Normals::Own => "normals: the mesh's own (less reliable than --surface)",
+        }
+    }
+
     /// A sentence for the reports.
     pub fn note(self) -> &'static str {
         match self {

@@ -265,6 +265,7 @@ html, body {{ margin: 0; height: 100%; overflow: hidden; background: #fff;
 #panel:not([open]) summary {{ margin: 0; }}
 #controls, #colour {{ pointer-events: auto; margin-top: 4px; }}
 #colour button {{ font: inherit; padding: 1px 8px; }}
+#legend .note {{ color: #555; max-width: 18em; }}
 .bar {{ display: inline-block; width: 10px; height: 10px; margin-right: 6px; vertical-align: -1px; }}
 #controls input {{ vertical-align: middle; width: 10em; }}
 @media (max-width: 560px), (max-height: 420px) {{

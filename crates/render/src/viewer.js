@@ -8,7 +8,7 @@
 // (for a hex mesh, "quads" is its boundary, on the same vertex ids).
 // With quality, a button (or key q, or #quality in the URL) switches from
 // the valence dots to the elements coloured by quality: <= 0 (inverted)
-// red, then a ramp from amber (0) through green (0.5) to pale blue (1).
+// red, then a ramp: orange (0), yellow (0.5), green (0.8), blue (1).
 // Hex meshes get a cut plane: an axis and a slider; the hexes whose
 // centroid lies beyond the plane are hidden and the faces of the others
 // that become exposed are drawn. `#cut=z:0.5` in the URL sets it at load.
@@ -22,7 +22,7 @@
 (function () {
   var COLOURS = { 3: [0x1f, 0x66, 0xd1], 4: [0x4d, 0x4d, 0x4d], 5: [0xd6, 0x27, 0x28], 0: [0x2c, 0xa0, 0x2c] };
   var GREY = [0.863, 0.863, 0.863], INVERTED = [0xd6 / 255, 0x27 / 255, 0x28 / 255];
-  var RAMP = [[0, [0xf2, 0xb7, 0x05]], [0.5, [0x9c, 0xcc, 0x65]], [1, [0xd0, 0xdc, 0xe8]]];
+  var RAMP = [[0, [0xf0, 0x9a, 0x1a]], [0.5, [0xf2, 0xd8, 0x4a]], [0.8, [0x9c, 0xcf, 0x6e]], [1, [0x8f, 0xbc, 0xe6]]];
   // the colour (0..1 floats) of a quality value
   function qualityColour(v) {
     if (!(v > 0)) return INVERTED;
@@ -381,7 +381,8 @@
       });
       return;
     }
-    var bands = [[-Infinity, 0, "inverted (\u2264 0)"], [0, 0.5, "0 \u2013 0.5"], [0.5, Infinity, "0.5 \u2013 1"]];
+    var bands = [[-Infinity, 0, "inverted (\u2264 0)"], [0, 0.5, "0 \u2013 0.5"], [0.5, 0.8, "0.5 \u2013 0.8"],
+      [0.8, Infinity, "0.8 \u2013 1"]];
     bands.forEach(function (b) {
       var n = 0;
       for (var i = 0; i < QV.length; i++) if (QV[i] > b[0] && QV[i] <= b[1]) n++;
@@ -391,6 +392,7 @@
     });
     var min = QV.reduce(function (a, v) { return Math.min(a, v); }, Infinity);
     var note = document.createElement("div");
+    note.className = "note";
     note.textContent = "scaled Jacobian per " + (H ? "hex" : "quad") + ", min " +
       (QV.length ? min.toFixed(3) : "none") + (mesh.quality_note ? "; " + mesh.quality_note : "");
     legend.appendChild(note);
