@@ -372,35 +372,39 @@ fn quality_of_the_wrong_length_or_not_finite_is_refused() {
     );
 }
 
+/// Clearly red pixels right of the panel (whose legend has a red swatch)
+/// in a Chromium screenshot of `html` opened with `hash` (`#quality`:
+/// the quality colouring on); `None` without Chromium.
+fn red_right_of_panel(html: &str, name: &str, hash: &str) -> Option<usize> {
+    let shot = chromium(html, name, hash, "800,600", None)?;
+    let pix = read_png(&shot);
+    let w = pix.width() as usize;
+    let n = pix
+        .pixels()
+        .iter()
+        .enumerate()
+        .filter(|(i, c)| {
+            let (r, g, b) = (c.red() as u32, c.green() as u32, c.blue() as u32);
+            i % w >= 300 && r > 60 && 100 * g < 45 * r && 100 * b < 45 * r
+        })
+        .count();
+    if std::env::var_os("DUALEX_KEEP_SCREENSHOT").is_none() {
+        let _ = std::fs::remove_dir_all(shot.parent().unwrap());
+    } else {
+        eprintln!("kept {}", shot.display());
+    }
+    Some(n)
+}
+
 #[test]
 fn chromium_quality_colouring_shows_inverted_hexes_red() {
     let mesh = hex_grid(3);
     let mut values = vec![0.9; mesh.cells.len()];
-    let is_red = |c: &tiny_skia::PremultipliedColorU8| {
-        let (r, g, b) = (c.red() as u32, c.green() as u32, c.blue() as u32);
-        r > 60 && 100 * g < 45 * r && 100 * b < 45 * r
-    };
-    let red_pixels = |values: &[f64], name: &str| {
+    let page = |values: &[f64]| {
         let q = Quality { values, note: "" };
-        let html = view_html_hex_quality(&mesh, "hexes", &q).unwrap();
-        let shot = chromium(&html, name, "#quality", "800,600", None)?;
-        let pix = read_png(&shot);
-        // right of the panel, whose legend has a red swatch
-        let w = pix.width() as usize;
-        let n = pix
-            .pixels()
-            .iter()
-            .enumerate()
-            .filter(|(i, c)| i % w >= 300 && is_red(c))
-            .count();
-        if std::env::var_os("DUALEX_KEEP_SCREENSHOT").is_none() {
-            let _ = std::fs::remove_dir_all(shot.parent().unwrap());
-        } else {
-            eprintln!("kept {}", shot.display());
-        }
-        Some(n)
+        view_html_hex_quality(&mesh, "hexes", &q).unwrap()
     };
-    let Some(none) = red_pixels(&values, "quality-valid") else {
+    let Some(none) = red_right_of_panel(&page(&values), "quality-valid", "#quality") else {
         return;
     };
     assert_eq!(none, 0, "red pixels without an inverted hex");
@@ -409,6 +413,28 @@ fn chromium_quality_colouring_shows_inverted_hexes_red() {
     for h in [0, 2, 6, 8, 18, 20, 24, 26] {
         values[h] = -0.3;
     }
-    let some = red_pixels(&values, "quality-inverted").unwrap();
+    let some = red_right_of_panel(&page(&values), "quality-inverted", "#quality").unwrap_or(0);
     assert!(some > 500, "the inverted hexes show {some} red pixels");
+}
+
+#[test]
+fn chromium_quality_colouring_shows_inverted_quads_red() {
+    let mesh = cube_quads();
+    // every other quad inverted (value 0 counts): some face the camera
+    let values: Vec<f64> = (0..mesh.cells.len())
+        .map(|q| if q % 2 == 0 { 0.0 } else { 0.7 })
+        .collect();
+    let q = Quality {
+        values: &values,
+        note: "normals: the mesh's own",
+    };
+    let html = view_html_quality(&mesh, "cube", &q).unwrap();
+    let Some(red) = red_right_of_panel(&html, "quality-quads", "#quality") else {
+        return;
+    };
+    assert!(red > 500, "the inverted quads show {red} red pixels");
+    // the same page with the valence colouring (no #quality): no red
+    // faces, and no valence-5 dots on a cube
+    let off = red_right_of_panel(&html, "quality-off", "").unwrap_or(usize::MAX);
+    assert_eq!(off, 0, "red without the toggle");
 }
