@@ -99,7 +99,14 @@ fn help_version_and_the_subcommand_list() {
         ),
         (
             "inspect",
-            &["--json", "--png", "--no-weld", "--round-transitions"],
+            &[
+                "--json",
+                "--png",
+                "--no-weld",
+                "--round-transitions",
+                "--surface",
+                "scaled Jacobian",
+            ],
         ),
         (
             "generate",
@@ -114,7 +121,10 @@ fn help_version_and_the_subcommand_list() {
                 "--seed",
             ],
         ),
-        ("view", &["--output", ".vtk"]),
+        (
+            "view",
+            &["--output", ".vtk", "--surface", "scaled Jacobian"],
+        ),
     ];
     for (sub, opts) in options {
         let out = dualex(&[sub, "--help"]);

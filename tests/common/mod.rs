@@ -138,3 +138,121 @@ pub fn read_valid_quads(
     );
     (mesh, rep)
 }
+
+/// A 3 × 3 grid of unit quads in the plane z = 0, counter-clockwise seen
+/// from +z, except the middle one when `flip_middle` (listed clockwise:
+/// scaled Jacobian −1 against +z). Positions and quads (0-based).
+pub fn quad_grid(flip_middle: bool) -> (Vec<[f64; 3]>, Vec<[u32; 4]>) {
+    let positions = (0..16)
+        .map(|k| [f64::from(k % 4), f64::from(k / 4), 0.0])
+        .collect();
+    let mut quads = Vec::new();
+    for j in 0..3 {
+        for i in 0..3 {
+            let v = j * 4 + i;
+            let q = [v, v + 1, v + 5, v + 4];
+            quads.push(if flip_middle && (i, j) == (1, 1) {
+                [q[0], q[3], q[2], q[1]]
+            } else {
+                q
+            });
+        }
+    }
+    (positions, quads)
+}
+
+/// Writes positions and faces (0-based) as OBJ.
+pub fn write_obj(path: &Path, positions: &[[f64; 3]], faces: &[Vec<u32>]) {
+    let mut s = String::new();
+    for p in positions {
+        s += &format!("v {} {} {}\n", p[0], p[1], p[2]);
+    }
+    for f in faces {
+        let ids: Vec<String> = f.iter().map(|v| (v + 1).to_string()).collect();
+        s += &format!("f {}\n", ids.join(" "));
+    }
+    std::fs::write(path, s).expect("write obj");
+}
+
+/// Writes cells of `K` vertices as legacy ASCII VTK (`ty`: 9 quads, 12 hexes).
+pub fn write_vtk<const K: usize>(path: &Path, positions: &[[f64; 3]], cells: &[[u32; K]], ty: u8) {
+    let mut s = format!(
+        "# vtk DataFile Version 3.0\ntest\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS {} double\n",
+        positions.len()
+    );
+    for p in positions {
+        s += &format!("{} {} {}\n", p[0], p[1], p[2]);
+    }
+    s += &format!("CELLS {} {}\n", cells.len(), cells.len() * (K + 1));
+    for c in cells {
+        let ids: Vec<String> = c.iter().map(|v| v.to_string()).collect();
+        s += &format!("{K} {}\n", ids.join(" "));
+    }
+    s += &format!("CELL_TYPES {}\n", cells.len());
+    for _ in cells {
+        s += &format!("{ty}\n");
+    }
+    std::fs::write(path, s).expect("write vtk");
+}
+
+/// Three separate hexes side by side along x (VTK order): a unit cube, the
+/// same with bottom and top swapped (inverted, scaled Jacobian −1) when
+/// `inverted`, and one whose vertex 1 sits on vertex 0 (degenerate:
+/// value 0) when `degenerate`.
+pub fn hex_trio(inverted: bool, degenerate: bool) -> (Vec<[f64; 3]>, Vec<[u32; 8]>) {
+    let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+    let mut positions = Vec::new();
+    let mut hexes = Vec::new();
+    for h in 0..3u32 {
+        let x0 = 2.0 * f64::from(h);
+        for z in [0.0, 1.0] {
+            for [x, y] in square {
+                positions.push([x0 + x, y, z]);
+            }
+        }
+        let b = 8 * h;
+        let mut cell: [u32; 8] = std::array::from_fn(|k| b + k as u32);
+        if h == 1 && inverted {
+            cell = [b + 4, b + 5, b + 6, b + 7, b, b + 1, b + 2, b + 3];
+        }
+        if h == 2 && degenerate {
+            positions[(b + 1) as usize] = positions[b as usize];
+        }
+        hexes.push(cell);
+    }
+    (positions, hexes)
+}
+
+/// Writes hexes (0-based, VTK order) as MEDIT `.mesh`.
+pub fn write_medit(path: &Path, positions: &[[f64; 3]], hexes: &[[u32; 8]]) {
+    let mut s = format!(
+        "MeshVersionFormatted 1\nDimension 3\nVertices\n{}\n",
+        positions.len()
+    );
+    for p in positions {
+        s += &format!("{} {} {} 0\n", p[0], p[1], p[2]);
+    }
+    s += &format!("Hexahedra\n{}\n", hexes.len());
+    for h in hexes {
+        let ids: Vec<String> = h.iter().map(|v| (v + 1).to_string()).collect();
+        s += &format!("{} 0\n", ids.join(" "));
+    }
+    s += "End\n";
+    std::fs::write(path, s).expect("write mesh");
+}
+
+/// The square [0, 3]² as 2 triangles, facing +z (`up`) or −z.
+pub fn square_surface(path: &Path, up: bool) {
+    let p = [
+        [0.0, 0.0, 0.0],
+        [3.0, 0.0, 0.0],
+        [3.0, 3.0, 0.0],
+        [0.0, 3.0, 0.0],
+    ];
+    let faces = if up {
+        vec![vec![0, 1, 2], vec![0, 2, 3]]
+    } else {
+        vec![vec![0, 2, 1], vec![0, 3, 2]]
+    };
+    write_obj(path, &p, &faces);
+}

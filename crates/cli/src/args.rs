@@ -52,9 +52,11 @@ pub enum Command {
     Hex(HexArgs),
     /// A 3D map from a 2D one: prisms over every triangle, tetrahedralized.
     Extrude(ExtrudeArgs),
-    /// A self-contained HTML page to orbit a quad or hex mesh.
+    /// A self-contained HTML page to orbit a quad or hex mesh, coloured by
+    /// valence or by quality.
     View(ViewArgs),
-    /// Map report: counts, reverted simplices, transitions, singularities.
+    /// Map report (counts, reverted simplices, transitions, singularities),
+    /// or a quad or hex mesh's quality (scaled Jacobian).
     Inspect(InspectArgs),
     /// Writes a generated test map, or a map made from a mesh (an oracle).
     Generate(GenerateArgs),
@@ -352,7 +354,10 @@ fn degrees(s: &str) -> Result<f64, String> {
 #[derive(Debug, Args)]
 #[command(
     after_help = "MESH: quads .obj/.ply/.vtk, hexes .mesh/.vtk (as `dualex quad`/`hex` \
-                        write them). The page is self-contained (own WebGL viewer, no network)."
+                        write them). The page is self-contained (own WebGL viewer, no network). \
+                        It colours vertices by valence; a button (or key q) colours the \
+                        elements by their scaled Jacobian instead (inverted ones, <= 0, red; \
+                        a hex mesh's faces by their hex), as `dualex inspect` measures it."
 )]
 pub struct ViewArgs {
     /// The mesh to show.
@@ -360,20 +365,44 @@ pub struct ViewArgs {
     /// The HTML page.
     #[arg(short, long, value_name = "PAGE.html")]
     pub output: PathBuf,
+    /// Quad meshes: the surface the quads lie on (.obj / .ply triangles,
+    /// e.g. the input map, whose map coordinates are ignored); each quad's
+    /// scaled Jacobian is taken against the normal of the triangle nearest
+    /// its centre. Without it, against the mesh's own normals (each quad
+    /// and its edge neighbours; less reliable).
+    #[arg(long, value_name = "SURFACE")]
+    pub surface: Option<PathBuf>,
 }
 
 /// `dualex inspect`.
 #[derive(Debug, Args)]
+#[command(
+    after_help = "INPUT: a map (triangles with a per-corner map, .obj/.ply; tets, .hexex/.ovm) \
+                        gets the map report. A mesh (.obj/.ply whose faces are all quads, .vtk of \
+                        quads or hexes, .mesh hexes) gets the scaled Jacobian of its elements \
+                        (verdict's: the least over the corners, 1 for a square or cube): \
+                        elements, inverted (<= 0), degenerate, min, 5th percentile, median."
+)]
 pub struct InspectArgs {
-    /// The map (.obj / .ply 2D, .hexex / .ovm 3D).
+    /// The map (.obj / .ply 2D, .hexex / .ovm 3D) or the quad or hex mesh
+    /// (.obj / .ply / .vtk quads, .mesh / .vtk hexes).
     pub input: PathBuf,
     /// The report as one JSON object on stdout instead of text.
     #[arg(long)]
     pub json: bool,
-    /// A picture of a 2D map in the (u, v) plane: reverted triangles
-    /// purple, singularities marked by index, with a legend.
-    #[arg(long, value_name = "MAP.png")]
+    /// A picture: of a 2D map, in the (u, v) plane (reverted triangles
+    /// purple, singularities marked by index, with a legend); of a mesh,
+    /// the histogram of its elements' scaled Jacobian over [-1, 1]
+    /// (inverted elements red).
+    #[arg(long, value_name = "PICTURE.png")]
     pub png: Option<PathBuf>,
+    /// Quad meshes: the surface the quads lie on (.obj / .ply triangles,
+    /// e.g. the input map, whose map coordinates are ignored); each quad's
+    /// scaled Jacobian is taken against the normal of the triangle nearest
+    /// its centre. Without it, against the mesh's own normals (each quad
+    /// and its edge neighbours; less reliable, and said in the report).
+    #[arg(long, value_name = "SURFACE")]
+    pub surface: Option<PathBuf>,
     #[command(flatten)]
     pub weld: WeldArgs,
     #[command(flatten)]

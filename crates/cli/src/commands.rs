@@ -1,11 +1,13 @@
 //! `dualex view`, `dualex inspect` and `dualex extrude`.
 
 use crate::args::{ExtrudeArgs, Global, InspectArgs, ViewArgs};
+use crate::quality::{self, Mesh};
 use crate::summary::count;
 use crate::{outputs, timing, PNG_SIZE};
 
 /// `dualex view`: a quad (`.obj`/`.ply`/`.vtk`) or hex (`.mesh`/`.vtk`)
-/// mesh as a self-contained HTML page.
+/// mesh as a self-contained HTML page, with each element's scaled
+/// Jacobian for the page's quality colouring.
 pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
     outputs::check(&a.output, None)?;
     let input = &a.mesh;
@@ -13,37 +15,26 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
     let title = input
         .file_name()
         .map_or(name.clone(), |f| f.to_string_lossy().to_string());
-    let ext = dualex_io::lower_extension(input);
-    let page = match ext.as_str() {
-        "mesh" => {
-            let mesh = dualex_io::read_hex_mesh(input).map_err(|e| e.to_string())?;
-            dualex_render::view_html_hex(&mesh, &title)
-        }
-        "vtk" => match dualex_io::read_vtk(input).map_err(|e| e.to_string())? {
-            dualex_io::VtkMesh::Quads(m) => dualex_render::view_html(&m, &title),
-            dualex_io::VtkMesh::Hexes(m) => dualex_render::view_html_hex(&m, &title),
-        },
-        "obj" | "ply" => {
-            let poly = dualex_io::read_polygon_mesh(input).map_err(|e| e.to_string())?;
-            let mut mesh = dualex_map::QuadMesh {
-                positions: poly.positions,
-                cells: Vec::with_capacity(poly.faces.len()),
+    let mesh = quality::read_mesh(input, "view")?;
+    let page = match &mesh {
+        Mesh::Quads(m) => {
+            let (values, normals) = quality::quad_quality(m, a.surface.as_deref())?;
+            let q = dualex_render::Quality {
+                values: &values,
+                note: normals.short(),
             };
-            for (i, f) in poly.faces.iter().enumerate() {
-                let [a, b, c, d] = f[..] else {
-                    return Err(format!(
-                        "{name}: face {i} has {} vertices; view shows quad meshes",
-                        f.len()
-                    ));
-                };
-                mesh.cells.push([a, b, c, d]);
-            }
-            dualex_render::view_html(&mesh, &title)
+            dualex_render::view_html_quality(m, &title, &q)
         }
-        _ => {
-            return Err(format!(
-                "{name}: view reads quad meshes (.obj, .ply, .vtk) and hex meshes (.mesh, .vtk), not `.{ext}`"
-            ))
+        Mesh::Hexes(m) => {
+            if a.surface.is_some() {
+                crate::args::usage_error("view --surface applies to quad meshes only");
+            }
+            let values = quality::hex_quality(m);
+            let q = dualex_render::Quality {
+                values: &values,
+                note: "",
+            };
+            dualex_render::view_html_hex_quality(m, &title, &q)
         }
     }
     .map_err(|e| format!("{name}: {e}"))?;
@@ -54,25 +45,41 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
     Ok(())
 }
 
-/// `dualex inspect`: the map report on stdout (text or `--json`).
+/// `dualex inspect`: the map report on stdout (text or `--json`), or a
+/// mesh's quality report ([`crate::inspect_mesh`]).
 pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
     let path = &a.input;
     let name = path.display().to_string();
     let ext = dualex_io::lower_extension(path);
+    let map_3d = ext == "hexex" || ext == "ovm";
+    if a.png.is_some() && map_3d {
+        crate::args::usage_error(
+            "inspect --png: pictures of 3D maps are not supported; use a 2D map or a mesh",
+        );
+    }
+    if let Some(png) = &a.png {
+        outputs::check(png, None)?;
+    }
+    if let Some(mesh) = quality::inspected_mesh(path)? {
+        if a.weld.no_weld || a.round.round {
+            crate::args::usage_error(
+                "inspect: --no-weld and --round-transitions apply to maps, not to meshes",
+            );
+        }
+        if a.surface.is_some() && matches!(mesh, Mesh::Hexes(_)) {
+            crate::args::usage_error("inspect --surface applies to quad meshes only");
+        }
+        return crate::inspect_mesh::inspect_mesh(&mesh, a, &name);
+    }
+    if a.surface.is_some() {
+        crate::args::usage_error("inspect --surface applies to quad meshes, not to maps");
+    }
     let opts = dualex_map::report::InspectOptions {
         weld: !a.weld.no_weld,
         round: a.round.round,
         ..Default::default()
     };
-    if let Some(png) = &a.png {
-        if ext == "hexex" || ext == "ovm" {
-            crate::args::usage_error(
-                "inspect --png: pictures of 3D maps are not supported; use a 2D map",
-            );
-        }
-        outputs::check(png, None)?;
-    }
-    let report = if ext == "hexex" || ext == "ovm" {
+    let report = if map_3d {
         let m = dualex_io::read_tet_map(path).map_err(|e| e.to_string())?;
         dualex_map::report::inspect(&m, &opts)
     } else {

@@ -3,7 +3,7 @@
 //!
 //! Input: a string, a pixel scale, a position. Output: filled squares, one
 //! per lit font pixel, not anti-aliased. Covered: digits, `+ - / : ( )`,
-//! space and the lower-case letters the legends use; any other character
+//! `. , = %`, space and the lower-case letters; any other character
 //! is drawn as a hollow box, so a missing glyph shows instead of vanishing.
 //!
 //! Each glyph is 7 rows of 5 bits, the high bit on the left; a character
@@ -41,24 +41,37 @@ fn glyph(c: char) -> [u8; 7] {
         ':' => [0, 12, 12, 0, 12, 12, 0],
         '(' => [2, 4, 8, 8, 8, 4, 2],
         ')' => [8, 4, 2, 2, 2, 4, 8],
+        '.' => [0, 0, 0, 0, 0, 12, 12],
+        ',' => [0, 0, 0, 0, 12, 4, 8],
+        '=' => [0, 0, 31, 0, 31, 0, 0],
+        '%' => [24, 25, 2, 4, 8, 19, 3],
         ' ' => [0; 7],
         'a' => [0, 0, 14, 1, 15, 17, 15],
+        'b' => [16, 16, 22, 25, 17, 17, 30],
         'c' => [0, 0, 14, 16, 16, 17, 14],
         'd' => [1, 1, 13, 19, 17, 17, 15],
         'e' => [0, 0, 14, 17, 31, 16, 14],
         'f' => [6, 9, 8, 28, 8, 8, 8],
-        'g' => [0, 15, 17, 17, 15, 1, 14],
+        'g' => [0, 0, 15, 16, 19, 17, 15],
         'h' => [16, 16, 22, 25, 17, 17, 17],
         'i' => [4, 0, 12, 4, 4, 4, 14],
+        'j' => [2, 0, 6, 2, 2, 18, 12],
+        'k' => [16, 16, 18, 20, 24, 20, 18],
         'l' => [12, 4, 4, 4, 4, 4, 14],
+        'm' => [0, 0, 26, 21, 21, 17, 17],
         'n' => [0, 0, 22, 25, 17, 17, 17],
         'o' => [0, 0, 14, 17, 17, 17, 14],
+        'p' => [0, 0, 30, 17, 30, 16, 16],
+        'q' => [0, 0, 15, 17, 17, 15, 1],
         'r' => [0, 0, 22, 25, 16, 16, 16],
         's' => [0, 0, 15, 16, 14, 1, 30],
         't' => [8, 8, 28, 8, 8, 9, 6],
         'u' => [0, 0, 17, 17, 17, 19, 13],
         'v' => [0, 0, 17, 17, 17, 10, 4],
+        'w' => [0, 0, 17, 17, 21, 21, 10],
         'x' => [0, 0, 17, 10, 4, 10, 17],
+        'y' => [0, 0, 17, 17, 15, 1, 14],
+        'z' => [0, 0, 31, 2, 4, 8, 31],
         _ => BOX,
     }
 }
@@ -100,7 +113,7 @@ mod tests {
 
     #[test]
     fn every_legend_character_has_its_own_glyph() {
-        for c in "0123456789+-/:() acdefghilnorstuvx".chars() {
+        for c in "0123456789+-/:().,=% abcdefghijklmnopqrstuvwxyz".chars() {
             assert!(c == ' ' || glyph(c) != BOX, "{c:?} has no glyph");
             assert!(glyph(c).iter().all(|&r| r < 32), "{c:?} is wider than 5");
         }

@@ -9,8 +9,12 @@
 //!   orthographic view with Lambert shading (painter's algorithm);
 //! - [`map_png`]: a triangle map drawn in the `(u, v)` plane, reverted
 //!   triangles purple, the integer grid faint, singular vertices marked;
+//! - [`quality_histogram_png`]: a histogram of per-element quality (the
+//!   scaled Jacobian) over [−1, 1], inverted elements red;
 //! - [`view_html`] / [`view_html_hex`]: a self-contained page (own WebGL
-//!   viewer, no network) to orbit and zoom the mesh.
+//!   viewer, no network) to orbit and zoom the mesh; with per-element
+//!   quality ([`view_html_quality`], [`view_html_hex_quality`]) the page
+//!   can colour the elements by it.
 //!
 //! Valence colours, shared by all outputs ([`valence::ValenceClass`]):
 //! valence 3 blue `#1f66d1`, 4 dark grey `#4d4d4d`, 5 red `#d62728`,
@@ -28,6 +32,7 @@ mod glyphs;
 mod map_png;
 mod project;
 mod quad_png;
+pub mod quality_png;
 pub mod valence;
 mod view;
 
@@ -38,5 +43,8 @@ mod test_png;
 
 pub use map_png::{map_png, map_png_bytes, map_png_marked, MapMark};
 pub use quad_png::{quad_png, quad_png_bytes};
+pub use quality_png::quality_histogram_png;
 pub use valence::{valence_classes, ValenceClass};
-pub use view::{hex_boundary, view_html, view_html_hex};
+pub use view::{
+    hex_boundary, view_html, view_html_hex, view_html_hex_quality, view_html_quality, Quality,
+};

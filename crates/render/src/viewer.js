@@ -2,8 +2,13 @@
 // Reads the mesh from <script id="mesh" type="application/json">:
 //   { "title": str, "positions": [x,y,z, ...], "quads": [a,b,c,d, ...],
 //     "valence": [code per vertex: 3, 4, 5, 0 = other, -1 = not marked],
-//     hex meshes only: "hexes": [8 ids each], "hex_faces": [[4 corners] x 6] }
+//     hex meshes only: "hexes": [8 ids each], "hex_faces": [[4 corners] x 6],
+//     optional: "quality": [one value per quad, or per hex], "quality_note": str,
+//     hex meshes with quality: "quad_hex": [the hex of each boundary quad] }
 // (for a hex mesh, "quads" is its boundary, on the same vertex ids).
+// With quality, a button (or key q, or #quality in the URL) switches from
+// the valence dots to the elements coloured by quality: <= 0 (inverted)
+// red, then a ramp: orange (0), yellow (0.5), green (0.8), blue (1).
 // Hex meshes get a cut plane: an axis and a slider; the hexes whose
 // centroid lies beyond the plane are hidden and the faces of the others
 // that become exposed are drawn. `#cut=z:0.5` in the URL sets it at load.
@@ -16,6 +21,21 @@
 "use strict";
 (function () {
   var COLOURS = { 3: [0x1f, 0x66, 0xd1], 4: [0x4d, 0x4d, 0x4d], 5: [0xd6, 0x27, 0x28], 0: [0x2c, 0xa0, 0x2c] };
+  var GREY = [0.863, 0.863, 0.863], INVERTED = [0xd6 / 255, 0x27 / 255, 0x28 / 255];
+  var RAMP = [[0, [0xf0, 0x9a, 0x1a]], [0.5, [0xf2, 0xd8, 0x4a]], [0.8, [0x9c, 0xcf, 0x6e]], [1, [0x8f, 0xbc, 0xe6]]];
+  // the colour (0..1 floats) of a quality value
+  function qualityColour(v) {
+    if (!(v > 0)) return INVERTED;
+    for (var i = 1; i < RAMP.length; i++) {
+      if (v <= RAMP[i][0] || i === RAMP.length - 1) {
+        var t = Math.min(1, (v - RAMP[i - 1][0]) / (RAMP[i][0] - RAMP[i - 1][0]));
+        return [0, 1, 2].map(function (k) {
+          return ((1 - t) * RAMP[i - 1][1][k] + t * RAMP[i][1][k]) / 255;
+        });
+      }
+    }
+    return GREY;
+  }
   var mesh = JSON.parse(document.getElementById("mesh").textContent);
   var canvas = document.getElementById("view");
   var status = document.getElementById("status");
@@ -46,12 +66,15 @@
   // `cut.at` (fraction of the box) along `cut.axis` and draws the faces
   // used by one kept hex
   var H = mesh.hexes || null, HF = mesh.hex_faces || [];
+  var QV = mesh.quality || null, QH = mesh.quad_hex || null;
+  var byQuality = !!QV && /(^#|[#&])quality/.test(window.location.hash);
   var nh = H ? H.length / 8 : 0;
   var cut = { axis: 2, at: 1 };
   var hashCut = /cut=([xyz]):([0-9.]+)/.exec(window.location.hash);
   if (H && hashCut) cut = { axis: "xyz".indexOf(hashCut[1]), at: parseFloat(hashCut[2]) };
+  // the quads to draw and the element (quad or hex) of each
   function cutQuads() {
-    if (!H || cut.at >= 1) return Q;
+    if (!H || cut.at >= 1) return { quads: Q, element: QH };
     var limit = lo[cut.axis] + cut.at * (hi[cut.axis] - lo[cut.axis]) + 1e-9 * radius;
     var faces = {}, order = [];
     for (var h = 0; h < nh; h++) {
@@ -62,19 +85,23 @@
         var fc = HF[fi].map(function (k) { return H[8 * h + k]; });
         var key = fc.slice().sort(function (a, b) { return a - b; }).join(",");
         if (faces[key]) faces[key].n++;
-        else { faces[key] = { n: 1, c: fc }; order.push(key); }
+        else { faces[key] = { n: 1, c: fc, h: h }; order.push(key); }
       }
     }
-    var out = [];
-    order.forEach(function (key) { if (faces[key].n === 1) out.push.apply(out, faces[key].c); });
-    return out;
+    var out = [], element = [];
+    order.forEach(function (key) {
+      if (faces[key].n === 1) { out.push.apply(out, faces[key].c); element.push(faces[key].h); }
+    });
+    return { quads: out, element: element };
   }
 
-  // faces: two triangles per quad, flat normal (Newell) per quad
+  // faces: two triangles per quad, flat normal (Newell) and colour per
+  // quad (grey, or by the quality of its element: `element[q]`, or q)
   var faceData, edgeData, dotData, nRegular, nq, meanEdge = 1, counts = { 3: 0, 4: 0, 5: 0, 0: 0 };
-  function build(Q) {
+  function build(drawn) {
+  var Q = drawn.quads, element = drawn.element;
   nq = Q.length / 4;
-  faceData = new Float32Array(nq * 6 * 6);
+  faceData = new Float32Array(nq * 6 * 9);
   // edges as thin screen-space quads (GL lines go missing under some
   // software renderers): 6 vertices of (a xyz, b xyz, end, side) each
   edgeData = new Float32Array(nq * 4 * 6 * 8);
@@ -90,9 +117,11 @@
       n[2] += (pos(a, 0) - pos(b, 0)) * (pos(a, 1) + pos(b, 1));
     }
     var tri = [c[0], c[1], c[2], c[0], c[2], c[3]];
+    var colour = byQuality ? qualityColour(QV[element ? element[q] : q]) : GREY;
     for (var t = 0; t < 6; t++) {
       for (var k3 = 0; k3 < 3; k3++) faceData[f++] = pos(tri[t], k3);
       for (var k4 = 0; k4 < 3; k4++) faceData[f++] = n[k4];
+      for (var k7 = 0; k7 < 3; k7++) faceData[f++] = colour[k7];
     }
     for (var j2 = 0; j2 < 4; j2++) {
       var ends = [c[j2], c[(j2 + 1) % 4]];
@@ -135,14 +164,15 @@
     "vec4 place(vec3 p, float lift) {\n" +
     "  vec3 q = rot * p;\n" +
     "  return vec4(q.xy * scale + pan, -0.5 * q.z - lift, 1.0);\n}\n";
-  var FACE_VS = HEAD + "attribute vec3 p; attribute vec3 n; varying vec3 vn;\n" +
-    "void main() { vn = rot * n; gl_Position = place(p, 0.0); }\n";
-  var FACE_FS = "precision mediump float; varying vec3 vn;\n" +
+  var FACE_VS = HEAD + "attribute vec3 p; attribute vec3 n; attribute vec3 c;\n" +
+    "varying vec3 vn; varying vec3 vc;\n" +
+    "void main() { vn = rot * n; vc = c; gl_Position = place(p, 0.0); }\n";
+  var FACE_FS = "precision mediump float; varying vec3 vn; varying vec3 vc;\n" +
     "void main() {\n" +
     "  vec3 l = normalize(vec3(-0.3, 0.45, 1.0));\n" +
     "  float len = length(vn);\n" +
     "  float d = len > 0.0 ? abs(dot(vn / len, l)) : 1.0;\n" +
-    "  gl_FragColor = vec4(vec3(0.863) * (0.35 + 0.65 * d), 1.0);\n}\n";
+    "  gl_FragColor = vec4(vc * (0.35 + 0.65 * d), 1.0);\n}\n";
   var LINE_VS = HEAD + "attribute vec3 a; attribute vec3 b; attribute vec2 es;\n" +
     "uniform vec2 px; uniform float width;\n" +
     "void main() {\n" +
@@ -190,7 +220,7 @@
     [faceBuf, edgeBuf, dotBuf].forEach(function (b) { if (b) gl.deleteBuffer(b); });
     faceBuf = buffer(faceData); edgeBuf = buffer(edgeData); dotBuf = buffer(dotData);
   }
-  build(Q);
+  build({ quads: Q, element: QH });
   upload();
   if (H && cut.at < 1) { build(cutQuads()); upload(); }
 
@@ -245,8 +275,8 @@
 
     gl.useProgram(faceProg); uniforms(faceProg); disableAll();
     gl.bindBuffer(gl.ARRAY_BUFFER, faceBuf);
-    attrib(faceProg, "p", 3, 6, 0); attrib(faceProg, "n", 3, 6, 3);
-    gl.drawArrays(gl.TRIANGLES, 0, faceData.length / 6);
+    attrib(faceProg, "p", 3, 9, 0); attrib(faceProg, "n", 3, 9, 3); attrib(faceProg, "c", 3, 9, 6);
+    gl.drawArrays(gl.TRIANGLES, 0, faceData.length / 9);
 
     var edgePx = meanEdge * cam.zoom * Math.min(w, h) / 2;
     if (edgesShown()) {
@@ -258,7 +288,7 @@
       attrib(lineProg, "a", 3, 8, 0); attrib(lineProg, "b", 3, 8, 3); attrib(lineProg, "es", 2, 8, 6);
       gl.drawArrays(gl.TRIANGLES, 0, edgeData.length / 8);
     }
-    if (!showDots) return;
+    if (!showDots || byQuality) return;
     gl.useProgram(dotProg); uniforms(dotProg); disableAll();
     gl.uniform1f(gl.getUniformLocation(dotProg, "size"), Math.max(7 * dpr, Math.min(14 * dpr, 0.6 * edgePx)));
     gl.bindBuffer(gl.ARRAY_BUFFER, dotBuf);
@@ -308,6 +338,7 @@
   window.addEventListener("keydown", function (ev) {
     if (ev.key === "e") showEdges = !edgesShown();
     else if (ev.key === "d") showDots = !showDots;
+    else if (ev.key === "q" && QV) { setQuality(!byQuality); return; }
     else return;
     redraw();
   });
@@ -333,19 +364,60 @@
   // ---- legend ------------------------------------------------------------------
   var names = { 3: "valence 3", 4: "valence 4", 5: "valence 5", 0: "other" };
   var legend = document.getElementById("legend");
-  [3, 4, 5, 0].forEach(function (code) {
+  function legendRow(cls, rgb, label) {
     var row = document.createElement("div");
     var sw = document.createElement("span");
-    sw.className = "swatch";
-    sw.style.background = "rgb(" + COLOURS[code].join(",") + ")";
+    sw.className = cls;
+    sw.style.background = "rgb(" + rgb.map(Math.round).join(",") + ")";
     row.appendChild(sw);
-    row.appendChild(document.createTextNode(names[code] + ": " + counts[code]));
+    row.appendChild(document.createTextNode(label));
     legend.appendChild(row);
-  });
+  }
+  function fillLegend() {
+    legend.textContent = "";
+    if (!byQuality) {
+      [3, 4, 5, 0].forEach(function (code) {
+        legendRow("swatch", COLOURS[code], names[code] + ": " + counts[code]);
+      });
+      return;
+    }
+    var bands = [[-Infinity, 0, "inverted (\u2264 0)"], [0, 0.5, "0 \u2013 0.5"], [0.5, 0.8, "0.5 \u2013 0.8"],
+      [0.8, Infinity, "0.8 \u2013 1"]];
+    bands.forEach(function (b) {
+      var n = 0;
+      for (var i = 0; i < QV.length; i++) if (QV[i] > b[0] && QV[i] <= b[1]) n++;
+      var mid = b[0] === -Infinity ? 0 : Math.min(1, 0.5 * (b[0] + Math.min(1, b[1])));
+      var rgb = qualityColour(b[0] === -Infinity ? -1 : mid).map(function (x) { return 255 * x; });
+      legendRow("bar", rgb, b[2] + ": " + n);
+    });
+    var min = QV.reduce(function (a, v) { return Math.min(a, v); }, Infinity);
+    var note = document.createElement("div");
+    note.className = "note";
+    note.textContent = "scaled Jacobian per " + (H ? "hex" : "quad") + ", min " +
+      (QV.length ? min.toFixed(3) : "none") + (mesh.quality_note ? "; " + mesh.quality_note : "");
+    legend.appendChild(note);
+  }
+  var qualityButton = null;
+  function setQuality(on) {
+    byQuality = on;
+    if (qualityButton) qualityButton.textContent = on ? "colour: quality (q)" : "colour: valence (q)";
+    fillLegend();
+    build(cutQuads()); upload(); redraw();
+  }
+  if (QV) {
+    qualityButton = document.createElement("button");
+    qualityButton.id = "quality-toggle";
+    qualityButton.title = "switch between valence dots and elements coloured by scaled Jacobian";
+    qualityButton.addEventListener("click", function () { setQuality(!byQuality); });
+    document.getElementById("colour").appendChild(qualityButton);
+    qualityButton.textContent = byQuality ? "colour: quality (q)" : "colour: valence (q)";
+  }
+  fillLegend();
   var what = H ? nh + " hexes (" + Q.length / 4 + " boundary quads), " : nq + " quads, ";
   if (H) cutControls();
   if (window.innerWidth < 560 || window.innerHeight < 420) document.getElementById("panel").open = false;
-  status.textContent = what + V.length + " vertices. Drag: orbit, wheel: zoom, shift/right drag: pan, double click: reset, e: edges, d: dots.";
+  status.textContent = what + V.length + " vertices. Drag: orbit, wheel: zoom, shift/right drag: pan, double click: reset, e: edges, d: dots" +
+    (QV ? ", q: quality colours." : ".");
   reset();
   draw();
 })();

@@ -306,3 +306,135 @@ fn chromium_small_window_collapses_the_panel() {
     let _ = std::fs::remove_dir_all(dir);
     assert!(dom.contains("<details id=\"panel\">"), "panel open");
 }
+
+#[test]
+fn quality_is_embedded_per_quad_and_per_hex() {
+    let mesh = cube_quads();
+    let mut values = vec![1.0; mesh.cells.len()];
+    values[3] = -0.5;
+    values[4] = -1e-9;
+    let q = Quality {
+        values: &values,
+        note: "normals: the mesh's own",
+    };
+    let json = embedded(&view_html_quality(&mesh, "q", &q).unwrap());
+    let got: Vec<f64> = json["quality"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|v| v.as_f64())
+        .collect();
+    assert_eq!(got.len(), 24);
+    assert_eq!(got.iter().filter(|&&v| v <= 0.0).count(), 2, "{got:?}");
+    assert_eq!(json["quality_note"], "normals: the mesh's own");
+    assert!(json.get("quad_hex").is_none());
+    // hexes: one value per hex, each boundary quad names its hex
+    let hexes = hex_grid(2);
+    let hv: Vec<f64> = (0..8).map(|h| h as f64 / 8.0).collect();
+    let q = Quality {
+        values: &hv,
+        note: "",
+    };
+    let json = embedded(&view_html_hex_quality(&hexes, "h", &q).unwrap());
+    assert_eq!(json["quality"].as_array().map(Vec::len), Some(8));
+    let quad_hex = json["quad_hex"].as_array().unwrap();
+    assert_eq!(quad_hex.len(), 24);
+    // each of the 8 corner hexes of a 2³ grid has 3 boundary faces
+    for h in 0..8 {
+        assert_eq!(quad_hex.iter().filter(|v| v.as_u64() == Some(h)).count(), 3);
+    }
+    // no quality, no toggle data
+    assert!(embedded(&view_html_hex(&hexes, "h").unwrap())
+        .get("quality")
+        .is_none());
+}
+
+#[test]
+fn quality_of_the_wrong_length_or_not_finite_is_refused() {
+    let mesh = cube_quads();
+    let short = Quality {
+        values: &[1.0; 3],
+        note: "",
+    };
+    assert_eq!(
+        view_html_quality(&mesh, "q", &short).unwrap_err(),
+        "3 quality values for 24 quads"
+    );
+    let mut values = vec![1.0; 8];
+    values[5] = f64::NAN;
+    let nan = Quality {
+        values: &values,
+        note: "",
+    };
+    assert_eq!(
+        view_html_hex_quality(&hex_grid(2), "h", &nan).unwrap_err(),
+        "hex 5: its quality is not a number"
+    );
+}
+
+/// Clearly red pixels right of the panel (whose legend has a red swatch)
+/// in a Chromium screenshot of `html` opened with `hash` (`#quality`:
+/// the quality colouring on); `None` without Chromium.
+fn red_right_of_panel(html: &str, name: &str, hash: &str) -> Option<usize> {
+    let shot = chromium(html, name, hash, "800,600", None)?;
+    let pix = read_png(&shot);
+    let w = pix.width() as usize;
+    let n = pix
+        .pixels()
+        .iter()
+        .enumerate()
+        .filter(|(i, c)| {
+            let (r, g, b) = (c.red() as u32, c.green() as u32, c.blue() as u32);
+            i % w >= 300 && r > 60 && 100 * g < 45 * r && 100 * b < 45 * r
+        })
+        .count();
+    if std::env::var_os("DUALEX_KEEP_SCREENSHOT").is_none() {
+        let _ = std::fs::remove_dir_all(shot.parent().unwrap());
+    } else {
+        eprintln!("kept {}", shot.display());
+    }
+    Some(n)
+}
+
+#[test]
+fn chromium_quality_colouring_shows_inverted_hexes_red() {
+    let mesh = hex_grid(3);
+    let mut values = vec![0.9; mesh.cells.len()];
+    let page = |values: &[f64]| {
+        let q = Quality { values, note: "" };
+        view_html_hex_quality(&mesh, "hexes", &q).unwrap()
+    };
+    let Some(none) = red_right_of_panel(&page(&values), "quality-valid", "#quality") else {
+        return;
+    };
+    assert_eq!(none, 0, "red pixels without an inverted hex");
+    // the 8 corner hexes (i, j, k in {0, 2}): some are in view whatever
+    // the camera
+    for h in [0, 2, 6, 8, 18, 20, 24, 26] {
+        values[h] = -0.3;
+    }
+    let some = red_right_of_panel(&page(&values), "quality-inverted", "#quality").unwrap_or(0);
+    assert!(some > 500, "the inverted hexes show {some} red pixels");
+}
+
+#[test]
+fn chromium_quality_colouring_shows_inverted_quads_red() {
+    let mesh = cube_quads();
+    // every other quad inverted (value 0 counts): some face the camera
+    let values: Vec<f64> = (0..mesh.cells.len())
+        .map(|q| if q % 2 == 0 { 0.0 } else { 0.7 })
+        .collect();
+    let q = Quality {
+        values: &values,
+        note: "normals: the mesh's own",
+    };
+    let html = view_html_quality(&mesh, "cube", &q).unwrap();
+    let Some(red) = red_right_of_panel(&html, "quality-quads", "#quality") else {
+        return;
+    };
+    assert!(red > 500, "the inverted quads show {red} red pixels");
+    // the same page with the valence colouring (no #quality): no red
+    // faces, and no valence-5 dots on a cube
+    let off = red_right_of_panel(&html, "quality-off", "").unwrap_or(usize::MAX);
+    assert_eq!(off, 0, "red without the toggle");
+}

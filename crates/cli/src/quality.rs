@@ -1,0 +1,308 @@
+//! Meshes for `dualex inspect` and `dualex view`: reading a quad or hex
+//! mesh, and the scaled Jacobian of each element ([`dualex_geom::quality`]).
+//!
+//! Input: a path (`.obj`/`.ply` whose faces are all quads, `.vtk` of
+//! quads or hexes, MEDIT `.mesh` of hexes) and, for quads, optionally the
+//! surface they lie on (`.obj`/`.ply` triangles; a map's coordinates are
+//! ignored). Output: the mesh, one value per element, and where the quad
+//! normals came from ([`Normals`]).
+//!
+//! A quad's value is taken against the unit normal of the surface
+//! triangle nearest its centre (the quad's Newell normal as the hint, so
+//! that the far side of a thin part is not taken); without a surface,
+//! against the normalised sum of the unit Newell normals of the quad and
+//! of the quads sharing an edge with it (the mesh's own normals: an
+//! inverted quad among good ones still counts as inverted, but a region
+//! of inverted quads can pass for good). Errors are one line naming the
+//! file and the element; nothing here panics on bad input.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use dualex_geom::quality::{hex_values, quad_values};
+use dualex_geom::Reference;
+use dualex_map::{HexMesh, QuadMesh};
+use rayon::prelude::*;
+
+/// A mesh read for its quality.
+pub enum Mesh {
+    /// A quad mesh.
+    Quads(QuadMesh),
+    /// A hex mesh.
+    Hexes(HexMesh),
+}
+
+/// Where the quad normals come from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Normals {
+    /// The triangle of `--surface` nearest each quad.
+    Surface,
+    /// The mesh's own (each quad and its edge neighbours).
+    Own,
+}
+
+impl Normals {
+    /// Its name in `inspect --json`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Normals::Surface => "surface",
+            Normals::Own => "mesh",
+        }
+    }
+
+    /// A short note for the view page.
+    pub fn short(self) -> &'static str {
+        match self {
+            Normals::Surface => "normals from the surface",
+            Normals::Own => "normals: the mesh's own (less reliable than --surface)",
+        }
+    }
+
+    /// A sentence for the reports.
+    pub fn note(self) -> &'static str {
+        match self {
+            Normals::Surface => "quad normals from the surface",
+            Normals::Own => {
+                "quad normals are the mesh's own (each quad and its edge neighbours; less reliable than --surface)"
+            }
+        }
+    }
+}
+
+/// Reads a quad or hex mesh; `what` (the subcommand) is named in the
+/// errors. Errors: an unsupported extension, a face other than a quad,
+/// an index out of range, a position not finite.
+pub fn read_mesh(path: &Path, what: &str) -> Result<Mesh, String> {
+    let name = path.display().to_string();
+    let mesh = match dualex_io::lower_extension(path).as_str() {
+        "mesh" => Mesh::Hexes(dualex_io::read_hex_mesh(path).map_err(|e| e.to_string())?),
+        "vtk" => match dualex_io::read_vtk(path).map_err(|e| e.to_string())? {
+            dualex_io::VtkMesh::Quads(m) => Mesh::Quads(m),
+            dualex_io::VtkMesh::Hexes(m) => Mesh::Hexes(m),
+        },
+        "obj" | "ply" => {
+            let poly = dualex_io::read_polygon_mesh(path).map_err(|e| e.to_string())?;
+            Mesh::Quads(quads_of(poly, &name, what)?)
+        }
+        ext => {
+            return Err(format!(
+                "{name}: {what} reads quad meshes (.obj, .ply, .vtk) and hex meshes (.mesh, .vtk), not `.{ext}`"
+            ))
+        }
+    };
+    match &mesh {
+        Mesh::Quads(m) => check(&m.positions, &m.cells, "quad"),
+        Mesh::Hexes(m) => check(&m.positions, &m.cells, "hex"),
+    }
+    .map_err(|e| format!("{name}: {e}"))?;
+    Ok(mesh)
+}
+
+/// What `dualex inspect` reads at `path`: a mesh (`Some`), or a map
+/// (`None`: `.hexex`/`.ovm`, an `.obj`/`.ply` of triangles, or one the
+/// polygon reader refuses, whose error the map reader then gives).
+pub fn inspected_mesh(path: &Path) -> Result<Option<Mesh>, String> {
+    match dualex_io::lower_extension(path).as_str() {
+        "mesh" | "vtk" => read_mesh(path, "inspect").map(Some),
+        "obj" | "ply" => match dualex_io::read_polygon_mesh(path) {
+            Ok(poly) if poly.faces.iter().any(|f| f.len() != 3) => {
+                let name = path.display().to_string();
+                let quads = quads_of(poly, &name, "inspect")?;
+                check(&quads.positions, &quads.cells, "quad")
+                    .map_err(|e| format!("{name}: {e}"))?;
+                Ok(Some(Mesh::Quads(quads)))
+            }
+            _ => Ok(None),
+        },
+        _ => Ok(None),
+    }
+}
+
+/// The quads of a polygon mesh whose faces all have 4 vertices.
+fn quads_of(poly: dualex_io::PolyMesh, name: &str, what: &str) -> Result<QuadMesh, String> {
+    let mut cells = Vec::with_capacity(poly.faces.len());
+    for (i, f) in poly.faces.iter().enumerate() {
+        let [a, b, c, d] = f[..] else {
+            return Err(format!(
+                "{name}: face {i} has {} vertices; {what} reads quad meshes (4 per face){}",
+                f.len(),
+                if what == "inspect" {
+                    " and triangle maps"
+                } else {
+                    ""
+                }
+            ));
+        };
+        cells.push([a, b, c, d]);
+    }
+    Ok(QuadMesh {
+        positions: poly.positions,
+        cells,
+    })
+}
+
+/// Every position finite, every index in range; the error names the
+/// first offender.
+fn check<const K: usize>(
+    positions: &[[f64; 3]],
+    cells: &[[u32; K]],
+    what: &str,
+) -> Result<(), String> {
+    if let Some(v) = positions
+        .iter()
+        .position(|p| p.iter().any(|x| !x.is_finite()))
+    {
+        return Err(format!("vertex {v}: position is not finite"));
+    }
+    let nv = positions.len();
+    for (e, cell) in cells.iter().enumerate() {
+        if let Some(&v) = cell.iter().find(|&&v| v as usize >= nv) {
+            return Err(format!(
+                "{what} {e} refers to vertex {v}, but there are {nv} vertices"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The scaled Jacobian of every hex.
+pub fn hex_quality(mesh: &HexMesh) -> Vec<f64> {
+    hex_values(&mesh.positions, &mesh.cells)
+}
+
+/// The scaled Jacobian of every quad (see the module docs), against the
+/// surface at `surface` when given. Errors: the surface cannot be read or
+/// has a face other than a triangle.
+pub fn quad_quality(
+    mesh: &QuadMesh,
+    surface: Option<&Path>,
+) -> Result<(Vec<f64>, Normals), String> {
+    let newell: Vec<[f64; 3]> = mesh
+        .cells
+        .iter()
+        .map(|q| {
+            let p = q.map(|v| mesh.positions[v as usize]);
+            cross(sub(p[2], p[0]), sub(p[3], p[1]))
+        })
+        .collect();
+    let (normals, kind) = match surface {
+        Some(path) => (surface_normals(mesh, &newell, path)?, Normals::Surface),
+        None => (own_normals(mesh, &newell), Normals::Own),
+    };
+    Ok((quad_values(&mesh.positions, &mesh.cells, &normals), kind))
+}
+
+/// Per quad, the normal of the surface triangle nearest its centre.
+fn surface_normals(
+    mesh: &QuadMesh,
+    newell: &[[f64; 3]],
+    path: &Path,
+) -> Result<Vec<[f64; 3]>, String> {
+    let name = path.display().to_string();
+    let poly = dualex_io::read_polygon_mesh(path).map_err(|e| format!("--surface: {e}"))?;
+    let mut triangles = Vec::with_capacity(poly.faces.len());
+    for (i, f) in poly.faces.iter().enumerate() {
+        let [a, b, c] = f[..] else {
+            return Err(format!(
+                "--surface: {name}: face {i} has {} vertices; the surface must be triangles",
+                f.len()
+            ));
+        };
+        triangles.push([a, b, c]);
+    }
+    if let Some(v) = poly
+        .positions
+        .iter()
+        .position(|p| p.iter().any(|x| !x.is_finite()))
+    {
+        return Err(format!(
+            "--surface: {name}: vertex {v}: position is not finite"
+        ));
+    }
+    let reference = Reference::surface(&poly.positions, &triangles, 180.0);
+    let normals = mesh.cells.par_iter().zip(newell).map(|(q, &n)| {
+        let mut centre = [0.0; 3];
+        for &v in q {
+            for (c, x) in centre.iter_mut().zip(mesh.positions[v as usize]) {
+                *c += 0.25 * x;
+            }
+        }
+        let under = reference
+            .closest(centre, Some(n))
+            .and_then(|foot| reference.normals.get(foot.triangle as usize).copied())
+            .filter(|m| m.iter().any(|&x| x != 0.0));
+        // a degenerate surface triangle has no normal: the quad's own
+        under.unwrap_or_else(|| unit(n))
+    });
+    Ok(normals.collect())
+}
+
+/// Per quad, the normalised sum of the unit Newell normals of the quad
+/// and of the quads sharing an edge with it.
+fn own_normals(mesh: &QuadMesh, newell: &[[f64; 3]]) -> Vec<[f64; 3]> {
+    let units: Vec<[f64; 3]> = newell.iter().map(|&n| unit(n)).collect();
+    let mut edges: HashMap<[u32; 2], Vec<u32>> = HashMap::new();
+    for (i, q) in mesh.cells.iter().enumerate() {
+        for k in 0..4 {
+            let (a, b) = (q[k], q[(k + 1) % 4]);
+            edges
+                .entry([a.min(b), a.max(b)])
+                .or_default()
+                .push(i as u32);
+        }
+    }
+    let mut around = Vec::new();
+    mesh.cells
+        .iter()
+        .enumerate()
+        .map(|(i, q)| {
+            around.clear();
+            around.push(i as u32);
+            for k in 0..4 {
+                let (a, b) = (q[k], q[(k + 1) % 4]);
+                if let Some(on_edge) = edges.get(&[a.min(b), a.max(b)]) {
+                    around.extend(on_edge.iter().copied());
+                }
+            }
+            around.sort_unstable();
+            around.dedup();
+            let mut sum = [0.0; 3];
+            for &j in &around {
+                for (s, x) in sum.iter_mut().zip(units[j as usize]) {
+                    *s += x;
+                }
+            }
+            unit(sum)
+        })
+        .collect()
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// `n` of length 1, or zero.
+fn unit(n: [f64; 3]) -> [f64; 3] {
+    let l = n.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if l > 0.0 {
+        n.map(|x| x / l)
+    } else {
+        [0.0; 3]
+    }
+}
+
+/// The quad count, the hex count: "9 quads", "1 hex".
+pub fn elements(mesh: &Mesh) -> String {
+    match mesh {
+        Mesh::Quads(m) => crate::summary::count(m.cells.len(), "quad", "quads"),
+        Mesh::Hexes(m) => crate::summary::count(m.cells.len(), "hex", "hexes"),
+    }
+}
