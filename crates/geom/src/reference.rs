@@ -190,9 +190,18 @@ impl Reference {
     /// The nearest point to `p` on the curves (only boundary segments when
     /// `boundary_only`): the segment, the point, the distance.
     pub fn closest_on_curves(&self, p: [f64; 3], boundary_only: bool) -> Option<(u32, [f64; 3], f64)> {
+        self.closest_on(p, |seg| !boundary_only || seg.boundary)
+    }
+
+    /// The nearest point to `p` on the feature curves (not the boundary).
+    pub fn closest_on_features(&self, p: [f64; 3]) -> Option<(u32, [f64; 3], f64)> {
+        self.closest_on(p, |seg| !seg.boundary)
+    }
+
+    fn closest_on(&self, p: [f64; 3], keep: impl Fn(&Segment) -> bool) -> Option<(u32, [f64; 3], f64)> {
         let (s, d2) = self.segment_bvh.nearest(p, |s| {
             let seg = self.segments[s as usize];
-            (!boundary_only || seg.boundary).then(|| {
+            keep(&seg).then(|| {
                 let q = self.closest_on_segment(s, p);
                 let d = sub(q, p);
                 dot(d, d)

@@ -343,42 +343,40 @@ fn run<const D: usize, const K: usize>(
         h,
     };
     let movable_kind: Vec<bool> = cons.kind.iter().map(|k| k.dof() > 0).collect();
-    match opts.mode {
-        Mode::Smooth(rounds) => {
-            let p = Params {
-                theta: 0.5,
-                rounds: rounds.max(1),
-                iterations: ITERATIONS,
-                stop_when_untangled: false,
-            };
-            rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p).rounds;
+    if let Mode::Smooth(rounds) = opts.mode {
+        let p = Params {
+            theta: 0.5,
+            rounds: rounds.max(1),
+            iterations: ITERATIONS,
+            stop_when_untangled: false,
+        };
+        rep.rounds = optimize(&c, x, &movable_kind, &mut cons, Some(&r), p).rounds;
+    }
+    // untangling near what is still inverted (after smoothing too), in
+    // growing rings
+    for &rings in &RINGS {
+        let bad = measure(x);
+        if bad.iter().all(|&v| v > 0.0) {
+            break;
         }
-        _ => {
-            for &rings in &RINGS {
-                let bad = measure(x);
-                if bad.iter().all(|&v| v > 0.0) {
-                    break;
+        let mut region = vec![false; x.len()];
+        for (ci, &v) in bad.iter().enumerate() {
+            if v <= 0.0 {
+                for &u in &cells[ci] {
+                    region[u as usize] = true;
                 }
-                let mut region = vec![false; x.len()];
-                for (ci, &v) in bad.iter().enumerate() {
-                    if v <= 0.0 {
-                        for &u in &cells[ci] {
-                            region[u as usize] = true;
-                        }
-                    }
-                }
-                grow(&mut region, &around, cells, rings);
-                let movable: Vec<bool> = region.iter().zip(&movable_kind).map(|(a, b)| *a && *b).collect();
-                let p = Params {
-                    theta: 0.5,
-                    rounds: UNTANGLE_ROUNDS,
-                    iterations: ITERATIONS,
-                    stop_when_untangled: true,
-                };
-                rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p).rounds;
-                rep.rings = rings;
             }
         }
+        grow(&mut region, &around, cells, rings);
+        let movable: Vec<bool> = region.iter().zip(&movable_kind).map(|(a, b)| *a && *b).collect();
+        let p = Params {
+            theta: 0.5,
+            rounds: UNTANGLE_ROUNDS,
+            iterations: ITERATIONS,
+            stop_when_untangled: true,
+        };
+        rep.rounds += optimize(&c, x, &movable, &mut cons, Some(&r), p).rounds;
+        rep.rings = rings;
     }
     rep.after = Summary::of(&measure(x));
     if std::env::var_os("DUALEX_GEOM_DEBUG").is_some() {
