@@ -139,7 +139,7 @@ pub struct GeometryArgs {
     pub keep_boundary: bool,
     /// Input edges whose faces' normals differ by more than DEG degrees
     /// are feature curves: vertices on them stay on them.
-    #[arg(long, value_name = "DEG", default_value_t = 35.0, value_parser = degrees)]
+    #[arg(long, value_name = "DEG", default_value_t = 60.0, value_parser = degrees)]
     pub feature_angle: f64,
 }
 

@@ -102,31 +102,6 @@ impl Constraints {
         Constraints { kind, hint }
     }
 
-    /// Vertex `v` at `p` within `radius` of a feature curve (a vertex on
-    /// the surface) or of a corner (a vertex on a curve) is put there and
-    /// kept there: a vertex that untangling brings to a feature belongs on
-    /// it (its cells would be bent across it otherwise). Returns the
-    /// point, `p` when it stays.
-    pub fn attach(&mut self, r: &Reference, v: usize, p: [f64; 3], radius: f64) -> [f64; 3] {
-        match self.kind[v] {
-            Kind::Surface => match r.closest_on_features(p) {
-                Some((_, q, d)) if d <= radius => {
-                    self.kind[v] = Kind::Curve { boundary: false };
-                    self.attach(r, v, q, radius)
-                }
-                _ => p,
-            },
-            Kind::Curve { boundary } => match r.nearest_corner(p, radius, f64::INFINITY) {
-                Some(c) if !boundary => {
-                    self.kind[v] = Kind::Fixed;
-                    c
-                }
-                _ => p,
-            },
-            _ => p,
-        }
-    }
-
     /// The point of vertex `v`'s set nearest `p`.
     pub fn project(&self, r: &Reference, v: usize, p: [f64; 3]) -> [f64; 3] {
         match self.kind[v] {

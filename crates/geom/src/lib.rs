@@ -75,7 +75,8 @@ pub struct Options {
     /// Put output boundary vertices on the input's boundary. Default: on.
     pub boundary: bool,
     /// Edges of the reference whose faces' normals differ by more than
-    /// this many degrees are feature curves. Default: 35.
+    /// this many degrees are feature curves. Default: 60 (a coarse smooth
+    /// surface has edges of 35° and more that are no features).
     pub feature_angle: f64,
 }
 
@@ -84,7 +85,7 @@ impl Default for Options {
         Options {
             mode: Mode::Auto,
             boundary: true,
-            feature_angle: 35.0,
+            feature_angle: 60.0,
         }
     }
 }

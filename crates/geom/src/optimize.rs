@@ -57,10 +57,6 @@ pub struct Outcome {
 /// lengths of the cells optimised.
 const MAX_STEP: f64 = 0.25;
 
-/// A vertex that comes within this many mean edge lengths of a feature
-/// curve (or of a corner, on a curve) is attached to it.
-const ATTACH: f64 = 0.02;
-
 struct Local<'a, const D: usize, const K: usize> {
     c: &'a Cells<'a, D, K>,
     /// Active cells (touching a movable vertex).
@@ -194,7 +190,7 @@ pub fn optimize<const D: usize, const K: usize>(
     cells: &Cells<D, K>,
     x: &mut [[f64; 3]],
     movable: &[bool],
-    cons: &mut Constraints,
+    cons: &Constraints,
     r: Option<&Reference>,
     p: Params,
 ) -> Outcome {
@@ -275,8 +271,7 @@ pub fn optimize<const D: usize, const K: usize>(
                     let d = sub(xt[v], x0[i]);
                     let len = crate::quality::norm(d);
                     let k = if len > max_step { max_step / len } else { 1.0 };
-                    let q = cons.project(r, v, [0, 1, 2].map(|a| x0[i][a] + k * d[a]));
-                    cons.attach(r, v, q, ATTACH * mean_h)
+                    cons.project(r, v, [0, 1, 2].map(|a| x0[i][a] + k * d[a]))
                 }
                 _ => xt[v],
             };

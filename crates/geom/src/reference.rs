@@ -194,6 +194,7 @@ impl Reference {
     }
 
     /// The nearest point to `p` on the feature curves (not the boundary).
+    #[allow(dead_code)]
     pub fn closest_on_features(&self, p: [f64; 3]) -> Option<(u32, [f64; 3], f64)> {
         self.closest_on(p, |seg| !seg.boundary)
     }
@@ -336,7 +337,8 @@ fn corners(positions: &[[f64; 3]], segments: &[Segment], cos: f64) -> Vec<bool> 
         .iter()
         .enumerate()
         .map(|(v, n)| match n.len() {
-            0 => false,
+            // an end of a curve is where a ridge fades out, not a corner
+            0 | 1 => false,
             2 => {
                 let p = positions[v];
                 let a = sub(p, positions[n[0] as usize]);

@@ -350,7 +350,7 @@ fn run<const D: usize, const K: usize>(
             iterations: ITERATIONS,
             stop_when_untangled: false,
         };
-        rep.rounds = optimize(&c, x, &movable_kind, &mut cons, Some(&r), p).rounds;
+        rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p).rounds;
     }
     // untangling near what is still inverted (after smoothing too), in
     // growing rings
@@ -375,7 +375,7 @@ fn run<const D: usize, const K: usize>(
             iterations: ITERATIONS,
             stop_when_untangled: true,
         };
-        rep.rounds += optimize(&c, x, &movable, &mut cons, Some(&r), p).rounds;
+        rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p).rounds;
         rep.rings = rings;
     }
     rep.after = Summary::of(&measure(x));
