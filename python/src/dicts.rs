@@ -4,7 +4,8 @@
 //! [`dualex::HexStats`]); nested structs (`repairs`, `topology`) are nested
 //! dicts, valence histograms are `{valence: count}` with int keys,
 //! `grid_offset` is `"half"` or `"zero"`, `time_ms` is `{stage: ms}` in
-//! stage order. The map report is the CLI's `inspect --json` object.
+//! stage order, `geometry` is the CLI's `geometry` section of the stats
+//! (the geometric stage's report, [`crate::geometry::report`]). The map report is the CLI's `inspect --json` object.
 
 use dualex::{GridOffset, HexStats, QuadStats};
 use pyo3::prelude::*;
@@ -84,6 +85,7 @@ pub fn quad_stats<'py>(py: Python<'py>, s: &QuadStats) -> PyResult<Bound<'py, Py
     rd.set_item("doublets_dissolved", r.doublets_dissolved)?;
     d.set_item("repairs", rd)?;
     d.set_item("topology", topology(py, &s.topology)?)?;
+    d.set_item("geometry", crate::geometry::report(py, &s.geometry)?)?;
     d.set_item("time_ms", times(py, &s.time_ms)?)?;
     Ok(d)
 }
@@ -121,6 +123,7 @@ pub fn hex_stats<'py>(py: Python<'py>, s: &HexStats) -> PyResult<Bound<'py, PyDi
     rd.set_item("doublet_chains_dissolved", r.doublet_chains_dissolved)?;
     d.set_item("repairs", rd)?;
     d.set_item("topology", topology(py, &s.topology)?)?;
+    d.set_item("geometry", crate::geometry::report(py, &s.geometry)?)?;
     d.set_item("time_ms", times(py, &s.time_ms)?)?;
     Ok(d)
 }

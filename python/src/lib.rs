@@ -11,14 +11,20 @@
 //! | `write(path, V, cells)` | [`dualex::write_quad_mesh`] / [`dualex::write_hex_mesh`] |
 //! | `inspect(path)` / `inspect(V, S, C)` | `dualex_map::report::inspect` |
 //!
+//! `quad` and `hex` run the geometric stage after the extraction
+//! (`untangle="auto"|"off"`, `smooth=None|True|rounds`; `geometry.rs`), its
+//! report in the stats' `"geometry"` dict.
+//!
 //! Every error (bad arrays, a map the extraction refuses, an unreadable
-//! file) is a `ValueError` whose message is the CLI's one-line message;
-//! nothing panics on bad input. The GIL is released while Rust works.
+//! file, a bad option value) is a `ValueError` whose message is the CLI's
+//! one-line message (an option's names the argument); nothing panics on
+//! bad input. The GIL is released while Rust works.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod arrays;
 mod dicts;
+mod geometry;
 
 use arrays::{
     cells_array, corners, corners_array, indices, optional_corners_array, positions_array, rows,
@@ -58,15 +64,26 @@ fn is_tet_file(path: &std::path::Path) -> bool {
 /// V: (n, 3) vertex positions; F: (m, 3) vertex indices of the triangles;
 /// UV: (m, 3, 2) map coordinates of each triangle corner, in that
 /// triangle's chart (cut meshes welded first unless weld=False).
+/// The geometric stage follows (as the CLI's): untangle="auto" puts
+/// boundary vertices on the input's boundary and untangles inverted quads
+/// (scaled Jacobian <= 0), "off" keeps the map's positions; smooth=N (True:
+/// the default rounds) optimises every quad in at most N rounds; the stats'
+/// "geometry" dict reports the quality before and after.
 /// Returns (positions (k, 3) float64, quads (q, 4) int64, stats dict);
 /// with return_sources=True also sources (q,) int64: the triangle (row of
 /// F) holding each quad's node, -1 for a quad that closes a hole; with
 /// return_uv=True also uv (q, 4, 2) float64: the map coordinates of each
 /// quad's corners in its node's chart (node ± ½, exact grid points of the
 /// input map), NaN for a quad made by a repair.
-/// Raises ValueError on bad arrays or a map the extraction refuses.
+/// Raises ValueError on bad arrays, a map the extraction refuses or a bad
+/// option (strict=True: also when the topology changed or inverted quads
+/// remain).
 #[pyfunction]
-#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false, return_uv=false))]
+// untangle=None is "auto": the Python signature shows that
+#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
+#[pyo3(
+    text_signature = "(V, F, UV, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
+)]
 #[allow(non_snake_case, clippy::too_many_arguments)]
 fn quad<'py>(
     py: Python<'py>,
@@ -79,6 +96,8 @@ fn quad<'py>(
     grid_offset: &str,
     seed: u64,
     strict: bool,
+    untangle: Option<&Bound<'py, PyAny>>,
+    smooth: Option<&Bound<'py, PyAny>>,
     return_sources: bool,
     return_uv: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
@@ -89,6 +108,7 @@ fn quad<'py>(
         grid_offset: self::grid_offset(grid_offset)?,
         seed,
         strict,
+        geometry: geometry::options(untangle, smooth)?,
     };
     let (p, t, c) = (
         rows::<3>("V", V)?,
@@ -111,14 +131,20 @@ fn quad<'py>(
 ///
 /// V: (n, 3) vertex positions; T: (m, 4) vertex indices of the tets
 /// (positively oriented); UVW: (m, 4, 3) map coordinates of each tet
-/// corner. Returns (positions (k, 3) float64, hexes (h, 8) int64 in VTK
-/// order, stats dict); with return_sources=True also sources (h,) int64:
-/// the tet (row of T) holding each hex's node; with return_uv=True also
-/// uvw (h, 8, 3): each hex's corners in its node's chart, NaN for a hex
-/// merged by a repair. Raises ValueError on bad
-/// arrays or a refused map.
+/// corner. untangle and smooth as for `quad` (boundary vertices onto the
+/// boundary surface of the tets). Returns (positions (k, 3) float64,
+/// hexes (h, 8) int64 in VTK order, stats dict); with return_sources=True
+/// also sources (h,) int64: the tet (row of T) holding each hex's node;
+/// with return_uv=True also uvw (h, 8, 3): each hex's corners in its
+/// node's chart, NaN for a hex merged by a repair. Raises ValueError on
+/// bad arrays, a refused map or a bad option (strict=True: also when the
+/// topology changed or inverted hexes remain).
 #[pyfunction]
-#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, return_sources=false, return_uv=false))]
+// untangle=None is "auto": the Python signature shows that
+#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
+#[pyo3(
+    text_signature = "(V, T, UVW, *, weld=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
+)]
 #[allow(non_snake_case, clippy::too_many_arguments)]
 fn hex<'py>(
     py: Python<'py>,
@@ -130,6 +156,8 @@ fn hex<'py>(
     grid_offset: &str,
     seed: u64,
     strict: bool,
+    untangle: Option<&Bound<'py, PyAny>>,
+    smooth: Option<&Bound<'py, PyAny>>,
     return_sources: bool,
     return_uv: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
@@ -139,6 +167,7 @@ fn hex<'py>(
         grid_offset: self::grid_offset(grid_offset)?,
         seed,
         strict,
+        geometry: geometry::options(untangle, smooth)?,
     };
     let (p, t, c) = (
         rows::<3>("V", V)?,

@@ -6,7 +6,11 @@
  * compiles C programs against it and compares every struct offset).
  *
  * Shaped like HexHex's hexhex_extract_simple(): flat arrays in, a plain
- * struct out. Every function returning int returns 0 on success and a
+ * struct out. After the extraction a geometric stage measures every
+ * element's scaled Jacobian, puts boundary vertices on the input's
+ * boundary and untangles inverted elements (DualexOptions.untangle), or
+ * smooths the whole mesh (smooth_rounds); the outputs report the quality
+ * before and after it. Every function returning int returns 0 on success and a
  * DUALEX_ERR_* code on error; dualex_last_error() then gives the one-line
  * message. Bad input (NULL pointers, indices out of range, NaN, invalid
  * maps) is an error, never a crash; no Rust panic crosses this boundary.
@@ -30,7 +34,7 @@ extern "C" {
 #define DUALEX_ERR_INVALID_ARGUMENT 1
 /** The map is invalid or refused (index out of range, NaN, no simplex, ...). */
 #define DUALEX_ERR_INVALID_INPUT 2
-/** No valid mesh could be made, or (strict) the topology changed. */
+/** No valid mesh could be made, or (strict) the topology changed or inverted elements remain. */
 #define DUALEX_ERR_EXTRACTION_FAILED 3
 /** A bug in dualex (a caught panic); the message starts "internal error (bug): ". */
 #define DUALEX_ERR_INTERNAL 4
@@ -49,8 +53,14 @@ typedef struct DualexOptions {
     int fairing;           /**< index fairing after untangling (quads only); default 1 */
     int round_transitions; /**< round transition translations of any residual; default 0 */
     int grid_offset;       /**< DUALEX_GRID_AUTO (default), _HALF or _ZERO */
-    int strict;            /**< an output whose topology differs from the input's is an error; default 0 */
+    int strict;            /**< an output whose topology differs from the input's, or with inverted
+                                elements left after the geometric stage, is an error; default 0 */
     uint64_t seed;         /**< seed of the sanitization perturbations; default 1 */
+    int untangle;          /**< 1 (default; any nonzero): boundary vertices onto the input's boundary, inverted
+                                elements untangled (only vertices near them move); 0: keep the
+                                map's positions (quality still measured) */
+    int smooth_rounds;     /**< 0 (default): no smoothing; n > 0: optimise every element's shape
+                                in at most n rounds (needs untangle 1; negative is an error) */
 } DualexOptions;
 
 /** A quad mesh and its main counts; owned by the library, free with dualex_quad_mesh_free(). */
@@ -66,6 +76,15 @@ typedef struct DualexQuadMesh {
     size_t n_singular_vertices; /**< singular vertices of the input map */
     size_t n_welded_vertices;   /**< boundary vertices welded before extraction */
     int topology_matches;       /**< 1 when the output's topology equals the input's */
+    /* the geometric stage: scaled Jacobian of the elements, before it (as the
+       map places the vertices) and after it (of positions); 1 for no element */
+    double sj_min_before;       /**< least scaled Jacobian before */
+    double sj_min_after;        /**< least scaled Jacobian after */
+    double sj_p5_before;        /**< its 5th percentile before */
+    double sj_p5_after;         /**< its 5th percentile after */
+    size_t inverted_before;     /**< elements with scaled Jacobian <= 0 before */
+    size_t inverted_after;      /**< elements with scaled Jacobian <= 0 after */
+    size_t moved_vertices;      /**< vertices the stage moved */
 } DualexQuadMesh;
 
 /** A hex mesh and its main counts; owned by the library, free with dualex_hex_mesh_free(). */
@@ -81,9 +100,19 @@ typedef struct DualexHexMesh {
     size_t n_singular_edges;    /**< singular interior edges of the input map */
     size_t n_welded_vertices;   /**< boundary vertices welded before extraction */
     int topology_matches;       /**< 1 when the output's topology equals the input's */
+    /* the geometric stage: scaled Jacobian of the elements, before it (as the
+       map places the vertices) and after it (of positions); 1 for no element */
+    double sj_min_before;       /**< least scaled Jacobian before */
+    double sj_min_after;        /**< least scaled Jacobian after */
+    double sj_p5_before;        /**< its 5th percentile before */
+    double sj_p5_after;         /**< its 5th percentile after */
+    size_t inverted_before;     /**< elements with scaled Jacobian <= 0 before */
+    size_t inverted_after;      /**< elements with scaled Jacobian <= 0 after */
+    size_t moved_vertices;      /**< vertices the stage moved */
 } DualexHexMesh;
 
-/** Fills *opts with the defaults (weld and fairing on, automatic grid offset, seed 1). NULL is ignored. */
+/** Fills *opts with the defaults (weld and fairing on, automatic grid offset, seed 1,
+    untangle 1, no smoothing). NULL is ignored. */
 void dualex_options_default(DualexOptions* opts);
 
 /**

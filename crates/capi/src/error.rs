@@ -21,7 +21,8 @@ pub enum DualexStatus {
     /// The map is invalid or refused (index out of range, NaN, …).
     InvalidInput = 2,
     /// The extraction could not make a valid mesh, or (with `strict`) the
-    /// output's topology differs from the input's.
+    /// output's topology differs from the input's or inverted elements
+    /// remain after the geometric stage.
     ExtractionFailed = 3,
     /// A bug: a panic caught at the boundary.
     Internal = 4,

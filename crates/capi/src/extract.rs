@@ -7,7 +7,9 @@
 //! output struct. Output: a status code; on success the struct owns the
 //! mesh (free it with the matching `*_free`), on error it is zeroed and
 //! `dualex_last_error()` says why. Each step: check the pointers, build
-//! the map through the facade (which validates it), extract, hand over.
+//! the map through the facade (which validates it), extract (the facade
+//! runs the geometric stage too: its quality counts go in the struct),
+//! hand over.
 
 use crate::error::{guard, Failure};
 use crate::mesh::{leak, DualexHexMesh, DualexOptions, DualexQuadMesh, DUALEX_NO_SOURCE};
@@ -64,6 +66,7 @@ pub unsafe extern "C" fn dualex_quad_extract(
             grid_offset: o.grid_offset().map_err(Failure::argument)?,
             seed: o.seed,
             strict: flag(o.strict),
+            geometry: o.geometry().map_err(Failure::argument)?,
         };
         let r = dualex::quad(&map, &q)?;
         let s = &r.stats;
@@ -84,6 +87,13 @@ pub unsafe extern "C" fn dualex_quad_extract(
             n_singular_vertices: s.singular_vertices,
             n_welded_vertices: s.welded_vertices,
             topology_matches: s.topology.matches().into(),
+            sj_min_before: s.geometry.before.min,
+            sj_min_after: s.geometry.after.min,
+            sj_p5_before: s.geometry.before.p5,
+            sj_p5_after: s.geometry.after.p5,
+            inverted_before: s.geometry.before.inverted,
+            inverted_after: s.geometry.after.inverted,
+            moved_vertices: s.geometry.moved_vertices,
         };
         Ok(())
     })
@@ -124,6 +134,7 @@ pub unsafe extern "C" fn dualex_hex_extract(
             grid_offset: o.grid_offset().map_err(Failure::argument)?,
             seed: o.seed,
             strict: flag(o.strict),
+            geometry: o.geometry().map_err(Failure::argument)?,
         };
         let r = dualex::hex(&map, &h)?;
         let s = &r.stats;
@@ -139,6 +150,13 @@ pub unsafe extern "C" fn dualex_hex_extract(
             n_singular_edges: s.singular_edges,
             n_welded_vertices: s.welded_vertices,
             topology_matches: s.topology.matches().into(),
+            sj_min_before: s.geometry.before.min,
+            sj_min_after: s.geometry.after.min,
+            sj_p5_before: s.geometry.before.p5,
+            sj_p5_after: s.geometry.after.p5,
+            inverted_before: s.geometry.before.inverted,
+            inverted_after: s.geometry.after.inverted,
+            moved_vertices: s.geometry.moved_vertices,
         };
         Ok(())
     })

@@ -3,10 +3,12 @@
 //!
 //! Layout: `#[repr(C)]`, field for field as in `include/dualex.h` (the
 //! integration test `tests/c_api.rs` compares every offset with a C
-//! compiler's). Ownership: the arrays of an output are allocated here, as
-//! boxed slices whose lengths follow from the counts (`3·n_vertices`
-//! positions, `4·n_cells` or `8·n_cells` indices, `n_cells` sources), and
-//! only the `*_free` functions release them; a zeroed struct holds nothing.
+//! compiler's); fields added later go at the end of a struct (the ABI of
+//! the earlier ones stays). Ownership: the arrays of an output are
+//! allocated here, as boxed slices whose lengths follow from the counts
+//! (`3·n_vertices` positions, `4·n_cells` or `8·n_cells` indices,
+//! `n_cells` sources), and only the `*_free` functions release them; a
+//! zeroed struct holds nothing.
 
 use std::ffi::c_int;
 use std::ptr;
@@ -37,6 +39,14 @@ pub struct DualexOptions {
     pub strict: c_int,
     /// Seed of the sanitization perturbations. Default 1.
     pub seed: u64,
+    /// The geometric stage after the extraction: 1 (default) puts boundary
+    /// vertices on the input's boundary and untangles inverted elements
+    /// (moving only the vertices near them); 0 keeps the map's positions
+    /// (the quality is still measured).
+    pub untangle: c_int,
+    /// 0 (default): no smoothing; `n > 0`: optimise the shape of every
+    /// element in at most `n` rounds (needs `untangle` on).
+    pub smooth_rounds: c_int,
 }
 
 impl Default for DualexOptions {
@@ -49,6 +59,8 @@ impl Default for DualexOptions {
             grid_offset: DUALEX_GRID_AUTO,
             strict: q.strict.into(),
             seed: q.seed,
+            untangle: 1,
+            smooth_rounds: 0,
         }
     }
 }
@@ -65,10 +77,36 @@ impl DualexOptions {
             )),
         }
     }
+
+    /// The facade's geometric stage options, or the message for a negative
+    /// `smooth_rounds` or smoothing with `untangle` off.
+    pub(crate) fn geometry(&self) -> Result<dualex::GeometryOptions, String> {
+        use dualex::GeometryMode;
+        let mode = match (self.untangle != 0, self.smooth_rounds) {
+            (_, n) if n < 0 => {
+                return Err(format!(
+                    "options: smooth_rounds {n} is negative (0: no smoothing)"
+                ))
+            }
+            (false, 0) => GeometryMode::Off,
+            (false, n) => {
+                return Err(format!(
+                    "options: smooth_rounds {n} with untangle 0: smoothing moves the vertices that untangle 0 keeps"
+                ))
+            }
+            (true, 0) => GeometryMode::Auto,
+            // positive and at most c_int::MAX: fits usize
+            (true, n) => GeometryMode::Smooth(n.unsigned_abs() as usize),
+        };
+        Ok(dualex::GeometryOptions {
+            mode,
+            ..Default::default()
+        })
+    }
 }
 
 /// Fills `*opts` with the defaults (welding and fairing on, automatic grid
-/// offset, seed 1). A null `opts` is ignored.
+/// offset, seed 1, untangling on, no smoothing). A null `opts` is ignored.
 ///
 /// # Safety
 /// `opts` is null or points to writable memory for one `DualexOptions`.
@@ -107,6 +145,21 @@ pub struct DualexQuadMesh {
     pub n_welded_vertices: usize,
     /// 1 when the output's topology equals the input's.
     pub topology_matches: c_int,
+    /// Least scaled Jacobian of the elements as the map placed them
+    /// (1 for an empty mesh).
+    pub sj_min_before: f64,
+    /// Least scaled Jacobian after the geometric stage (of `positions`).
+    pub sj_min_after: f64,
+    /// 5th percentile of the scaled Jacobian, before the stage.
+    pub sj_p5_before: f64,
+    /// 5th percentile of the scaled Jacobian, after the stage.
+    pub sj_p5_after: f64,
+    /// Elements with a scaled Jacobian ≤ 0 before the stage.
+    pub inverted_before: usize,
+    /// Elements with a scaled Jacobian ≤ 0 after the stage.
+    pub inverted_after: usize,
+    /// Vertices the stage moved.
+    pub moved_vertices: usize,
 }
 
 /// A hex mesh and its main counts (`DualexHexMesh` in C).
@@ -135,6 +188,21 @@ pub struct DualexHexMesh {
     pub n_welded_vertices: usize,
     /// 1 when the output's topology equals the input's.
     pub topology_matches: c_int,
+    /// Least scaled Jacobian of the elements as the map placed them
+    /// (1 for an empty mesh).
+    pub sj_min_before: f64,
+    /// Least scaled Jacobian after the geometric stage (of `positions`).
+    pub sj_min_after: f64,
+    /// 5th percentile of the scaled Jacobian, before the stage.
+    pub sj_p5_before: f64,
+    /// 5th percentile of the scaled Jacobian, after the stage.
+    pub sj_p5_after: f64,
+    /// Elements with a scaled Jacobian ≤ 0 before the stage.
+    pub inverted_before: usize,
+    /// Elements with a scaled Jacobian ≤ 0 after the stage.
+    pub inverted_after: usize,
+    /// Vertices the stage moved.
+    pub moved_vertices: usize,
 }
 
 /// Hands a vector to C: a pointer to its boxed slice (freed by [`release`]).
@@ -168,6 +236,13 @@ impl DualexQuadMesh {
             n_singular_vertices: 0,
             n_welded_vertices: 0,
             topology_matches: 0,
+            sj_min_before: 0.0,
+            sj_min_after: 0.0,
+            sj_p5_before: 0.0,
+            sj_p5_after: 0.0,
+            inverted_before: 0,
+            inverted_after: 0,
+            moved_vertices: 0,
         }
     }
 }
@@ -187,6 +262,13 @@ impl DualexHexMesh {
             n_singular_edges: 0,
             n_welded_vertices: 0,
             topology_matches: 0,
+            sj_min_before: 0.0,
+            sj_min_after: 0.0,
+            sj_p5_before: 0.0,
+            sj_p5_after: 0.0,
+            inverted_before: 0,
+            inverted_after: 0,
+            moved_vertices: 0,
         }
     }
 }

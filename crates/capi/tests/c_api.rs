@@ -3,7 +3,8 @@
 //! (static and shared), runs it on small maps it builds itself and on the
 //! shared maps of `../shared/data` (dumped here as plain text; listed as
 //! ignored with the reason when the folder is absent, see `build.rs`), and
-//! checks that the header's struct layout is the Rust one, field by field.
+//! checks that the header's struct layout is the Rust one, field by field;
+//! on noisy generated maps it checks the geometric stage's quality fields.
 
 use dualex_capi::{DualexHexMesh, DualexOptions, DualexQuadMesh};
 use std::mem::{offset_of, size_of};
@@ -153,11 +154,16 @@ fn header_layout_matches_the_rust_structs() {
             s
         }};
     }
-    let expected = rust_layout!(DualexOptions: weld, fairing, round_transitions, grid_offset, strict, seed)
+    let expected = rust_layout!(DualexOptions: weld, fairing, round_transitions, grid_offset, strict, seed,
+            untangle, smooth_rounds)
         + &rust_layout!(DualexQuadMesh: n_vertices, positions, n_cells, cells, sources, n_components,
-            n_boundary_loops, euler, n_singular_vertices, n_welded_vertices, topology_matches)
+            n_boundary_loops, euler, n_singular_vertices, n_welded_vertices, topology_matches,
+            sj_min_before, sj_min_after, sj_p5_before, sj_p5_after, inverted_before, inverted_after,
+            moved_vertices)
         + &rust_layout!(DualexHexMesh: n_vertices, positions, n_cells, cells, sources, n_components,
-            n_boundary_surfaces, euler, n_singular_edges, n_welded_vertices, topology_matches);
+            n_boundary_surfaces, euler, n_singular_edges, n_welded_vertices, topology_matches,
+            sj_min_before, sj_min_after, sj_p5_before, sj_p5_after, inverted_before, inverted_after,
+            moved_vertices);
     assert_eq!(out, expected);
 }
 
@@ -190,6 +196,48 @@ fn dump<const N: usize, const D: usize>(
         s.push('\n');
     }
     std::fs::write(path, s)
+}
+
+/// Noisy maps of `dualex_gen` meshes (noise 0.6, folds) whose extraction
+/// places some elements inverted (checked by the facade's tests too): the
+/// C program finds them untangled by default (`inverted_after == 0`),
+/// kept with `untangle = 0`, refused with `strict` then.
+#[test]
+fn c_program_reads_the_quality_of_messy_maps() {
+    use dualex_gen::from_mesh::{self, meshes, FromMeshOptions};
+    let noisy = |scale, seed| FromMeshOptions {
+        scale,
+        noise: 0.6,
+        folds: true,
+        seed,
+        ..Default::default()
+    };
+    let dir = Scratch::new("messy");
+    let exe = c_program(&dir, false);
+    let disk = meshes::quad_mesh_by_name("ngon4").expect("ngon4");
+    let m = from_mesh::from_quads(&disk, &noisy(3, 2))
+        .expect("a map")
+        .map;
+    let path = dir.0.join("disk.txt");
+    dump("tri", &m.positions, &m.simplices, &m.coords, &path).expect("write the disk dump");
+    let out = run(&exe, &["--messy", path.to_str().unwrap_or_default()]);
+    assert!(
+        out.contains("36 cells") && out.contains(", 0 after"),
+        "{out}"
+    );
+    assert!(out.contains("all checks passed"), "{out}");
+    let cylinder = meshes::hex_mesh_by_name("cylinder6").expect("cylinder6");
+    let m = from_mesh::from_hexes(&cylinder, &noisy(2, 1))
+        .expect("a map")
+        .map;
+    let path = dir.0.join("cylinder.txt");
+    dump("tet", &m.positions, &m.simplices, &m.coords, &path).expect("write the cylinder dump");
+    let out = run(&exe, &["--messy", path.to_str().unwrap_or_default()]);
+    assert!(
+        out.contains("96 cells") && out.contains(", 0 after"),
+        "{out}"
+    );
+    assert!(out.contains("all checks passed"), "{out}");
 }
 
 fn data(rel: &str) -> PathBuf {

@@ -24,6 +24,12 @@ fn main() -> Result<(), dualex::Error> {
         s.quads, s.vertices, s.components, s.euler
     );
     println!("interior valences: {:?}", s.valence_interior);
+    // the geometric stage (default: untangle inverted quads only)
+    let g = &s.geometry;
+    println!(
+        "scaled Jacobian min {:.2}, {} inverted before the geometric stage, {} after",
+        g.after.min, g.before.inverted, g.after.inverted
+    );
     if let Some(obj) = args.next() {
         dualex::write_quad_mesh(obj, &out.mesh)?;
     }

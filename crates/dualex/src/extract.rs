@@ -1,11 +1,17 @@
 //! The two extractions as the CLI runs them: weld (by default), extract,
-//! check the output, compare its topology with the input's.
+//! check the output, compare its topology with the input's, then the
+//! geometric stage (`dualex_geom`: measure the elements' scaled Jacobian,
+//! put boundary vertices on the input's boundary, untangle inverted
+//! elements, optionally smooth; it moves vertices, never the
+//! combinatorics).
 //!
 //! Input: a map (not modified) and options. Output: the mesh and its typed
 //! stats, or an [`Error`]: [`Error::Input`] for a map the extraction
 //! refuses, [`Error::InvalidOutput`] when no valid mesh could be made (as
 //! the CLI, which then writes nothing), [`Error::TopologyChanged`] when
-//! `strict` is set and the output's topology differs from the input's.
+//! `strict` is set and the output's topology differs from the input's,
+//! [`Error::InvertedElements`] when `strict` is set and inverted elements
+//! remain after the geometric stage.
 //!
 //! Welding merges boundary vertices at exactly the same position (the
 //! seams of a cut mesh, see `dualex_map::weld`); without it a cut mesh is
@@ -14,7 +20,7 @@
 //! the output refer to the caller's map either way.
 
 use crate::stats::{GridOffset, HexStats, QuadStats, TopologyComparison};
-use crate::{Error, HexMesh, QuadMesh, TetMap, TriMap};
+use crate::{Error, GeometryOptions, GeometryReport, HexMesh, QuadMesh, TetMap, TriMap};
 use dualex_check::topology as topo;
 use dualex_map::{SimplexMap, TransitionOptions};
 use std::borrow::Cow;
@@ -33,9 +39,18 @@ pub struct QuadOptions {
     pub grid_offset: GridOffset,
     /// Seed of the sanitization perturbations. Default: 1.
     pub seed: u64,
-    /// An output whose topology differs from the input's is an error
-    /// instead of being reported in the stats. Default: off.
+    /// An output whose topology differs from the input's, or with
+    /// inverted elements left after the geometric stage, is an error
+    /// ([`Error::TopologyChanged`], [`Error::InvertedElements`]) instead of
+    /// being reported in the stats. Default: off.
     pub strict: bool,
+    /// The geometric stage after the extraction (as the CLI's
+    /// `--untangle`, `--smooth`, `--keep-boundary`, `--feature-angle`).
+    /// Default: [`GeometryMode::Auto`](crate::GeometryMode::Auto): boundary
+    /// vertices onto the input's boundary, inverted elements untangled
+    /// (only the vertices near them move); a mesh with neither is left as
+    /// the map places it.
+    pub geometry: GeometryOptions,
 }
 
 impl Default for QuadOptions {
@@ -48,6 +63,7 @@ impl Default for QuadOptions {
             grid_offset: d.grid_offset,
             seed: d.seed,
             strict: false,
+            geometry: GeometryOptions::default(),
         }
     }
 }
@@ -65,6 +81,9 @@ pub struct HexOptions {
     pub seed: u64,
     /// As [`QuadOptions::strict`].
     pub strict: bool,
+    /// As [`QuadOptions::geometry`] (boundary vertices onto the boundary
+    /// surface of the input's tets).
+    pub geometry: GeometryOptions,
 }
 
 impl Default for HexOptions {
@@ -76,6 +95,7 @@ impl Default for HexOptions {
             grid_offset: d.grid_offset,
             seed: d.seed,
             strict: false,
+            geometry: GeometryOptions::default(),
         }
     }
 }
@@ -83,8 +103,9 @@ impl Default for HexOptions {
 /// The result of [`quad`](crate::quad()).
 #[derive(Clone, Debug)]
 pub struct QuadOutput {
-    /// The quad mesh: positions and cells (4 vertex indices, counter-
-    /// clockwise seen from the side the map's orientation makes the front).
+    /// The quad mesh: positions (as the geometric stage left them) and
+    /// cells (4 vertex indices, counter-clockwise seen from the side the
+    /// map's orientation makes the front).
     pub mesh: QuadMesh,
     /// Its counts.
     pub stats: QuadStats,
@@ -108,7 +129,8 @@ pub struct QuadOutput {
 /// The result of [`hex`](crate::hex()).
 #[derive(Clone, Debug)]
 pub struct HexOutput {
-    /// The hex mesh: positions and cells (8 vertex indices, VTK order).
+    /// The hex mesh: positions (as the geometric stage left them) and cells
+    /// (8 vertex indices, VTK order).
     pub mesh: HexMesh,
     /// Its counts.
     pub stats: HexStats,
@@ -150,7 +172,18 @@ fn topology_check(t: &TopologyComparison, strict: bool) -> Result<(), Error> {
     Ok(())
 }
 
-/// Extracts the quad mesh of a triangle map (see the [crate] example).
+/// Inverted elements left by the geometric stage: an error under `strict`.
+fn inverted_check(r: &GeometryReport, strict: bool) -> Result<(), Error> {
+    let count = r.after.inverted;
+    if strict && count > 0 {
+        return Err(Error::InvertedElements { count });
+    }
+    Ok(())
+}
+
+/// Extracts the quad mesh of a triangle map (see the [crate] example),
+/// then runs the geometric stage ([`QuadOptions::geometry`]) on it against
+/// the (welded) map's surface; its report is [`QuadStats::geometry`].
 pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
     let (map, welded) = welded(map, opts.weld);
     let inner = dualex_quad::QuadOptions {
@@ -161,7 +194,7 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
         singularity_stats: true,
     };
     let dualex_quad::Extracted {
-        mesh,
+        mut mesh,
         stats,
         sources,
         corner_uv,
@@ -175,19 +208,41 @@ pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
         output: topo::quad_shape(&rep).into(),
     };
     topology_check(&t, opts.strict)?;
+    // the stage's "none" is u32::MAX, whatever the extraction's is
+    let stage_sources: Vec<u32> = sources
+        .iter()
+        .map(|&s| {
+            if s == dualex_quad::NO_SOURCE {
+                u32::MAX
+            } else {
+                s
+            }
+        })
+        .collect();
+    let geometry = dualex_geom::quads(
+        &mut mesh.positions,
+        &mesh.cells,
+        &map.positions,
+        &map.simplices,
+        &stage_sources,
+        &opts.geometry,
+    );
+    inverted_check(&geometry, opts.strict)?;
     let sources = sources
         .into_iter()
         .map(|s| (s != dualex_quad::NO_SOURCE).then_some(s))
         .collect();
     Ok(QuadOutput {
-        stats: QuadStats::new(&stats, welded, t),
+        stats: QuadStats::new(&stats, welded, t, geometry),
         mesh,
         sources,
         corner_uv,
     })
 }
 
-/// Extracts the hex mesh of a tet map.
+/// Extracts the hex mesh of a tet map, then runs the geometric stage
+/// ([`HexOptions::geometry`]) on it against the (welded) map's tets; its
+/// report is [`HexStats::geometry`].
 ///
 /// ```
 /// // a unit cube of 6 tets around the diagonal 0–7, mapped onto [0, 2]³
@@ -220,7 +275,7 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
         ..dualex_hex::HexOptions::default()
     };
     let dualex_hex::Extracted {
-        mesh,
+        mut mesh,
         stats,
         sources,
         corner_uvw,
@@ -234,8 +289,16 @@ pub fn hex(map: &TetMap, opts: &HexOptions) -> Result<HexOutput, Error> {
         output: topo::hex_shape(&rep).into(),
     };
     topology_check(&t, opts.strict)?;
+    let geometry = dualex_geom::hexes(
+        &mut mesh.positions,
+        &mesh.cells,
+        &map.positions,
+        &map.simplices,
+        &opts.geometry,
+    );
+    inverted_check(&geometry, opts.strict)?;
     Ok(HexOutput {
-        stats: HexStats::new(&stats, welded, t),
+        stats: HexStats::new(&stats, welded, t, geometry),
         mesh,
         sources,
         corner_uvw,

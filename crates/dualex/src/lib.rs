@@ -10,12 +10,23 @@
 //! | a map from a file | [`read_tri_map`] (`.obj`, `.ply`) | [`read_tet_map`] (`.hexex`, `.ovm`) |
 //! | extraction (welds cut meshes first) | [`quad()`] → [`QuadOutput`] | [`hex()`] → [`HexOutput`] |
 //! | typed counts | [`QuadStats`] | [`HexStats`] |
+//! | geometry: quality, untangling, smoothing | [`QuadOptions::geometry`] → [`QuadStats::geometry`] | [`HexOptions::geometry`] → [`HexStats::geometry`] |
 //! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`, `.ovm`) |
 //! | with corner map coordinates | [`write_quad_mesh_uv`] (`.obj`, `.ply`) | — ([`HexOutput::corner_uvw`] only) |
 //! | a map to a file | [`write_tri_map`] (`.obj`, `.ply`) | [`write_tet_map`] (`.hexex`, `.ovm`) |
 //!
 //! Errors are one [`Error`] enum; input errors name the file and the
 //! element (`triangle 17: …`). Nothing panics on bad input.
+//!
+//! After the extraction (and its checks) runs the geometric stage, as in
+//! the CLI: it measures every element's scaled Jacobian, puts boundary
+//! vertices on the input's boundary and untangles inverted elements
+//! ([`GeometryMode::Auto`], the default), keeps the map's positions
+//! ([`GeometryMode::Off`]) or smooths the whole mesh
+//! ([`GeometryMode::Smooth`]). Its [`GeometryReport`] (quality
+//! [`before`](GeometryReport::before) and
+//! [`after`](GeometryReport::after)) is in the stats; with `strict`,
+//! inverted elements left are [`Error::InvertedElements`].
 //!
 //! ```
 //! // a 1×1 square of 2 triangles whose map covers [0, 3]²: 3×3 quads
@@ -30,6 +41,9 @@
 //! assert_eq!(out.mesh.cells.len(), 9);
 //! assert_eq!((out.stats.quads, out.stats.components, out.stats.boundary_loops), (9, 1, 1));
 //! assert_eq!(out.stats.valence_interior.get(&4), Some(&4));
+//! // the geometric stage: nothing inverted before or after
+//! assert_eq!(out.stats.geometry.before.elements, 9);
+//! assert_eq!((out.stats.geometry.before.inverted, out.stats.geometry.after.inverted), (0, 0));
 //! # Ok::<(), dualex::Error>(())
 //! ```
 #![forbid(unsafe_code)]
@@ -39,6 +53,10 @@ mod extract;
 mod map;
 pub mod stats;
 
+pub use dualex_geom::{
+    Mode as GeometryMode, Options as GeometryOptions, Report as GeometryReport, Summary as Quality,
+    SMOOTH_ROUNDS,
+};
 pub use dualex_io::OutputError;
 pub use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
 pub use extract::{hex, quad, HexOptions, HexOutput, QuadOptions, QuadOutput};
@@ -68,6 +86,13 @@ pub enum Error {
         /// The output's.
         output: Topology,
     },
+    /// With `strict`: elements with a scaled Jacobian ≤ 0 remain after the
+    /// geometric stage (with [`GeometryMode::Off`]: those of the map's
+    /// positions).
+    InvertedElements {
+        /// Inverted elements left.
+        count: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -85,6 +110,12 @@ impl fmt::Display for Error {
                 output.euler,
                 input.boundary_components,
                 output.boundary_components
+            ),
+            Error::InvertedElements { count } => write!(
+                f,
+                "{count} inverted {} (scaled Jacobian ≤ 0) {} after the geometric stage",
+                if *count == 1 { "element" } else { "elements" },
+                if *count == 1 { "remains" } else { "remain" },
             ),
         }
     }
@@ -180,3 +211,5 @@ pub fn write_tet_map(path: impl AsRef<Path>, map: &TetMap) -> Result<(), Error> 
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_geometry;

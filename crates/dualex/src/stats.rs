@@ -4,8 +4,11 @@
 //!
 //! Invariants: the output counts (`quads`/`hexes`, `vertices`, `euler`,
 //! valences) are those of the returned mesh; `topology.matches()` is the
-//! CLI's `topology_matches_input`.
+//! CLI's `topology_matches_input`; `geometry` is the CLI's `geometry`
+//! section (its [`GeometryReport::to_json`] is that JSON), `geometry.after`
+//! the quality of the returned positions.
 
+use crate::GeometryReport;
 use dualex_check::topology::Shape;
 use std::collections::BTreeMap;
 
@@ -76,7 +79,7 @@ pub struct QuadRepairs {
 }
 
 /// The main counts of a quad extraction.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default)]
 pub struct QuadStats {
     /// Input triangles.
     pub input_triangles: usize,
@@ -113,12 +116,21 @@ pub struct QuadStats {
     pub repairs: QuadRepairs,
     /// Input and output topology.
     pub topology: TopologyComparison,
+    /// The geometric stage: quality (scaled Jacobian) before and after,
+    /// what it moved (its time is in `geometry.time_ms`, not in
+    /// [`time_ms`](Self::time_ms)).
+    pub geometry: GeometryReport,
     /// Wall time per stage in milliseconds, in stage order.
     pub time_ms: Vec<(String, f64)>,
 }
 
 impl QuadStats {
-    pub(crate) fn new(s: &dualex_quad::QuadStats, welded: usize, t: TopologyComparison) -> Self {
+    pub(crate) fn new(
+        s: &dualex_quad::QuadStats,
+        welded: usize,
+        t: TopologyComparison,
+        geometry: GeometryReport,
+    ) -> Self {
         QuadStats {
             input_triangles: s.input_triangles,
             reverted_triangles: s.reverted_triangles,
@@ -148,6 +160,7 @@ impl QuadStats {
                 doublets_dissolved: s.doublets.dissolved,
             },
             topology: t,
+            geometry,
             time_ms: s.time_ms.clone(),
         }
     }
@@ -171,7 +184,7 @@ pub struct HexRepairs {
 }
 
 /// The main counts of a hex extraction.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default)]
 pub struct HexStats {
     /// Input tets.
     pub input_tets: usize,
@@ -211,12 +224,21 @@ pub struct HexStats {
     pub repairs: HexRepairs,
     /// Input and output topology.
     pub topology: TopologyComparison,
+    /// The geometric stage: quality (scaled Jacobian) before and after,
+    /// what it moved (its time is in `geometry.time_ms`, not in
+    /// [`time_ms`](Self::time_ms)).
+    pub geometry: GeometryReport,
     /// Wall time per stage in milliseconds, in stage order.
     pub time_ms: Vec<(String, f64)>,
 }
 
 impl HexStats {
-    pub(crate) fn new(s: &dualex_hex::HexStats, welded: usize, t: TopologyComparison) -> Self {
+    pub(crate) fn new(
+        s: &dualex_hex::HexStats,
+        welded: usize,
+        t: TopologyComparison,
+        geometry: GeometryReport,
+    ) -> Self {
         HexStats {
             input_tets: s.input_tets,
             reverted_tets: s.reverted_tets,
@@ -244,6 +266,7 @@ impl HexStats {
                 doublet_chains_dissolved: s.doublets.dissolved,
             },
             topology: t,
+            geometry,
             time_ms: s.time_ms.clone(),
         }
     }

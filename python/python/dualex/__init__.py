@@ -7,7 +7,9 @@
 
 ``quad`` / ``hex`` take numpy arrays (positions (n, 3), simplices (m, 3) or
 (m, 4), per-corner map coordinates (m, 3, 2) or (m, 4, 3)) and keyword
-options; ``read`` / ``write`` / ``write_map`` use the Rust readers and
+options (``untangle="auto"|"off"`` and ``smooth=N`` for the geometric
+stage after the extraction, reported in ``stats["geometry"]``); ``read`` /
+``write`` / ``write_map`` use the Rust readers and
 writers (maps: .obj, .ply, .hexex, .ovm; meshes: .obj, .ply, .vtk, .mesh,
 .ovm); ``inspect``
 returns the map report. Every error is a ``ValueError`` with a one-line

@@ -10,6 +10,7 @@ _Path = Union[str, "os.PathLike[str]"]
 _Floats = npt.ArrayLike
 _Ints = npt.ArrayLike
 _Offset = Literal["auto", "half", "zero"]
+_Untangle = Literal["auto", "off"]
 
 __version__: str
 
@@ -33,6 +34,8 @@ def quad(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
+    untangle: _Untangle = "auto",
+    smooth: Union[None, bool, int] = None,
     return_sources: Literal[False] = False,
     return_uv: Literal[False] = False,
 ) -> _Mesh: ...
@@ -48,6 +51,8 @@ def quad(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
+    untangle: _Untangle = "auto",
+    smooth: Union[None, bool, int] = None,
     return_sources: Literal[True],
     return_uv: Literal[False] = False,
 ) -> _MeshSources: ...
@@ -63,6 +68,8 @@ def quad(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
+    untangle: _Untangle = "auto",
+    smooth: Union[None, bool, int] = None,
     return_sources: bool = False,
     return_uv: bool,
 ) -> Tuple[Any, ...]:
@@ -73,6 +80,18 @@ def quad(
     (q, 4), stats); with return_sources=True also sources (q,) int64: the
     triangle (row of F) holding each quad's node, -1 for a quad that
     closes a hole. Raises ValueError on bad arrays or a refused map.
+
+    The geometric stage follows the extraction (as the CLI's):
+    untangle="auto" puts boundary vertices on the input's boundary and
+    untangles inverted quads (scaled Jacobian <= 0), moving only the
+    vertices near them; untangle="off" keeps the map's positions;
+    smooth=N optimises every quad in at most N rounds (True: the default
+    rounds, 10). stats["geometry"] is the CLI's "geometry" section: mode,
+    before / after ({elements, inverted, degenerate, min, p5, median} of
+    the scaled Jacobian), moved_vertices, max_move, boundary, ... With
+    strict=True, inverted quads left are a ValueError. A bad untangle or
+    smooth value is a ValueError naming the argument.
+
     With return_uv=True also the map coordinates of each cell's corners
     ((q, 4, 2) / (h, 8, 3), the node's chart, node ± ½; NaN for a cell made
     by a repair), after sources when both are asked.
@@ -89,6 +108,8 @@ def hex(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
+    untangle: _Untangle = "auto",
+    smooth: Union[None, bool, int] = None,
     return_sources: Literal[False] = False,
     return_uv: Literal[False] = False,
 ) -> _Mesh: ...
@@ -103,6 +124,8 @@ def hex(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
+    untangle: _Untangle = "auto",
+    smooth: Union[None, bool, int] = None,
     return_sources: Literal[True],
     return_uv: Literal[False] = False,
 ) -> _MeshSources: ...
@@ -117,6 +140,8 @@ def hex(
     grid_offset: _Offset = "auto",
     seed: int = 1,
     strict: bool = False,
+    untangle: _Untangle = "auto",
+    smooth: Union[None, bool, int] = None,
     return_sources: bool = False,
     return_uv: bool,
 ) -> Tuple[Any, ...]:
@@ -126,7 +151,8 @@ def hex(
     tet corner. Returns (positions (k, 3), hexes (h, 8) in VTK order,
     stats); with return_sources=True also sources (h,) int64: the tet (row
     of T) holding each hex's node. Raises ValueError on bad arrays or a
-    refused map.
+    refused map. untangle, smooth, strict and stats["geometry"] as for
+    quad (boundary vertices onto the tets' boundary surface).
     With return_uv=True also the map coordinates of each cell's corners
     ((q, 4, 2) / (h, 8, 3), the node's chart, node ± ½; NaN for a cell made
     by a repair), after sources when both are asked.
