@@ -57,6 +57,9 @@ pub struct Outcome {
 /// lengths of the cells optimised.
 const MAX_STEP: f64 = 0.25;
 
+/// Rounds without fewer inverted corners after which untangling stops.
+const STALL: usize = 60;
+
 struct Local<'a, const D: usize, const K: usize> {
     c: &'a Cells<'a, D, K>,
     /// Active cells (touching a movable vertex).
@@ -70,6 +73,8 @@ struct Local<'a, const D: usize, const K: usize> {
     /// CSR: per var, the (simplex, slot) pairs it appears in.
     start: Vec<usize>,
     uses: Vec<(u32, u8)>,
+    /// Inverted corner simplices at the last evaluation.
+    inverted: std::sync::atomic::AtomicUsize,
 }
 
 impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
@@ -125,6 +130,7 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
             var_of,
             start: count,
             uses,
+            inverted: Default::default(),
         }
     }
 
@@ -181,6 +187,7 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
         // a fixed-order sum: the same bits whatever the thread count
         let e = per.chunks(4096).map(|c| c.iter().map(|p| p.0).sum::<f64>()).sum();
         let d = per.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        self.inverted.store(per.iter().filter(|p| p.1 <= 0.0).count(), std::sync::atomic::Ordering::Relaxed);
         (e, d)
     }
 }
@@ -209,6 +216,7 @@ pub fn optimize<const D: usize, const K: usize>(
     // untangled already: the barrier (ε → 0) keeps it so; else ε = 1 as
     // in the paper, lowered round by round
     let mut eps = if det_min > 0.0 { 1e-10 } else { 1.0 };
+    let mut best = (usize::MAX, 0);
     for round in 0..p.rounds {
         out.rounds = round + 1;
         let bases: Vec<(usize, [[f64; 3]; 3])> =
@@ -289,6 +297,13 @@ pub fn optimize<const D: usize, const K: usize>(
             1e-10
         };
         let settled = (e_prev - e).abs() <= 1e-5 * e.abs();
+        let inverted = l.inverted.load(std::sync::atomic::Ordering::Relaxed);
+        if inverted < best.0 {
+            best = (inverted, round);
+        } else if round >= best.1 + STALL {
+            // no fewer inverted corners for a while: stuck
+            break;
+        }
         if std::env::var_os("DUALEX_GEOM_DEBUG").is_some() {
             let inv = l.simplices.iter().filter(|&&s| crate::energy::det_cofactor(&l.jacobian(s, x)).0 <= 0.0).count();
             eprintln!("round {round}: vars {} cells {} E {e_prev:.6e} -> {e:.6e} det_min {det_min:.3e} inverted simplices {inv} eps {eps:.2e}", l.vars.len(), l.cells.len());

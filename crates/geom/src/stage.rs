@@ -264,7 +264,7 @@ const UNTANGLE_ROUNDS: usize = 100;
 const ITERATIONS: usize = 20;
 
 /// Rings tried around the inverted elements, then the whole mesh.
-const RINGS: [usize; 4] = [2, 4, 8, 16];
+const RINGS: [usize; 3] = [2, 4, 8];
 
 fn run<const D: usize, const K: usize>(
     x: &mut [[f64; 3]],
