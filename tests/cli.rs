@@ -194,7 +194,7 @@ fn stdout_is_data_and_the_summary_is_on_stderr() {
     assert_eq!(st["output"]["quads"], 54);
     let err = stderr(&out);
     assert!(
-        err.contains("done: 54 quads, 56 vertices, 0 boundary loops, 1 component ->"),
+        err.contains("done: 54 quads, 56 vertices, 0 boundary loops, 1 component, scaled Jacobian min 1.00 ->"),
         "{err}"
     );
     let out = dualex(&["quad", &map, "-o", &dir.arg("q.obj")]);

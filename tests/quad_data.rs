@@ -133,9 +133,16 @@ fn qex_maps_give_qex_reference_meshes() {
         let dir = Scratch::new(&format!("qex-{name}"));
         // the map's own positions (the geometric stage moves the vertices
         // near inverted quads: checked below)
-        let (mesh, rep, st) = run(&root.join(format!("{name}_param.obj")), &dir, &["--no-untangle"]);
+        let (mesh, rep, st) = run(
+            &root.join(format!("{name}_param.obj")),
+            &dir,
+            &["--no-untangle"],
+        );
         let (_, _, st_default) = run(&root.join(format!("{name}_param.obj")), &dir, &[]);
-        assert_eq!(st_default["geometry"]["after"]["inverted"], 0, "{name}: {st_default}");
+        assert_eq!(
+            st_default["geometry"]["after"]["inverted"], 0,
+            "{name}: {st_default}"
+        );
         let reference =
             dualex_io::read_polygon_obj(&root.join(format!("{name}_quad.obj"))).expect("reference");
         assert_eq!(

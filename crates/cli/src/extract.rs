@@ -164,6 +164,9 @@ pub fn quad_map(
     verify::add_to_stats(&mut json, &topology);
     if let Some(obj) = json.as_object_mut() {
         obj.insert("geometry".to_string(), geo.to_json());
+        if let Some(t) = obj.get_mut("time_ms").and_then(|t| t.as_object_mut()) {
+            t.insert("geometry".to_string(), geo.time_ms.into());
+        }
         if let Some((key, value)) = extra {
             obj.insert(key.to_string(), value);
         }
@@ -287,6 +290,9 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
     verify::add_to_stats(&mut json, &topology);
     if let Some(obj) = json.as_object_mut() {
         obj.insert("geometry".to_string(), geo.to_json());
+        if let Some(t) = obj.get_mut("time_ms").and_then(|t| t.as_object_mut()) {
+            t.insert("geometry".to_string(), geo.time_ms.into());
+        }
     }
     finish_stats(x, g, &json, &laps, &stats.time_ms)?;
     warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);

@@ -63,7 +63,11 @@ pub fn warn(r: &Report, cell: (&str, &str)) {
     };
     eprintln!(
         "dualex: WARNING: {} (scaled Jacobian ≤ 0) {} ({why}); see \"geometry\" in the stats",
-        count(n, &format!("inverted {}", cell.0), &format!("inverted {}", cell.1)),
+        count(
+            n,
+            &format!("inverted {}", cell.0),
+            &format!("inverted {}", cell.1)
+        ),
         plural(n, "remains", "remain"),
     );
 }
@@ -78,7 +82,10 @@ pub fn done_words(r: &Report) -> String {
             r.before.min, r.before.inverted, r.after.inverted
         );
         if r.boundary_off > 0 {
-            s += &format!(", {} put on the input's boundary", count(r.boundary_off, "boundary vertex", "boundary vertices"));
+            s += &format!(
+                ", {} put on the input's boundary",
+                count(r.boundary_off, "boundary vertex", "boundary vertices")
+            );
         }
         s += &format!("; moved ≤ {:.2} edge lengths)", r.max_move_edges());
     }

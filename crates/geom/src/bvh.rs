@@ -109,7 +109,12 @@ impl Bvh {
         if hi - lo <= LEAF {
             return;
         }
-        let cb = Aabb::of(&self.order[lo..hi].iter().map(|&i| centre(i)).collect::<Vec<_>>());
+        let cb = Aabb::of(
+            &self.order[lo..hi]
+                .iter()
+                .map(|&i| centre(i))
+                .collect::<Vec<_>>(),
+        );
         let axis = (0..3)
             .max_by(|&a, &b| (cb.max[a] - cb.min[a]).total_cmp(&(cb.max[b] - cb.min[b])))
             .unwrap_or(0);
@@ -178,7 +183,9 @@ mod tests {
     fn nearest_point_by_brute_force() {
         let mut s = 12345u64;
         let mut rnd = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (s >> 11) as f64 / (1u64 << 53) as f64
         };
         let pts: Vec<[f64; 3]> = (0..500).map(|_| [rnd(), rnd(), rnd()]).collect();

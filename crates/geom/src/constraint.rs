@@ -113,30 +113,44 @@ impl Constraints {
 
     /// An orthonormal basis of the directions vertex `v` may move in at
     /// `p` (on its set), and their count.
-    pub fn basis(&self, r: Option<&Reference>, v: usize, p: [f64; 3]) -> (usize, [[f64; 3]; 3]) {
+    pub fn basis(&self, r: Option<&Reference>, v: usize, p: [f64; 3]) -> Basis {
+        self.project_basis(r, v, p).1
+    }
+
+    /// The point of vertex `v`'s set nearest `p`, and the [`basis`](Self::basis)
+    /// there (one closest-point query for both).
+    pub fn project_basis(&self, r: Option<&Reference>, v: usize, p: [f64; 3]) -> ([f64; 3], Basis) {
         let id = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
         match (self.kind[v], r) {
-            (Kind::Free, _) => (3, id),
+            (Kind::Free, _) => (p, (3, id)),
             (Kind::Surface, Some(r)) => {
-                let n = r
-                    .closest(p, Some(self.hint[v]))
+                let foot = r.closest(p, Some(self.hint[v]));
+                let n = foot
                     .map(|f| r.normals[f.triangle as usize])
                     .filter(|n| norm(*n) > 0.0)
                     .unwrap_or_else(|| unit(self.hint[v]));
+                let q = foot.map_or(p, |f| f.point);
                 if norm(n) == 0.0 {
-                    return (0, id);
+                    return (q, (0, id));
                 }
                 let t1 = unit(perpendicular(n));
-                (2, [t1, cross(n, t1), [0.0; 3]])
+                (q, (2, [t1, cross(n, t1), [0.0; 3]]))
             }
             (Kind::Curve { boundary }, Some(r)) => match r.closest_on_curves(p, boundary) {
-                Some((s, _, _)) if norm(r.direction(s)) > 0.0 => (1, [r.direction(s), [0.0; 3], [0.0; 3]]),
-                _ => (0, id),
+                Some((s, q, _)) if norm(r.direction(s)) > 0.0 => {
+                    (q, (1, [r.direction(s), [0.0; 3], [0.0; 3]]))
+                }
+                Some((_, q, _)) => (q, (0, id)),
+                None => (p, (0, id)),
             },
-            _ => (0, id),
+            _ => (p, (0, id)),
         }
     }
 }
+
+/// Directions a vertex may move in: their count and an orthonormal basis
+/// (the first `count` rows).
+pub type Basis = (usize, [[f64; 3]; 3]);
 
 /// `a / |a|`, or zero.
 pub(crate) fn unit(a: [f64; 3]) -> [f64; 3] {

@@ -134,6 +134,9 @@ mod tests {
             1e-9,
             0.1,
         );
-        assert!((x[0] - 1.0).abs() < 1e-6 && (x[1] - 1.0).abs() < 1e-6, "{x:?} after {it}");
+        assert!(
+            (x[0] - 1.0).abs() < 1e-6 && (x[1] - 1.0).abs() < 1e-6,
+            "{x:?} after {it}"
+        );
     }
 }

@@ -154,7 +154,13 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
 
     /// Energy, least determinant, and per simplex the gradient on its
     /// `D + 1` vertices.
-    fn evaluate(&self, x: &[[f64; 3]], eps: f64, theta: f64, grads: &mut [[[f64; 3]; 4]]) -> (f64, f64) {
+    fn evaluate(
+        &self,
+        x: &[[f64; 3]],
+        eps: f64,
+        theta: f64,
+        grads: &mut [[[f64; 3]; 4]],
+    ) -> (f64, f64) {
         let per: Vec<(f64, f64)> = self
             .simplices
             .par_iter()
@@ -185,9 +191,15 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
             })
             .collect();
         // a fixed-order sum: the same bits whatever the thread count
-        let e = per.chunks(4096).map(|c| c.iter().map(|p| p.0).sum::<f64>()).sum();
+        let e = per
+            .chunks(4096)
+            .map(|c| c.iter().map(|p| p.0).sum::<f64>())
+            .sum();
         let d = per.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
-        self.inverted.store(per.iter().filter(|p| p.1 <= 0.0).count(), std::sync::atomic::Ordering::Relaxed);
+        self.inverted.store(
+            per.iter().filter(|p| p.1 <= 0.0).count(),
+            std::sync::atomic::Ordering::Relaxed,
+        );
         (e, d)
     }
 }
@@ -200,6 +212,7 @@ pub fn optimize<const D: usize, const K: usize>(
     cons: &Constraints,
     r: Option<&Reference>,
     p: Params,
+    budget: &mut usize,
 ) -> Outcome {
     let l = Local::new(cells, movable, x.len());
     let mut out = Outcome {
@@ -217,10 +230,20 @@ pub fn optimize<const D: usize, const K: usize>(
     // in the paper, lowered round by round
     let mut eps = if det_min > 0.0 { 1e-10 } else { 1.0 };
     let mut best = (usize::MAX, 0);
+    let mut bases: Vec<crate::constraint::Basis> = Vec::new();
     for round in 0..p.rounds {
+        if *budget == 0 {
+            break;
+        }
         out.rounds = round + 1;
-        let bases: Vec<(usize, [[f64; 3]; 3])> =
-            l.vars.iter().map(|&v| cons.basis(r, v as usize, x[v as usize])).collect();
+        let mut evaluations = 0usize;
+        if bases.is_empty() {
+            bases = l
+                .vars
+                .iter()
+                .map(|&v| cons.basis(r, v as usize, x[v as usize]))
+                .collect();
+        }
         let mut offset = vec![0usize; l.vars.len() + 1];
         for (i, b) in bases.iter().enumerate() {
             offset[i + 1] = offset[i] + b.0;
@@ -244,6 +267,7 @@ pub fn optimize<const D: usize, const K: usize>(
         lbfgs::minimize(
             &mut y,
             |y, gy| {
+                evaluations += 1;
                 place(y, &mut xt);
                 let (e, _) = l.evaluate(&xt, eps, p.theta, &mut grads);
                 gx.par_iter_mut().enumerate().for_each(|(i, g)| {
@@ -269,24 +293,33 @@ pub fn optimize<const D: usize, const K: usize>(
         place(&y, &mut xt);
         // the energy the minimisation reached, before the projection
         let (e_min, _) = l.evaluate(&xt, eps, p.theta, &mut grads);
-        for (i, &v) in l.vars.iter().enumerate() {
-            let v = v as usize;
-            let q = match r {
-                // a vertex on a set moves at most `max_step` per round, so
-                // that its tangent plane stays a good guide and its
-                // projection stays on its own sheet of the surface
-                Some(r) if cons.kind[v] != crate::constraint::Kind::Free => {
-                    let d = sub(xt[v], x0[i]);
-                    let len = crate::quality::norm(d);
-                    let k = if len > max_step { max_step / len } else { 1.0 };
-                    cons.project(r, v, [0, 1, 2].map(|a| x0[i][a] + k * d[a]))
+        let moved: Vec<([f64; 3], crate::constraint::Basis)> = l
+            .vars
+            .par_iter()
+            .enumerate()
+            .map(|(i, &v)| {
+                let v = v as usize;
+                match r {
+                    // a vertex on a set moves at most `max_step` per round,
+                    // so that its tangent plane stays a good guide and its
+                    // projection stays on its own sheet of the surface
+                    Some(_) if cons.kind[v] != crate::constraint::Kind::Free => {
+                        let d = sub(xt[v], x0[i]);
+                        let len = crate::quality::norm(d);
+                        let k = if len > max_step { max_step / len } else { 1.0 };
+                        cons.project_basis(r, v, [0, 1, 2].map(|a| x0[i][a] + k * d[a]))
+                    }
+                    _ => (xt[v], bases[i]),
                 }
-                _ => xt[v],
-            };
-            x[v] = q;
+            })
+            .collect();
+        for (i, &v) in l.vars.iter().enumerate() {
+            x[v as usize] = moved[i].0;
         }
+        let next_bases: Vec<crate::constraint::Basis> = moved.into_iter().map(|m| m.1).collect();
         let (e, d) = l.evaluate(x, eps, p.theta, &mut grads);
         det_min = d;
+        *budget = budget.saturating_sub((evaluations + 3) * l.simplices.len());
         // ε by the rule of Garanzha et al.
         let sigma = (1.0 - e / e_prev).max(0.1);
         let _ = e_min;
@@ -296,6 +329,7 @@ pub fn optimize<const D: usize, const K: usize>(
         } else {
             1e-10
         };
+        bases = next_bases;
         let settled = (e_prev - e).abs() <= 1e-5 * e.abs();
         let inverted = l.inverted.load(std::sync::atomic::Ordering::Relaxed);
         if inverted < best.0 {
@@ -305,7 +339,11 @@ pub fn optimize<const D: usize, const K: usize>(
             break;
         }
         if std::env::var_os("DUALEX_GEOM_DEBUG").is_some() {
-            let inv = l.simplices.iter().filter(|&&s| crate::energy::det_cofactor(&l.jacobian(s, x)).0 <= 0.0).count();
+            let inv = l
+                .simplices
+                .iter()
+                .filter(|&&s| crate::energy::det_cofactor(&l.jacobian(s, x)).0 <= 0.0)
+                .count();
             eprintln!("round {round}: vars {} cells {} E {e_prev:.6e} -> {e:.6e} det_min {det_min:.3e} inverted simplices {inv} eps {eps:.2e}", l.vars.len(), l.cells.len());
         }
         if det_min > 0.0 && (p.stop_when_untangled || settled) {

@@ -212,7 +212,10 @@ mod tests {
         let v = hex_scaled_jacobian(&h);
         assert_eq!(v, 0.0);
         let s = Summary::of(&[v, 1.0, 0.5]);
-        assert_eq!((s.inverted, s.degenerate, s.min, s.median), (1, 1, 0.0, 0.5));
+        assert_eq!(
+            (s.inverted, s.degenerate, s.min, s.median),
+            (1, 1, 0.0, 0.5)
+        );
     }
 
     #[test]

@@ -80,7 +80,10 @@ impl Reference {
         for (i, t) in triangles.iter().enumerate() {
             for k in 0..3 {
                 let (a, b) = (t[k], t[(k + 1) % 3]);
-                edges.entry([a.min(b), a.max(b)]).or_default().push(i as u32);
+                edges
+                    .entry([a.min(b), a.max(b)])
+                    .or_default()
+                    .push(i as u32);
             }
         }
         let cos = feature_deg.to_radians().cos();
@@ -176,7 +179,9 @@ impl Reference {
             })
         };
         let found = match hint {
-            Some(h) => near(&|t| dot(self.normals[t as usize], h) > 0.0).or_else(|| near(&|_| true)),
+            Some(h) => {
+                near(&|t| dot(self.normals[t as usize], h) > 0.0).or_else(|| near(&|_| true))
+            }
             None => near(&|_| true),
         }?;
         let point = self.closest_on_triangle(found.0, p);
@@ -189,7 +194,11 @@ impl Reference {
 
     /// The nearest point to `p` on the curves (only boundary segments when
     /// `boundary_only`): the segment, the point, the distance.
-    pub fn closest_on_curves(&self, p: [f64; 3], boundary_only: bool) -> Option<(u32, [f64; 3], f64)> {
+    pub fn closest_on_curves(
+        &self,
+        p: [f64; 3],
+        boundary_only: bool,
+    ) -> Option<(u32, [f64; 3], f64)> {
         self.closest_on(p, |seg| !boundary_only || seg.boundary)
     }
 
@@ -199,7 +208,11 @@ impl Reference {
         self.closest_on(p, |seg| !seg.boundary)
     }
 
-    fn closest_on(&self, p: [f64; 3], keep: impl Fn(&Segment) -> bool) -> Option<(u32, [f64; 3], f64)> {
+    fn closest_on(
+        &self,
+        p: [f64; 3],
+        keep: impl Fn(&Segment) -> bool,
+    ) -> Option<(u32, [f64; 3], f64)> {
         let (s, d2) = self.segment_bvh.nearest(p, |s| {
             let seg = self.segments[s as usize];
             keep(&seg).then(|| {
@@ -224,7 +237,9 @@ impl Reference {
         let ends = self.segments[s as usize].ends;
         ends.iter()
             .map(|&e| (e, norm(sub(self.positions[e as usize], p))))
-            .filter(|&(e, d)| self.corner[e as usize] && d <= radius && self.angle[e as usize] <= max_angle)
+            .filter(|&(e, d)| {
+                self.corner[e as usize] && d <= radius && self.angle[e as usize] <= max_angle
+            })
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(e, _)| self.positions[e as usize])
     }
@@ -247,7 +262,9 @@ impl Reference {
     }
 
     fn closest_on_segment(&self, s: u32, p: [f64; 3]) -> [f64; 3] {
-        let [a, b] = self.segments[s as usize].ends.map(|v| self.positions[v as usize]);
+        let [a, b] = self.segments[s as usize]
+            .ends
+            .map(|v| self.positions[v as usize]);
         let d = sub(b, a);
         let l2 = dot(d, d);
         let t = if l2 > 0.0 {

@@ -64,7 +64,8 @@ impl Report {
         self.moved_vertices > 0
     }
 
-    /// As JSON (the `geometry` section of the stats).
+    /// As JSON (the `geometry` section of the stats; its time goes with
+    /// the other stages' times).
     pub fn to_json(&self) -> serde_json::Value {
         serde_json::json!({
             "mode": self.mode,
@@ -85,7 +86,6 @@ impl Report {
             },
             "rounds": self.rounds,
             "rings": self.rings,
-            "time_ms": self.time_ms,
         })
     }
 }
@@ -210,7 +210,6 @@ pub fn hexes(
     rep
 }
 
-
 /// Vertices on edges of one quad.
 fn boundary_vertices(n: usize, cells: &[[u32; 4]], edges: &[[usize; 2]]) -> Vec<bool> {
     let mut count: std::collections::HashMap<[u32; 2], u32> = std::collections::HashMap::new();
@@ -263,6 +262,13 @@ const UNTANGLE_ROUNDS: usize = 100;
 /// stays near its tangent plane between projections.
 const ITERATIONS: usize = 20;
 
+/// The stage's work (corner-simplex evaluations) is at most this many per
+/// corner simplex of the mesh, or [`MIN_BUDGET`] on small meshes.
+const BUDGET_PER_SIMPLEX: usize = 20;
+
+/// The least work allowed (about 3 s on the machine of BENCHMARKS.md).
+const MIN_BUDGET: usize = 20_000_000;
+
 /// Rings tried around the inverted elements, then the whole mesh.
 const RINGS: [usize; 3] = [2, 4, 8];
 
@@ -292,17 +298,26 @@ fn run<const D: usize, const K: usize>(
     }
     rep.mean_edge = if n > 0 { sum / n as f64 } else { 0.0 };
     let boundary = opts.boundary && rep.boundary_vertices > 0;
-    if opts.mode == Mode::Off || (!boundary && rep.before.inverted == 0 && opts.mode == Mode::Auto) {
+    if opts.mode == Mode::Off || (!boundary && rep.before.inverted == 0 && opts.mode == Mode::Auto)
+    {
         return rep;
     }
     let r = reference.unwrap_or_else(make);
     let tol = ON_BOUNDARY * rep.mean_edge.max(f64::MIN_POSITIVE);
-    let mut cons = Constraints::classify(&r, x, &input.on_boundary, input.hint.clone(), input.role, tol);
+    let mut cons = Constraints::classify(
+        &r,
+        x,
+        &input.on_boundary,
+        input.hint.clone(),
+        input.role,
+        tol,
+    );
     let start = x.to_vec();
     let around = vertex_cells(x.len(), cells);
     // 3. boundary vertices onto the input's boundary
     if boundary {
-        let corners = mesh_corners_to_input_corners(x, &input, &r, &around, &mut cons, rep.mean_edge);
+        let corners =
+            mesh_corners_to_input_corners(x, &input, &r, &around, &mut cons, rep.mean_edge);
         for v in 0..x.len() {
             if !input.on_boundary[v] || cons.kind[v] == Kind::Fixed {
                 continue;
@@ -315,8 +330,12 @@ fn run<const D: usize, const K: usize>(
                 rep.boundary_off += 1;
             }
         }
-        rep.boundary_off += corners;
+        let _ = corners;
         rep.boundary_released = release_flat_corners(x, &start, &input, &around, &mut cons);
+        // those on the boundary now that were not
+        rep.boundary_off = (0..x.len())
+            .filter(|&v| input.on_boundary[v] && x[v] != start[v])
+            .count();
     }
     if rep.boundary_off == 0 && rep.before.inverted == 0 && opts.mode == Mode::Auto {
         return rep;
@@ -325,7 +344,10 @@ fn run<const D: usize, const K: usize>(
     let h: Vec<f64> = cells
         .iter()
         .map(|c| {
-            let l = input.edges.iter().map(|e| norm(sub(start[c[e[1]] as usize], start[c[e[0]] as usize])));
+            let l = input
+                .edges
+                .iter()
+                .map(|e| norm(sub(start[c[e[1]] as usize], start[c[e[0]] as usize])));
             let m = l.sum::<f64>() / input.edges.len() as f64;
             if m > 0.0 {
                 m
@@ -343,6 +365,9 @@ fn run<const D: usize, const K: usize>(
         h,
     };
     let movable_kind: Vec<bool> = cons.kind.iter().map(|k| k.dof() > 0).collect();
+    // the work allowed, in corner-simplex evaluations: the same for every
+    // thread count (a time limit would not be)
+    let mut budget = (BUDGET_PER_SIMPLEX * cells.len() * input.corners.len()).max(MIN_BUDGET);
     if let Mode::Smooth(rounds) = opts.mode {
         let p = Params {
             theta: 0.5,
@@ -350,13 +375,20 @@ fn run<const D: usize, const K: usize>(
             iterations: ITERATIONS,
             stop_when_untangled: false,
         };
-        rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p).rounds;
+        rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p, &mut budget).rounds;
     }
     // untangling near what is still inverted (after smoothing too), in
-    // growing rings
+    // growing rings; the positions with the fewest inverted elements are
+    // kept (an attempt that makes things worse is undone)
+    let inverted_of = |v: &[f64]| v.iter().filter(|&&v| v <= 0.0).count();
+    let mut best = (inverted_of(&measure(x)), x.to_vec());
     for &rings in &RINGS {
         let bad = measure(x);
-        if bad.iter().all(|&v| v > 0.0) {
+        let now = inverted_of(&bad);
+        if now < best.0 {
+            best = (now, x.to_vec());
+        }
+        if now == 0 || budget == 0 {
             break;
         }
         let mut region = vec![false; x.len()];
@@ -368,21 +400,38 @@ fn run<const D: usize, const K: usize>(
             }
         }
         grow(&mut region, &around, cells, rings);
-        let movable: Vec<bool> = region.iter().zip(&movable_kind).map(|(a, b)| *a && *b).collect();
+        let movable: Vec<bool> = region
+            .iter()
+            .zip(&movable_kind)
+            .map(|(a, b)| *a && *b)
+            .collect();
         let p = Params {
             theta: 0.5,
             rounds: UNTANGLE_ROUNDS,
             iterations: ITERATIONS,
             stop_when_untangled: true,
         };
-        rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p).rounds;
+        rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p, &mut budget).rounds;
         rep.rings = rings;
+    }
+    if inverted_of(&measure(x)) > best.0 {
+        x.copy_from_slice(&best.1);
     }
     rep.after = Summary::of(&measure(x));
     if std::env::var_os("DUALEX_GEOM_DEBUG").is_some() {
         for (ci, v) in measure(x).iter().enumerate() {
             if *v <= 0.0 {
-                let k: Vec<_> = cells[ci].iter().map(|&u| (u, cons.kind[u as usize], around.0[u as usize + 1] - around.0[u as usize], norm(sub(x[u as usize], start[u as usize])) / rep.mean_edge)).collect();
+                let k: Vec<_> = cells[ci]
+                    .iter()
+                    .map(|&u| {
+                        (
+                            u,
+                            cons.kind[u as usize],
+                            around.0[u as usize + 1] - around.0[u as usize],
+                            norm(sub(x[u as usize], start[u as usize])) / rep.mean_edge,
+                        )
+                    })
+                    .collect();
                 eprintln!("inverted {ci} {v:.3}: {k:?}");
             }
         }
@@ -423,7 +472,10 @@ fn mesh_corners_to_input_corners<const D: usize, const K: usize>(
     };
     let mut moved = 0;
     for v in 0..x.len() {
-        if !input.on_boundary[v] || around.0[v + 1] - around.0[v] != 1 || cons.kind[v] == Kind::Fixed {
+        if !input.on_boundary[v]
+            || around.0[v + 1] - around.0[v] != 1
+            || cons.kind[v] == Kind::Fixed
+        {
             continue;
         }
         let q = cons.project(r, v, x[v]);
@@ -465,7 +517,11 @@ fn release_flat_corners<const D: usize, const K: usize>(
         for e in input.edges {
             let (a, b) = (cell[e[0]] as usize, cell[e[1]] as usize);
             for (u, w) in [(a, b), (b, a)] {
-                if u == v && input.on_boundary[w] && cons.kind[w] != Kind::Fixed && cons.kind[w] != free {
+                if u == v
+                    && input.on_boundary[w]
+                    && cons.kind[w] != Kind::Fixed
+                    && cons.kind[w] != free
+                {
                     x[w] = start[w];
                     cons.kind[w] = free;
                     released += 1;
@@ -478,7 +534,12 @@ fn release_flat_corners<const D: usize, const K: usize>(
 
 /// The scaled Jacobian of cell `ci` at its corner on vertex `v` (in the
 /// cell's frame: against its normal for a quad).
-fn corner_value<const D: usize, const K: usize>(x: &[[f64; 3]], input: &Input<D, K>, ci: usize, v: usize) -> f64 {
+fn corner_value<const D: usize, const K: usize>(
+    x: &[[f64; 3]],
+    input: &Input<D, K>,
+    ci: usize,
+    v: usize,
+) -> f64 {
     let cell = &input.cells[ci];
     let Some(k) = cell.iter().position(|&u| u as usize == v) else {
         return 1.0;
@@ -524,7 +585,12 @@ fn vertex_cells<const K: usize>(n: usize, cells: &[[u32; K]]) -> (Vec<usize>, Ve
 }
 
 /// Adds `rings` rings of cells around `region`.
-fn grow<const K: usize>(region: &mut [bool], around: &(Vec<usize>, Vec<u32>), cells: &[[u32; K]], rings: usize) {
+fn grow<const K: usize>(
+    region: &mut [bool],
+    around: &(Vec<usize>, Vec<u32>),
+    cells: &[[u32; K]],
+    rings: usize,
+) {
     for _ in 0..rings {
         let now: Vec<usize> = (0..region.len()).filter(|&v| region[v]).collect();
         for v in now {

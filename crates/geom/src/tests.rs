@@ -9,7 +9,10 @@ use crate::{hexes, quads, Mode, Options};
 struct Rng(u64);
 impl Rng {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     }
 }
@@ -91,14 +94,21 @@ fn tangled_planar_grid_is_untangled_in_the_plane() {
     }
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
     let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
-    assert!(r.before.inverted > 3, "the test must tangle: {:?}", r.before);
+    assert!(
+        r.before.inverted > 3,
+        "the test must tangle: {:?}",
+        r.before
+    );
     assert_eq!(r.after.inverted, 0, "{r:?}");
     assert!(r.moved());
     for (a, b) in x.iter().zip(&p) {
         assert_eq!(a[2], 0.0, "left the plane");
         if boundary_2d(*b, n as f64) {
             // boundary vertices stay on the boundary (corners in place)
-            assert!(boundary_2d(*a, n as f64) || (a[0] - b[0]).abs() < 1e-9, "{a:?} from {b:?}");
+            assert!(
+                boundary_2d(*a, n as f64) || (a[0] - b[0]).abs() < 1e-9,
+                "{a:?} from {b:?}"
+            );
         }
     }
 }
@@ -109,12 +119,18 @@ fn clean_meshes_are_left_bit_for_bit() {
     let mut x = p.clone();
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
     let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
-    assert_eq!((r.moved_vertices, r.before.inverted, r.boundary_off), (0, 0, 0));
+    assert_eq!(
+        (r.moved_vertices, r.before.inverted, r.boundary_off),
+        (0, 0, 0)
+    );
     assert_eq!(x, p);
     let (p, h, t) = hex_grid(3);
     let mut x = p.clone();
     let r = hexes(&mut x, &h, &p, &t, &Options::default());
-    assert_eq!((r.moved_vertices, r.before.inverted, r.boundary_off), (0, 0, 0));
+    assert_eq!(
+        (r.moved_vertices, r.before.inverted, r.boundary_off),
+        (0, 0, 0)
+    );
     assert!((r.before.min - 1.0).abs() < 1e-12);
     assert_eq!(x, p);
 }
@@ -130,7 +146,10 @@ fn boundary_vertices_go_onto_the_boundary_without_inverting() {
     for v in x.iter_mut() {
         let corner = (v[0] == 0.0 || v[0] == n as f64) && (v[1] == 0.0 || v[1] == n as f64);
         if boundary_2d(*v, n as f64) && !corner {
-            let inward = [(n as f64 / 2.0 - v[0]).signum(), (n as f64 / 2.0 - v[1]).signum()];
+            let inward = [
+                (n as f64 / 2.0 - v[0]).signum(),
+                (n as f64 / 2.0 - v[1]).signum(),
+            ];
             let a = 0.6 * (rng.next() + 1.0) / 2.0;
             if v[0] == 0.0 || v[0] == n as f64 {
                 v[0] += a * inward[0];
@@ -143,7 +162,10 @@ fn boundary_vertices_go_onto_the_boundary_without_inverting() {
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
     let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
     assert!(r.boundary_off > 10, "{r:?}");
-    assert!(r.boundary_distance[0] > 0.1 && r.boundary_distance[1] <= 1e-9 * 8.5, "{r:?}");
+    assert!(
+        r.boundary_distance[0] > 0.1 && r.boundary_distance[1] <= 1e-9 * 8.5,
+        "{r:?}"
+    );
     assert_eq!(r.after.inverted, 0, "{r:?}");
     for (a, b) in x.iter().zip(&p) {
         if boundary_2d(*b, n as f64) {
@@ -172,7 +194,11 @@ fn tangled_hex_grid_is_untangled_with_its_boundary_on_the_cube() {
     for (a, b) in x.iter().zip(&p) {
         if on(*b) {
             // on the cube's boundary still (boundary vertices are on it)
-            assert!(a.iter().any(|&c| c.abs() < 1e-9 || (c - n as f64).abs() < 1e-9), "{a:?}");
+            assert!(
+                a.iter()
+                    .any(|&c| c.abs() < 1e-9 || (c - n as f64).abs() < 1e-9),
+                "{a:?}"
+            );
         }
     }
 }
@@ -216,7 +242,10 @@ fn curved_surface_untangled_on_the_surface() {
     let inner = 3.0 * (std::f64::consts::PI / m as f64).cos();
     for v in &x {
         let rad = norm([v[0], v[1], 0.0]);
-        assert!(rad <= 3.0 + 1e-9 && rad >= inner - 1e-9, "{v:?} off the surface");
+        assert!(
+            rad <= 3.0 + 1e-9 && rad >= inner - 1e-9,
+            "{v:?} off the surface"
+        );
     }
 }
 
