@@ -33,7 +33,7 @@ pub mod lbfgs;
 pub mod optimize;
 pub mod quality;
 pub mod reference;
-mod stage;
+pub mod stage;
 #[cfg(test)]
 mod tests;
 

@@ -141,26 +141,40 @@ impl Reference {
 
     /// The reference of a tet mesh: its boundary triangles, outward.
     pub fn volume_boundary(positions: &[[f64; 3]], tets: &[[u32; 4]], feature_deg: f64) -> Self {
-        let mut count: HashMap<[u32; 3], (u32, [u32; 3])> = HashMap::new();
-        for t in tets {
-            let p = t.map(|v| positions[v as usize]);
-            let vol = dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
-            // faces opposite 0..3, outward for a positive tet
-            for f in [[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]] {
-                let mut tri = f.map(|k| t[k]);
-                if vol < 0.0 {
-                    tri.swap(1, 2);
-                }
-                let mut key = tri;
-                key.sort_unstable();
-                count.entry(key).or_insert((0, tri)).0 += 1;
-            }
-        }
-        let mut tris: Vec<[u32; 3]> = count
-            .into_values()
-            .filter(|(n, _)| *n == 1)
-            .map(|(_, t)| t)
+        use rayon::prelude::*;
+        // every face with its sorted key; a face of one tet is boundary
+        let mut faces: Vec<([u32; 3], [u32; 3])> = tets
+            .par_iter()
+            .flat_map_iter(|t| {
+                let p = t.map(|v| positions[v as usize]);
+                let vol = dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
+                // faces opposite 0..3, outward for a positive tet
+                [[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]]
+                    .into_iter()
+                    .map(move |f| {
+                        let mut tri = f.map(|k| t[k]);
+                        if vol < 0.0 {
+                            tri.swap(1, 2);
+                        }
+                        let mut key = tri;
+                        key.sort_unstable();
+                        (key, tri)
+                    })
+            })
             .collect();
+        faces.par_sort_unstable();
+        let mut tris = Vec::new();
+        let mut i = 0;
+        while i < faces.len() {
+            let mut j = i + 1;
+            while j < faces.len() && faces[j].0 == faces[i].0 {
+                j += 1;
+            }
+            if j - i == 1 {
+                tris.push(faces[i].1);
+            }
+            i = j;
+        }
         tris.sort_unstable();
         Self::surface(positions, &tris, feature_deg)
     }

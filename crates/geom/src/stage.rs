@@ -212,19 +212,30 @@ pub fn hexes(
 
 /// Vertices on edges of one quad.
 fn boundary_vertices(n: usize, cells: &[[u32; 4]], edges: &[[usize; 2]]) -> Vec<bool> {
-    let mut count: std::collections::HashMap<[u32; 2], u32> = std::collections::HashMap::new();
-    for c in cells {
-        for e in edges {
-            let (a, b) = (c[e[0]], c[e[1]]);
-            *count.entry([a.min(b), a.max(b)]).or_default() += 1;
-        }
-    }
+    use rayon::prelude::*;
+    // edges as sorted keys: an edge of one quad appears once
+    let mut keys: Vec<u64> = cells
+        .par_iter()
+        .flat_map_iter(|c| {
+            edges.iter().map(move |e| {
+                let (a, b) = (c[e[0]], c[e[1]]);
+                (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
+            })
+        })
+        .collect();
+    keys.par_sort_unstable();
     let mut out = vec![false; n];
-    for (e, k) in count {
-        if k == 1 {
-            out[e[0] as usize] = true;
-            out[e[1] as usize] = true;
+    let mut i = 0;
+    while i < keys.len() {
+        let mut j = i + 1;
+        while j < keys.len() && keys[j] == keys[i] {
+            j += 1;
         }
+        if j - i == 1 {
+            out[(keys[i] >> 32) as usize] = true;
+            out[(keys[i] & 0xffff_ffff) as usize] = true;
+        }
+        i = j;
     }
     out
 }
@@ -314,28 +325,40 @@ fn run<const D: usize, const K: usize>(
     );
     let start = x.to_vec();
     let around = vertex_cells(x.len(), cells);
-    // 3. boundary vertices onto the input's boundary
+    // 3. boundary vertices onto the input's boundary: all of them (to
+    // 1e-9 of the bounding box) once one is farther than `tol` or the
+    // stage untangles or smooths anyway; none when all are within `tol` (a
+    // valid map's file rounds its numbers) and nothing else is to be done
     if boundary {
-        let corners =
+        let exact = 1e-9 * r.diagonal;
+        let far = (0..x.len()).any(|v| {
+            input.on_boundary[v]
+                && cons.kind[v] != Kind::Fixed
+                && norm(sub(cons.project(&r, v, x[v]), x[v])) > tol
+        });
+        if far || rep.before.inverted > 0 || opts.mode != Mode::Auto {
             mesh_corners_to_input_corners(x, &input, &r, &around, &mut cons, rep.mean_edge);
-        for v in 0..x.len() {
-            if !input.on_boundary[v] || cons.kind[v] == Kind::Fixed {
-                continue;
+            for v in 0..x.len() {
+                if !input.on_boundary[v] {
+                    continue;
+                }
+                let q = match cons.kind[v] {
+                    // a vertex fixed at a corner of the curves: exactly there
+                    Kind::Fixed => r.nearest_corner(x[v], tol, f64::INFINITY).unwrap_or(x[v]),
+                    _ => cons.project(&r, v, x[v]),
+                };
+                let d = norm(sub(q, x[v]));
+                rep.boundary_distance[0] = rep.boundary_distance[0].max(d);
+                if d > exact {
+                    x[v] = q;
+                }
             }
-            let q = cons.project(&r, v, x[v]);
-            let d = norm(sub(q, x[v]));
-            rep.boundary_distance[0] = rep.boundary_distance[0].max(d);
-            if d > tol {
-                x[v] = q;
-                rep.boundary_off += 1;
-            }
+            rep.boundary_released = release_flat_corners(x, &start, &input, &around, &mut cons);
+            // those on the boundary now that were not
+            rep.boundary_off = (0..x.len())
+                .filter(|&v| input.on_boundary[v] && x[v] != start[v])
+                .count();
         }
-        let _ = corners;
-        rep.boundary_released = release_flat_corners(x, &start, &input, &around, &mut cons);
-        // those on the boundary now that were not
-        rep.boundary_off = (0..x.len())
-            .filter(|&v| input.on_boundary[v] && x[v] != start[v])
-            .count();
     }
     if rep.boundary_off == 0 && rep.before.inverted == 0 && opts.mode == Mode::Auto {
         return rep;
@@ -442,13 +465,18 @@ fn run<const D: usize, const K: usize>(
             rep.moved_vertices += 1;
             rep.max_move = rep.max_move.max(d);
         }
-        let on_curve_or_surface = match input.role {
+        // the distance to the input's boundary (curves in 2D, surface in
+        // 3D) of the boundary vertices kept on it
+        let on_it = match input.role {
             Role::Surface => matches!(cons.kind[v], Kind::Curve { boundary: true }),
-            Role::Volume => cons.kind[v] != Kind::Free && cons.kind[v] != Kind::Fixed,
+            Role::Volume => cons.kind[v] != Kind::Free,
         };
-        if boundary && input.on_boundary[v] && on_curve_or_surface {
-            let q = cons.project(&r, v, x[v]);
-            rep.boundary_distance[1] = rep.boundary_distance[1].max(norm(sub(q, x[v])));
+        if boundary && input.on_boundary[v] && on_it {
+            let d = match input.role {
+                Role::Surface => r.closest_on_curves(x[v], true).map_or(0.0, |c| c.2),
+                Role::Volume => r.closest(x[v], None).map_or(0.0, |f| f.distance),
+            };
+            rep.boundary_distance[1] = rep.boundary_distance[1].max(d);
         }
     }
     rep
@@ -458,6 +486,7 @@ fn run<const D: usize, const K: usize>(
 /// corner of the input's curves within half an edge (on a surface: one
 /// whose interior angle is at most [`MESH_CORNER_ANGLE`]) and become
 /// fixed there; the count of those moved.
+#[allow(clippy::needless_range_loop)]
 fn mesh_corners_to_input_corners<const D: usize, const K: usize>(
     x: &mut [[f64; 3]],
     input: &Input<D, K>,
