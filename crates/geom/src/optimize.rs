@@ -253,9 +253,9 @@ pub fn optimize<const D: usize, const K: usize>(
         let place = |y: &[f64], xt: &mut [[f64; 3]]| {
             for (i, &v) in l.vars.iter().enumerate() {
                 let mut q = x0[i];
-                for k in 0..bases[i].0 {
-                    for a in 0..3 {
-                        q[a] += y[offset[i] + k] * bases[i].1[k][a];
+                for (k, b) in bases[i].1.iter().take(bases[i].0).enumerate() {
+                    for (qa, ba) in q.iter_mut().zip(b) {
+                        *qa += y[offset[i] + k] * ba;
                     }
                 }
                 xt[v as usize] = q;
@@ -337,14 +337,6 @@ pub fn optimize<const D: usize, const K: usize>(
         } else if round >= best.1 + STALL {
             // no fewer inverted corners for a while: stuck
             break;
-        }
-        if std::env::var_os("DUALEX_GEOM_DEBUG").is_some() {
-            let inv = l
-                .simplices
-                .iter()
-                .filter(|&&s| crate::energy::det_cofactor(&l.jacobian(s, x)).0 <= 0.0)
-                .count();
-            eprintln!("round {round}: vars {} cells {} E {e_prev:.6e} -> {e:.6e} det_min {det_min:.3e} inverted simplices {inv} eps {eps:.2e}", l.vars.len(), l.cells.len());
         }
         if det_min > 0.0 && (p.stop_when_untangled || settled) {
             break;

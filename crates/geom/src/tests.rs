@@ -17,9 +17,12 @@ impl Rng {
     }
 }
 
+/// Positions, cells of `K` corners, and simplices of `S` corners.
+type Grid<const K: usize, const S: usize> = (Vec<[f64; 3]>, Vec<[u32; K]>, Vec<[u32; S]>);
+
 /// An n×n quad grid on [0, n]², and its triangles (2 per quad, quad q's
 /// first is 2q).
-fn quad_grid(n: usize) -> (Vec<[f64; 3]>, Vec<[u32; 4]>, Vec<[u32; 3]>) {
+fn quad_grid(n: usize) -> Grid<4, 3> {
     let id = |i: usize, j: usize| (j * (n + 1) + i) as u32;
     let mut p = Vec::new();
     for j in 0..=n {
@@ -41,7 +44,7 @@ fn quad_grid(n: usize) -> (Vec<[f64; 3]>, Vec<[u32; 4]>, Vec<[u32; 3]>) {
 }
 
 /// An n³ hex grid on [0, n]³ and its 6 tets per hex.
-fn hex_grid(n: usize) -> (Vec<[f64; 3]>, Vec<[u32; 8]>, Vec<[u32; 4]>) {
+fn hex_grid(n: usize) -> Grid<8, 4> {
     let id = |i: usize, j: usize, k: usize| ((k * (n + 1) + j) * (n + 1) + i) as u32;
     let mut p = Vec::new();
     for k in 0..=n {
