@@ -68,8 +68,6 @@ struct Local<'a, const D: usize, const K: usize> {
     simplices: Vec<(u32, u8)>,
     /// Movable vertices (global ids).
     vars: Vec<u32>,
-    /// Per global vertex: its index in `vars`, or `u32::MAX`.
-    var_of: Vec<u32>,
     /// CSR: per var, the (simplex, slot) pairs it appears in.
     start: Vec<usize>,
     uses: Vec<(u32, u8)>,
@@ -127,7 +125,6 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
             cells,
             simplices,
             vars,
-            var_of,
             start: count,
             uses,
             inverted: Default::default(),
@@ -291,8 +288,6 @@ pub fn optimize<const D: usize, const K: usize>(
             0.05 * mean_h,
         );
         place(&y, &mut xt);
-        // the energy the minimisation reached, before the projection
-        let (e_min, _) = l.evaluate(&xt, eps, p.theta, &mut grads);
         let moved: Vec<([f64; 3], crate::constraint::Basis)> = l
             .vars
             .par_iter()
@@ -322,7 +317,6 @@ pub fn optimize<const D: usize, const K: usize>(
         *budget = budget.saturating_sub((evaluations + 3) * l.simplices.len());
         // ε by the rule of Garanzha et al.
         let sigma = (1.0 - e / e_prev).max(0.1);
-        let _ = e_min;
         let mu = (1.0 - sigma) * crate::energy::chi(det_min, eps);
         eps = if det_min < mu {
             2.0 * (mu * (mu - det_min)).sqrt()
@@ -343,6 +337,5 @@ pub fn optimize<const D: usize, const K: usize>(
         }
     }
     out.det_min = det_min;
-    let _ = &l.var_of;
     out
 }

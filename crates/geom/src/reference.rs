@@ -217,7 +217,6 @@ impl Reference {
     }
 
     /// The nearest point to `p` on the feature curves (not the boundary).
-    #[allow(dead_code)]
     pub fn closest_on_features(&self, p: [f64; 3]) -> Option<(u32, [f64; 3], f64)> {
         self.closest_on(p, |seg| !seg.boundary)
     }

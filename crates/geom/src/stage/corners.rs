@@ -1,0 +1,123 @@
+//! The corners of the mesh on the input's boundary (step 3 of the
+//! stage): a boundary vertex of one cell goes onto a convex corner of the
+//! input's curves when one is near; where it is not, the cell would be flat
+//! or inverted with all its boundary vertices on a smooth or concave
+//! boundary, and its neighbours are released instead.
+//!
+//! Input: positions, the stage's [`Input`], the reference, the cells
+//! around each vertex, the constraints. Output: positions and constraints
+//! changed in place; counts.
+
+use super::{Input, FLAT, MESH_CORNER_ANGLE};
+use crate::constraint::{Constraints, Kind, Role};
+use crate::quality::{self, norm, sub};
+use crate::reference::Reference;
+
+/// The corners of the mesh (boundary vertices of one cell) go onto a
+/// corner of the input's curves within half an edge (on a surface: one
+/// whose interior angle is at most [`MESH_CORNER_ANGLE`]) and become
+/// fixed there; the count of those moved.
+#[allow(clippy::needless_range_loop)]
+pub(super) fn mesh_corners_to_input_corners<const D: usize, const K: usize>(
+    x: &mut [[f64; 3]],
+    input: &Input<D, K>,
+    r: &Reference,
+    around: &(Vec<usize>, Vec<u32>),
+    cons: &mut Constraints,
+    mean_edge: f64,
+) -> usize {
+    let max_angle = match input.role {
+        Role::Surface => MESH_CORNER_ANGLE.to_radians(),
+        Role::Volume => f64::INFINITY,
+    };
+    let mut moved = 0;
+    for v in 0..x.len() {
+        if !input.on_boundary[v]
+            || around.0[v + 1] - around.0[v] != 1
+            || cons.kind[v] == Kind::Fixed
+        {
+            continue;
+        }
+        let q = cons.project(r, v, x[v]);
+        if let Some(c) = r.nearest_corner(q, 0.5 * mean_edge, max_angle) {
+            moved += usize::from(c != x[v]);
+            x[v] = c;
+            cons.kind[v] = Kind::Fixed;
+        }
+    }
+    moved
+}
+
+/// A corner of the mesh on a smooth or concave part of the input's
+/// boundary, its cell's neighbours on the boundary too, leaves that cell
+/// flat or inverted there (value ≤ [`FLAT`]): those neighbours go back
+/// where the map put them (`start`) and are released from the boundary
+/// (free on the surface or in the volume). The count released.
+pub(super) fn release_flat_corners<const D: usize, const K: usize>(
+    x: &mut [[f64; 3]],
+    start: &[[f64; 3]],
+    input: &Input<D, K>,
+    around: &(Vec<usize>, Vec<u32>),
+    cons: &mut Constraints,
+) -> usize {
+    let free = match input.role {
+        Role::Surface => Kind::Surface,
+        Role::Volume => Kind::Free,
+    };
+    let mut released = 0;
+    for v in 0..x.len() {
+        if !input.on_boundary[v] || around.0[v + 1] - around.0[v] != 1 {
+            continue;
+        }
+        let ci = around.1[around.0[v]] as usize;
+        let cell = &input.cells[ci];
+        if corner_value(x, input, ci, v) > FLAT {
+            continue;
+        }
+        for e in input.edges {
+            let (a, b) = (cell[e[0]] as usize, cell[e[1]] as usize);
+            for (u, w) in [(a, b), (b, a)] {
+                if u == v
+                    && input.on_boundary[w]
+                    && cons.kind[w] != Kind::Fixed
+                    && cons.kind[w] != free
+                {
+                    x[w] = start[w];
+                    cons.kind[w] = free;
+                    released += 1;
+                }
+            }
+        }
+    }
+    released
+}
+
+/// The scaled Jacobian of cell `ci` at its corner on vertex `v` (in the
+/// cell's frame: against its normal for a quad).
+fn corner_value<const D: usize, const K: usize>(
+    x: &[[f64; 3]],
+    input: &Input<D, K>,
+    ci: usize,
+    v: usize,
+) -> f64 {
+    let cell = &input.cells[ci];
+    let Some(k) = cell.iter().position(|&u| u as usize == v) else {
+        return 1.0;
+    };
+    let corner = input.corners[k];
+    let frame = &input.frames[ci];
+    let mut j = [[0.0; D]; D];
+    let mut lengths = 1.0;
+    for c in 0..D {
+        let e = sub(x[cell[corner[c + 1]] as usize], x[v]);
+        lengths *= norm(e);
+        for (r, row) in frame.iter().enumerate() {
+            j[r][c] = quality::dot(*row, e);
+        }
+    }
+    if lengths > 0.0 {
+        crate::energy::det_cofactor(&j).0 / lengths
+    } else {
+        0.0
+    }
+}
