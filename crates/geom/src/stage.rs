@@ -276,6 +276,10 @@ const UNTANGLE_ROUNDS: usize = 100;
 /// stays near its tangent plane between projections.
 const ITERATIONS: usize = 20;
 
+/// L-BFGS iterations per smoothing round: a smooth mesh needs few, and
+/// the whole mesh is optimised.
+const SMOOTH_ITERATIONS: usize = 8;
+
 /// The stage's work (corner-simplex evaluations) is at most this many per
 /// corner simplex of the mesh, or [`MIN_BUDGET`] on small meshes.
 const BUDGET_PER_SIMPLEX: usize = 20;
@@ -399,7 +403,7 @@ fn run<const D: usize, const K: usize>(
         let p = Params {
             theta: 0.5,
             rounds: rounds.max(1),
-            iterations: ITERATIONS,
+            iterations: SMOOTH_ITERATIONS,
             stop_when_untangled: false,
         };
         rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p, &mut budget).rounds;
