@@ -4,7 +4,7 @@
 //! [`dualex::HexStats`]); nested structs (`repairs`, `topology`) are nested
 //! dicts, valence histograms are `{valence: count}` with int keys,
 //! `grid_offset` is `"half"` or `"zero"`, `time_ms` is `{stage: ms}` in
-//! stage order, `geometry` is the CLI's `geometry` section of the stats
+//! stage order (the geometric stage last, as `"geometry"`), `geometry` is the CLI's `geometry` section of the stats
 //! (the geometric stage's report, [`crate::geometry::report`]). The map report is the CLI's `inspect --json` object.
 
 use dualex::{GridOffset, HexStats, QuadStats};
@@ -86,7 +86,9 @@ pub fn quad_stats<'py>(py: Python<'py>, s: &QuadStats) -> PyResult<Bound<'py, Py
     d.set_item("repairs", rd)?;
     d.set_item("topology", topology(py, &s.topology)?)?;
     d.set_item("geometry", crate::geometry::report(py, &s.geometry)?)?;
-    d.set_item("time_ms", times(py, &s.time_ms)?)?;
+    let t = times(py, &s.time_ms)?;
+    t.set_item("geometry", s.geometry.time_ms)?;
+    d.set_item("time_ms", t)?;
     Ok(d)
 }
 
@@ -124,7 +126,9 @@ pub fn hex_stats<'py>(py: Python<'py>, s: &HexStats) -> PyResult<Bound<'py, PyDi
     d.set_item("repairs", rd)?;
     d.set_item("topology", topology(py, &s.topology)?)?;
     d.set_item("geometry", crate::geometry::report(py, &s.geometry)?)?;
-    d.set_item("time_ms", times(py, &s.time_ms)?)?;
+    let t = times(py, &s.time_ms)?;
+    t.set_item("geometry", s.geometry.time_ms)?;
+    d.set_item("time_ms", t)?;
     Ok(d)
 }
 
