@@ -59,7 +59,7 @@ pub fn warn(r: &Report, cell: (&str, &str)) {
     let why = if r.mode == "off" {
         "--no-untangle kept the map's positions"
     } else {
-        "the combinatorics may force them: see docs/messy-cases.md"
+        "the untangler could not remove them, or the combinatorics force them: see docs/messy-cases.md"
     };
     eprintln!(
         "dualex: WARNING: {} (scaled Jacobian ≤ 0) {} ({why}); see \"geometry\" in the stats",
