@@ -95,17 +95,12 @@ fn quad_case(
             return Err(format!("vertex {v} is {d:e} off the input surface"));
         }
     }
-    // the source's quality, against the same surface
+    // the source's quality, against the same surface (as `inspect --surface`)
     let normals: Vec<[f64; 3]> = g
         .refined
         .cells
         .iter()
-        .map(|c| {
-            let p = dualex_geom::quality::corners(&g.refined.positions, c);
-            let centre = [0, 1, 2].map(|k| p.iter().map(|q| q[k]).sum::<f64>() / 4.0);
-            let f = reference.closest(centre, None).expect("a surface");
-            reference.normals[f.triangle as usize]
-        })
+        .map(|c| reference.quad_normal(&dualex_geom::quality::corners(&g.refined.positions, c)))
         .collect();
     let source = dualex_geom::Summary::of(&dualex_geom::quality::quad_values(
         &g.refined.positions,

@@ -19,7 +19,7 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use dualex_geom::quality::{hex_values, quad_values};
+use dualex_geom::quality::{corners, cross, hex_values, quad_values, sub, unit};
 use dualex_geom::Reference;
 use dualex_map::{HexMesh, QuadMesh};
 use rayon::prelude::*;
@@ -177,27 +177,15 @@ pub fn quad_quality(
     mesh: &QuadMesh,
     surface: Option<&Path>,
 ) -> Result<(Vec<f64>, Normals), String> {
-    let newell: Vec<[f64; 3]> = mesh
-        .cells
-        .iter()
-        .map(|q| {
-            let p = q.map(|v| mesh.positions[v as usize]);
-            cross(sub(p[2], p[0]), sub(p[3], p[1]))
-        })
-        .collect();
     let (normals, kind) = match surface {
-        Some(path) => (surface_normals(mesh, &newell, path)?, Normals::Surface),
-        None => (own_normals(mesh, &newell), Normals::Own),
+        Some(path) => (surface_normals(mesh, path)?, Normals::Surface),
+        None => (own_normals(mesh), Normals::Own),
     };
     Ok((quad_values(&mesh.positions, &mesh.cells, &normals), kind))
 }
 
 /// Per quad, the normal of the surface triangle nearest its centre.
-fn surface_normals(
-    mesh: &QuadMesh,
-    newell: &[[f64; 3]],
-    path: &Path,
-) -> Result<Vec<[f64; 3]>, String> {
+fn surface_normals(mesh: &QuadMesh, path: &Path) -> Result<Vec<[f64; 3]>, String> {
     let name = path.display().to_string();
     let poly = dualex_io::read_polygon_mesh(path).map_err(|e| format!("--surface: {e}"))?;
     let mut triangles = Vec::with_capacity(poly.faces.len());
@@ -220,27 +208,24 @@ fn surface_normals(
         ));
     }
     let reference = Reference::surface(&poly.positions, &triangles, 180.0);
-    let normals = mesh.cells.par_iter().zip(newell).map(|(q, &n)| {
-        let mut centre = [0.0; 3];
-        for &v in q {
-            for (c, x) in centre.iter_mut().zip(mesh.positions[v as usize]) {
-                *c += 0.25 * x;
-            }
-        }
-        let under = reference
-            .closest(centre, Some(n))
-            .and_then(|foot| reference.normals.get(foot.triangle as usize).copied())
-            .filter(|m| m.iter().any(|&x| x != 0.0));
-        // a degenerate surface triangle has no normal: the quad's own
-        under.unwrap_or_else(|| unit(n))
-    });
+    let normals = mesh
+        .cells
+        .par_iter()
+        .map(|q| reference.quad_normal(&corners(&mesh.positions, q)));
     Ok(normals.collect())
 }
 
 /// Per quad, the normalised sum of the unit Newell normals of the quad
 /// and of the quads sharing an edge with it.
-fn own_normals(mesh: &QuadMesh, newell: &[[f64; 3]]) -> Vec<[f64; 3]> {
-    let units: Vec<[f64; 3]> = newell.iter().map(|&n| unit(n)).collect();
+fn own_normals(mesh: &QuadMesh) -> Vec<[f64; 3]> {
+    let units: Vec<[f64; 3]> = mesh
+        .cells
+        .iter()
+        .map(|q| {
+            let p = corners(&mesh.positions, q);
+            unit(cross(sub(p[2], p[0]), sub(p[3], p[1])))
+        })
+        .collect();
     let mut edges: HashMap<[u32; 2], Vec<u32>> = HashMap::new();
     for (i, q) in mesh.cells.iter().enumerate() {
         for k in 0..4 {
@@ -275,28 +260,6 @@ fn own_normals(mesh: &QuadMesh, newell: &[[f64; 3]]) -> Vec<[f64; 3]> {
             unit(sum)
         })
         .collect()
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// `n` of length 1, or zero.
-fn unit(n: [f64; 3]) -> [f64; 3] {
-    let l = n.iter().map(|x| x * x).sum::<f64>().sqrt();
-    if l > 0.0 {
-        n.map(|x| x / l)
-    } else {
-        [0.0; 3]
-    }
 }
 
 /// The quad count, the hex count: "9 quads", "1 hex".

@@ -9,7 +9,7 @@
 //! Invariants: a vertex's basis spans exactly its [`Kind::dof`]
 //! directions, orthonormal; projecting a point of the set leaves it there.
 
-use crate::quality::{cross, dot, norm, sub};
+use crate::quality::{cross, dot, norm, sub, unit};
 use crate::reference::Reference;
 
 /// The set a vertex stays on.
@@ -151,16 +151,6 @@ impl Constraints {
 /// Directions a vertex may move in: their count and an orthonormal basis
 /// (the first `count` rows).
 pub type Basis = (usize, [[f64; 3]; 3]);
-
-/// `a / |a|`, or zero.
-pub(crate) fn unit(a: [f64; 3]) -> [f64; 3] {
-    let l = norm(a);
-    if l > 0.0 {
-        a.map(|x| x / l)
-    } else {
-        [0.0; 3]
-    }
-}
 
 /// A vector perpendicular to `n` (not unit).
 pub(crate) fn perpendicular(n: [f64; 3]) -> [f64; 3] {

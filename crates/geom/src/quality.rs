@@ -35,15 +35,18 @@ pub const HEX_CORNER_EDGES: [[usize; 4]; 8] = [
 /// Per quad corner, the corner triangle `(c, next, previous)`.
 pub const QUAD_CORNER_EDGES: [[usize; 3]; 4] = [[0, 1, 3], [1, 2, 0], [2, 3, 1], [3, 0, 2]];
 
-pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+/// `a − b`.
+pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
-pub(crate) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+/// `a · b`.
+pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+/// `a × b`.
+pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
         a[1] * b[2] - a[2] * b[1],
         a[2] * b[0] - a[0] * b[2],
@@ -51,8 +54,19 @@ pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-pub(crate) fn norm(a: [f64; 3]) -> f64 {
+/// `|a|`.
+pub fn norm(a: [f64; 3]) -> f64 {
     dot(a, a).sqrt()
+}
+
+/// `a / |a|`, or zero.
+pub fn unit(a: [f64; 3]) -> [f64; 3] {
+    let l = norm(a);
+    if l > 0.0 {
+        a.map(|x| x / l)
+    } else {
+        [0.0; 3]
+    }
 }
 
 /// The scaled Jacobian of a quad's corners `p` (cell order) against the

@@ -216,11 +216,6 @@ impl Reference {
         self.closest_on(p, |seg| !boundary_only || seg.boundary)
     }
 
-    /// The nearest point to `p` on the feature curves (not the boundary).
-    pub fn closest_on_features(&self, p: [f64; 3]) -> Option<(u32, [f64; 3], f64)> {
-        self.closest_on(p, |seg| !seg.boundary)
-    }
-
     fn closest_on(
         &self,
         p: [f64; 3],
@@ -255,6 +250,21 @@ impl Reference {
             })
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(e, _)| self.positions[e as usize])
+    }
+
+    /// The normal under a quad with corners `p`: that of the triangle
+    /// nearest its centre (the quad's Newell normal as the hint, so that a
+    /// thin part's far side is not taken), or the unit Newell normal when
+    /// that triangle is degenerate or there is none. The quad measure's
+    /// normal for a quad without a source triangle (the stage) and for a
+    /// mesh file measured against a surface (`dualex inspect --surface`).
+    pub fn quad_normal(&self, p: &[[f64; 3]; 4]) -> [f64; 3] {
+        let centre = [0, 1, 2].map(|k| p.iter().map(|x| x[k]).sum::<f64>() / 4.0);
+        let newell = cross(sub(p[2], p[0]), sub(p[3], p[1]));
+        self.closest(centre, Some(newell))
+            .map(|f| self.normals[f.triangle as usize])
+            .filter(|n| norm(*n) > 0.0)
+            .unwrap_or_else(|| crate::quality::unit(newell))
     }
 
     /// Whether the reference has boundary segments.

@@ -2,9 +2,9 @@
 //! ([`quads`] and [`hexes`] only gather what differs: corner tables,
 //! frames, the measure, the reference and which vertices lie on it).
 
-use crate::constraint::{unit, Constraints, Kind, Role};
+use crate::constraint::{Constraints, Kind, Role};
 use crate::optimize::{optimize, Cells, Params};
-use crate::quality::{self, cross, norm, sub, Summary, HEX_CORNER_EDGES, QUAD_CORNER_EDGES};
+use crate::quality::{self, cross, norm, sub, unit, Summary, HEX_CORNER_EDGES, QUAD_CORNER_EDGES};
 use crate::reference::Reference;
 use crate::{Mode, Options};
 use dualex_map::cells::{HEX_EDGES, HEX_FACES};
@@ -118,11 +118,7 @@ pub fn quads(
             Some(&s) if (s as usize) < triangles.len() => tri_normal(s),
             _ => {
                 let r = reference.get_or_insert_with(make);
-                let p = quality::corners(positions, cell);
-                let centre = [0, 1, 2].map(|k| p.iter().map(|x| x[k]).sum::<f64>() / 4.0);
-                let newell = cross(sub(p[2], p[0]), sub(p[3], p[1]));
-                r.closest(centre, Some(newell))
-                    .map_or(unit(newell), |f| r.normals[f.triangle as usize])
+                r.quad_normal(&quality::corners(positions, cell))
             }
         };
         normals.push(n);

@@ -16,7 +16,7 @@ use crate::reference::Reference;
 /// The corners of the mesh (boundary vertices of one cell) go onto a
 /// corner of the input's curves within half an edge (on a surface: one
 /// whose interior angle is at most [`MESH_CORNER_ANGLE`]) and become
-/// fixed there; the count of those moved.
+/// fixed there.
 #[allow(clippy::needless_range_loop)]
 pub(super) fn mesh_corners_to_input_corners<const D: usize, const K: usize>(
     x: &mut [[f64; 3]],
@@ -25,12 +25,11 @@ pub(super) fn mesh_corners_to_input_corners<const D: usize, const K: usize>(
     around: &(Vec<usize>, Vec<u32>),
     cons: &mut Constraints,
     mean_edge: f64,
-) -> usize {
+) {
     let max_angle = match input.role {
         Role::Surface => MESH_CORNER_ANGLE.to_radians(),
         Role::Volume => f64::INFINITY,
     };
-    let mut moved = 0;
     for v in 0..x.len() {
         if !input.on_boundary[v]
             || around.0[v + 1] - around.0[v] != 1
@@ -40,12 +39,10 @@ pub(super) fn mesh_corners_to_input_corners<const D: usize, const K: usize>(
         }
         let q = cons.project(r, v, x[v]);
         if let Some(c) = r.nearest_corner(q, 0.5 * mean_edge, max_angle) {
-            moved += usize::from(c != x[v]);
             x[v] = c;
             cons.kind[v] = Kind::Fixed;
         }
     }
-    moved
 }
 
 /// A corner of the mesh on a smooth or concave part of the input's
