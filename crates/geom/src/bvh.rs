@@ -133,6 +133,17 @@ impl Bvh {
     /// distance>` (`None`: filtered out), with its squared distance; ties
     /// go to the lower index.
     pub fn nearest(&self, p: [f64; 3], dist2: impl Fn(u32) -> Option<f64>) -> Option<(u32, f64)> {
+        self.nearest_within(p, f64::INFINITY, dist2)
+    }
+
+    /// [`Bvh::nearest`] among the primitives within squared distance
+    /// `max_d2` of `p` (the search prunes every box farther).
+    pub fn nearest_within(
+        &self,
+        p: [f64; 3],
+        max_d2: f64,
+        dist2: impl Fn(u32) -> Option<f64>,
+    ) -> Option<(u32, f64)> {
         let mut best: Option<(u32, f64)> = None;
         if self.nodes.is_empty() {
             return None;
@@ -141,13 +152,13 @@ impl Bvh {
         while let Some(n) = stack.pop() {
             let node = &self.nodes[n as usize];
             let bound = node.bbox.dist2(p);
-            if best.is_some_and(|(_, d)| bound > d) {
+            if bound > max_d2 || best.is_some_and(|(_, d)| bound > d) {
                 continue;
             }
             if node.count > 0 {
                 let first = node.first as usize;
                 for &i in &self.order[first..first + node.count as usize] {
-                    if let Some(d) = dist2(i) {
+                    if let Some(d) = dist2(i).filter(|&d| d <= max_d2) {
                         let better = match best {
                             None => true,
                             Some((bi, bd)) => d < bd || (d == bd && i < bi),

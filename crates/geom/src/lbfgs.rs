@@ -11,13 +11,16 @@ const M: usize = 8;
 
 /// Minimises `f` from `x` (in place); returns the iterations made.
 /// `first_step`: the largest entry of the first step (later steps are
-/// scaled by the curvature seen).
+/// scaled by the curvature seen); `max_step`: the largest entry of any
+/// step (a longer one is shortened before the line search, which would
+/// otherwise halve it many times where the curvature changes fast).
 pub fn minimize(
     x: &mut [f64],
     mut f: impl FnMut(&[f64], &mut [f64]) -> f64,
     max_iter: usize,
     gtol: f64,
     first_step: f64,
+    max_step: f64,
 ) -> usize {
     let n = x.len();
     if n == 0 {
@@ -29,6 +32,7 @@ pub fn minimize(
     let mut rho: Vec<f64> = Vec::new();
     let (mut xn, mut gn, mut d) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let inf_norm = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let mut t_last = 1.0f64;
     for it in 0..max_iter {
         if !fx.is_finite() || inf_norm(&g) < gtol {
             return it;
@@ -64,8 +68,16 @@ pub fn minimize(
             y_hist.clear();
             rho.clear();
         }
+        let longest = inf_norm(&d);
+        if longest > max_step {
+            let k = max_step / longest;
+            d.iter_mut().for_each(|v| *v *= k);
+            slope *= k;
+        }
         // backtracking line search (Armijo)
-        let mut t = 1.0;
+        // from twice the last accepted step: where the curvature changes
+        // fast the steps stay short, and each would be halved as often
+        let mut t = (2.0 * t_last).min(1.0);
         let mut accepted = None;
         for _ in 0..40 {
             for i in 0..n {
@@ -74,6 +86,7 @@ pub fn minimize(
             let fnew = f(&xn, &mut gn);
             if fnew.is_finite() && fnew <= fx + 1e-4 * t * slope {
                 accepted = Some(fnew);
+                t_last = t;
                 break;
             }
             t *= 0.5;
@@ -133,6 +146,7 @@ mod tests {
             500,
             1e-9,
             0.1,
+            f64::INFINITY,
         );
         assert!(
             (x[0] - 1.0).abs() < 1e-6 && (x[1] - 1.0).abs() < 1e-6,

@@ -11,7 +11,7 @@
 //! Garanzha et al. (2021). Vertices that do not move are never written.
 
 use crate::constraint::Constraints;
-use crate::energy::energy;
+use crate::energy::energy_det;
 use crate::lbfgs;
 use crate::quality::sub;
 use crate::reference::Reference;
@@ -28,7 +28,14 @@ pub struct Cells<'a, const D: usize, const K: usize> {
     pub frames: Vec<[[f64; 3]; D]>,
     /// Per cell, its reference edge length.
     pub h: Vec<f64>,
+    /// The frame of a cell again from positions (quads: the tangent plane
+    /// of the input triangle nearest the quad's centre), taken at the
+    /// start of every round; `None`: the frames stay.
+    pub reframe: Option<&'a Reframe<'a, D>>,
 }
+
+/// The frame of cell `c` from positions `x`.
+pub type Reframe<'a, const D: usize> = dyn Fn(&[[f64; 3]], usize) -> [[f64; 3]; D] + Sync + 'a;
 
 /// Parameters of [`optimize`].
 #[derive(Clone, Copy, Debug)]
@@ -57,13 +64,31 @@ pub struct Outcome {
 /// lengths of the cells optimised.
 const MAX_STEP: f64 = 0.25;
 
-/// Rounds without fewer inverted corners after which untangling stops.
-const STALL: usize = 60;
+/// The work of re-framing one cell (a closest-point query), in
+/// corner-simplex evaluations.
+const REFRAME_COST: usize = 16;
+
+/// The least starting ε when something is inverted.
+const EPS_MIN_START: f64 = 1e-3;
+
+/// Untangling: ε falls at least this much a round (the rule of the paper alone lowers
+/// it by a few per cent a round while a fold resists, and each round
+/// costs an optimisation and a projection).
+const EPS_FALL: f64 = 0.7;
+
+/// The longest L-BFGS step of a coordinate, in mean edge lengths.
+const LBFGS_MAX_STEP: f64 = 0.5;
+
+/// Rounds without fewer inverted corners after which untangling stops
+/// (the next, larger region is tried).
+const STALL: usize = 12;
 
 struct Local<'a, const D: usize, const K: usize> {
     c: &'a Cells<'a, D, K>,
     /// Active cells (touching a movable vertex).
     cells: Vec<u32>,
+    /// Per active cell, its frame.
+    frames: Vec<[[f64; 3]; D]>,
     /// Per corner simplex of the active cells: (active cell, corner).
     simplices: Vec<(u32, u8)>,
     /// Movable vertices (global ids).
@@ -120,8 +145,10 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
                 }
             }
         }
+        let frames = cells.iter().map(|&ci| c.frames[ci as usize]).collect();
         Local {
             c,
+            frames,
             cells,
             simplices,
             vars,
@@ -138,7 +165,7 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
         let corner = &self.c.corners[s.1 as usize];
         let p0 = x[cell[corner[0]] as usize];
         let inv_h = 1.0 / self.c.h[ci];
-        let frame = &self.c.frames[ci];
+        let frame = &self.frames[s.0 as usize];
         let mut j = [[0.0; D]; D];
         for k in 0..D {
             let e = sub(x[cell[corner[k + 1]] as usize], p0);
@@ -165,11 +192,10 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
             .map(|(&s, g)| {
                 let ci = self.cells[s.0 as usize] as usize;
                 let j = self.jacobian(s, x);
-                let (e, de) = energy::<D>(&j, eps, theta);
+                let (e, de, det) = energy_det::<D>(&j, eps, theta);
                 let h = self.c.h[ci];
                 let w = h.powi(D as i32);
-                let frame = &self.c.frames[ci];
-                let det = crate::energy::det_cofactor(&j).0;
+                let frame = &self.frames[s.0 as usize];
                 let mut g0 = [0.0; 3];
                 for k in 0..D {
                     let mut gk = [0.0; 3];
@@ -211,7 +237,7 @@ pub fn optimize<const D: usize, const K: usize>(
     p: Params,
     budget: &mut usize,
 ) -> Outcome {
-    let l = Local::new(cells, movable, x.len());
+    let mut l = Local::new(cells, movable, x.len());
     let mut out = Outcome {
         det_min: f64::INFINITY,
         ..Default::default()
@@ -223,9 +249,19 @@ pub fn optimize<const D: usize, const K: usize>(
     let mean_h = l.cells.iter().map(|&c| cells.h[c as usize]).sum::<f64>() / l.cells.len() as f64;
     let max_step = MAX_STEP * mean_h;
     let (_, mut det_min) = l.evaluate(x, 1.0, p.theta, &mut grads);
-    // untangled already: the barrier (ε → 0) keeps it so; else ε = 1 as
-    // in the paper, lowered round by round
-    let mut eps = if det_min > 0.0 { 1e-10 } else { 1.0 };
+    // untangled already: the barrier (ε → 0) keeps it so; else ε starts
+    // at the depth of the worst inversion (at most 1, as in the paper,
+    // where the map starts fully tangled): a mesh with a few shallow
+    // inversions needs no softer start, and each round costs
+    // (smoothing, which optimises the whole mesh's shape, starts at 1)
+    let mut eps = if det_min > 0.0 {
+        1e-10
+    } else if p.stop_when_untangled {
+        (-det_min).clamp(EPS_MIN_START, 1.0)
+    } else {
+        1.0
+    };
+    let fall = if p.stop_when_untangled { EPS_FALL } else { 1.0 };
     let mut best = (usize::MAX, 0);
     let mut bases: Vec<crate::constraint::Basis> = Vec::new();
     for round in 0..p.rounds {
@@ -233,6 +269,16 @@ pub fn optimize<const D: usize, const K: usize>(
             break;
         }
         out.rounds = round + 1;
+        if let (Some(reframe), true) = (cells.reframe, round > 0) {
+            let x: &[[f64; 3]] = x;
+            l.frames = l
+                .cells
+                .par_iter()
+                .map(|&ci| reframe(x, ci as usize))
+                .collect();
+            // a closest-point query costs about this many evaluations
+            *budget = budget.saturating_sub(REFRAME_COST * l.cells.len());
+        }
         let mut evaluations = 0usize;
         if bases.is_empty() {
             bases = l
@@ -286,6 +332,7 @@ pub fn optimize<const D: usize, const K: usize>(
             p.iterations,
             1e-9 * mean_h,
             0.05 * mean_h,
+            LBFGS_MAX_STEP * mean_h,
         );
         place(&y, &mut xt);
         let moved: Vec<([f64; 3], crate::constraint::Basis)> = l
@@ -319,7 +366,7 @@ pub fn optimize<const D: usize, const K: usize>(
         let sigma = (1.0 - e / e_prev).max(0.1);
         let mu = (1.0 - sigma) * crate::energy::chi(det_min, eps);
         eps = if det_min < mu {
-            2.0 * (mu * (mu - det_min)).sqrt()
+            (2.0 * (mu * (mu - det_min)).sqrt()).min(fall * eps)
         } else {
             1e-10
         };

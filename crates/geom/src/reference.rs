@@ -35,6 +35,10 @@ pub struct Foot {
     pub distance: f64,
 }
 
+/// How much farther than the nearest triangle a triangle agreeing with a
+/// normal hint may be ([`Reference::closest`]).
+pub const HINT_REACH: f64 = 3.0;
+
 /// The reference surface (see the module docs).
 #[derive(Clone, Debug)]
 pub struct Reference {
@@ -180,24 +184,29 @@ impl Reference {
     }
 
     /// The nearest point of the surface to `p` on a triangle whose normal
-    /// agrees with `hint` (positive dot product; any triangle without a
-    /// hint, or when none agrees).
+    /// agrees with `hint` (positive dot product) within [`HINT_REACH`]
+    /// times the distance to the nearest triangle (plus 1e-3 of the
+    /// bounding box); the nearest triangle without a hint, or when none
+    /// agrees there. (An unbounded search for an agreeing triangle visits
+    /// the whole hierarchy for a point over a flipped region.)
     pub fn closest(&self, p: [f64; 3], hint: Option<[f64; 3]>) -> Option<Foot> {
-        let near = |ok: &dyn Fn(u32) -> bool| {
-            self.triangle_bvh.nearest(p, |t| {
-                ok(t).then(|| {
-                    let q = self.closest_on_triangle(t, p);
-                    let d = sub(q, p);
-                    dot(d, d)
-                })
-            })
+        let d2 = |t: u32| {
+            let q = self.closest_on_triangle(t, p);
+            let d = sub(q, p);
+            dot(d, d)
         };
+        let nearest = self.triangle_bvh.nearest(p, |t| Some(d2(t)))?;
         let found = match hint {
-            Some(h) => {
-                near(&|t| dot(self.normals[t as usize], h) > 0.0).or_else(|| near(&|_| true))
+            Some(h) if dot(self.normals[nearest.0 as usize], h) <= 0.0 => {
+                let reach = HINT_REACH * nearest.1.sqrt() + 1e-3 * self.diagonal;
+                self.triangle_bvh
+                    .nearest_within(p, reach * reach, |t| {
+                        (dot(self.normals[t as usize], h) > 0.0).then(|| d2(t))
+                    })
+                    .unwrap_or(nearest)
             }
-            None => near(&|_| true),
-        }?;
+            _ => nearest,
+        };
         let point = self.closest_on_triangle(found.0, p);
         Some(Foot {
             triangle: found.0,

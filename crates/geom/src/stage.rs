@@ -10,8 +10,10 @@ use crate::{Mode, Options};
 use dualex_map::cells::{HEX_EDGES, HEX_FACES};
 
 mod corners;
+mod topology;
 use corners::{mesh_corners_to_input_corners, release_flat_corners};
 use std::time::Instant;
+use topology::{boundary_vertices, grow, vertex_cells};
 
 /// What the stage measured and did.
 #[derive(Clone, Debug, Default)]
@@ -95,8 +97,10 @@ impl Report {
 
 /// The stage on a quad mesh lying on the triangle surface
 /// (`surface_positions`, `triangles`); `sources[q]`: the triangle holding
-/// quad `q`'s node (`u32::MAX`: none, then the triangle nearest its
-/// centre is taken), whose normal is the quad's.
+/// quad `q`'s node (`u32::MAX`: none). A quad is measured against the
+/// triangle nearest its centre ([`Reference::quad_normal`], as `inspect`
+/// does); the source triangles only screen a mesh for work (no search:
+/// a mesh the screen finds nothing to do on is returned as it is).
 pub fn quads(
     positions: &mut [[f64; 3]],
     cells: &[[u32; 4]],
@@ -112,6 +116,8 @@ pub fn quads(
         let [a, b, c] = triangles[t as usize].map(|v| surface_positions[v as usize]);
         unit(cross(sub(b, a), sub(c, a)))
     };
+    // the screen: each quad against its source triangle (no search); once
+    // the reference exists, against the triangle nearest its centre
     let mut normals = Vec::with_capacity(cells.len());
     for (q, cell) in cells.iter().enumerate() {
         let n = match sources.get(q) {
@@ -123,13 +129,6 @@ pub fn quads(
         };
         normals.push(n);
     }
-    let frames: Vec<[[f64; 3]; 2]> = normals
-        .iter()
-        .map(|&n| {
-            let t1 = unit(crate::constraint::perpendicular(n));
-            [t1, cross(n, t1)]
-        })
-        .collect();
     let on_boundary = boundary_vertices(positions.len(), cells, &[[0, 1], [1, 2], [2, 3], [3, 0]]);
     let mut hint = vec![[0.0; 3]; positions.len()];
     for (cell, n) in cells.iter().zip(&normals) {
@@ -139,11 +138,18 @@ pub fn quads(
             }
         }
     }
-    let measure = |x: &[[f64; 3]]| quality::quad_values(x, cells, &normals);
+    let reframe = |x: &[[f64; 3]], ci: usize, r: &Reference| {
+        quad_frame(r.quad_normal(&quality::corners(x, &cells[ci])))
+    };
+    let measure = |x: &[[f64; 3]], frames: &[[[f64; 3]; 2]]| {
+        let normals: Vec<[f64; 3]> = frames.iter().map(|f| cross(f[0], f[1])).collect();
+        quality::quad_values(x, cells, &normals)
+    };
     let input = Input {
         cells,
         corners: &QUAD_CORNER_EDGES.map(|[c, a, b]| [c, a, b, 0]),
-        frames,
+        frames: normals.iter().map(|&n| quad_frame(n)).collect(),
+        reframe: Some(&reframe),
         edges: &[[0, 1], [1, 2], [2, 3], [3, 0]],
         role: Role::Surface,
         on_boundary,
@@ -193,12 +199,13 @@ pub fn hexes(
             }
         }
     }
-    let measure = |x: &[[f64; 3]]| quality::hex_values(x, cells);
+    let measure = |x: &[[f64; 3]], _: &[[[f64; 3]; 3]]| quality::hex_values(x, cells);
     let id = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     let input = Input {
         cells,
         corners: &HEX_CORNER_EDGES,
         frames: vec![id; cells.len()],
+        reframe: None,
         edges: &HEX_EDGES,
         role: Role::Volume,
         on_boundary,
@@ -209,41 +216,41 @@ pub fn hexes(
     rep
 }
 
-/// Vertices on edges of one quad.
-fn boundary_vertices(n: usize, cells: &[[u32; 4]], edges: &[[usize; 2]]) -> Vec<bool> {
-    use rayon::prelude::*;
-    // edges as sorted keys: an edge of one quad appears once
-    let mut keys: Vec<u64> = cells
-        .par_iter()
-        .flat_map_iter(|c| {
-            edges.iter().map(move |e| {
-                let (a, b) = (c[e[0]], c[e[1]]);
-                (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
-            })
-        })
-        .collect();
-    keys.par_sort_unstable();
-    let mut out = vec![false; n];
-    let mut i = 0;
-    while i < keys.len() {
-        let mut j = i + 1;
-        while j < keys.len() && keys[j] == keys[i] {
-            j += 1;
-        }
-        if j - i == 1 {
-            out[(keys[i] >> 32) as usize] = true;
-            out[(keys[i] & 0xffff_ffff) as usize] = true;
-        }
-        i = j;
-    }
-    out
+/// A quad's frame: two unit tangents, right-handed about the normal `n`.
+fn quad_frame(n: [f64; 3]) -> [[f64; 3]; 2] {
+    let t1 = unit(crate::constraint::perpendicular(n));
+    [t1, cross(n, t1)]
 }
+
+type Reframe<'a, const D: usize> =
+    dyn Fn(&[[f64; 3]], usize, &Reference) -> [[f64; 3]; D] + Sync + 'a;
+
+/// Every cell's frame by `reframe`.
+fn all_frames<const D: usize>(
+    reframe: &Reframe<D>,
+    x: &[[f64; 3]],
+    cells: usize,
+    r: &Reference,
+) -> Vec<[[f64; 3]; D]> {
+    use rayon::prelude::*;
+    (0..cells)
+        .into_par_iter()
+        .map(|ci| reframe(x, ci, r))
+        .collect()
+}
+type Measure<'a, const D: usize> = dyn Fn(&[[f64; 3]], &[[[f64; 3]; D]]) -> Vec<f64> + 'a;
 
 /// What differs between the dimensions.
 struct Input<'a, const D: usize, const K: usize> {
     cells: &'a [[u32; K]],
     corners: &'a [[usize; 4]],
+    /// Per cell, its frame (quads: the tangent plane of the normal they
+    /// are measured against; hexes: the identity).
     frames: Vec<[[f64; 3]; D]>,
+    /// Quads: the frames again from positions, against the triangle of the
+    /// reference nearest each quad's centre (the measure's definition);
+    /// `None` for hexes.
+    reframe: Option<&'a Reframe<'a, D>>,
     edges: &'a [[usize; 2]],
     role: Role,
     on_boundary: Vec<bool>,
@@ -284,19 +291,19 @@ const BUDGET_PER_SIMPLEX: usize = 20;
 const MIN_BUDGET: usize = 40_000_000;
 
 /// Rings tried around the inverted elements, then the whole mesh.
-const RINGS: [usize; 3] = [2, 4, 8];
+const RINGS: [usize; 4] = [1, 2, 4, 8];
 
 #[allow(clippy::needless_range_loop)] // vertices index several arrays
 fn run<const D: usize, const K: usize>(
     x: &mut [[f64; 3]],
-    input: Input<D, K>,
-    measure: &dyn Fn(&[[f64; 3]]) -> Vec<f64>,
+    mut input: Input<D, K>,
+    measure: &Measure<D>,
     reference: Option<Reference>,
     make: &dyn Fn() -> Reference,
     opts: &Options,
 ) -> Report {
     let cells = input.cells;
-    let values = measure(x);
+    let values = measure(x, &input.frames);
     let mut rep = Report {
         mode: opts.mode.name(),
         before: Summary::of(&values),
@@ -318,6 +325,13 @@ fn run<const D: usize, const K: usize>(
         return rep;
     }
     let r = reference.unwrap_or_else(make);
+    // quads: measured from here on against the triangle nearest each
+    // quad's centre (the measure's definition; `inspect` measures so too)
+    if let Some(reframe) = input.reframe {
+        input.frames = all_frames(reframe, x, cells.len(), &r);
+        rep.before = Summary::of(&measure(x, &input.frames));
+        rep.after = rep.before;
+    }
     let tol = ON_BOUNDARY * rep.mean_edge.max(f64::MIN_POSITIVE);
     let mut cons = Constraints::classify(
         &r,
@@ -385,11 +399,25 @@ fn run<const D: usize, const K: usize>(
             }
         })
         .collect();
-    let c = Cells::<D, K> {
+    let reframe = input.reframe;
+    let bound = reframe.map(|f| {
+        let r = &r;
+        move |x: &[[f64; 3]], ci: usize| f(x, ci, r)
+    });
+    let mut c = Cells::<D, K> {
         cells,
         corners: input.corners,
         frames: input.frames,
         h,
+        reframe: bound.as_ref().map(|b| b as &crate::optimize::Reframe<D>),
+    };
+    // the values at `x`, quads measured against the triangles nearest
+    // their centres there (frames updated)
+    let remeasure = |x: &[[f64; 3]], c: &mut Cells<D, K>| {
+        if let Some(reframe) = reframe {
+            c.frames = all_frames(reframe, x, cells.len(), &r);
+        }
+        measure(x, &c.frames)
     };
     let movable_kind: Vec<bool> = cons.kind.iter().map(|k| k.dof() > 0).collect();
     // the work allowed, in corner-simplex evaluations: the same for every
@@ -408,9 +436,9 @@ fn run<const D: usize, const K: usize>(
     // growing rings; the positions with the fewest inverted elements are
     // kept (an attempt that makes things worse is undone)
     let inverted_of = |v: &[f64]| v.iter().filter(|&&v| v <= 0.0).count();
-    let mut best = (inverted_of(&measure(x)), x.to_vec());
+    let mut best = (inverted_of(&remeasure(x, &mut c)), x.to_vec());
     for &rings in &RINGS {
-        let bad = measure(x);
+        let bad = remeasure(x, &mut c);
         let now = inverted_of(&bad);
         if now < best.0 {
             best = (now, x.to_vec());
@@ -441,10 +469,10 @@ fn run<const D: usize, const K: usize>(
         rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p, &mut budget).rounds;
         rep.rings = rings;
     }
-    if inverted_of(&measure(x)) > best.0 {
+    if inverted_of(&remeasure(x, &mut c)) > best.0 {
         x.copy_from_slice(&best.1);
     }
-    rep.after = Summary::of(&measure(x));
+    rep.after = Summary::of(&remeasure(x, &mut c));
     for v in 0..x.len() {
         let d = norm(sub(x[v], start[v]));
         if d > 0.0 {
@@ -466,45 +494,4 @@ fn run<const D: usize, const K: usize>(
         }
     }
     rep
-}
-
-/// CSR of the cells around each vertex.
-fn vertex_cells<const K: usize>(n: usize, cells: &[[u32; K]]) -> (Vec<usize>, Vec<u32>) {
-    let mut start = vec![0usize; n + 1];
-    for c in cells {
-        for &v in c {
-            start[v as usize + 1] += 1;
-        }
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut fill = start.clone();
-    let mut list = vec![0u32; start[n]];
-    for (ci, c) in cells.iter().enumerate() {
-        for &v in c {
-            list[fill[v as usize]] = ci as u32;
-            fill[v as usize] += 1;
-        }
-    }
-    (start, list)
-}
-
-/// Adds `rings` rings of cells around `region`.
-fn grow<const K: usize>(
-    region: &mut [bool],
-    around: &(Vec<usize>, Vec<u32>),
-    cells: &[[u32; K]],
-    rings: usize,
-) {
-    for _ in 0..rings {
-        let now: Vec<usize> = (0..region.len()).filter(|&v| region[v]).collect();
-        for v in now {
-            for &c in &around.1[around.0[v]..around.0[v + 1]] {
-                for &u in &cells[c as usize] {
-                    region[u as usize] = true;
-                }
-            }
-        }
-    }
 }
