@@ -448,6 +448,17 @@ pub struct GenerateArgs {
     /// Mesh maps: add folds.
     #[arg(long)]
     pub folds: bool,
+    /// Mesh maps: fold the map around N interior singular vertices (no
+    /// element holding two): radial, radius 1.5 and amplitude 3 elements,
+    /// alternately pulled through the vertex and pushed outwards; exactly
+    /// grid-preserving. Separate from --folds, whose maps stay as they are.
+    #[arg(long, value_name = "N")]
+    pub folds_at_singular: Option<usize>,
+    /// Mesh maps: multiply the map's coordinates by M at the end (the same
+    /// simplices; grid points inside them); expected: the mesh refined
+    /// K·M times.
+    #[arg(long, value_name = "M", value_parser = at_least_one)]
+    pub magnify: Option<usize>,
     /// Mesh maps (quads): put every vertex, singular ones included, at a
     /// cell centre.
     #[arg(long)]
@@ -457,7 +468,12 @@ pub struct GenerateArgs {
 impl GenerateArgs {
     /// Whether an option of mesh maps was given.
     pub fn mesh_options(&self) -> bool {
-        self.scale.is_some() || self.noise.is_some() || self.folds || self.half_shift
+        self.scale.is_some()
+            || self.noise.is_some()
+            || self.folds
+            || self.folds_at_singular.is_some()
+            || self.magnify.is_some()
+            || self.half_shift
     }
 }
 

@@ -83,7 +83,7 @@ pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), String> {
     }
     if a.mesh_options() {
         usage_error(&format!(
-            "--scale, --noise, --folds and --half-shift apply to --from-mesh and built-in meshes, not to the map {name:?}"
+            "--scale, --noise, --folds, --folds-at-singular, --magnify and --half-shift apply to --from-mesh and built-in meshes, not to the map {name:?}"
         ));
     }
     if let Some(map) = tri_map(name, a)? {
@@ -187,14 +187,14 @@ fn list(seed: u64) {
     }
     for n in meshes::quad_mesh_names() {
         let len = meshes::quad_mesh_by_name(&n).map_or(0, |m| m.cells.len());
-        line(&n, count(len, "quad", "quads"), "quad mesh: a map with its expected extraction (--scale, --noise, --folds, --half-shift)");
+        line(&n, count(len, "quad", "quads"), "quad mesh: a map with its expected extraction (--scale, --noise, --folds, --folds-at-singular, --magnify, --half-shift)");
     }
     for n in meshes::hex_mesh_names() {
         let len = meshes::hex_mesh_by_name(&n).map_or(0, |m| m.cells.len());
         line(
             &n,
             count(len, "hex", "hexes"),
-            "hex mesh: a map with its expected extraction (--scale, --noise, --folds)",
+            "hex mesh: a map with its expected extraction (--scale, --noise, --folds, --folds-at-singular, --magnify)",
         );
     }
     for (n, what) in dualex_remesh::shapes::NAMED {

@@ -51,6 +51,8 @@ fn options(args: &GenerateArgs) -> FromMeshOptions {
         scale: args.scale.unwrap_or(2),
         noise: args.noise.unwrap_or(0.0),
         folds: args.folds,
+        singular_folds: args.folds_at_singular.unwrap_or(0),
+        magnify: args.magnify.unwrap_or(1),
         seed: args.seed,
         half_shift: args.half_shift,
         ..Default::default()
@@ -86,7 +88,7 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
             let e = &gen.expected;
             let json = serde_json::json!({
                 "dimension": 2,
-                "scale": o.scale,
+                "scale": o.scale * o.magnify,
                 "half_shift": o.half_shift,
                 "quads": e.quads,
                 "interior_valence": e.interior_valence.as_ref()
@@ -107,7 +109,7 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
             let e = &gen.expected;
             let json = serde_json::json!({
                 "dimension": 3,
-                "scale": o.scale,
+                "scale": o.scale * o.magnify,
                 "hexes": e.hexes,
                 "boundary_components": e.boundary_components,
                 "boundary_euler": e.boundary_euler,

@@ -184,13 +184,13 @@ fn star_of<const N: usize, const D: usize>(
     }
 }
 
-/// The class of every vertex, given its class in `M_k` (`Regular` for
-/// vertices not in it).
-pub(crate) fn classify<const N: usize, const D: usize>(
-    map: &SimplexMap<N, D>,
+/// The class of every vertex from its star ([`stars`]), given its class
+/// in `M_k` (`Regular` for vertices not in it).
+pub(crate) fn classify<const D: usize>(
+    stars: &[Star<D>],
     combinatorial: &[VertexClass],
 ) -> Vec<VertexClass> {
-    stars(map)
+    stars
         .iter()
         .enumerate()
         .map(|(v, s)| {

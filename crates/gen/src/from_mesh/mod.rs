@@ -37,6 +37,9 @@
 mod classify;
 mod count;
 pub mod dense;
+mod fold;
+#[cfg(test)]
+mod fold_tests;
 pub mod meshes;
 mod messy;
 mod perturb;
@@ -99,6 +102,13 @@ pub struct FromMeshOptions {
     pub noise: f64,
     /// A few large (±1.5) displacements next to singular vertices / edges.
     pub folds: bool,
+    /// Folds centred on this many interior singular vertices (radius 1.5,
+    /// amplitude 3 elements, scaled by `k`; see `fold.rs`), exactly GP.
+    pub singular_folds: usize,
+    /// Multiply every chart coordinate by this (≥ 1) at the end: the same
+    /// simplices, grid points inside them; the expected mesh is then
+    /// `M_{scale·magnify}` ("the same map scaled by k").
+    pub magnify: usize,
     /// Seed of every random choice.
     pub seed: u64,
     /// Add ½ to every chart coordinate (2D only).
@@ -119,6 +129,8 @@ impl Default for FromMeshOptions {
             scale: 1,
             noise: 0.0,
             folds: false,
+            singular_folds: 0,
+            magnify: 1,
             seed: 1,
             half_shift: false,
             diagonal: Diagonal::Alternating,
@@ -195,8 +207,8 @@ pub struct FromHexes {
 }
 
 fn check_options(opts: &FromMeshOptions, elements: usize, dim: u32) -> Result<(), FromMeshError> {
-    let k = opts.scale;
-    if k == 0 || k > 256 || elements.saturating_mul(k.pow(dim)) > 1 << 24 {
+    let k = opts.scale.saturating_mul(opts.magnify);
+    if opts.magnify == 0 || k == 0 || k > 256 || elements.saturating_mul(k.pow(dim)) > 1 << 24 {
         return Err(FromMeshError::Scale(k));
     }
     if !(0.0..=1.0).contains(&opts.noise) {
@@ -213,6 +225,12 @@ fn check_options(opts: &FromMeshOptions, elements: usize, dim: u32) -> Result<()
             )));
         }
     }
+    if opts.slivers.is_some() && opts.magnify > 1 {
+        // sliver offsets use all 52 bits: times 3 would round
+        return Err(FromMeshError::Option(
+            "slivers and magnify: not together (magnifying would round)".into(),
+        ));
+    }
     if let Some(s) = opts.slivers {
         if !(s.lambda > 0.0 && s.lambda < 0.5) {
             return Err(FromMeshError::Option(format!(
@@ -224,11 +242,60 @@ fn check_options(opts: &FromMeshOptions, elements: usize, dim: u32) -> Result<()
     Ok(())
 }
 
+/// `M_{scale·magnify}`: `base` (`M_scale`, whose vertices are the map's),
+/// or the input refined again.
+fn magnified<const D: usize, const K: usize, M>(
+    base: M,
+    opts: &FromMeshOptions,
+    mesh_of: impl Fn(&refine::Refined<D>) -> M,
+    input: &dualex_map::cells::CellMesh<K>,
+) -> Result<M, FromMeshError> {
+    if opts.magnify == 1 {
+        return Ok(base);
+    }
+    let k = opts.scale * opts.magnify;
+    Ok(mesh_of(&refine::Refined::<D>::new(
+        &input.positions,
+        &input.cells,
+        k,
+    )?))
+}
+
+/// Every chart coordinate times `m` (exact: integers times values with
+/// at most 32 fractional bits, well below 2⁵³).
+fn magnify<const N: usize, const D: usize>(map: &mut dualex_map::SimplexMap<N, D>, m: usize) {
+    if m == 1 {
+        return;
+    }
+    for x in map.coords.iter_mut().flatten().flatten() {
+        *x *= m as f64;
+    }
+}
+
+/// The displacements of the folds at singular vertices, if asked for
+/// (`per_cell` simplices per sub-cell).
+fn singular_folds<const N: usize, const D: usize>(
+    map: &dualex_map::SimplexMap<N, D>,
+    r: &refine::Refined<D>,
+    stars: &[classify::Star<D>],
+    classes: &[VertexClass],
+    opts: &FromMeshOptions,
+    per_cell: usize,
+) -> Option<Vec<[f64; D]>> {
+    if opts.singular_folds == 0 {
+        return None;
+    }
+    let centres = fold::centres(r, classes, opts.singular_folds, opts.seed);
+    let per_element = per_cell * r.k.pow(D as u32);
+    debug_assert_eq!(map.simplices.len(), r.elements * per_element);
+    Some(fold::displacements(map, r, stars, &centres, per_element))
+}
+
 /// The triangle map of a quad mesh (module docs).
 pub fn from_quads(mesh: &QuadMesh, opts: &FromMeshOptions) -> Result<FromQuads, FromMeshError> {
     check_options(opts, mesh.cells.len(), 2)?;
     let r = refine::Refined::<2>::new(&mesh.positions, &mesh.cells, opts.scale)?;
-    let refined = r.quad_mesh();
+    let base = r.quad_mesh();
     let shift = if opts.half_shift { 0.5 } else { 0.0 };
     let (simplices, coords) = split::triangles(&r, opts.diagonal, shift);
     let mut map = TriMap {
@@ -236,14 +303,18 @@ pub fn from_quads(mesh: &QuadMesh, opts: &FromMeshOptions) -> Result<FromQuads, 
         simplices,
         coords,
     };
-    let mut classes = classify::classify(&map, &classify::from_quad_mesh(&refined));
-    perturb::perturb(&mut map, &classes, opts);
+    let stars = classify::stars(&map);
+    let mut classes = classify::classify(&stars, &classify::from_quad_mesh(&base));
+    let extra = singular_folds(&map, &r, &stars, &classes, opts, 2);
+    perturb::perturb(&mut map, &classes, &stars, opts, extra.as_deref());
     if let Some(s) = opts.slivers {
         messy::slivers(&mut map, &mut classes, s, opts.seed);
     }
     if let Some(j) = &opts.jitter {
         messy::jitter(&mut map, &classes, j, opts.seed);
     }
+    magnify(&mut map, opts.magnify);
+    let refined = magnified(base, opts, |r| r.quad_mesh(), mesh)?;
     let expected = expected_quad(&refined);
     Ok(FromQuads {
         map,
@@ -262,21 +333,29 @@ pub fn from_hexes(mesh: &HexMesh, opts: &FromMeshOptions) -> Result<FromHexes, F
         ));
     }
     let r = refine::Refined::<3>::new(&mesh.positions, &mesh.cells, opts.scale)?;
-    let refined = r.hex_mesh();
+    let base = r.hex_mesh();
     let (positions, simplices, coords) = split::tets(&r, opts.tet_split);
     let mut map = TetMap {
         positions,
         simplices,
         coords,
     };
-    let mut classes = classify::classify(&map, &classify::from_hex_mesh(&refined));
-    perturb::perturb(&mut map, &classes, opts);
+    let stars = classify::stars(&map);
+    let mut classes = classify::classify(&stars, &classify::from_hex_mesh(&base));
+    let per_cube = match opts.tet_split {
+        TetSplit::LeastVertex => 6,
+        TetSplit::Centre => 12,
+    };
+    let extra = singular_folds(&map, &r, &stars, &classes, opts, per_cube);
+    perturb::perturb(&mut map, &classes, &stars, opts, extra.as_deref());
     if let Some(s) = opts.slivers {
         messy::slivers(&mut map, &mut classes, s, opts.seed);
     }
     if let Some(j) = &opts.jitter {
         messy::jitter(&mut map, &classes, j, opts.seed);
     }
+    magnify(&mut map, opts.magnify);
+    let refined = magnified(base, opts, |r| r.hex_mesh(), mesh)?;
     let expected = expected_hex(&refined);
     Ok(FromHexes {
         map,

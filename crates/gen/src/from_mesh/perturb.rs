@@ -13,8 +13,10 @@
 //! axis instead, which reverts the simplices around them. Boundary and
 //! singular vertices never move; vertices on a singular edge move along it
 //! (or not at all when its holonomy is trivial: a whole number of turns).
+//! The folds centred on singular vertices ([`super::fold`]) come in as
+//! `extra` displacements and are projected the same way.
 
-use super::classify::{stars, Star, VertexClass};
+use super::classify::{Star, VertexClass};
 use super::FromMeshOptions;
 use crate::rng::SplitMix64;
 use dualex_map::SimplexMap;
@@ -67,16 +69,18 @@ fn fold_candidates<const N: usize, const D: usize>(
     }
 }
 
-/// Noise and folds (module docs).
+/// Noise, folds and the `extra` home-chart displacements (those of
+/// [`super::fold`]) (module docs).
 pub(crate) fn perturb<const N: usize, const D: usize>(
     map: &mut SimplexMap<N, D>,
     classes: &[VertexClass],
+    stars: &[Star<D>],
     opts: &FromMeshOptions,
+    extra: Option<&[[f64; D]]>,
 ) {
-    if opts.noise == 0.0 && !opts.folds {
+    if opts.noise == 0.0 && !opts.folds && extra.is_none() {
         return;
     }
-    let stars = stars(map);
     let mut rng = SplitMix64::new(opts.seed);
     let mut d: Vec<[f64; D]> = (0..classes.len())
         .map(|_| std::array::from_fn(|_| rng.symmetric(opts.noise)))
@@ -86,6 +90,11 @@ pub(crate) fn perturb<const N: usize, const D: usize>(
         for _ in 0..3.min(cand.len()) {
             let v = cand[(rng.next_u64() % cand.len() as u64) as usize];
             d[v] = std::array::from_fn(|_| if rng.next_u64() & 1 == 0 { 1.5 } else { -1.5 });
+        }
+    }
+    for (dv, e) in d.iter_mut().zip(extra.unwrap_or(&[])) {
+        for (x, y) in dv.iter_mut().zip(e) {
+            *x += y;
         }
     }
     for (v, star) in stars.iter().enumerate() {
