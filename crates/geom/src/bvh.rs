@@ -78,55 +78,16 @@ pub struct Bvh {
 }
 
 impl Bvh {
-    /// Builds the hierarchy over `boxes`.
+    /// Builds the hierarchy over `boxes` (subtrees of large ranges in
+    /// parallel; the same tree whatever the thread count).
     pub fn new(boxes: &[Aabb]) -> Bvh {
-        let mut b = Bvh {
-            nodes: Vec::with_capacity(2 * boxes.len() / LEAF + 1),
-            order: (0..boxes.len() as u32).collect(),
+        let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
+        let nodes = if boxes.is_empty() {
+            Vec::new()
+        } else {
+            build(boxes, &mut order, 0)
         };
-        if !boxes.is_empty() {
-            let centre = |i: u32| {
-                let x = &boxes[i as usize];
-                [0, 1, 2].map(|k| 0.5 * (x.min[k] + x.max[k]))
-            };
-            let n = boxes.len();
-            b.build(boxes, &centre, 0, n);
-        }
-        b
-    }
-
-    fn build(&mut self, boxes: &[Aabb], centre: &dyn Fn(u32) -> [f64; 3], lo: usize, hi: usize) {
-        let mut bbox = boxes[self.order[lo] as usize];
-        for &i in &self.order[lo + 1..hi] {
-            bbox.grow(&boxes[i as usize]);
-        }
-        let at = self.nodes.len();
-        self.nodes.push(Node {
-            bbox,
-            first: lo as u32,
-            count: (hi - lo) as u32,
-        });
-        if hi - lo <= LEAF {
-            return;
-        }
-        let cb = Aabb::of(
-            &self.order[lo..hi]
-                .iter()
-                .map(|&i| centre(i))
-                .collect::<Vec<_>>(),
-        );
-        let axis = (0..3)
-            .max_by(|&a, &b| (cb.max[a] - cb.min[a]).total_cmp(&(cb.max[b] - cb.min[b])))
-            .unwrap_or(0);
-        let mid = (lo + hi) / 2;
-        self.order[lo..hi].select_nth_unstable_by(mid - lo, |&a, &b| {
-            centre(a)[axis].total_cmp(&centre(b)[axis]).then(a.cmp(&b))
-        });
-        self.build(boxes, centre, lo, mid);
-        let right = self.nodes.len() as u32;
-        self.build(boxes, centre, mid, hi);
-        self.nodes[at].first = right;
-        self.nodes[at].count = 0;
+        Bvh { nodes, order }
     }
 
     /// The primitive nearest `p` by `dist2(primitive) -> Option<squared
@@ -144,7 +105,23 @@ impl Bvh {
         max_d2: f64,
         dist2: impl Fn(u32) -> Option<f64>,
     ) -> Option<(u32, f64)> {
-        let mut best: Option<(u32, f64)> = None;
+        self.nearest_seeded(p, max_d2, None, dist2)
+    }
+
+    /// [`Bvh::nearest_within`] with a first candidate `seed` (e.g. the
+    /// answer for a nearby point): its distance bounds the search from the
+    /// start. The answer does not depend on the seed (the least distance,
+    /// ties to the lower index), only the work does.
+    pub fn nearest_seeded(
+        &self,
+        p: [f64; 3],
+        max_d2: f64,
+        seed: Option<u32>,
+        dist2: impl Fn(u32) -> Option<f64>,
+    ) -> Option<(u32, f64)> {
+        let mut best: Option<(u32, f64)> = seed
+            .filter(|&i| (i as usize) < self.order.len())
+            .and_then(|i| dist2(i).filter(|&d| d <= max_d2).map(|d| (i, d)));
         if self.nodes.is_empty() {
             return None;
         }
@@ -184,6 +161,76 @@ impl Bvh {
         }
         best
     }
+}
+
+/// Ranges at least this long build their two halves in parallel.
+const PARALLEL: usize = 1 << 14;
+
+/// The subtree over `order` (the primitives at `offset..` of the whole
+/// order), its nodes numbered from 0: an inner node's `first` is its right
+/// child's number, a leaf's the position of its first primitive.
+fn build(boxes: &[Aabb], order: &mut [u32], offset: usize) -> Vec<Node> {
+    let centre = |i: u32| {
+        let x = &boxes[i as usize];
+        [0, 1, 2].map(|k| 0.5 * (x.min[k] + x.max[k]))
+    };
+    let mut bbox = boxes[order[0] as usize];
+    for &i in &order[1..] {
+        bbox.grow(&boxes[i as usize]);
+    }
+    let n = order.len();
+    if n <= LEAF {
+        return vec![Node {
+            bbox,
+            first: offset as u32,
+            count: n as u32,
+        }];
+    }
+    let mut cb = Aabb {
+        min: [f64::INFINITY; 3],
+        max: [f64::NEG_INFINITY; 3],
+    };
+    for &i in order.iter() {
+        for (k, c) in centre(i).into_iter().enumerate() {
+            cb.min[k] = cb.min[k].min(c);
+            cb.max[k] = cb.max[k].max(c);
+        }
+    }
+    let axis = (0..3)
+        .max_by(|&a, &b| (cb.max[a] - cb.min[a]).total_cmp(&(cb.max[b] - cb.min[b])))
+        .unwrap_or(0);
+    let mid = n / 2;
+    order.select_nth_unstable_by(mid, |&a, &b| {
+        centre(a)[axis].total_cmp(&centre(b)[axis]).then(a.cmp(&b))
+    });
+    let (lo, hi) = order.split_at_mut(mid);
+    let (left, right) = if n >= PARALLEL {
+        rayon::join(
+            || build(boxes, lo, offset),
+            || build(boxes, hi, offset + mid),
+        )
+    } else {
+        (build(boxes, lo, offset), build(boxes, hi, offset + mid))
+    };
+    // this node, then the left subtree (from 1), then the right one
+    let right_at = 1 + left.len();
+    let mut nodes = Vec::with_capacity(right_at + right.len());
+    nodes.push(Node {
+        bbox,
+        first: right_at as u32,
+        count: 0,
+    });
+    let shift = |v: Vec<Node>, by: usize| {
+        v.into_iter().map(move |mut node| {
+            if node.count == 0 {
+                node.first += by as u32;
+            }
+            node
+        })
+    };
+    nodes.extend(shift(left, 1));
+    nodes.extend(shift(right, right_at));
+    nodes
 }
 
 #[cfg(test)]

@@ -11,6 +11,7 @@
 
 use crate::quality::{cross, dot, norm, sub, unit};
 use crate::reference::Reference;
+use std::sync::atomic::AtomicU32;
 
 /// The set a vertex stays on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -41,12 +42,16 @@ impl Kind {
 }
 
 /// The kinds of a mesh's vertices.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Constraints {
     /// Per vertex.
     pub kind: Vec<Kind>,
     /// Per vertex, a normal the surface under it must agree with.
     pub hint: Vec<[f64; 3]>,
+    /// Per vertex, the triangle of its last closest-point query
+    /// (`u32::MAX`: none), where the next one starts: it changes the work
+    /// of a query, never its answer.
+    feet: Vec<AtomicU32>,
 }
 
 /// Whether the mesh is a surface (D = 2: every vertex on the reference)
@@ -99,14 +104,19 @@ impl Constraints {
                 }
             })
             .collect();
-        Constraints { kind, hint }
+        let feet = (0..positions.len())
+            .map(|_| AtomicU32::new(u32::MAX))
+            .collect();
+        Constraints { kind, hint, feet }
     }
 
     /// The point of vertex `v`'s set nearest `p`.
     pub fn project(&self, r: &Reference, v: usize, p: [f64; 3]) -> [f64; 3] {
         match self.kind[v] {
             Kind::Free | Kind::Fixed => p,
-            Kind::Surface => r.closest(p, Some(self.hint[v])).map_or(p, |f| f.point),
+            Kind::Surface => r
+                .closest_cached(p, Some(self.hint[v]), self.feet.get(v))
+                .map_or(p, |f| f.point),
             Kind::Curve { boundary } => r.closest_on_curves(p, boundary).map_or(p, |c| c.1),
         }
     }
@@ -124,7 +134,7 @@ impl Constraints {
         match (self.kind[v], r) {
             (Kind::Free, _) => (p, (3, id)),
             (Kind::Surface, Some(r)) => {
-                let foot = r.closest(p, Some(self.hint[v]));
+                let foot = r.closest_cached(p, Some(self.hint[v]), self.feet.get(v));
                 let n = foot
                     .map(|f| r.normals[f.triangle as usize])
                     .filter(|n| norm(*n) > 0.0)

@@ -14,6 +14,7 @@
 use crate::bvh::{Aabb, Bvh};
 use crate::quality::{cross, dot, norm, sub};
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicU32, Ordering};
 
 /// A curve segment of the reference.
 #[derive(Clone, Copy, Debug)]
@@ -37,7 +38,7 @@ pub struct Foot {
 
 /// How much farther than the nearest triangle a triangle agreeing with a
 /// normal hint may be ([`Reference::closest`]).
-pub const HINT_REACH: f64 = 3.0;
+pub const HINT_REACH: f64 = 10.0;
 
 /// The reference surface (see the module docs).
 #[derive(Clone, Debug)]
@@ -65,8 +66,9 @@ impl Reference {
     /// The reference of a triangle surface; `feature_deg`: edges whose
     /// normals differ by more than this angle are features (180: none).
     pub fn surface(positions: &[[f64; 3]], triangles: &[[u32; 3]], feature_deg: f64) -> Self {
+        use rayon::prelude::*;
         let normals: Vec<[f64; 3]> = triangles
-            .iter()
+            .par_iter()
             .map(|t| {
                 let n = cross(
                     sub(positions[t[1] as usize], positions[t[0] as usize]),
@@ -80,29 +82,41 @@ impl Reference {
                 }
             })
             .collect();
-        let mut edges: HashMap<[u32; 2], Vec<u32>> = HashMap::new();
-        for (i, t) in triangles.iter().enumerate() {
-            for k in 0..3 {
-                let (a, b) = (t[k], t[(k + 1) % 3]);
-                edges
-                    .entry([a.min(b), a.max(b)])
-                    .or_default()
-                    .push(i as u32);
-            }
-        }
-        let cos = feature_deg.to_radians().cos();
-        let mut segments: Vec<Segment> = edges
-            .into_iter()
-            .filter_map(|(e, ts)| {
-                let boundary = ts.len() == 1;
-                let feature = ts.len() > 2
-                    || (ts.len() == 2 && {
-                        let (n0, n1) = (normals[ts[0] as usize], normals[ts[1] as usize]);
-                        norm(n0) > 0.0 && norm(n1) > 0.0 && dot(n0, n1) < cos
-                    });
-                (boundary || feature).then_some(Segment { ends: e, boundary })
+        // edges by a parallel sort of (edge, triangle): runs of one key
+        let mut keyed: Vec<([u32; 2], u32)> = triangles
+            .par_iter()
+            .enumerate()
+            .flat_map_iter(|(i, t)| {
+                (0..3).map(move |k| {
+                    let (a, b) = (t[k], t[(k + 1) % 3]);
+                    ([a.min(b), a.max(b)], i as u32)
+                })
             })
             .collect();
+        keyed.par_sort_unstable();
+        let cos = feature_deg.to_radians().cos();
+        let mut segments = Vec::new();
+        let mut i = 0;
+        while i < keyed.len() {
+            let mut j = i + 1;
+            while j < keyed.len() && keyed[j].0 == keyed[i].0 {
+                j += 1;
+            }
+            let ts = &keyed[i..j];
+            let boundary = ts.len() == 1;
+            let feature = ts.len() > 2
+                || (ts.len() == 2 && {
+                    let (n0, n1) = (normals[ts[0].1 as usize], normals[ts[1].1 as usize]);
+                    norm(n0) > 0.0 && norm(n1) > 0.0 && dot(n0, n1) < cos
+                });
+            if boundary || feature {
+                segments.push(Segment {
+                    ends: keyed[i].0,
+                    boundary,
+                });
+            }
+            i = j;
+        }
         segments.sort_unstable_by_key(|s| s.ends);
         drop_short_features(&mut segments, positions.len());
         let corner = corners(positions, &segments, cos);
@@ -190,19 +204,29 @@ impl Reference {
     /// agrees there. (An unbounded search for an agreeing triangle visits
     /// the whole hierarchy for a point over a flipped region.)
     pub fn closest(&self, p: [f64; 3], hint: Option<[f64; 3]>) -> Option<Foot> {
+        self.closest_seeded(p, hint, None)
+    }
+
+    /// [`Reference::closest`], the search started from triangle `seed`
+    /// (the answer for a nearby point): the same answer, less work.
+    pub fn closest_seeded(
+        &self,
+        p: [f64; 3],
+        hint: Option<[f64; 3]>,
+        seed: Option<u32>,
+    ) -> Option<Foot> {
         let d2 = |t: u32| {
             let q = self.closest_on_triangle(t, p);
             let d = sub(q, p);
             dot(d, d)
         };
-        let nearest = self.triangle_bvh.nearest(p, |t| Some(d2(t)))?;
+        let bvh = &self.triangle_bvh;
+        let nearest = bvh.nearest_seeded(p, f64::INFINITY, seed, |t| Some(d2(t)))?;
         let found = match hint {
             Some(h) if dot(self.normals[nearest.0 as usize], h) <= 0.0 => {
                 let reach = HINT_REACH * nearest.1.sqrt() + 1e-3 * self.diagonal;
-                self.triangle_bvh
-                    .nearest_within(p, reach * reach, |t| {
-                        (dot(self.normals[t as usize], h) > 0.0).then(|| d2(t))
-                    })
+                let agrees = |t: u32| dot(self.normals[t as usize], h) > 0.0;
+                bvh.nearest_seeded(p, reach * reach, seed, |t| agrees(t).then(|| d2(t)))
                     .unwrap_or(nearest)
             }
             _ => nearest,
@@ -268,12 +292,36 @@ impl Reference {
     /// normal for a quad without a source triangle (the stage) and for a
     /// mesh file measured against a surface (`dualex inspect --surface`).
     pub fn quad_normal(&self, p: &[[f64; 3]; 4]) -> [f64; 3] {
+        self.quad_normal_cached(p, None)
+    }
+
+    /// [`Reference::quad_normal`], its search started from (and the
+    /// triangle found kept in) `cache`: the same answer, less work.
+    pub fn quad_normal_cached(&self, p: &[[f64; 3]; 4], cache: Option<&AtomicU32>) -> [f64; 3] {
         let centre = [0, 1, 2].map(|k| p.iter().map(|x| x[k]).sum::<f64>() / 4.0);
         let newell = cross(sub(p[2], p[0]), sub(p[3], p[1]));
-        self.closest(centre, Some(newell))
+        self.closest_cached(centre, Some(newell), cache)
             .map(|f| self.normals[f.triangle as usize])
             .filter(|n| norm(*n) > 0.0)
             .unwrap_or_else(|| crate::quality::unit(newell))
+    }
+
+    /// [`Reference::closest_seeded`] from the triangle in `cache`
+    /// (`u32::MAX`: none), which then holds the triangle found.
+    pub fn closest_cached(
+        &self,
+        p: [f64; 3],
+        hint: Option<[f64; 3]>,
+        cache: Option<&AtomicU32>,
+    ) -> Option<Foot> {
+        let seed = cache
+            .map(|c| c.load(Ordering::Relaxed))
+            .filter(|&t| t != u32::MAX);
+        let foot = self.closest_seeded(p, hint, seed);
+        if let (Some(c), Some(f)) = (cache, &foot) {
+            c.store(f.triangle, Ordering::Relaxed);
+        }
+        foot
     }
 
     /// Whether the reference has boundary segments.
@@ -445,8 +493,24 @@ mod tests {
         let f = r.closest([0.5, 0.5, 1.5], Some([0., 0., 1.])).unwrap();
         assert!(r.normals[f.triangle as usize][2] > 0.99);
         // a thin-part hint: from inside near the top, asking for a face
-        // that looks down finds the bottom
+        // that looks down finds the bottom (within HINT_REACH times the
+        // distance to the top)
         let f = r.closest([0.5, 0.5, 0.9], Some([0., 0., -1.])).unwrap();
         assert!(f.point[2].abs() < 1e-15);
+        // beyond that reach, the nearest face, whatever it looks at
+        let f = r.closest([0.5, 0.5, 0.99], Some([0., 0., -1.])).unwrap();
+        assert!((f.point[2] - 1.0).abs() < 1e-15);
+        // a seeded search gives the same answers
+        for t in 0..12 {
+            let g = r
+                .closest_seeded([0.5, 0.5, 0.9], Some([0., 0., -1.]), Some(t))
+                .unwrap();
+            assert_eq!(
+                g.triangle,
+                r.closest([0.5, 0.5, 0.9], Some([0., 0., -1.]))
+                    .unwrap()
+                    .triangle
+            );
+        }
     }
 }

@@ -138,8 +138,21 @@ pub fn quads(
             }
         }
     }
+    // each quad's nearest-triangle search starts from the last one found,
+    // first its source (less work, the same answer)
+    let feet: Vec<std::sync::atomic::AtomicU32> = (0..cells.len())
+        .map(|q| {
+            let s = sources.get(q).copied().unwrap_or(u32::MAX);
+            let s = if (s as usize) < triangles.len() {
+                s
+            } else {
+                u32::MAX
+            };
+            std::sync::atomic::AtomicU32::new(s)
+        })
+        .collect();
     let reframe = |x: &[[f64; 3]], ci: usize, r: &Reference| {
-        quad_frame(r.quad_normal(&quality::corners(x, &cells[ci])))
+        quad_frame(r.quad_normal_cached(&quality::corners(x, &cells[ci]), feet.get(ci)))
     };
     let measure = |x: &[[f64; 3]], frames: &[[[f64; 3]; 2]]| {
         let normals: Vec<[f64; 3]> = frames.iter().map(|f| cross(f[0], f[1])).collect();
@@ -436,9 +449,10 @@ fn run<const D: usize, const K: usize>(
     // growing rings; the positions with the fewest inverted elements are
     // kept (an attempt that makes things worse is undone)
     let inverted_of = |v: &[f64]| v.iter().filter(|&&v| v <= 0.0).count();
-    let mut best = (inverted_of(&remeasure(x, &mut c)), x.to_vec());
+    // one measure per state of `x` (quads: a closest-point query each)
+    let mut bad = remeasure(x, &mut c);
+    let mut best = (inverted_of(&bad), x.to_vec());
     for &rings in &RINGS {
-        let bad = remeasure(x, &mut c);
         let now = inverted_of(&bad);
         if now < best.0 {
             best = (now, x.to_vec());
@@ -468,11 +482,13 @@ fn run<const D: usize, const K: usize>(
         };
         rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p, &mut budget).rounds;
         rep.rings = rings;
+        bad = remeasure(x, &mut c);
     }
-    if inverted_of(&remeasure(x, &mut c)) > best.0 {
+    if inverted_of(&bad) > best.0 {
         x.copy_from_slice(&best.1);
+        bad = remeasure(x, &mut c);
     }
-    rep.after = Summary::of(&remeasure(x, &mut c));
+    rep.after = Summary::of(&bad);
     for v in 0..x.len() {
         let d = norm(sub(x[v], start[v]));
         if d > 0.0 {
