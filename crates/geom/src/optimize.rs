@@ -60,6 +60,10 @@ pub struct Outcome {
     pub det_min: f64,
 }
 
+/// Corner simplices per chunk of an evaluation (a fixed size: the sum's
+/// order does not depend on the thread count).
+const CHUNK: usize = 4096;
+
 /// Most a vertex on the reference moves in one round, in mean edge
 /// lengths of the cells optimised.
 const MAX_STEP: f64 = 0.25;
@@ -176,6 +180,39 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
         j
     }
 
+    /// The weighted energy and the determinant of simplex `s`, its
+    /// gradient on its `D + 1` vertices written to `g`.
+    fn simplex(
+        &self,
+        s: (u32, u8),
+        x: &[[f64; 3]],
+        eps: f64,
+        theta: f64,
+        g: &mut [[f64; 3]; 4],
+    ) -> (f64, f64) {
+        let ci = self.cells[s.0 as usize] as usize;
+        let j = self.jacobian(s, x);
+        let (e, de, det) = energy_det::<D>(&j, eps, theta);
+        let h = self.c.h[ci];
+        let w = h.powi(D as i32);
+        let frame = &self.frames[s.0 as usize];
+        let mut g0 = [0.0; 3];
+        for k in 0..D {
+            let mut gk = [0.0; 3];
+            for (r, row) in frame.iter().enumerate() {
+                for a in 0..3 {
+                    gk[a] += row[a] * de[r][k] * w / h;
+                }
+            }
+            for a in 0..3 {
+                g0[a] -= gk[a];
+            }
+            g[k + 1] = gk;
+        }
+        g[0] = g0;
+        (e * w, det)
+    }
+
     /// Energy, least determinant, and per simplex the gradient on its
     /// `D + 1` vertices.
     fn evaluate(
@@ -185,42 +222,27 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
         theta: f64,
         grads: &mut [[[f64; 3]; 4]],
     ) -> (f64, f64) {
-        let per: Vec<(f64, f64)> = self
+        // per chunk of a fixed size: energy sum, least determinant, inverted
+        // count; summed in chunk order (the same bits whatever the threads)
+        let per: Vec<(f64, f64, usize)> = self
             .simplices
-            .par_iter()
-            .zip(grads.par_iter_mut())
-            .map(|(&s, g)| {
-                let ci = self.cells[s.0 as usize] as usize;
-                let j = self.jacobian(s, x);
-                let (e, de, det) = energy_det::<D>(&j, eps, theta);
-                let h = self.c.h[ci];
-                let w = h.powi(D as i32);
-                let frame = &self.frames[s.0 as usize];
-                let mut g0 = [0.0; 3];
-                for k in 0..D {
-                    let mut gk = [0.0; 3];
-                    for (r, row) in frame.iter().enumerate() {
-                        for a in 0..3 {
-                            gk[a] += row[a] * de[r][k] * w / h;
-                        }
-                    }
-                    for a in 0..3 {
-                        g0[a] -= gk[a];
-                    }
-                    g[k + 1] = gk;
+            .par_chunks(CHUNK)
+            .zip(grads.par_chunks_mut(CHUNK))
+            .map(|(ss, gs)| {
+                let mut acc = (0.0, f64::INFINITY, 0usize);
+                for (&s, g) in ss.iter().zip(gs) {
+                    let (e, det) = self.simplex(s, x, eps, theta, g);
+                    acc.0 += e;
+                    acc.1 = acc.1.min(det);
+                    acc.2 += usize::from(det <= 0.0);
                 }
-                g[0] = g0;
-                (e * w, det)
+                acc
             })
             .collect();
-        // a fixed-order sum: the same bits whatever the thread count
-        let e = per
-            .chunks(4096)
-            .map(|c| c.iter().map(|p| p.0).sum::<f64>())
-            .sum();
+        let e = per.iter().map(|p| p.0).sum();
         let d = per.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
         self.inverted.store(
-            per.iter().filter(|p| p.1 <= 0.0).count(),
+            per.iter().map(|p| p.2).sum(),
             std::sync::atomic::Ordering::Relaxed,
         );
         (e, d)
