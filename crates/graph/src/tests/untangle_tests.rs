@@ -235,20 +235,25 @@ fn pleat_preview_agrees_with_the_removal() {
     }
 }
 
-/// A removal that would glue a node to itself is put off, then done
-/// when nothing else is left: deferred, never dropped.
-#[test]
-fn self_loop_removals_are_deferred_not_dropped() {
+/// X normal, Y reverted, pleat X.+w ↔ Y.+w (w the last axis); Z normal
+/// with Z.+w ↔ X.-w and Z.-w ↔ Y.-w (a pleat too): every removal closes a
+/// node on itself.
+fn closing_pair<const D: usize>() -> crate::NodeGraph<D> {
     use crate::ids::Node;
     use dualex_map::Rot;
-    // 2D: X normal, Y reverted, pleat X.+u ↔ Y.+u; Z normal with
-    // Z.+u ↔ X.-u and Z.-u ↔ Y.-u (a pleat too): every removal closes a
-    // node on itself
-    let mut g = crate::NodeGraph::<2>::new(vec![false, true, false]);
-    let s = |n: u32, d: usize| Node(n).side::<2>(d);
-    g.link(s(0, 0), s(1, 0), Rot::IDENTITY).unwrap();
-    g.link(s(2, 0), s(0, 1), Rot::IDENTITY).unwrap();
-    g.link(s(2, 1), s(1, 1), Rot::IDENTITY).unwrap();
+    let mut g = crate::NodeGraph::<D>::new(vec![false, true, false]);
+    let (p, m) = (2 * D - 2, 2 * D - 1);
+    let s = |n: u32, d: usize| Node(n).side::<D>(d);
+    g.link(s(0, p), s(1, p), Rot::IDENTITY).unwrap();
+    g.link(s(2, p), s(0, m), Rot::IDENTITY).unwrap();
+    g.link(s(2, m), s(1, m), Rot::IDENTITY).unwrap();
+    g
+}
+
+/// A removal that would glue a node to itself is put off, then done
+/// when nothing else is left: deferred, never dropped (both dimensions).
+fn deferred_not_dropped<const D: usize>() {
+    let mut g = closing_pair::<D>();
     g.check().unwrap();
     for p in g.pleat_sides() {
         assert_eq!(g.pleat_preview(p).map(|p| p.self_loops), Some(1));
@@ -258,17 +263,12 @@ fn self_loop_removals_are_deferred_not_dropped() {
     assert!(st.deferred >= 1, "{st:?}");
     assert_eq!((st.pleats_removed, st.self_loops), (1, 1));
     assert_eq!((st.pleats_left, st.reverted_left, g.n_alive()), (0, 0, 1));
-    // 3D: the same along w
-    let mut g = crate::NodeGraph::<3>::new(vec![false, true, false]);
-    let s = |n: u32, d: usize| Node(n).side::<3>(d);
-    g.link(s(0, 4), s(1, 4), Rot::IDENTITY).unwrap();
-    g.link(s(2, 4), s(0, 5), Rot::IDENTITY).unwrap();
-    g.link(s(2, 5), s(1, 5), Rot::IDENTITY).unwrap();
-    g.check().unwrap();
-    let st = g.untangle();
-    g.check().unwrap();
-    assert!(st.deferred >= 1, "{st:?}");
-    assert_eq!((st.pleats_left, st.reverted_left, g.n_alive()), (0, 0, 1));
+}
+
+#[test]
+fn self_loop_removals_are_deferred_not_dropped() {
+    deferred_not_dropped::<2>();
+    deferred_not_dropped::<3>();
 }
 
 /// A pillow (two nodes facing on every side: a pure OP1) among folds is
