@@ -21,6 +21,9 @@ use dualex_gen::from_mesh::{self, meshes, FromMeshOptions};
 /// and reported ("NOW PASSES").
 const KNOWN_INVERTED: &[&str] = &[
     "cube6/k2/n0.3/folds",
+    // since the untangling order of issue 22 (other nodes survive the
+    // folds; 24 quads as before): 3 inverted left of 6
+    "cube6/k2/n0.6/folds",
     "cube6/k3/n0.3/folds",
     "cube6/k3/n0.6/folds",
     "cube6/k3/n0.9/folds",

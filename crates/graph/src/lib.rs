@@ -57,5 +57,5 @@ pub use fair::{FairingStats, LiftUndo};
 pub use glue::{cell_code, Glued, NO_VERTEX};
 pub use graph::NodeGraph;
 pub use ids::{Node, Side};
-pub use ops::{Op2Outcome, OpError, PleatRemoval};
+pub use ops::{Op2Outcome, OpError, PleatPreview, PleatRemoval};
 pub use untangle::UntangleStats;

@@ -106,7 +106,51 @@ pub struct PleatRemoval {
     pub self_loops: usize,
 }
 
+/// What removing a pleat would do, read without writing
+/// ([`NodeGraph::pleat_preview`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PleatPreview {
+    /// OP2 (saddle lifts) the removal needs: the sides on which the two
+    /// nodes do not face each other yet (0 = a pure OP1).
+    pub op2: usize,
+    /// New pairs that would join two sides of one node, among those whose
+    /// former partners lie outside the pleat (the others are not
+    /// predicted: earlier OP2 of the same removal change them).
+    pub self_loops: usize,
+}
+
 impl<const D: usize> NodeGraph<D> {
+    /// What [`NodeGraph::remove_pleat`] at `s` would do, without writing;
+    /// `None` when it is not applicable (dead or unmatched side, not a
+    /// pleat, label rule broken).
+    pub fn pleat_preview(&self, s: Side) -> Option<PleatPreview> {
+        self.usable(s).ok()?;
+        let t = self.opposite(s)?;
+        if !self.is_pleat(s) || !self.label_ok(s) {
+            return None;
+        }
+        let (x, y, rho) = (self.node_of(s), self.node_of(t), self.rot[s.idx()]);
+        let mut out = PleatPreview {
+            op2: 0,
+            self_loops: 0,
+        };
+        for d in 0..2 * D {
+            let (a, c) = (self.side(x, d), self.side(y, rho.apply_dir(d)));
+            let (b, e) = (self.opposite(a), self.opposite(c));
+            if b == Some(c) {
+                continue;
+            }
+            out.op2 += 1;
+            if let (Some(b), Some(e)) = (b, e) {
+                let (nb, ne) = (self.node_of(b), self.node_of(e));
+                if nb == ne && nb != x && nb != y {
+                    out.self_loops += 1;
+                }
+            }
+        }
+        Some(out)
+    }
+
     /// OP2, reconnection (a saddle lift): glued pairs a ↔ b and c ↔ e
     /// become a ↔ c (rotation `rho_ac`, chart of node(a) to node(c)) and
     /// b ↔ e with rot(b→e) = rot(b→a) then ρ_ac then rot(c→e). If only one

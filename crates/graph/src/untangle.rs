@@ -4,10 +4,29 @@
 //! left alone and counted). Output: the same graph with pleats removed
 //! (pairs of nodes deleted, partners reconnected) and [`UntangleStats`].
 //!
-//! Termination: a pop either fails (nothing written, nothing pushed) or
-//! removes a pleat, which deletes two nodes and pushes at most 2·D sides.
-//! So at most N/2 removals happen and at most P + N·D sides are ever
-//! pushed (P = initial pleat pairs), which bounds the iterations.
+//! Order (issue 22): the paper applies OP1 "as soon as possible" and OP2
+//! only to isolate a pleat. So the pleat popped next is one whose removal
+//! needs the fewest OP2 (saddle lifts) now ([`NodeGraph::pleat_preview`]):
+//! pure OP1 first, then pleats facing on all sides but one, and so on;
+//! and, in a first pass, not one whose removal would glue a node to itself
+//! (those are deferred until nothing else is left). A fold pulled through a
+//! singular node, removed in side order, paired reverted nodes across the
+//! node: the singularity split in two (2D: a valence 7 came back as a 3
+//! and an 8) or hexes came out degenerate (3D).
+//!
+//! ```text
+//!   buckets[c]   sides of pleats that needed c OP2 when pushed (c < 2·D)
+//!   pop          the lowest non-empty bucket, from its end; the cost is
+//!                read again: higher now → pushed into its bucket (it only
+//!                ever moves up), else removed (or deferred, first pass)
+//!   push         after a removal, each new pleat pair and every pleat side
+//!                of the nodes it joins (their cost may have dropped)
+//! ```
+//!
+//! Termination: a removal deletes two nodes (at most N/2 happen) and
+//! pushes at most 2·D·(1 + 4·D) sides; an entry moves up at most 2·D − 1
+//! buckets and is deferred at most once. So the pops are bounded by
+//! (2·D + 1)·(P + N·D·(1 + 4·D)) (P = initial pleat pairs).
 
 use crate::graph::NodeGraph;
 use crate::ids::Side;
@@ -37,6 +56,9 @@ pub struct UntangleStats {
     pub new_pleats: usize,
     /// Pleats that could not be removed (they break the label rule).
     pub not_applicable: usize,
+    /// Pops put off to the second pass: the removal would have glued a
+    /// node to itself.
+    pub deferred: usize,
     /// Pleat pairs left at the end.
     pub pleats_left: usize,
     /// Alive reverted nodes left at the end.
@@ -60,10 +82,37 @@ impl UntangleStats {
             "self_loops": self.self_loops,
             "new_pleats": self.new_pleats,
             "not_applicable": self.not_applicable,
+            "deferred": self.deferred,
             "pleats_left": self.pleats_left,
             "reverted_left": self.reverted_left,
             "iterations": self.iterations,
         })
+    }
+}
+
+/// The worklist: one bucket of sides per OP2 count.
+struct Work<const D: usize> {
+    buckets: Vec<Vec<Side>>,
+    rng: Option<SplitMix>,
+}
+
+impl<const D: usize> Work<D> {
+    /// Pushes `s` into bucket `cost` (at a random place when shuffled).
+    fn push(&mut self, s: Side, cost: usize) {
+        let Some(b) = self.buckets.get_mut(cost) else {
+            return;
+        };
+        b.push(s);
+        if let Some(r) = self.rng.as_mut() {
+            let (at, last) = (r.below(b.len()), b.len() - 1);
+            b.swap(at, last);
+        }
+    }
+
+    /// Pops from the lowest non-empty bucket: (side, bucket).
+    fn pop(&mut self) -> Option<(Side, usize)> {
+        let c = self.buckets.iter().position(|b| !b.is_empty())?;
+        self.buckets[c].pop().map(|s| (s, c))
     }
 }
 
@@ -76,31 +125,70 @@ impl<const D: usize> NodeGraph<D> {
             .collect()
     }
 
-    /// Removes all pleats, popping the worklist from its end.
+    /// Removes all pleats, fewest OP2 first (see the module docs).
     pub fn untangle(&mut self) -> UntangleStats {
         self.untangle_with(None)
     }
 
-    /// Like [`NodeGraph::untangle`], but the initial worklist is shuffled
-    /// and each new pair swaps places with a random entry (seeded).
+    /// Like [`NodeGraph::untangle`], but ties (pleats needing as many OP2)
+    /// are broken at random (seeded): the initial worklist is shuffled and
+    /// each push swaps places with a random entry of its bucket.
     pub fn untangle_shuffled(&mut self, seed: u64) -> UntangleStats {
         self.untangle_with(Some(SplitMix::new(seed)))
     }
 
+    /// Pushes `s` by its current OP2 count, if it is a removable pleat.
+    fn push_pleat(&self, work: &mut Work<D>, s: Side) {
+        if let Some(p) = self.pleat_preview(s) {
+            work.push(s, p.op2);
+        }
+    }
+
     fn untangle_with(&mut self, mut rng: Option<SplitMix>) -> UntangleStats {
-        let mut work = self.pleat_sides();
+        let mut first = self.pleat_sides();
         let mut st = UntangleStats {
-            pleats_found: work.len(),
+            pleats_found: first.len(),
             ..Default::default()
         };
         if let Some(r) = rng.as_mut() {
-            r.shuffle(&mut work);
+            r.shuffle(&mut first);
         }
-        let bound = work.len() + self.n_nodes() * D;
-        while let Some(s) = work.pop() {
+        let mut work = Work::<D> {
+            buckets: vec![Vec::new(); 2 * D],
+            rng,
+        };
+        for &s in first.iter().rev() {
+            match self.pleat_preview(s) {
+                Some(p) => work.push(s, p.op2),
+                None => st.not_applicable += 1,
+            }
+        }
+        let mut deferred = Vec::new();
+        let mut first_pass = true;
+        let bound = (2 * D + 1) * (first.len() + self.n_nodes() * D * (1 + 4 * D));
+        loop {
+            let Some((s, bucket)) = work.pop() else {
+                if deferred.is_empty() || !first_pass {
+                    break;
+                }
+                first_pass = false;
+                for s in std::mem::take(&mut deferred).into_iter().rev() {
+                    self.push_pleat(&mut work, s);
+                }
+                continue;
+            };
             st.iterations += 1;
             assert!(st.iterations <= bound, "bug: untangling exceeded its bound");
-            if !self.is_alive(self.node_of(s)) || !self.is_pleat(s) {
+            let Some(p) = self.pleat_preview(s) else {
+                continue;
+            };
+            if p.op2 > bucket {
+                work.push(s, p.op2);
+                continue;
+            }
+            if first_pass && p.self_loops > 0 {
+                st.deferred += 1;
+                deferred.push(s);
                 continue;
             }
             let Ok(done) = self.remove_pleat(s) else {
@@ -114,14 +202,15 @@ impl<const D: usize> NodeGraph<D> {
             st.both_boundary += done.both_boundary;
             st.partner_in_pleat += done.partner_in_pleat;
             st.self_loops += done.self_loops;
-            for b in done.new_pairs {
-                if self.is_pleat(b) {
-                    st.new_pleats += 1;
-                    work.push(b);
-                    if let Some(r) = rng.as_mut() {
-                        let at = r.below(work.len());
-                        let last = work.len() - 1;
-                        work.swap(at, last);
+            for &b in &done.new_pairs {
+                st.new_pleats += usize::from(self.is_pleat(b));
+                self.push_pleat(&mut work, b);
+                let Some(e) = self.opposite(b) else {
+                    continue;
+                };
+                for n in [self.node_of(b), self.node_of(e)] {
+                    for d in 0..2 * D {
+                        self.push_pleat(&mut work, self.side(n, d));
                     }
                 }
             }

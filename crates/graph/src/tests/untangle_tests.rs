@@ -187,3 +187,135 @@ fn large_grids_timing() {
         (0, 64000, 1)
     );
 }
+
+/// The preview reads what a removal does, writes nothing, and the
+/// removal agrees with it (check() after each removal).
+fn preview_agrees<const D: usize>(spec: &GridSpec<D>, seed: u64) {
+    let rots = random_rotations::<D>(spec.build().n_nodes(), seed);
+    let g = rotate_charts(&spec.build(), &rots);
+    let sides = g.pleat_sides();
+    assert!(!sides.is_empty());
+    for s in sides {
+        let before = g.clone();
+        let Some(p) = g.pleat_preview(s) else {
+            panic!("a fold's pleat is removable: {s:?}");
+        };
+        assert_eq!(g, before);
+        let mut h = g.clone();
+        let done = h.remove_pleat(s).unwrap();
+        h.check().unwrap();
+        assert_eq!(p.op2, done.op2, "{spec:?} {s:?}");
+        assert!(p.op2 < 2 * D);
+        if done.partner_in_pleat == 0 {
+            assert_eq!(p.self_loops, done.self_loops);
+        }
+    }
+    // not applicable: an unmatched side, a same-flag pair
+    let s = (0..g.n_sides() as u32)
+        .map(crate::Side)
+        .find(|&s| g.opposite(s).is_none())
+        .unwrap();
+    assert_eq!(g.pleat_preview(s), None);
+    let t = (0..g.n_sides() as u32)
+        .map(crate::Side)
+        .find(|&s| g.opposite(s).is_some() && !g.is_pleat(s))
+        .unwrap();
+    assert_eq!(g.pleat_preview(t), None);
+}
+
+#[test]
+fn pleat_preview_agrees_with_the_removal() {
+    for seed in 0..3 {
+        for spec in specs([4, 3]) {
+            preview_agrees(&spec, seed);
+        }
+        for spec in specs([3, 2, 2]) {
+            preview_agrees(&spec, seed);
+        }
+    }
+}
+
+/// X normal, Y reverted, pleat X.+w ↔ Y.+w (w the last axis); Z normal
+/// with Z.+w ↔ X.-w and Z.-w ↔ Y.-w (a pleat too): every removal closes a
+/// node on itself.
+fn closing_pair<const D: usize>() -> crate::NodeGraph<D> {
+    use crate::ids::Node;
+    use dualex_map::Rot;
+    let mut g = crate::NodeGraph::<D>::new(vec![false, true, false]);
+    let (p, m) = (2 * D - 2, 2 * D - 1);
+    let s = |n: u32, d: usize| Node(n).side::<D>(d);
+    g.link(s(0, p), s(1, p), Rot::IDENTITY).unwrap();
+    g.link(s(2, p), s(0, m), Rot::IDENTITY).unwrap();
+    g.link(s(2, m), s(1, m), Rot::IDENTITY).unwrap();
+    g
+}
+
+/// A removal that would glue a node to itself is put off, then done
+/// when nothing else is left: deferred, never dropped (both dimensions).
+fn deferred_not_dropped<const D: usize>() {
+    let mut g = closing_pair::<D>();
+    g.check().unwrap();
+    for p in g.pleat_sides() {
+        assert_eq!(g.pleat_preview(p).map(|p| p.self_loops), Some(1));
+    }
+    let st = g.untangle();
+    g.check().unwrap();
+    assert!(st.deferred >= 1, "{st:?}");
+    assert_eq!((st.pleats_removed, st.self_loops), (1, 1));
+    assert_eq!((st.pleats_left, st.reverted_left, g.n_alive()), (0, 0, 1));
+}
+
+#[test]
+fn self_loop_removals_are_deferred_not_dropped() {
+    deferred_not_dropped::<2>();
+    deferred_not_dropped::<3>();
+}
+
+/// A pillow (two nodes facing on every side: a pure OP1) among folds is
+/// removed with no saddle lift and changes nothing else, in both dimensions:
+/// the folds' figures are those of the folds alone.
+fn pillow_first<const D: usize>(spec: &GridSpec<D>) {
+    use dualex_map::Rot;
+    let alone = {
+        let mut g = spec.build();
+        g.untangle()
+    };
+    let base = spec.build();
+    let n = base.n_nodes();
+    let mut flags: Vec<bool> = (0..n)
+        .map(|i| base.is_reverted(crate::Node(i as u32)))
+        .collect();
+    flags.extend([false, true]);
+    let mut g = crate::NodeGraph::<D>::new(flags);
+    for s in 0..base.n_sides() as u32 {
+        let s = crate::Side(s);
+        if let (Some(o), Some(r)) = (base.opposite(s), base.rotation(s)) {
+            if s < o {
+                g.link(s, o, r).unwrap();
+            }
+        }
+    }
+    let (x, y) = (crate::Node(n as u32), crate::Node(n as u32 + 1));
+    for d in 0..2 * D {
+        g.link(x.side::<D>(d), y.side::<D>(d), Rot::IDENTITY)
+            .unwrap();
+    }
+    g.check().unwrap();
+    assert_eq!(g.pleat_preview(x.side::<D>(0)).map(|p| p.op2), Some(0));
+    let st = g.untangle();
+    g.check().unwrap();
+    assert!(!g.is_alive(x) && !g.is_alive(y));
+    assert_eq!(st.pleats_removed, alone.pleats_removed + 1);
+    assert_eq!((st.op2, st.self_loops), (alone.op2, alone.self_loops));
+    assert_eq!(st.bigon_sides, alone.bigon_sides + 2 * D - 1);
+}
+
+#[test]
+fn a_pillow_among_folds_is_one_pure_op1() {
+    for spec in specs([4, 3]) {
+        pillow_first(&spec);
+    }
+    for spec in specs([3, 2, 2]) {
+        pillow_first(&spec);
+    }
+}
