@@ -448,7 +448,8 @@ fn run<const D: usize, const K: usize>(
     // untangling near what is still inverted (after smoothing too), in
     // growing rings; the positions with the fewest inverted elements are
     // kept (an attempt that makes things worse is undone)
-    let inverted_of = |v: &[f64]| v.iter().filter(|&&v| v <= 0.0).count();
+    // flat cells (within `DEGENERATE` of 0) are as bad as inverted ones
+    let inverted_of = |v: &[f64]| v.iter().filter(|&&v| v <= quality::DEGENERATE).count();
     // one measure per state of `x` (quads: a closest-point query each)
     let mut bad = remeasure(x, &mut c);
     let mut best = (inverted_of(&bad), x.to_vec());
@@ -462,7 +463,7 @@ fn run<const D: usize, const K: usize>(
         }
         let mut region = vec![false; x.len()];
         for (ci, &v) in bad.iter().enumerate() {
-            if v <= 0.0 {
+            if v <= quality::DEGENERATE {
                 for &u in &cells[ci] {
                     region[u as usize] = true;
                 }
