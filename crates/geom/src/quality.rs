@@ -116,10 +116,11 @@ pub fn corners<const K: usize>(positions: &[[f64; 3]], cell: &[u32; K]) -> [[f64
 pub struct Summary {
     /// Elements measured.
     pub elements: usize,
-    /// Elements whose least corner value is ≤ 0 (degenerate ones included).
+    /// Elements whose least corner value is ≤ 0.
     pub inverted: usize,
-    /// Elements with a corner of value within [`DEGENERATE`] of 0 or with
-    /// an edge of length 0.
+    /// Elements whose least value is within [`DEGENERATE`] of 0 (a flat
+    /// corner or an edge of length 0): the flat ones among the inverted,
+    /// and flat ones just above 0, which `inverted` does not count.
     pub degenerate: usize,
     /// The least value (1 for an empty mesh).
     pub min: f64,
