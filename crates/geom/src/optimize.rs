@@ -72,6 +72,10 @@ const MAX_STEP: f64 = 0.25;
 /// corner-simplex evaluations.
 const REFRAME_COST: usize = 16;
 
+/// Smoothing stops once a round lowers the energy by less than this
+/// fraction.
+const SETTLED: f64 = 1e-3;
+
 /// The least starting ε when something is inverted.
 const EPS_MIN_START: f64 = 1e-3;
 
@@ -393,7 +397,7 @@ pub fn optimize<const D: usize, const K: usize>(
             1e-10
         };
         bases = next_bases;
-        let settled = (e_prev - e).abs() <= 1e-5 * e.abs();
+        let settled = (e_prev - e).abs() <= SETTLED * e.abs();
         let inverted = l.inverted.load(std::sync::atomic::Ordering::Relaxed);
         if inverted < best.0 {
             best = (inverted, round);
