@@ -113,7 +113,9 @@ pub fn remesh_map(
         n
     };
     let made = dualex_remesh::remesh_counted(&surface, &opts.map, &mut quads_of)
-        .map_err(|e| Error::Bug(format!("the map could not be made: {e}")))?;
+        // (an option out of range, a solve that fails on this surface:
+        // said as the remesher says it, as before the library had it)
+        .map_err(InputError::new)?;
     let kept = made.stats.kept.and_then(|k| extracted.into_iter().nth(k));
     Ok(RemeshedMap {
         map: made.map,
