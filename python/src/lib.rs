@@ -7,7 +7,8 @@
 //! |---|---|
 //! | `quad(V, F, UV, **options)` (`return_sources=True`: the input triangle of each quad) | [`dualex::tri_map_from_slices`], [`dualex::quad()`] |
 //! | `hex(V, T, UVW, **options)` (`return_sources=True`: the input tet of each hex) | [`dualex::tet_map_from_slices`], [`dualex::hex()`] |
-//! | `read(path)` | [`dualex::read_tri_map`] / [`dualex::read_tet_map`] |
+//! | `remesh(V, F, quads=N, **options)` (`return_map=True`: the map too) | [`dualex::remesh()`] (`remesh.rs`) |
+//! | `read(path)` (a plain surface: `(V, F, None)`) | [`dualex::read_tri_map`] / [`dualex::read_tet_map`] / [`dualex::read_surface`] |
 //! | `write(path, V, cells)` | [`dualex::write_quad_mesh`] / [`dualex::write_hex_mesh`] |
 //! | `inspect(path)` / `inspect(V, S, C)` | `dualex_map::report::inspect` |
 //!
@@ -25,6 +26,7 @@
 mod arrays;
 mod dicts;
 mod geometry;
+mod remesh;
 
 use arrays::{
     cells_array, corners, corners_array, indices, optional_corners_array, positions_array, rows,
@@ -213,7 +215,9 @@ fn extraction_tuple<'py, const K: usize, const D: usize>(
 /// Reads a map: (V (n, 3), simplices (m, 3) or (m, 4), coords (m, 3, 2)
 /// or (m, 4, 3)). `.obj` (f v/vt) and `.ply` (per-face texcoord, or
 /// per-vertex u v / s t / texture_u texture_v) hold triangle maps,
-/// `.hexex` and `.ovm` (HexHex's `HexHex::Parametrization`) tet maps.
+/// `.hexex` and `.ovm` (HexHex's `HexHex::Parametrization`) tet maps. A
+/// `.obj` / `.ply` without any map coordinate is a plain surface: (V (n,
+/// 3), F (m, 3), None), polygons fanned into triangles (`remesh`'s input).
 /// Raises ValueError naming the file.
 #[pyfunction]
 fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
@@ -228,14 +232,27 @@ fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
         ];
         return PyTuple::new(py, items);
     }
-    let m = py
-        .allow_threads(|| dualex::read_tri_map(&path))
-        .map_err(value_error)?;
-    let items = [
-        positions_array(py, &m.positions)?,
-        cells_array(py, &m.simplices)?,
-        corners_array(py, &m.coords)?,
-    ];
+    let m = py.allow_threads(|| match dualex::read_tri_map(&path) {
+        Ok(m) => Ok(Ok(m)),
+        // a file without any map coordinate is a plain surface (for
+        // `remesh`); a map's own errors stay errors
+        Err(e) => match dualex::has_map_coordinates(&path) {
+            Ok(false) => dualex::read_surface(&path).map(Err),
+            _ => Err(e),
+        },
+    });
+    let items = match m.map_err(value_error)? {
+        Ok(m) => [
+            positions_array(py, &m.positions)?,
+            cells_array(py, &m.simplices)?,
+            corners_array(py, &m.coords)?,
+        ],
+        Err(s) => [
+            positions_array(py, &s.positions)?,
+            cells_array(py, &s.triangles)?,
+            py.None().into_bound(py),
+        ],
+    };
     PyTuple::new(py, items)
 }
 
@@ -401,6 +418,7 @@ fn _dualex(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(write, m)?)?;
     m.add_function(wrap_pyfunction!(write_map, m)?)?;
     m.add_function(wrap_pyfunction!(inspect, m)?)?;
+    m.add_function(wrap_pyfunction!(remesh::remesh, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

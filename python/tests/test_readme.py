@@ -1,5 +1,6 @@
 """The README's "Use from Python" snippet runs as written (in a scratch
-folder holding the two shared maps it names)."""
+folder holding the two shared maps it names), its `remesh` lines on the
+quads it wrote, read back as a plain surface."""
 
 import re
 
@@ -20,3 +21,6 @@ def test_readme_snippet_runs(shared, tmp_path, monkeypatch):
     assert len(scope["quads"]) == 897 and len(scope["hexes"]) == 956
     assert scope["report"]["simplices"] == 11472
     assert (tmp_path / "quads.obj").is_file()
+    # the written quads read back as a plain surface and remeshed
+    assert scope["none"] is None and scope["SF"].shape == (2 * 897, 3)
+    assert scope["rstats"]["topology"]["matches"] and len(scope["rquads"]) == scope["rstats"]["quads"] > 0

@@ -336,6 +336,10 @@ pub struct RemeshArgs {
     /// quads left, are an error.
     #[arg(long)]
     pub strict: bool,
+    // `--round-transitions`, as `quad`'s: the error that suggests it names
+    // a map remesh made that fails the check as remesh's bug
+    #[command(flatten)]
+    pub round: RoundArgs,
     /// The geometric stage (remesh smooths by default).
     #[command(flatten)]
     pub geometry: GeometryArgs,

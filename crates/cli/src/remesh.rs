@@ -1,18 +1,19 @@
 //! `dualex remesh`: quads from a plain surface, in one command.
 //!
 //! Order: every output path is checked first; the surface is read (OBJ or
-//! PLY; polygons fanned into triangles; cut meshes welded), the map made
-//! by [`dualex_remesh::remesh`] (cross field, cut, seamless integration,
-//! rounding), written (`--map-out`) and pictured (`--png`) when asked, then
-//! extracted by the same code as `dualex quad` ([`crate::extract::quad_map`]),
-//! whose checks and summary apply: a refused output writes no mesh.
+//! PLY; polygons fanned into triangles); the library's pipeline
+//! ([`dualex::remesh_map`]: weld, cross field, cut, seamless integration,
+//! rounding, the extraction's count) makes the map, written (`--map-out`)
+//! and pictured (`--png`) when asked; then the library's checks (a
+//! collapsed map, a map the extraction refuses: remesh's bug; no quad: an
+//! error) and the extraction kept are handed to the same code as `dualex
+//! quad` ([`crate::extract::quad_map`]), whose checks and summary apply: a
+//! refused output writes no mesh.
 
 use crate::args::{ExtractArgs, Global, QuadArgs, RemeshArgs, RoundArgs, RoundingArg, WeldArgs};
 use crate::summary::count;
 use crate::{outputs, timing, PNG_SIZE};
-use dualex_check::topology;
-use dualex_map::grid_offset::GridOffset;
-use dualex_remesh::{Quantization, Target};
+use dualex::{GridOffset, Quantization, Target};
 
 /// The surface `dualex remesh` runs on without INPUT.
 const EMBEDDED_SURFACE: &str = "a bumpy sphere of 5120 triangles";
@@ -34,15 +35,14 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
     let (positions, triangles, name) = match &a.input {
         Some(p) => {
             let name = p.display().to_string();
-            let poly = dualex_io::read_polygon_mesh(p).map_err(|e| e.to_string())?;
-            let (tris, fanned) = fan(&poly.faces, &name)?;
-            if fanned > 0 && !g.quiet {
+            let read = dualex::read_surface(p).map_err(|e| e.to_string())?;
+            if read.fanned > 0 && !g.quiet {
                 eprintln!(
                     "dualex: {name}: {} split into triangles",
-                    count(fanned, "polygon", "polygons")
+                    count(read.fanned, "polygon", "polygons")
                 );
             }
-            (poly.positions, tris, name)
+            (read.positions, read.triangles, name)
         }
         None => {
             if !g.quiet {
@@ -55,28 +55,29 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
         }
     };
     laps.lap("read");
-    let welded = dualex_remesh::weld::weld(&positions, &triangles);
-    if welded.merged > 0 && !g.quiet {
-        eprintln!(
-            "dualex: {name}: welded {} of the cut",
-            count(welded.merged, "vertex", "vertices")
-        );
-    }
-    let surface = dualex_remesh::Surface::new(welded.positions, welded.triangles)
-        .map_err(|e| format!("{name}: {e}"))?;
-    laps.lap("weld");
-    let opts = dualex_remesh::RemeshOptions {
-        target: match (a.scale, a.quads) {
-            (Some(s), _) => Target::EdgeLength(s),
-            (None, n) => Target::Quads(n.unwrap_or(1000)),
+    let opts = dualex::RemeshOptions {
+        map: dualex::MapOptions {
+            target: match (a.scale, a.quads) {
+                (Some(s), _) => Target::EdgeLength(s),
+                (None, n) => Target::Quads(n.unwrap_or(1000)),
+            },
+            sharp_degrees: a.sharp,
+            quantization: match a.rounding {
+                RoundingArg::Direct => Quantization::Direct,
+                RoundingArg::Greedy => Quantization::Greedy,
+                RoundingArg::Off => Quantization::SingularitiesOff,
+            },
+            seed: a.seed,
         },
-        sharp_degrees: a.sharp,
-        quantization: match a.rounding {
-            RoundingArg::Direct => Quantization::Direct,
-            RoundingArg::Greedy => Quantization::Greedy,
-            RoundingArg::Off => Quantization::SingularitiesOff,
+        extract: dualex::QuadOptions {
+            weld: false,
+            fairing: !a.no_fairing,
+            round_transitions: a.round.round,
+            grid_offset: GridOffset::Auto,
+            seed: a.seed,
+            strict: a.strict,
+            geometry: a.geometry.smooth_by_default().options(),
         },
-        seed: a.seed,
     };
     let quad = QuadArgs {
         input: a.input.clone(),
@@ -89,32 +90,24 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             grid_offset: GridOffset::Auto,
             strict: a.strict,
             seed: a.seed,
-            round: RoundArgs { round: false },
+            round: RoundArgs {
+                round: a.round.round,
+            },
             geometry: a.geometry.smooth_by_default(),
         },
         weld: WeldArgs { no_weld: true },
     };
-    // the extraction's quad count steers the quad count (see
-    // `remesh_counted`): the extraction below, and only a mesh it would
-    // write counts (valid, the surface's topology); the extraction of each
-    // map counted is kept, so the map kept is not extracted again
-    let qopts = crate::extract::quad_options(&quad, g);
-    let shape = topology::surface_shape(surface.positions.len(), &surface.triangles);
-    // (one entry per map counted, in the order of `remesh.counted`)
-    let mut extracted: Vec<Option<dualex_quad::Extracted>> = Vec::new();
-    let mut quads_of = |m: &dualex_map::TriMap| {
-        let x = dualex_quad::extract_full(m, &qopts).ok();
-        let n = x.as_ref().and_then(|x| {
-            let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
-            let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
-            same.then_some(x.mesh.cells.len())
-        });
-        extracted.push(x);
-        n
-    };
-    let made = dualex_remesh::remesh_counted(&surface, &opts, &mut quads_of)
-        .map_err(|e| format!("{name}: {e}"))?;
+    // weld, map, the extraction's count (the library's pipeline, as
+    // Python's `remesh` runs it)
+    let made =
+        dualex::remesh_map(&positions, &triangles, &opts).map_err(|e| format!("{name}: {e}"))?;
     laps.lap("map");
+    if made.welded > 0 && !g.quiet {
+        eprintln!(
+            "dualex: {name}: welded {} of the cut",
+            count(made.welded, "vertex", "vertices")
+        );
+    }
     let s = &made.stats;
     if !g.quiet {
         eprintln!(
@@ -137,6 +130,8 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             count(refused, "time", "times")
         );
     }
+    // the map is written before its checks, so that a refused one can be
+    // inspected
     if let Some(path) = &a.map_out {
         dualex_io::write_tri_map(path, &made.map).map_err(|e| e.to_string())?;
     }
@@ -145,79 +140,23 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             .map_err(|e| format!("{name}: {e}"))?;
         outputs::write_png(path, &bytes)?;
     }
-    let done_before = made
-        .stats
-        .kept
-        .and_then(|k| extracted.into_iter().nth(k))
-        .flatten();
+    made.check().map_err(|e| format!("{name}: {e}"))?;
+    let (map, stats, extracted) = made.extract().map_err(|e| format!("{name}: {e}"))?;
     let done = if a.input.is_some() {
         "done"
     } else {
         "embedded surface"
     };
     crate::extract::quad_map(
-        &made.map,
+        &map,
         &name,
         done,
         &quad,
         g,
         laps,
         Some(crate::extract::Before {
-            section: ("remesh", stats_json(s)),
-            extracted: done_before,
+            section: ("remesh", stats.to_json()),
+            extracted: Some(extracted),
         }),
     )
-}
-
-/// Polygons fanned into triangles (from their first corner); how many
-/// polygons were split. A face of fewer than 3 corners is an error.
-fn fan(faces: &[Vec<u32>], name: &str) -> Result<(Vec<[u32; 3]>, usize), String> {
-    let mut tris = Vec::with_capacity(faces.len());
-    let mut fanned = 0;
-    for (i, f) in faces.iter().enumerate() {
-        if f.len() < 3 {
-            return Err(format!("{name}: face {i} has {} vertices", f.len()));
-        }
-        if f.len() > 3 {
-            fanned += 1;
-        }
-        for k in 1..f.len() - 1 {
-            tris.push([f[0], f[k], f[k + 1]]);
-        }
-    }
-    Ok((tris, fanned))
-}
-
-/// The `remesh` section of the stats.
-fn stats_json(s: &dualex_remesh::RemeshStats) -> serde_json::Value {
-    let index: serde_json::Map<String, serde_json::Value> = s
-        .singularity_index
-        .iter()
-        .map(|(q, n)| (format!("{q}/4"), (*n).into()))
-        .collect();
-    serde_json::json!({
-        "triangles": s.triangles,
-        "singularities": s.singularities,
-        "singularity_index": index,
-        "boundary_singularities": s.boundary_singularities,
-        "sharp_edges": s.sharp_edges,
-        "cut_edges": s.cut_edges,
-        "flipped": s.flipped,
-        "degenerate": s.degenerate,
-        "scale": s.scale,
-        "first_scale": s.first_scale,
-        "map_area": s.map_area,
-        "roundings": s.roundings,
-        "rounded": s.rounded,
-        "off_grid": s.off_grid,
-        "max_rounding": s.max_rounding,
-        "counted": s.counted,
-        "kept": s.kept,
-        "time_ms": {
-            "field": s.time_ms[0],
-            "cut": s.time_ms[1],
-            "integrate": s.time_ms[2],
-            "count": s.time_ms[3],
-        },
-    })
 }

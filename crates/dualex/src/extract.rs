@@ -186,19 +186,36 @@ fn inverted_check(r: &GeometryReport, strict: bool) -> Result<(), Error> {
 /// the (welded) map's surface; its report is [`QuadStats::geometry`].
 pub fn quad(map: &TriMap, opts: &QuadOptions) -> Result<QuadOutput, Error> {
     let (map, welded) = welded(map, opts.weld);
-    let inner = dualex_quad::QuadOptions {
+    let x = dualex_quad::extract_full(&map, &inner_quad_options(opts))?;
+    finish_quads(&map, x, welded, opts)
+}
+
+/// The extraction's own options from the facade's (singularity stats on).
+pub(crate) fn inner_quad_options(opts: &QuadOptions) -> dualex_quad::QuadOptions {
+    dualex_quad::QuadOptions {
         fairing: opts.fairing,
         transitions: transitions(opts.round_transitions),
         seed: opts.seed,
         grid_offset: opts.grid_offset,
         singularity_stats: true,
-    };
+    }
+}
+
+/// What follows the extraction of `map` (as [`quad`](crate::quad()) and
+/// [`remesh`](crate::remesh()) run it): the output check, the topology
+/// comparison, the geometric stage; `welded` vertices were merged before.
+pub(crate) fn finish_quads(
+    map: &TriMap,
+    x: dualex_quad::Extracted,
+    welded: usize,
+    opts: &QuadOptions,
+) -> Result<QuadOutput, Error> {
     let dualex_quad::Extracted {
         mut mesh,
         stats,
         sources,
         corner_uv,
-    } = dualex_quad::extract_full(&map, &inner)?;
+    } = x;
     let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
     if !rep.is_valid() {
         return Err(Error::InvalidOutput(rep.errors().join("; ")));

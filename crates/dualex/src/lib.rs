@@ -11,6 +11,8 @@
 //! | extraction (welds cut meshes first) | [`quad()`] → [`QuadOutput`] | [`hex()`] → [`HexOutput`] |
 //! | typed counts | [`QuadStats`] | [`HexStats`] |
 //! | geometry: quality, untangling, smoothing | [`QuadOptions::geometry`] → [`QuadStats::geometry`] | [`HexOptions::geometry`] → [`HexStats::geometry`] |
+//! | a plain surface from a file | [`read_surface`] (`.obj`, `.ply`; polygons fanned) | — |
+//! | quads from a plain surface (no map) | [`remesh()`] → [`RemeshOutput`] | — |
 //! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`, `.ovm`) |
 //! | with corner map coordinates | [`write_quad_mesh_uv`] (`.obj`, `.ply`) | — ([`HexOutput::corner_uvw`] only) |
 //! | a map to a file | [`write_tri_map`] (`.obj`, `.ply`) | [`write_tet_map`] (`.hexex`, `.ovm`) |
@@ -51,7 +53,9 @@
 
 mod extract;
 mod map;
+pub mod remesh;
 pub mod stats;
+mod surface;
 
 pub use dualex_geom::{
     Mode as GeometryMode, Options as GeometryOptions, Report as GeometryReport, Summary as Quality,
@@ -61,7 +65,12 @@ pub use dualex_io::OutputError;
 pub use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
 pub use extract::{hex, quad, HexOptions, HexOutput, QuadOptions, QuadOutput};
 pub use map::{tet_map_from_slices, tri_map_from_slices};
+pub use remesh::{
+    remesh, remesh_map, MapOptions, Quantization, RemeshOptions, RemeshOutput, RemeshStats,
+    RemeshedMap, Target,
+};
 pub use stats::{GridOffset, HexStats, QuadStats, Topology};
+pub use surface::{has_map_coordinates, read_surface, PlainSurface};
 
 use std::fmt;
 use std::path::Path;
@@ -93,6 +102,12 @@ pub enum Error {
         /// Inverted elements left.
         count: usize,
     },
+    /// [`remesh()`] made no quad (the map covers less than one grid cell).
+    Empty(String),
+    /// An internal error: [`remesh()`] made a map that is not
+    /// grid-preserving or collapsed (its own output, never the user's
+    /// input); please report the input.
+    Bug(String),
 }
 
 impl fmt::Display for Error {
@@ -116,6 +131,11 @@ impl fmt::Display for Error {
                 "{count} inverted {} (scaled Jacobian ≤ 0) {} after the geometric stage",
                 if *count == 1 { "element" } else { "elements" },
                 if *count == 1 { "remains" } else { "remain" },
+            ),
+            Error::Empty(e) => write!(f, "empty mesh: {e}"),
+            Error::Bug(e) => write!(
+                f,
+                "internal error (bug) in remesh: {e}; please report this input"
             ),
         }
     }

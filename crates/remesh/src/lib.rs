@@ -19,7 +19,8 @@
 //! The output is a [`dualex_map::TriMap`] that `dualex quad` extracts.
 //! Beside the steps: [`sparse`] (the sparse Cholesky solves, over `faer`)
 //! and [`shapes`] (generated test surfaces: sphere, torus, cube, polycube
-//! of genus `g`, patches with boundary).
+//! of genus `g`, patches with boundary; [`shapes_cad`]: CAD-style
+//! tessellations, fan caps and strips).
 //!
 //! Invariants: [`Surface`] is an oriented 2-manifold (with or without
 //! boundary) without degenerate triangles; every edge has one or two faces.
@@ -34,9 +35,11 @@ pub mod pipeline;
 pub mod quantize;
 pub mod recount;
 pub mod shapes;
+pub mod shapes_cad;
 pub mod singularity;
 pub mod smooth;
 pub mod sparse;
+mod stats_json;
 pub mod surface;
 mod union_find;
 pub mod weld;

@@ -313,6 +313,14 @@ pub const NAMED: &[(&str, &str)] = &[
         "surface_disk",
         "bumpy square, 48×48 (open: one boundary loop)",
     ),
+    (
+        "surface_cad_cylinder",
+        "closed cylinder as CAD exports it: 96 sectors, side strips, fan caps, sharp rims",
+    ),
+    (
+        "surface_cad_cone",
+        "closed cone as CAD exports it: an apex fan and a base fan of 96 sectors",
+    ),
 ];
 
 /// A generated surface by its name in [`NAMED`].
@@ -325,8 +333,22 @@ pub fn by_name(name: &str) -> Option<Surface> {
         "surface_genus3" => plate_with_holes(3, 4),
         "surface_cube" => cube(8),
         "surface_disk" => bumpy_square(48, 0.2),
+        "surface_cad_cylinder" => crate::shapes_cad::cad_cylinder(96, 32, 2.0),
+        "surface_cad_cone" => crate::shapes_cad::cad_cone(96, 1.5),
         _ => return None,
     })
+}
+
+/// The signed volume a closed surface encloses (> 0 with outward normals).
+#[cfg(test)]
+pub(crate) fn signed_volume(s: &Surface) -> f64 {
+    s.triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|v| s.positions[v as usize]);
+            crate::surface::dot(a, crate::surface::cross(b, c)) / 6.0
+        })
+        .sum()
 }
 
 #[cfg(test)]
@@ -365,14 +387,7 @@ mod tests {
             cube(2),
             plate_with_holes(3, 1),
         ] {
-            let vol: f64 = s
-                .triangles
-                .iter()
-                .map(|t| {
-                    let [a, b, c] = t.map(|v| s.positions[v as usize]);
-                    crate::surface::dot(a, crate::surface::cross(b, c)) / 6.0
-                })
-                .sum();
+            let vol = signed_volume(&s);
             assert!(vol > 0.0, "volume {vol}");
         }
     }

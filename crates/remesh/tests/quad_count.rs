@@ -30,6 +30,11 @@ fn quad_count_within_ten_percent_on_the_generated_surfaces() {
         if name == "surface_torus_large" {
             continue; // the speed benchmark's surface: too slow for a test
         }
+        if name.starts_with("surface_cad_") {
+            // fan caps: the map collapses today (issue 23); the loud
+            // failure is asserted by tests/remesh_errors.rs
+            continue;
+        }
         for n in [500, 2000] {
             for seed in [1, 2] {
                 let (quads, area) = count(name, n, seed, Quantization::Direct);

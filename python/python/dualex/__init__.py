@@ -12,10 +12,12 @@ stage after the extraction, reported in ``stats["geometry"]``); ``read`` /
 ``write`` / ``write_map`` use the Rust readers and
 writers (maps: .obj, .ply, .hexex, .ovm; meshes: .obj, .ply, .vtk, .mesh,
 .ovm); ``inspect``
-returns the map report. Every error is a ``ValueError`` with a one-line
+returns the map report. ``remesh(V, F, quads=N)`` makes quads from a plain
+surface (``read`` gives ``(V, F, None)`` for a file without map
+coordinates), as ``dualex remesh``. Every error is a ``ValueError`` with a one-line
 message; the GIL is released while the extraction runs.
 """
 
-from ._dualex import __version__, hex, inspect, quad, read, write, write_map
+from ._dualex import __version__, hex, inspect, quad, read, remesh, write, write_map
 
-__all__ = ["quad", "hex", "read", "write", "write_map", "inspect", "__version__"]
+__all__ = ["quad", "hex", "remesh", "read", "write", "write_map", "inspect", "__version__"]

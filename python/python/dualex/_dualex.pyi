@@ -160,12 +160,13 @@ def hex(
 
 def read(
     path: _Path,
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]:
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Optional[npt.NDArray[np.float64]]]:
     """Reads a map: .obj/.ply (triangles, (m, 3, 2) coords; a PLY holds them
     per face, `texcoord`, or per vertex, `u v` / `s t` /
     `texture_u texture_v`) or .hexex / .ovm (tets, (m, 4, 3) coords; .ovm
-    with HexHex's `HexHex::Parametrization`). Returns (V, simplices,
-    coords)."""
+    with HexHex's `HexHex::Parametrization`). A .obj / .ply without any map
+    coordinate is a plain surface: (V, F, None), polygons fanned into
+    triangles (the input of `remesh`). Raises ValueError naming the file."""
 
 def write(path: _Path, positions: _Floats, cells: _Ints) -> None:
     """Writes a quad mesh (cells (m, 4): .obj, .ply, .vtk) or a hex mesh
@@ -186,3 +187,41 @@ def inspect(
     round_transitions: bool = False,
 ) -> Dict[str, Any]:
     """The map report (as `dualex inspect --json`) of a file or of arrays."""
+
+_Map = Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]
+_Rounding = Literal["direct", "greedy", "off"]
+
+@overload
+def remesh(
+    V: _Floats,
+    F: _Ints,
+    *,
+    quads: int = 1000,
+    sharp: float = 35.0,
+    rounding: _Rounding = "direct",
+    seed: int = 1,
+    round_transitions: bool = False,
+    strict: bool = False,
+    return_map: Literal[False] = False,
+) -> _Mesh: ...
+@overload
+def remesh(
+    V: _Floats,
+    F: _Ints,
+    *,
+    quads: int = 1000,
+    sharp: float = 35.0,
+    rounding: _Rounding = "direct",
+    seed: int = 1,
+    round_transitions: bool = False,
+    strict: bool = False,
+    return_map: Literal[True],
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, Any], _Map]:
+    """Quads from a plain triangle surface, as `dualex remesh`: V (n, 3),
+    F (m, 3) (cut surfaces welded first); about `quads` quads; edges sharper
+    than `sharp` degrees are features; `rounding` "direct", "greedy" or
+    "off"; `seed` moves the grid. Returns (positions (k, 3) float64, quads
+    (q, 4) int64, stats dict with a "remesh" section), plus the map (V, F,
+    UV) extracted with return_map=True. Raises ValueError on bad input, no
+    quad, or a map remesh could not make ("internal error (bug) in
+    remesh")."""

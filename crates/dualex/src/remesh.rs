@@ -1,0 +1,251 @@
+//! Remeshing: quads from a plain triangle surface, the pipeline that
+//! `dualex remesh` and the Python `remesh` run (one piece of code).
+//!
+//! Input: positions and triangles (no map) and [`RemeshOptions`]. Steps:
+//!
+//! 1. the input checked as [`crate::tri_map_from_slices`] checks it
+//!    (indices in range, no vertex twice in a triangle, finite positions),
+//!    then welded (boundary vertices at equal positions merged:
+//!    `dualex_remesh::weld`) and built into a surface (a 2-manifold,
+//!    consistently oriented, no zero-area triangle): [`Error::Input`]
+//!    otherwise;
+//! 2. the map made by `dualex_remesh` (cross field, cut, seamless
+//!    integration, rounding), the extraction's quad count in the loop
+//!    (only a mesh the extraction would give — valid, the surface's
+//!    topology — counts): [`remesh_map`] → [`RemeshedMap`];
+//! 3. [`RemeshedMap::check`]: a collapsed map (signed area below a tenth of
+//!    the target's, or most triangles flipped) is remesh's bug,
+//!    [`Error::Bug`], caught before the extraction;
+//! 4. [`RemeshedMap::extract`]: the extraction of the map kept (made in the
+//!    count already, else made now); a map the extraction refuses is
+//!    remesh's bug ([`Error::Bug`]: remesh must make grid-preserving maps),
+//!    no quad at all is [`Error::Empty`];
+//! 5. ([`remesh()`] only) the output check, the topology comparison and the
+//!    geometric stage, as [`crate::quad()`] runs them.
+//!
+//! The CLI runs 1–4 here and writes the map (`--map-out`) between 2 and
+//! 3, so that a map refused can be inspected; its own writer follows.
+//!
+//! Invariants: the map is over the welded surface (its `positions` and
+//! `simplices`); a result is never an empty mesh.
+
+use crate::extract::{finish_quads, inner_quad_options};
+use crate::{Error, GeometryMode, InputError, QuadOptions, QuadOutput, TriMap, SMOOTH_ROUNDS};
+use dualex_check::topology;
+pub use dualex_remesh::{Quantization, RemeshOptions as MapOptions, RemeshStats, Target};
+
+/// Options of [`remesh()`] and [`remesh_map`].
+#[derive(Clone, Debug)]
+pub struct RemeshOptions {
+    /// The map: target size, sharp-edge angle, rounding, seed (the seed is
+    /// the extraction's too). Default: about 1000 quads, 35°, direct
+    /// rounding, seed 1.
+    pub map: MapOptions,
+    /// The extraction and geometric stage (`weld` and `seed` are not
+    /// read: the surface is welded by position, the seed is the map's).
+    /// Default: [`QuadOptions::default`] with smoothing
+    /// ([`GeometryMode::Smooth`] with [`SMOOTH_ROUNDS`]).
+    pub extract: QuadOptions,
+}
+
+impl Default for RemeshOptions {
+    fn default() -> Self {
+        let mut extract = QuadOptions::default();
+        extract.geometry.mode = GeometryMode::Smooth(SMOOTH_ROUNDS);
+        RemeshOptions {
+            map: MapOptions::default(),
+            extract,
+        }
+    }
+}
+
+impl RemeshOptions {
+    /// The extraction's options (the seed is the map's).
+    fn quad_options(&self) -> QuadOptions {
+        QuadOptions {
+            weld: false,
+            seed: self.map.seed,
+            ..self.extract.clone()
+        }
+    }
+}
+
+/// A map made by [`remesh_map`], not yet extracted.
+#[derive(Debug)]
+pub struct RemeshedMap {
+    /// The map, over the welded surface.
+    pub map: TriMap,
+    /// The remesher's numbers.
+    pub stats: RemeshStats,
+    /// Vertices merged by the weld of step 1.
+    pub welded: usize,
+    /// The surface's area (model units²).
+    pub surface_area: f64,
+    /// The extraction of `map` made while counting, if it was taken.
+    extracted: Option<dualex_quad::Extracted>,
+    /// The options it was made with.
+    opts: RemeshOptions,
+}
+
+/// Steps 1–2 (module docs): the map of a plain surface, counted.
+pub fn remesh_map(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    opts: &RemeshOptions,
+) -> Result<RemeshedMap, Error> {
+    // the checks of a map from slices (the weld trusts the indices)
+    crate::tri_map_from_slices(positions, triangles, &vec![[[0.0; 2]; 3]; triangles.len()])?;
+    let welded = dualex_remesh::weld::weld(positions, triangles);
+    let surface = dualex_remesh::Surface::new(welded.positions, welded.triangles)
+        .map_err(|e| InputError::new(e.to_string()))?;
+    let inner = inner_quad_options(&opts.quad_options());
+    let shape = topology::surface_shape(surface.positions.len(), &surface.triangles);
+    // one extraction per map counted, in the order of `stats.counted`
+    let mut extracted: Vec<Option<dualex_quad::Extracted>> = Vec::new();
+    let mut quads_of = |m: &TriMap| {
+        let x = dualex_quad::extract_full(m, &inner).ok();
+        let n = x.as_ref().and_then(|x| {
+            let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
+            let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
+            same.then_some(x.mesh.cells.len())
+        });
+        extracted.push(x);
+        n
+    };
+    let made = dualex_remesh::remesh_counted(&surface, &opts.map, &mut quads_of)
+        // (an option out of range, a solve that fails on this surface:
+        // said as the remesher says it, as before the library had it)
+        .map_err(InputError::new)?;
+    let kept = made.stats.kept.and_then(|k| extracted.into_iter().nth(k));
+    Ok(RemeshedMap {
+        map: made.map,
+        stats: made.stats,
+        welded: welded.merged,
+        surface_area: surface.areas.iter().sum(),
+        extracted: kept.flatten(),
+        opts: opts.clone(),
+    })
+}
+
+impl RemeshedMap {
+    /// The map's area the target asks for (map units², about the quads).
+    pub fn target_area(&self) -> f64 {
+        match self.opts.map.target {
+            Target::Quads(n) => n as f64,
+            Target::EdgeLength(h) => self.surface_area / (h * h),
+        }
+    }
+
+    /// Step 3: a target of less than one quad is [`Error::Empty`]; a
+    /// collapsed map is remesh's bug (module docs): its signed area below
+    /// a tenth of the target's, its unsigned area (folds count twice)
+    /// above ten times the target's, or most triangles flipped.
+    pub fn check(&self) -> Result<(), Error> {
+        let s = &self.stats;
+        let target = self.target_area();
+        // (NaN compares false: caught too)
+        if target.partial_cmp(&1.0).is_none_or(|o| o.is_lt()) {
+            return Err(Error::Empty(format!(
+                "the surface (area {:.3e}) holds {target:.3} quads of that size: ask for smaller quads",
+                self.surface_area
+            )));
+        }
+        let (signed, unsigned) = map_areas(&self.map);
+        let small = signed
+            .partial_cmp(&(0.1 * target))
+            .is_none_or(|o| o.is_lt());
+        let folded = unsigned
+            .partial_cmp(&(10.0 * target))
+            .is_none_or(|o| o.is_gt());
+        let collapsed = small || folded;
+        if collapsed || 2 * s.flipped > s.triangles {
+            let index: Vec<String> = s
+                .singularity_index
+                .iter()
+                .map(|(q, n)| format!("{n} of index {q}/4"))
+                .collect();
+            return Err(Error::Bug(format!(
+                "the map collapsed: area {signed:.3e} (unsigned {unsigned:.3e}) for a target of \
+                 {target:.1}, {} of {} triangles flipped (field singularities: {})",
+                s.flipped,
+                s.triangles,
+                if index.is_empty() {
+                    "none".to_string()
+                } else {
+                    index.join(", ")
+                }
+            )));
+        }
+        Ok(())
+    }
+
+    /// Step 4: the map's extraction (module docs); the map and the
+    /// remesher's numbers come back with it.
+    #[doc(hidden)]
+    pub fn extract(self) -> Result<(TriMap, RemeshStats, dualex_quad::Extracted), Error> {
+        let x = match self.extracted {
+            Some(x) => x,
+            None => {
+                let inner = inner_quad_options(&self.opts.quad_options());
+                dualex_quad::extract_full(&self.map, &inner).map_err(|e| {
+                    Error::Bug(format!("the extraction refuses the map remesh made: {e}"))
+                })?
+            }
+        };
+        if x.mesh.cells.is_empty() {
+            return Err(Error::Empty(format!(
+                "the map covers less than one grid cell (area {:.3}): ask for more quads",
+                self.stats.map_area
+            )));
+        }
+        Ok((self.map, self.stats, x))
+    }
+}
+
+/// What [`remesh()`] made.
+#[derive(Clone, Debug)]
+pub struct RemeshOutput {
+    /// The quad mesh, its stats, sources and corner coordinates (the
+    /// sources index the welded surface's triangles, [`Self::map`]'s).
+    pub quads: QuadOutput,
+    /// The remesher's numbers (field, cut, map).
+    pub remesh: RemeshStats,
+    /// The map extracted, over the welded surface.
+    pub map: TriMap,
+}
+
+/// Quads from a plain triangle surface (module docs, steps 1–5).
+///
+/// ```
+/// // a closed cube of 48 triangles (sharp edges), at about 24 quads
+/// let s = dualex_remesh::shapes::cube(2);
+/// let mut opts = dualex::RemeshOptions::default();
+/// opts.map.target = dualex::Target::Quads(24);
+/// let out = dualex::remesh(&s.positions, &s.triangles, &opts)?;
+/// assert!(out.quads.stats.quads > 0);
+/// assert!(out.quads.stats.topology.matches());
+/// // bad input is an error naming the element
+/// let e = dualex::remesh(&s.positions, &[[0, 1, 99]], &opts).unwrap_err();
+/// assert!(e.to_string().starts_with("triangle 0: corner 2 refers to vertex 99"));
+/// # Ok::<(), dualex::Error>(())
+/// ```
+pub fn remesh(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    opts: &RemeshOptions,
+) -> Result<RemeshOutput, Error> {
+    let made = remesh_map(positions, triangles, opts)?;
+    made.check()?;
+    let welded = made.welded;
+    let (map, remesh, x) = made.extract()?;
+    let quads = finish_quads(&map, x, welded, &opts.quad_options())?;
+    Ok(RemeshOutput { quads, remesh, map })
+}
+
+/// The signed and the unsigned area of a map (map units²).
+fn map_areas(map: &TriMap) -> (f64, f64) {
+    map.coords.iter().fold((0.0, 0.0), |(s, u), [a, b, c]| {
+        let x = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+        (s + x, u + x.abs())
+    })
+}
