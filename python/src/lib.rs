@@ -39,9 +39,16 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use std::path::PathBuf;
 
-/// A facade error as a `ValueError` with its one-line message.
+/// A facade error as a `ValueError` with its one-line message; a hint
+/// naming a command-line option names the keyword argument instead.
 fn value_error(e: impl std::fmt::Display) -> PyErr {
-    PyValueError::new_err(e.to_string())
+    PyValueError::new_err(python_hint(&e.to_string()))
+}
+
+/// The message with the CLI's options that the library's errors suggest
+/// spelled as this module's keyword arguments.
+fn python_hint(message: &str) -> String {
+    message.replace("--round-transitions", "round_transitions=True")
 }
 
 fn grid_offset(s: &str) -> PyResult<GridOffset> {

@@ -81,3 +81,17 @@ def test_bad_files(tmp_path):
     raises(r"cells: expected shape \(n, 4\), got \(9, 3\).*8 for hexes", dualex.write, tmp_path / "q.obj", Q, quads[:, :3])
     raises(r"\.xyz", dualex.write, tmp_path / "q.xyz", Q, quads)
     raises("give a path alone", dualex.inspect, *square()[:2])
+
+
+def test_a_hint_names_the_keyword_that_works():
+    # two triangles whose charts differ by a translation of 0.3: refused,
+    # with a hint that must be this module's keyword, not the CLI's option
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]], dtype=float)
+    F = np.array([[0, 1, 2], [1, 3, 2]])
+    UV = np.array([[[0, 0], [1, 0], [0, 1]], [[1.3, 0], [1.3, 1], [0.3, 1]]], dtype=float)
+    with pytest.raises(ValueError) as e:
+        dualex.quad(V, F, UV)
+    message = str(e.value)
+    assert "round_transitions=True" in message and "--" not in message, message
+    # the suggestion, followed, is accepted
+    dualex.quad(V, F, UV, round_transitions=True)
