@@ -96,13 +96,7 @@ impl Reference {
         keyed.par_sort_unstable();
         let cos = feature_deg.to_radians().cos();
         let mut segments = Vec::new();
-        let mut i = 0;
-        while i < keyed.len() {
-            let mut j = i + 1;
-            while j < keyed.len() && keyed[j].0 == keyed[i].0 {
-                j += 1;
-            }
-            let ts = &keyed[i..j];
+        for ts in keyed.chunk_by(|a, b| a.0 == b.0) {
             let boundary = ts.len() == 1;
             let feature = ts.len() > 2
                 || (ts.len() == 2 && {
@@ -111,11 +105,10 @@ impl Reference {
                 });
             if boundary || feature {
                 segments.push(Segment {
-                    ends: keyed[i].0,
+                    ends: ts[0].0,
                     boundary,
                 });
             }
-            i = j;
         }
         segments.sort_unstable_by_key(|s| s.ends);
         drop_short_features(&mut segments, positions.len());
@@ -181,18 +174,14 @@ impl Reference {
             })
             .collect();
         faces.par_sort_unstable();
-        let mut tris = Vec::new();
-        let mut i = 0;
-        while i < faces.len() {
-            let mut j = i + 1;
-            while j < faces.len() && faces[j].0 == faces[i].0 {
-                j += 1;
-            }
-            if j - i == 1 {
-                tris.push(faces[i].1);
-            }
-            i = j;
-        }
+        // a face of one tet is boundary
+        let mut tris: Vec<[u32; 3]> = faces
+            .chunk_by(|a, b| a.0 == b.0)
+            .filter_map(|run| match run {
+                [(_, tri)] => Some(*tri),
+                _ => None,
+            })
+            .collect();
         tris.sort_unstable();
         Self::surface(positions, &tris, feature_deg)
     }

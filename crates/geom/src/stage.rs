@@ -118,18 +118,25 @@ pub fn quads(
     };
     // the screen: each quad against its source triangle (no search); once
     // the reference exists, against the triangle nearest its centre
+    // quad `q`'s source triangle, when it has one
+    let source = |q: usize| {
+        sources
+            .get(q)
+            .copied()
+            .filter(|&s| (s as usize) < triangles.len())
+    };
     let mut normals = Vec::with_capacity(cells.len());
     for (q, cell) in cells.iter().enumerate() {
-        let n = match sources.get(q) {
-            Some(&s) if (s as usize) < triangles.len() => tri_normal(s),
-            _ => {
+        let n = match source(q) {
+            Some(s) => tri_normal(s),
+            None => {
                 let r = reference.get_or_insert_with(make);
                 r.quad_normal(&quality::corners(positions, cell))
             }
         };
         normals.push(n);
     }
-    let on_boundary = boundary_vertices(positions.len(), cells, &[[0, 1], [1, 2], [2, 3], [3, 0]]);
+    let on_boundary = boundary_vertices(positions.len(), cells, &QUAD_EDGES);
     let mut hint = vec![[0.0; 3]; positions.len()];
     for (cell, n) in cells.iter().zip(&normals) {
         for &v in cell {
@@ -141,15 +148,7 @@ pub fn quads(
     // each quad's nearest-triangle search starts from the last one found,
     // first its source (less work, the same answer)
     let feet: Vec<std::sync::atomic::AtomicU32> = (0..cells.len())
-        .map(|q| {
-            let s = sources.get(q).copied().unwrap_or(u32::MAX);
-            let s = if (s as usize) < triangles.len() {
-                s
-            } else {
-                u32::MAX
-            };
-            std::sync::atomic::AtomicU32::new(s)
-        })
+        .map(|q| std::sync::atomic::AtomicU32::new(source(q).unwrap_or(u32::MAX)))
         .collect();
     let reframe = |x: &[[f64; 3]], ci: usize, r: &Reference| {
         quad_frame(r.quad_normal_cached(&quality::corners(x, &cells[ci]), feet.get(ci)))
@@ -163,7 +162,7 @@ pub fn quads(
         corners: &QUAD_CORNER_EDGES.map(|[c, a, b]| [c, a, b, 0]),
         frames: normals.iter().map(|&n| quad_frame(n)).collect(),
         reframe: Some(&reframe),
-        edges: &[[0, 1], [1, 2], [2, 3], [3, 0]],
+        edges: &QUAD_EDGES,
         role: Role::Surface,
         on_boundary,
         hint,
@@ -270,6 +269,9 @@ struct Input<'a, const D: usize, const K: usize> {
     hint: Vec<[f64; 3]>,
 }
 
+/// A quad's edges (corner pairs, cell order).
+const QUAD_EDGES: [[usize; 2]; 4] = [[0, 1], [1, 2], [2, 3], [3, 0]];
+
 /// A boundary vertex nearer the input's boundary than this many mean edge
 /// lengths is on it (a valid map's file rounds its numbers: its boundary
 /// grid points lie within ~1e-7 edge lengths of the boundary, and are left
@@ -316,7 +318,7 @@ fn run<const D: usize, const K: usize>(
     opts: &Options,
 ) -> Report {
     let cells = input.cells;
-    let values = measure(x, &input.frames);
+    let mut values = measure(x, &input.frames);
     let mut rep = Report {
         mode: opts.mode.name(),
         before: Summary::of(&values),
@@ -342,7 +344,8 @@ fn run<const D: usize, const K: usize>(
     // quad's centre (the measure's definition; `inspect` measures so too)
     if let Some(reframe) = input.reframe {
         input.frames = all_frames(reframe, x, cells.len(), &r);
-        rep.before = Summary::of(&measure(x, &input.frames));
+        values = measure(x, &input.frames);
+        rep.before = Summary::of(&values);
         rep.after = rep.before;
     }
     let tol = ON_BOUNDARY * rep.mean_edge.max(f64::MIN_POSITIVE);
@@ -450,8 +453,13 @@ fn run<const D: usize, const K: usize>(
     // kept (an attempt that makes things worse is undone)
     // flat cells (within `DEGENERATE` of 0) are as bad as inverted ones
     let inverted_of = |v: &[f64]| v.iter().filter(|&&v| v <= quality::DEGENERATE).count();
-    // one measure per state of `x` (quads: a closest-point query each)
-    let mut bad = remeasure(x, &mut c);
+    // one measure per state of `x` (quads: a closest-point query each):
+    // the mesh's own when nothing moved it since
+    let mut bad = if *x == start[..] {
+        values
+    } else {
+        remeasure(x, &mut c)
+    };
     let mut best = (inverted_of(&bad), x.to_vec());
     for &rings in &RINGS {
         let now = inverted_of(&bad);

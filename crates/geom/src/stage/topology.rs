@@ -18,17 +18,11 @@ pub(super) fn boundary_vertices(n: usize, cells: &[[u32; 4]], edges: &[[usize; 2
         .collect();
     keys.par_sort_unstable();
     let mut out = vec![false; n];
-    let mut i = 0;
-    while i < keys.len() {
-        let mut j = i + 1;
-        while j < keys.len() && keys[j] == keys[i] {
-            j += 1;
+    for run in keys.chunk_by(|a, b| a == b) {
+        if let [key] = run {
+            out[(key >> 32) as usize] = true;
+            out[(key & 0xffff_ffff) as usize] = true;
         }
-        if j - i == 1 {
-            out[(keys[i] >> 32) as usize] = true;
-            out[(keys[i] & 0xffff_ffff) as usize] = true;
-        }
-        i = j;
     }
     out
 }
