@@ -102,6 +102,12 @@ fn run(
             "{low} interior vertices of valence ≤ 2 (allowed {allowed})"
         ));
     }
+    // issue 21: no inverted quad (the geometric stage's count, against
+    // the input triangle nearest each quad's centre)
+    let inverted = s["geometry"]["after"]["inverted"].as_u64();
+    if inverted != Some(0) {
+        problems.push(format!("{inverted:?} inverted quads"));
+    }
     let off = (n as f64 - quads as f64).abs() / quads as f64;
     if off > 0.10 {
         problems.push(format!(
@@ -240,4 +246,70 @@ fn the_embedded_surface_and_the_options() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("bad.obj") && err.lines().count() == 1, "{err}");
     assert!(!dir.path("bad_q.obj").exists());
+}
+
+/// Inverted quads left by the geometric stage send `remesh` to another
+/// grid position (issue 21): the stats list every attempt's count, the
+/// first with the fewest is kept, and the map written (`--map-out`) is
+/// the one kept, also when a later attempt was worse.
+#[test]
+fn another_grid_position_while_quads_stay_inverted() {
+    let dir = Scratch::new("remesh-attempts");
+    let surface = dir.arg("g3.obj");
+    let g = dualex(&["generate", "surface_genus3", "-o", &surface, "-q"]);
+    assert!(g.status.success(), "{}", text(&g));
+    let mut retried = 0;
+    for rounding in ["direct", "off"] {
+        for seed in 1..=5 {
+            let run = format!("{rounding} {seed}");
+            let (q, m) = (dir.arg("q.obj"), dir.arg("m.obj"));
+            let o = dualex(&[
+                "remesh",
+                &surface,
+                "-o",
+                &q,
+                "--map-out",
+                &m,
+                "--quads",
+                "100",
+                "--rounding",
+                rounding,
+                "--seed",
+                &seed.to_string(),
+                "--stats",
+                "-",
+                "-q",
+            ]);
+            assert!(o.status.success(), "{run}: {}", text(&o));
+            let s: serde_json::Value = serde_json::from_slice(&o.stdout).expect("stats JSON");
+            let attempts: Vec<u64> = s["remesh"]["grid_attempts"]
+                .as_array()
+                .expect("remesh.grid_attempts")
+                .iter()
+                .filter_map(|v| v.as_u64())
+                .collect();
+            assert!(!attempts.is_empty(), "{run}");
+            let fewest = attempts.iter().min().copied();
+            assert_eq!(s["geometry"]["after"]["inverted"].as_u64(), fewest, "{run}");
+            // more only while quads are left inverted
+            let first_zero = attempts.iter().position(|&n| n == 0);
+            assert!(
+                first_zero.is_none_or(|z| z + 1 == attempts.len()),
+                "{run}: {attempts:?}"
+            );
+            if attempts.len() > 1 {
+                retried += 1;
+                let x = dualex(&["quad", &m, "-o", &dir.arg("q2.obj"), "--stats", "-", "-q"]);
+                assert!(x.status.success(), "{run}: {}", text(&x));
+                let s2: serde_json::Value = serde_json::from_slice(&x.stdout).expect("stats JSON");
+                assert_eq!(
+                    s2["output"]["quads"], s["output"]["quads"],
+                    "{run}: the map written is the one kept"
+                );
+            }
+        }
+    }
+    // two of these ten runs need it today (seed 1 direct, seed 4 off):
+    // if none does, the attempts are no longer exercised here
+    assert!(retried > 0, "no run tried another grid position");
 }

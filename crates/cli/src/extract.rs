@@ -86,6 +86,9 @@ pub struct Before<'a> {
     pub section: (&'a str, serde_json::Value),
     /// The extraction of this very map.
     pub extracted: Option<dualex_quad::Extracted>,
+    /// The geometric stage's report when it has run on `extracted`
+    /// already (its quads moved): not run again.
+    pub geometry: Option<dualex_geom::Report>,
 }
 
 /// The quad extraction of a map read or made (`quad`, `remesh`): extract
@@ -100,9 +103,9 @@ pub fn quad_map(
     mut laps: timing::Laps,
     before: Option<Before>,
 ) -> Result<(), String> {
-    let (extra, done_before) = match before {
-        Some(b) => (Some(b.section), b.extracted),
-        None => (None, None),
+    let (extra, done_before, staged) = match before {
+        Some(b) => (Some(b.section), b.extracted, b.geometry),
+        None => (None, None, None),
     };
     let x = &a.extract;
     let name = name.to_string();
@@ -142,7 +145,10 @@ pub fn quad_map(
     verify::last_check(&name, &summary, x.strict)?;
     verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
     progress.stage("geometry");
-    let geo = geometry::quads(&mut mesh, map, &sources, &x.geometry);
+    let geo = match staged {
+        Some(geo) => geo,
+        None => geometry::quads(&mut mesh, map, &sources, &x.geometry),
+    };
     laps.lap("geometry");
     geometry::check(&name, &geo, ("quad", "quads"), x.strict)?;
     let png = match (&a.png, mesh.cells.is_empty()) {

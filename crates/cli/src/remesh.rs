@@ -97,51 +97,36 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
         },
         weld: WeldArgs { no_weld: true },
     };
-    // weld, map, the extraction's count (the library's pipeline, as
-    // Python's `remesh` runs it)
-    let made =
-        dualex::remesh_map(&positions, &triangles, &opts).map_err(|e| format!("{name}: {e}"))?;
+    // weld, map, the extraction's count, the geometric stage, at another
+    // grid position while quads are left inverted (the library's
+    // pipeline, as Python's `remesh` runs it); each map is described,
+    // written and pictured before its checks, so that a refused one can
+    // be inspected
+    let mut written: Result<(), String> = Ok(());
+    let mut show = |k: usize, made: &dualex::RemeshedMap| -> Result<(), dualex::Error> {
+        describe(&name, k, made, a, g);
+        written = write_map(&made.map, a, &name);
+        // (the writer's own message is the run's, below)
+        written
+            .as_ref()
+            .map_err(|e| dualex::Error::Bug(e.clone()))?;
+        Ok(())
+    };
+    let staged = dualex::remesh_staged(&positions, &triangles, &opts, &mut show);
+    written?;
+    let staged = staged.map_err(|e| format!("{name}: {e}"))?;
     laps.lap("map");
-    if made.welded > 0 && !g.quiet {
-        eprintln!(
-            "dualex: {name}: welded {} of the cut",
-            count(made.welded, "vertex", "vertices")
-        );
+    if staged.attempt + 1 < staged.stats.grid_attempts.len() {
+        // a later attempt was written last: the map kept once more
+        write_map(&staged.map, a, &name)?;
     }
-    let s = &made.stats;
-    if !g.quiet {
-        eprintln!(
-            "dualex: {name}: map: {}, {} ({} of {} triangles flipped), {} rounding",
-            count(s.singularities, "singularity", "singularities"),
-            count(s.cut_edges, "cut edge", "cut edges"),
-            s.flipped,
-            s.triangles,
-            match a.rounding {
-                RoundingArg::Direct => "direct",
-                RoundingArg::Greedy => "greedy",
-                RoundingArg::Off => "no singularity",
-            }
-        );
-    }
-    let refused = s.counted.iter().take_while(|c| c.is_none()).count();
-    if refused > 0 && refused < s.counted.len() && !g.quiet {
-        eprintln!(
-            "dualex: {name}: the extraction refused the map at the seed's grid position; the grid was moved {} (remesh.counted in the stats)",
-            count(refused, "time", "times")
-        );
-    }
-    // the map is written before its checks, so that a refused one can be
-    // inspected
-    if let Some(path) = &a.map_out {
-        dualex_io::write_tri_map(path, &made.map).map_err(|e| e.to_string())?;
-    }
-    if let Some(path) = &a.png {
-        let bytes = dualex_render::map_png_bytes(&made.map, PNG_SIZE)
-            .map_err(|e| format!("{name}: {e}"))?;
-        outputs::write_png(path, &bytes)?;
-    }
-    made.check().map_err(|e| format!("{name}: {e}"))?;
-    let (map, stats, extracted) = made.extract().map_err(|e| format!("{name}: {e}"))?;
+    let dualex::Staged {
+        map,
+        stats,
+        extracted,
+        geometry,
+        ..
+    } = staged;
     let done = if a.input.is_some() {
         "done"
     } else {
@@ -157,6 +142,60 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
         Some(crate::extract::Before {
             section: ("remesh", stats.to_json()),
             extracted: Some(extracted),
+            geometry,
         }),
     )
+}
+
+/// What the map of attempt `k` is (stderr, unless quiet).
+fn describe(name: &str, k: usize, made: &dualex::RemeshedMap, a: &RemeshArgs, g: &Global) {
+    if g.quiet {
+        return;
+    }
+    if k > 0 {
+        eprintln!(
+            "dualex: {name}: inverted quads left at the seed's grid position: another one (attempt {} of at most {}; remesh.grid_attempts in the stats)",
+            k + 1,
+            dualex::GRID_ATTEMPTS
+        );
+    }
+    if made.welded > 0 {
+        eprintln!(
+            "dualex: {name}: welded {} of the cut",
+            count(made.welded, "vertex", "vertices")
+        );
+    }
+    let s = &made.stats;
+    eprintln!(
+        "dualex: {name}: map: {}, {} ({} of {} triangles flipped), {} rounding",
+        count(s.singularities, "singularity", "singularities"),
+        count(s.cut_edges, "cut edge", "cut edges"),
+        s.flipped,
+        s.triangles,
+        match a.rounding {
+            RoundingArg::Direct => "direct",
+            RoundingArg::Greedy => "greedy",
+            RoundingArg::Off => "no singularity",
+        }
+    );
+    let refused = s.counted.iter().take_while(|c| c.is_none()).count();
+    if refused > 0 && refused < s.counted.len() {
+        eprintln!(
+            "dualex: {name}: the extraction refused the map at the seed's grid position; the grid was moved {} (remesh.counted in the stats)",
+            count(refused, "time", "times")
+        );
+    }
+}
+
+/// The map (`--map-out`) and its picture (`--png`), when asked.
+fn write_map(map: &dualex::TriMap, a: &RemeshArgs, name: &str) -> Result<(), String> {
+    if let Some(path) = &a.map_out {
+        dualex_io::write_tri_map(path, map).map_err(|e| e.to_string())?;
+    }
+    if let Some(path) = &a.png {
+        let bytes =
+            dualex_render::map_png_bytes(map, PNG_SIZE).map_err(|e| format!("{name}: {e}"))?;
+        outputs::write_png(path, &bytes)?;
+    }
+    Ok(())
 }

@@ -210,13 +210,38 @@ pub(crate) fn finish_quads(
     welded: usize,
     opts: &QuadOptions,
 ) -> Result<QuadOutput, Error> {
-    let dualex_quad::Extracted {
-        mut mesh,
-        stats,
-        sources,
-        corner_uv,
-    } = x;
-    let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    finish_staged_quads(map, x, welded, opts, None)
+}
+
+/// The geometric stage on an extraction of `map` (its quads' positions
+/// moved in place), as [`quad`] runs it.
+pub(crate) fn quad_stage(
+    map: &TriMap,
+    x: &mut dualex_quad::Extracted,
+    opts: &GeometryOptions,
+) -> GeometryReport {
+    // the stage's "none" is u32::MAX, the extraction's NO_SOURCE
+    const _: () = assert!(dualex_quad::NO_SOURCE == u32::MAX);
+    dualex_geom::quads(
+        &mut x.mesh.positions,
+        &x.mesh.cells,
+        &map.positions,
+        &map.simplices,
+        &x.sources,
+        opts,
+    )
+}
+
+/// [`finish_quads`], the geometric stage's report given when it has run
+/// on `x` already ([`quad_stage`]).
+pub(crate) fn finish_staged_quads(
+    map: &TriMap,
+    mut x: dualex_quad::Extracted,
+    welded: usize,
+    opts: &QuadOptions,
+    staged: Option<GeometryReport>,
+) -> Result<QuadOutput, Error> {
+    let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
     if !rep.is_valid() {
         return Err(Error::InvalidOutput(rep.errors().join("; ")));
     }
@@ -225,26 +250,17 @@ pub(crate) fn finish_quads(
         output: topo::quad_shape(&rep).into(),
     };
     topology_check(&t, opts.strict)?;
-    // the stage's "none" is u32::MAX, whatever the extraction's is
-    let stage_sources: Vec<u32> = sources
-        .iter()
-        .map(|&s| {
-            if s == dualex_quad::NO_SOURCE {
-                u32::MAX
-            } else {
-                s
-            }
-        })
-        .collect();
-    let geometry = dualex_geom::quads(
-        &mut mesh.positions,
-        &mesh.cells,
-        &map.positions,
-        &map.simplices,
-        &stage_sources,
-        &opts.geometry,
-    );
+    let geometry = match staged {
+        Some(g) => g,
+        None => quad_stage(map, &mut x, &opts.geometry),
+    };
     inverted_check(&geometry, opts.strict)?;
+    let dualex_quad::Extracted {
+        mesh,
+        stats,
+        sources,
+        corner_uv,
+    } = x;
     let sources = sources
         .into_iter()
         .map(|s| (s != dualex_quad::NO_SOURCE).then_some(s))

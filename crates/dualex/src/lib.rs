@@ -66,8 +66,8 @@ pub use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
 pub use extract::{hex, quad, HexOptions, HexOutput, QuadOptions, QuadOutput};
 pub use map::{tet_map_from_slices, tri_map_from_slices};
 pub use remesh::{
-    remesh, remesh_map, MapOptions, Quantization, RemeshOptions, RemeshOutput, RemeshStats,
-    RemeshedMap, Target,
+    attempt_seed, remesh, remesh_map, remesh_staged, MapOptions, Quantization, RemeshOptions,
+    RemeshOutput, RemeshStats, RemeshedMap, Staged, Target, GRID_ATTEMPTS,
 };
 pub use stats::{GridOffset, HexStats, QuadStats, Topology};
 pub use surface::{has_map_coordinates, read_surface, PlainSurface};

@@ -20,17 +20,31 @@
 //!    count already, else made now); a map the extraction refuses is
 //!    remesh's bug ([`Error::Bug`]: remesh must make grid-preserving maps),
 //!    no quad at all is [`Error::Empty`];
-//! 5. ([`remesh()`] only) the output check, the topology comparison and the
-//!    geometric stage, as [`crate::quad()`] runs them.
+//! 5. the geometric stage on the quads, as [`crate::quad()`] runs it; when
+//!    it leaves inverted quads (a coarse map's flipped triangles can give
+//!    a fold no move of the vertices undoes), steps 2–5 again at another
+//!    grid position (the seed's attempt `k`, [`attempt_seed`]), at most
+//!    [`GRID_ATTEMPTS`] in all; the first with the fewest inverted quads
+//!    is kept, and every attempt's count is in
+//!    [`RemeshStats::grid_attempts`]. Only runs that leave inverted quads
+//!    pay for it: 3 of the 120 runs of `tests/remesh.rs` before it
+//!    (genus-3 plate and torus at 100 quads, all fixed by the second
+//!    position). Not with [`GeometryMode::Off`](crate::GeometryMode),
+//!    which keeps the map's positions: [`remesh_staged`];
+//! 6. ([`remesh()`] only) the output check and the topology comparison, as
+//!    [`crate::quad()`] runs them.
 //!
-//! The CLI runs 1–4 here and writes the map (`--map-out`) between 2 and
-//! 3, so that a map refused can be inspected; its own writer follows.
+//! The CLI runs 1–5 here (writing the map, `--map-out`, between 2 and 3 of
+//! each attempt, so that a map refused can be inspected); its own writer
+//! follows.
 //!
 //! Invariants: the map is over the welded surface (its `positions` and
 //! `simplices`); a result is never an empty mesh.
 
-use crate::extract::{finish_quads, inner_quad_options};
-use crate::{Error, GeometryMode, InputError, QuadOptions, QuadOutput, TriMap, SMOOTH_ROUNDS};
+use crate::extract::{finish_staged_quads, inner_quad_options, quad_stage};
+use crate::{
+    Error, GeometryMode, GeometryReport, InputError, QuadOptions, QuadOutput, TriMap, SMOOTH_ROUNDS,
+};
 use dualex_check::topology;
 pub use dualex_remesh::{Quantization, RemeshOptions as MapOptions, RemeshStats, Target};
 
@@ -234,12 +248,129 @@ pub fn remesh(
     triangles: &[[u32; 3]],
     opts: &RemeshOptions,
 ) -> Result<RemeshOutput, Error> {
-    let made = remesh_map(positions, triangles, opts)?;
+    let s = remesh_staged(positions, triangles, opts, &mut |_, _| Ok(()))?;
+    let quads = finish_staged_quads(
+        &s.map,
+        s.extracted,
+        s.welded,
+        &s.opts.quad_options(),
+        s.geometry,
+    )?;
+    Ok(RemeshOutput {
+        quads,
+        remesh: s.stats,
+        map: s.map,
+    })
+}
+
+/// Grid positions step 5 tries at most (module docs).
+pub const GRID_ATTEMPTS: usize = 3;
+
+/// The seed of attempt `k` of step 5: the user's for `k = 0`, then seeds
+/// drawn from it (the seed places the grid on the surface).
+pub fn attempt_seed(seed: u64, k: usize) -> u64 {
+    if k == 0 {
+        seed
+    } else {
+        dualex_map::rng::SplitMix::new(seed ^ (k as u64).rotate_left(32)).next_u64()
+    }
+}
+
+/// Steps 1–5 done (module docs): what the output checks and the writer
+/// take.
+#[doc(hidden)]
+pub struct Staged {
+    /// The map kept, over the welded surface.
+    pub map: TriMap,
+    /// Its remesher's numbers, [`RemeshStats::grid_attempts`] filled.
+    pub stats: RemeshStats,
+    /// Its extraction, the quads moved by the geometric stage.
+    pub extracted: dualex_quad::Extracted,
+    /// The stage's report; `None` when the extraction is not a valid
+    /// quad mesh (the stage did not run: the output check says why).
+    pub geometry: Option<GeometryReport>,
+    /// Vertices merged by the weld of step 1.
+    pub welded: usize,
+    /// The attempt kept (0: the seed's grid position).
+    pub attempt: usize,
+    /// The options of the attempt kept (its seed is [`attempt_seed`]'s).
+    pub opts: RemeshOptions,
+}
+
+/// Steps 1–5 (module docs). `each` sees every attempt's map, with the
+/// attempt's index, before its checks (the CLI writes and describes it
+/// there); its error ends the run. An error of the first attempt is the
+/// run's; a later attempt's error ends the attempts (the best so far is
+/// kept).
+#[doc(hidden)]
+pub fn remesh_staged(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    opts: &RemeshOptions,
+    each: &mut dyn FnMut(usize, &RemeshedMap) -> Result<(), Error>,
+) -> Result<Staged, Error> {
+    let retry = opts.extract.geometry.mode != GeometryMode::Off;
+    let mut best: Option<Staged> = None;
+    let mut inverted = Vec::new();
+    for k in 0..if retry { GRID_ATTEMPTS } else { 1 } {
+        let mut o = opts.clone();
+        o.map.seed = attempt_seed(opts.map.seed, k);
+        let attempt = attempt(positions, triangles, o, k, each);
+        let staged = match (attempt, &best) {
+            (Ok(s), _) => s,
+            (Err(e), None) => return Err(e),
+            (Err(_), Some(_)) => break,
+        };
+        let Some(n) = staged.geometry.as_ref().map(|g| g.after.inverted) else {
+            // not a valid mesh: the output check refuses it
+            best = Some(staged);
+            break;
+        };
+        inverted.push(n);
+        if best
+            .as_ref()
+            .and_then(|b| b.geometry.as_ref())
+            .is_none_or(|g| n < g.after.inverted)
+        {
+            best = Some(staged);
+        }
+        if n == 0 {
+            break;
+        }
+    }
+    let Some(mut best) = best else {
+        return Err(Error::Bug("remesh: no attempt was made".to_string()));
+    };
+    best.stats.grid_attempts = inverted;
+    Ok(best)
+}
+
+/// One attempt of [`remesh_staged`]: steps 1–5 with `opts`.
+fn attempt(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    opts: RemeshOptions,
+    k: usize,
+    each: &mut dyn FnMut(usize, &RemeshedMap) -> Result<(), Error>,
+) -> Result<Staged, Error> {
+    let made = remesh_map(positions, triangles, &opts)?;
+    each(k, &made)?;
     made.check()?;
     let welded = made.welded;
-    let (map, remesh, x) = made.extract()?;
-    let quads = finish_quads(&map, x, welded, &opts.quad_options())?;
-    Ok(RemeshOutput { quads, remesh, map })
+    let (map, stats, mut extracted) = made.extract()?;
+    let m = &extracted.mesh;
+    let geometry = dualex_check::check_quad_mesh(m.positions.len(), &m.cells)
+        .is_valid()
+        .then(|| quad_stage(&map, &mut extracted, &opts.extract.geometry));
+    Ok(Staged {
+        map,
+        stats,
+        extracted,
+        geometry,
+        welded,
+        attempt: k,
+        opts,
+    })
 }
 
 /// The signed and the unsigned area of a map (map units²).

@@ -439,18 +439,6 @@ fn run<const D: usize, const K: usize>(
     // the work allowed, in corner-simplex evaluations: the same for every
     // thread count (a time limit would not be)
     let mut budget = (BUDGET_PER_SIMPLEX * cells.len() * input.corners.len()).max(MIN_BUDGET);
-    if let Mode::Smooth(rounds) = opts.mode {
-        let p = Params {
-            theta: 0.5,
-            rounds: rounds.max(1),
-            iterations: SMOOTH_ITERATIONS,
-            stop_when_untangled: false,
-        };
-        rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p, &mut budget).rounds;
-    }
-    // untangling near what is still inverted (after smoothing too), in
-    // growing rings; the positions with the fewest inverted elements are
-    // kept (an attempt that makes things worse is undone)
     // flat cells (within `DEGENERATE` of 0) are as bad as inverted ones
     let inverted_of = |v: &[f64]| v.iter().filter(|&&v| v <= quality::DEGENERATE).count();
     // one measure per state of `x` (quads: a closest-point query each):
@@ -460,7 +448,26 @@ fn run<const D: usize, const K: usize>(
     } else {
         remeasure(x, &mut c)
     };
+    // the positions with the fewest inverted elements are kept, those
+    // before smoothing included (smoothing can bend a quad across a
+    // sharp edge that the untangling then cannot unbend)
     let mut best = (inverted_of(&bad), x.to_vec());
+    if let Mode::Smooth(rounds) = opts.mode {
+        let p = Params {
+            theta: 0.5,
+            rounds: rounds.max(1),
+            iterations: SMOOTH_ITERATIONS,
+            stop_when_untangled: false,
+        };
+        rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p, &mut budget).rounds;
+        bad = remeasure(x, &mut c);
+        // the smoothed positions replace the given ones unless worse
+        if inverted_of(&bad) <= best.0 {
+            best = (inverted_of(&bad), x.to_vec());
+        }
+    }
+    // untangling near what is still inverted (after smoothing too), in
+    // growing rings (an attempt that makes things worse is undone)
     for &rings in &RINGS {
         let now = inverted_of(&bad);
         if now < best.0 {

@@ -129,6 +129,12 @@ pub struct RemeshStats {
     pub counted: Vec<Option<usize>>,
     /// The index in `counted` of the map kept (`None` without a count).
     pub kept: Option<usize>,
+    /// Set by the facade's `remesh` (`dualex::remesh`, `dualex remesh`):
+    /// the inverted quads its geometric stage left at each grid position
+    /// tried, the seed's first (another is tried while quads are left
+    /// inverted, a few times at most; the first with the fewest is kept).
+    /// Empty when only the map was made.
+    pub grid_attempts: Vec<usize>,
     /// Wall-clock milliseconds: field, cut, integration (with rounding;
     /// both maps when made twice), the extraction's counts
     /// ([`remesh_counted`]).
@@ -210,6 +216,7 @@ fn make(
         },
         round_singularities: opts.quantization != Quantization::SingularitiesOff,
         gauge_offset: [rng.unit(), rng.unit()],
+        sharp: f.sharp.clone(),
         ..IntegrateOptions::default()
     };
     let run = |o: &IntegrateOptions| integrate_report(surface, &f.field, &cut.is_cut, &singular, o);
@@ -248,6 +255,7 @@ fn make(
         max_rounding: rep.quantize.max_rounding,
         counted,
         kept,
+        grid_attempts: Vec::new(),
         time_ms: [
             ms(t0, t1),
             ms(t1, t2),

@@ -33,6 +33,7 @@ impl RemeshStats {
             "max_rounding": s.max_rounding,
             "counted": s.counted,
             "kept": s.kept,
+            "grid_attempts": s.grid_attempts,
             "time_ms": {
                 "field": s.time_ms[0],
                 "cut": s.time_ms[1],

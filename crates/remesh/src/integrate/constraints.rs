@@ -18,6 +18,11 @@
 //! field's first direction `d` (or `−d`), of `u` along `±d⊥`; rows
 //! `A_c = B_c`, and `A_c` is an integer unknown.
 //!
+//! **Feature alignment.** A sharp edge (given per edge) is aligned the
+//! same way, in the chart of its first face: across a seam the other
+//! side's coordinate differs by a quarter-turn rotation and an integer
+//! translation, so it is an integer iso-line there too.
+//!
 //! **Gauge.** The map of a component can be translated in the directions
 //! that every row leaves free; [`Gauge::rows`] fixes exactly those at one
 //! wedge (after rounding, the integer unknowns usually fix the translation
@@ -137,6 +142,7 @@ pub fn build(
     charts: &Charts,
     singular_vertices: &[u32],
     align_boundary: Option<f64>,
+    sharp: &[bool],
 ) -> Result<Constraints, String> {
     let mut out = Constraints::default();
     // gauge: the first wedge of each component
@@ -167,7 +173,7 @@ pub fn build(
         }
     }
     if let Some(tolerance) = align_boundary {
-        align(surface, charts, tolerance, &mut out);
+        align(surface, charts, tolerance, sharp, &mut out);
     }
     for &v in singular_vertices {
         if v as usize >= surface.positions.len() {
@@ -196,10 +202,17 @@ pub fn build(
     Ok(out)
 }
 
-/// Boundary alignment rows and integer unknowns (module docs).
-fn align(surface: &Surface, charts: &Charts, tolerance: f64, out: &mut Constraints) {
+/// Boundary and feature alignment rows and integer unknowns (module
+/// docs).
+fn align(
+    surface: &Surface,
+    charts: &Charts,
+    tolerance: f64,
+    sharp: &[bool],
+    out: &mut Constraints,
+) {
     for (e, &[f, f1]) in surface.edge_faces.iter().enumerate() {
-        if f1 != NO_FACE {
+        if f1 != NO_FACE && !sharp.get(e).copied().unwrap_or(false) {
             continue;
         }
         let [a, b] = surface.edges[e];

@@ -65,6 +65,14 @@ fn extract(map: &TriMap) -> (usize, Vec<usize>, i64) {
     (m.cells.len(), valence, chi)
 }
 
+/// Edge `e` lies on an integer iso-line of face `f`'s chart: one
+/// coordinate is the same integer at both ends.
+fn on_integer_iso_line(s: &Surface, map: &TriMap, e: usize, f: u32) -> bool {
+    let t = s.triangles[f as usize];
+    let on = s.edges[e].map(|v| map.coords[f as usize][t.iter().position(|&x| x == v).unwrap()]);
+    (0..2).any(|c| (on[0][c] - on[1][c]).abs() < 1e-9 && (on[0][c] - on[0][c].round()).abs() < 1e-9)
+}
+
 fn opts(quads: usize, rounding: Rounding) -> IntegrateOptions {
     IntegrateOptions {
         quads: Some(quads),
@@ -130,6 +138,43 @@ fn cube_transitions_are_grid_rotations() {
         assert_eq!(valence.iter().filter(|&&v| v == 3).count(), 8);
         assert!(valence.iter().all(|&v| v == 3 || v == 4));
     }
+}
+
+/// Sharp edges given to the integration lie on integer iso-lines of both
+/// faces' charts, at a scale where the cube's corners alone would not put
+/// them there; without them, not every one does.
+#[test]
+fn sharp_edges_are_aligned_to_iso_lines() {
+    let s = cube(5);
+    let field = cube_field(&s);
+    let corners = cube_corners(&s);
+    let cut = test_cut::cut(&s, &corners);
+    let sharp = crate::features::sharp_edges(&s, 35.0);
+    let n_sharp = sharp.iter().filter(|&&b| b).count();
+    assert_eq!(n_sharp, 12 * 5);
+    let aligned = |o: &IntegrateOptions| {
+        let (map, report) = integrate_report(&s, &field, &cut, &corners, o).unwrap();
+        let on = (0..s.edges.len())
+            .filter(|&e| sharp[e])
+            .filter(|&e| {
+                s.edge_faces[e]
+                    .iter()
+                    .all(|&f| on_integer_iso_line(&s, &map, e, f))
+            })
+            .count();
+        (report.aligned_edges, on, map)
+    };
+    let mut o = opts(80, Rounding::Direct);
+    o.round_singularities = false;
+    let (before, on_before, _) = aligned(&o);
+    assert_eq!(before, 0);
+    assert!(on_before < n_sharp, "{on_before}");
+    o.sharp = sharp.clone();
+    let (after, on_after, map) = aligned(&o);
+    assert_eq!((after, on_after), (n_sharp, n_sharp));
+    assert_eq!(reverted(&map), 0);
+    let (_, _, chi) = extract(&map);
+    assert_eq!(chi, 2);
 }
 
 #[test]
@@ -326,12 +371,7 @@ fn boundary_alignment_follows_the_tolerance() {
         if f1 != crate::NO_FACE {
             continue;
         }
-        let t = s.triangles[f as usize];
-        let on =
-            s.edges[e].map(|v| map.coords[f as usize][t.iter().position(|&x| x == v).unwrap()]);
-        let iso =
-            (0..2).any(|c| on[0][c] == on[1][c] && (on[0][c] - on[0][c].round()).abs() < 1e-9);
-        assert!(iso, "boundary edge {e}: {on:?}");
+        assert!(on_integer_iso_line(&s, &map, e, f), "boundary edge {e}");
     }
     let (quads, _, chi) = extract(&map);
     assert_eq!(chi, 1);
