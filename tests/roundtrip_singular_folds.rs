@@ -9,7 +9,9 @@
 //! ball (its singular nodes one hex from the boundary); quads: n-gon disks
 //! (a centre of valence n), the prism surfaces (poles of valence 3 and n)
 //! and the cube surface. Seeds 1..=2 in CI (`DUALEX_FOLDS_SEEDS=N` for
-//! more); `DUALEX_FOLDS_ONLY=substring` runs a subset.
+//! more); `DUALEX_FOLDS_ONLY=substring` runs a subset,
+//! `DUALEX_FOLDS_CENTRES=N` folds at N centres instead of 8. The smallest
+//! failing case: `DUALEX_FOLDS_CENTRES=2 DUALEX_FOLDS_ONLY=ball_hole69/k2/s`.
 //!
 //! Every outcome is one of exact / refused (exit with an error, nothing
 //! written) / wrong (a mesh that differs from `M_k`, or a panic). Any failure
@@ -26,8 +28,11 @@ use std::time::Instant;
 /// centred on singular vertices"): run and reported, not asserted. All are
 /// hex refusals: ball_cutout4 at k ≥ 2 refused as a map (over half of the
 /// volume reverted), and the refined (not magnified) k ≥ 2 maps of
-/// ball_cutout5, ball_hole69 and polycube_notch (degenerate cells after
-/// untangling). No quad case fails since the untangling order of issue 22.
+/// ball_cutout5, ball_hole69 and polycube_notch (degenerate cells: the
+/// graph is already wrong when untangling ends). Refined maps flip about
+/// half of the simplices near each centre, against 0–20 % at k = 1 and in
+/// the magnified maps (`fold_tests.rs` in dualex-gen). No quad case fails
+/// since the untangling order of issue 22.
 #[rustfmt::skip]
 const KNOWN_FAILING: &[&str] = &[
     "ball_cutout4/k2/centre/s1",
@@ -60,8 +65,13 @@ const KNOWN_FAILING: &[&str] = &[
     "polycube_notch/k3/s2",
 ];
 
-/// Fold centres per map (all of them on the smaller meshes).
-const CENTRES: usize = 8;
+/// Fold centres per map (all of them on the smaller meshes);
+/// `DUALEX_FOLDS_CENTRES=N` for fewer (two already break the refined
+/// ball_hole69 at k = 2, one never does: docs/messy-cases.md).
+/// [`KNOWN_FAILING`] is the list for the default 8.
+fn centres() -> usize {
+    env_usize("DUALEX_FOLDS_CENTRES", 8) as usize
+}
 
 fn env_usize(name: &str, default: u64) -> u64 {
     std::env::var(name)
@@ -102,7 +112,7 @@ fn cases(names: Vec<String>, splits: &[TetSplit]) -> Vec<(String, String, FromMe
                     let o = FromMeshOptions {
                         scale,
                         magnify,
-                        singular_folds: CENTRES,
+                        singular_folds: centres(),
                         seed,
                         tet_split,
                         ..Default::default()
@@ -133,8 +143,8 @@ fn symptoms(st: &Option<serde_json::Value>) -> String {
         ("sanitize", "unresolved"),
         ("trace", "inconsistent"),
         ("untangle", "reverted_left"),
-        ("repair", "folded_collapsed"),
-        ("repair", "doublet_edges_left"),
+        ("output", "folded_collapsed"),
+        ("output", "doublet_edges_left"),
         ("repair", "columns_split"),
         ("output", "open_interior_faces"),
         ("output", "hexes"),
