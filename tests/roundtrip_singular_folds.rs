@@ -9,7 +9,8 @@
 //! ball (its singular nodes one hex from the boundary); quads: n-gon disks
 //! (a centre of valence n), the prism surfaces (poles of valence 3 and n)
 //! and the cube surface. Seeds 1..=2 in CI (`DUALEX_FOLDS_SEEDS=N` for
-//! more); `DUALEX_FOLDS_ONLY=substring` runs a subset,
+//! N seeds, from `DUALEX_FOLDS_SEED_FROM`, default 1: the long run goes
+//! on block by block); `DUALEX_FOLDS_ONLY=substring` runs a subset,
 //! `DUALEX_FOLDS_CENTRES=N` folds at N centres instead of 8. The smallest
 //! failing case: `DUALEX_FOLDS_CENTRES=2 DUALEX_FOLDS_ONLY=ball_hole69/k2/s`.
 //!
@@ -102,12 +103,14 @@ fn quad_meshes() -> Vec<String> {
 /// `(case name, mesh, options)` for every mesh, k ∈ 1..=3 and seed.
 fn cases(names: Vec<String>, splits: &[TetSplit]) -> Vec<(String, String, FromMeshOptions)> {
     let seeds = env_usize("DUALEX_FOLDS_SEEDS", 2);
+    // the first seed (long runs go on from where the last one stopped)
+    let from = env_usize("DUALEX_FOLDS_SEED_FROM", 1);
     let only = std::env::var("DUALEX_FOLDS_ONLY").unwrap_or_default();
     let mut out = Vec::new();
     for m in names {
         for k in 1..=3 {
             for &tet_split in splits {
-                for (seed, magnify) in (1..=seeds).flat_map(|s| [(s, false), (s, true)]) {
+                for (seed, magnify) in (from..from + seeds).flat_map(|s| [(s, false), (s, true)]) {
                     let (scale, magnify) = if magnify { (1, k) } else { (k, 1) };
                     let o = FromMeshOptions {
                         scale,
@@ -184,7 +187,8 @@ fn report(what: &str, table: &BTreeMap<String, (Outcome, f64)>) {
             }
             (Err(e), true) => eprintln!("known WRONG   {name} ({secs:.2} s): {e}"),
             (Err(e), _) => {
-                eprintln!("FAIL          {name} ({secs:.2} s): {e}");
+                let kind = if refusal(e) { "refused" } else { "WRONG" };
+                eprintln!("FAIL {kind:8} {name} ({secs:.2} s): {e}");
                 bad.push(name.clone());
             }
         }
