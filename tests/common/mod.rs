@@ -85,6 +85,18 @@ impl Scratch {
     pub fn arg(&self, file: &str) -> String {
         self.path(file).display().to_string()
     }
+
+    /// `dualex generate NAME` into `NAME.obj` here (panics on failure).
+    pub fn generate(&self, name: &str) {
+        let g = dualex(&[
+            "generate",
+            name,
+            "-o",
+            &self.arg(&format!("{name}.obj")),
+            "-q",
+        ]);
+        assert!(g.status.success(), "{}", text(&g));
+    }
 }
 
 impl Drop for Scratch {

@@ -380,3 +380,34 @@ fn map_areas(map: &TriMap) -> (f64, f64) {
         (s + x, u + x.abs())
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The collapse check (step 3) on a good map of the cube, then on the
+    /// same map shrunk a billion times (area far below the target's) and
+    /// mirrored (every triangle flipped): remesh's bug, said as one.
+    #[test]
+    fn a_collapsed_map_is_a_bug() {
+        let s = dualex_remesh::shapes::cube(2);
+        let mut opts = RemeshOptions::default();
+        opts.map.target = Target::Quads(24);
+        let mut made = remesh_map(&s.positions, &s.triangles, &opts).expect("the cube's map");
+        made.check().expect("a good map");
+        let good = made.map.coords.clone();
+        for c in made.map.coords.iter_mut().flatten() {
+            *c = [c[0] * 1e-9, c[1] * 1e-9];
+        }
+        let e = made.check().expect_err("a shrunk map");
+        assert!(matches!(e, Error::Bug(_)), "{e}");
+        assert!(e.to_string().contains("the map collapsed: area"), "{e}");
+        made.map.coords = good;
+        for c in made.map.coords.iter_mut().flatten() {
+            c[0] = -c[0];
+        }
+        made.stats.flipped = made.stats.triangles;
+        let e = made.check().expect_err("a mirrored map");
+        assert!(e.to_string().contains("triangles flipped"), "{e}");
+    }
+}

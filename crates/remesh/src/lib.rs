@@ -7,10 +7,12 @@
 //! | step | module | input → output |
 //! |---|---|---|
 //! | connectivity, face frames | [`surface`] | positions, triangles → [`Surface`] |
+//! | long edges split (fans, strips) | [`refine`] | [`Surface`] → the same surface, edges ≤ 2 quad edges |
 //! | feature curves | [`features`] | dihedral threshold → the sharp edges on curves (noise dropped) |
 //! | denoised surface for the field | [`denoise`] | [`Surface`] → the same smoothed along its normals |
 //! | smoothest 4-RoSy field | [`smooth`] (type in [`field`]) | [`Surface`] → [`CrossField`] (angle per face, matching per edge), aligned to boundary and sharp edges |
 //! | singular vertices | [`singularity`] | field → `(vertex, index·4)` |
+//! | quarters for +½ and +1 | [`quarters`] | a singular vertex's star fixed, the field solved again |
 //! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
 //! | seamless integration | [`integrate`](mod@integrate) | field + cut → per-corner `(u, v)` |
 //! | direct rounding | [`quantize`] | integer unknowns rounded at once, one more solve |
@@ -33,7 +35,9 @@ pub mod field;
 pub mod integrate;
 pub mod pipeline;
 pub mod quantize;
+pub mod quarters;
 pub mod recount;
+pub mod refine;
 pub mod shapes;
 pub mod shapes_cad;
 pub mod singularity;

@@ -4,7 +4,10 @@
 //! per-corner map (a [`TriMap`] over the surface's own vertices and
 //! triangles, which `dualex quad` extracts) and [`RemeshStats`].
 //!
-//! Steps, each its own module: the smoothest cross field aligned to the
+//! Steps, each its own module: the edges longer than two target quad
+//! edges split ([`crate::refine`]: a CAD fan cap or cone gets free faces
+//! inside its feature rim; the map is over this refined surface, which
+//! is the input's exactly), the smoothest cross field aligned to the
 //! boundary and feature curves ([`crate::features`]), solved on the
 //! surface denoised along its normals ([`crate::denoise`],
 //! [`crate::smooth`]), its singular vertices, a cut through them to a disk
@@ -91,8 +94,11 @@ impl Default for RemeshOptions {
 /// What [`remesh`] made, in numbers.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct RemeshStats {
-    /// Triangles of the surface.
+    /// Triangles of the map: the surface's, with its long edges split
+    /// ([`crate::refine`]).
     pub triangles: usize,
+    /// Triangles of the surface given.
+    pub input_triangles: usize,
     /// Interior singular vertices of the field.
     pub singularities: usize,
     /// Their indices, in quarter turns: count per index.
@@ -185,6 +191,11 @@ fn make(
     count: Option<&mut CountQuads<'_>>,
 ) -> Result<Remeshed, String> {
     let t0 = Instant::now();
+    // long edges split: fans and strips get room (crate::refine)
+    let longest = crate::refine::QUAD_EDGES * quad_edge(surface, opts.target);
+    let refined = crate::refine::split_long_edges(surface, longest);
+    let input_triangles = surface.triangles.len();
+    let surface = refined.as_ref().unwrap_or(surface);
     let fopts = FieldOptions {
         sharp_degrees: opts.sharp_degrees,
         ..FieldOptions::default()
@@ -239,6 +250,7 @@ fn make(
     let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
     let stats = RemeshStats {
         triangles: surface.triangles.len(),
+        input_triangles,
         singularities: f.singularities.len(),
         singularity_index,
         boundary_singularities: f.boundary_singularities.len(),
@@ -264,6 +276,15 @@ fn make(
         ],
     };
     Ok(Remeshed { map, stats })
+}
+
+/// The target's quad edge length in model units ([`crate::refine`] splits
+/// the edges longer than [`crate::refine::QUAD_EDGES`] of them).
+fn quad_edge(surface: &Surface, target: Target) -> f64 {
+    match target {
+        Target::EdgeLength(h) => h,
+        Target::Quads(n) => (surface.areas.iter().sum::<f64>() / n.max(1) as f64).sqrt(),
+    }
 }
 
 /// Turns the field by `angle` on every component with no fixed face

@@ -321,6 +321,22 @@ pub const NAMED: &[(&str, &str)] = &[
         "surface_cad_cone",
         "closed cone as CAD exports it: an apex fan and a base fan of 96 sectors",
     ),
+    (
+        "surface_cad_plate_holes",
+        "plate with 3 round through-holes as CAD exports it: corner fans around each hole rim (genus 3)",
+    ),
+    (
+        "surface_cad_box_boss",
+        "box with a round boss as CAD exports it: faces of two triangles, corner fans, a fan on the boss",
+    ),
+    (
+        "surface_cad_filleted",
+        "slab with filleted vertical edges as CAD exports it: one strip of long triangles, fan caps",
+    ),
+    (
+        "surface_cad_needles",
+        "cylinder of 1000 sectors in one strip: needle triangles of aspect ratio 1000, fan caps",
+    ),
 ];
 
 /// A generated surface by its name in [`NAMED`].
@@ -335,6 +351,10 @@ pub fn by_name(name: &str) -> Option<Surface> {
         "surface_disk" => bumpy_square(48, 0.2),
         "surface_cad_cylinder" => crate::shapes_cad::cad_cylinder(96, 32, 2.0),
         "surface_cad_cone" => crate::shapes_cad::cad_cone(96, 1.5),
+        "surface_cad_plate_holes" => crate::shapes_cad::cad_plate_with_holes(3, 6, 0.3),
+        "surface_cad_box_boss" => crate::shapes_cad::cad_box_with_boss(8, 0.5),
+        "surface_cad_filleted" => crate::shapes_cad::cad_filleted_slab(2.0, 1.0, 0.3, 8, 0.4),
+        "surface_cad_needles" => crate::shapes_cad::cad_cylinder(1000, 1, 6.3),
         _ => return None,
     })
 }

@@ -44,6 +44,12 @@
 //! principal-direction field, without singularities, has a lower unit
 //! energy. Curvature alignment would be the fix; it is not done here.
 //!
+//! Quarter singularities: a singular vertex of index +½ or more (a
+//! valence ≤ 2 vertex of the quad mesh, a collapsed map at +1) has its
+//! star fixed to a field turning by at most a quarter and the field is
+//! solved again, up to [`QUARTER_ROUNDS`] times ([`crate::quarters`]):
+//! on a fan cap's disc the +1 becomes four +¼.
+//!
 //! Cost, measured (`cargo test -p dualex-remesh --profile ci --test
 //! field_cut -- --ignored --nocapture`, one thread, 2 shared cores at a
 //! load of ~2): 0.52 s on an 82k-face icosphere, 0.69 s on a 100k-face
@@ -101,6 +107,11 @@ impl Default for FieldOptions {
     }
 }
 
+/// Most rounds of "fix the star of every singular vertex of index +1/2
+/// or more, solve again" ([`crate::quarters`]): one splits a disc's +1
+/// into four quarters; a second catches a +1/2 the first left beside it.
+pub const QUARTER_ROUNDS: usize = 3;
+
 /// A cross field with its singularities and the edges it follows.
 #[derive(Clone, Debug)]
 pub struct FieldResult {
@@ -146,25 +157,42 @@ pub fn cross_field(surface: &Surface, opts: &FieldOptions) -> Result<FieldResult
     // the field is solved on the denoised surface, then carried back
     let denoised = crate::denoise::smoothed(surface, opts.denoise_steps, &sharp);
     let on = denoised.as_ref().unwrap_or(surface);
-    let fixed_on = match &denoised {
+    let mut fixed_on = match &denoised {
         Some(d) => fixed_directions(d, &sharp, opts.align_boundary),
         None => fixed_angle.clone(),
     };
     laps.lap("field: checks, constraints, denoising");
-    let z = solve_field(on, &fixed_on, opts, &mut laps)?;
-    let angle = (0..nf)
-        .map(|f| match fixed_angle[f] {
-            Some(a) => a,
-            None => {
-                z[f].arg() / 4.0
-                    + denoised
-                        .as_ref()
-                        .map_or(0.0, |d| crate::denoise::frame_turn(d, surface, f as u32))
+    let mut z = solve_field(on, &fixed_on, opts, &mut laps)?;
+    let angles = |z: &[c64]| -> Vec<f64> {
+        (0..nf)
+            .map(|f| match fixed_angle[f] {
+                Some(a) => a,
+                None => {
+                    z[f].arg() / 4.0
+                        + denoised
+                            .as_ref()
+                            .map_or(0.0, |d| crate::denoise::frame_turn(d, surface, f as u32))
+                }
+            })
+            .collect()
+    };
+    let mut field = CrossField::from_angles(surface, angles(&z));
+    let mut singularities = vertex_indices(surface, &field);
+    // quarter singularities in place of +1/2 and +1 (crate::quarters)
+    for _ in 0..QUARTER_ROUNDS {
+        let mut pinned = false;
+        for &(v, q) in &singularities {
+            if q >= 2 {
+                pinned |= crate::quarters::pin_star(on, &z, &mut fixed_on, v);
             }
-        })
-        .collect();
-    let field = CrossField::from_angles(surface, angle);
-    let singularities = vertex_indices(surface, &field);
+        }
+        if !pinned {
+            break;
+        }
+        z = solve_field(on, &fixed_on, opts, &mut laps)?;
+        field = CrossField::from_angles(surface, angles(&z));
+        singularities = vertex_indices(surface, &field);
+    }
     let boundary_singularities = if opts.align_boundary {
         boundary_indices(surface, &field)
     } else {

@@ -17,6 +17,7 @@ impl RemeshStats {
             .collect();
         serde_json::json!({
             "triangles": s.triangles,
+            "input_triangles": s.input_triangles,
             "singularities": s.singularities,
             "singularity_index": index,
             "boundary_singularities": s.boundary_singularities,
