@@ -56,7 +56,10 @@ pub struct IntegrateOptions {
     pub align_boundary: Option<f64>,
     /// Per edge: a sharp (feature) edge, aligned to an integer iso-line as
     /// a boundary edge is (same tolerance; nothing when
-    /// `align_boundary` is `None`). Empty: none. A feature curve left
+    /// `align_boundary` is `None`). Empty: none. When the rounding then
+    /// leaves an integer unknown off the integers (a quantization
+    /// conflict), the map is made again without them (one more
+    /// integration). A feature curve left
     /// between grid lines makes quads that bend across it, inverted in
     /// the frame of either side (issue 21: 45 of the genus-3 plate's
     /// inverted quads at 100 quads). Default: empty.
@@ -169,6 +172,7 @@ pub fn integrate_report(
         integers.extend(cons.singular.iter().cloned());
     }
     integers.extend(cons.boundary.iter().cloned());
+    integers.extend(cons.sharp.iter().cloned());
     integers.extend(cons.translations.iter().cloned());
     // 3. energy, the scale fitted to the area (one continuous solve)
     let mut scale = first_scale;
@@ -255,6 +259,13 @@ pub fn integrate_report(
     let Some((_, x, mut quantize, scale)) = best else {
         return Err("integrate: no solve".into());
     };
+    // sharp edges on iso-lines only where the rounding keeps every
+    // integer unknown whole (constraints' module docs): else without them
+    if quantize.conflicts > 0 && !cons.sharp.is_empty() {
+        let mut o = opts.clone();
+        o.sharp = Vec::new();
+        return integrate_report(surface, field, is_cut, singular_vertices, &o);
+    }
     quantize.solves = solves;
     let coords = charts
         .corner_wedge
