@@ -13,7 +13,9 @@ const M: usize = 8;
 /// `first_step`: the largest entry of the first step (later steps are
 /// scaled by the curvature seen); `max_step`: the largest entry of any
 /// step (a longer one is shortened before the line search, which would
-/// otherwise halve it many times where the curvature changes fast).
+/// otherwise halve it many times where the curvature changes fast);
+/// `done`: asked after each step, whose point `f` saw last; `true` stops
+/// there (the caller's goal is reached before the minimum).
 pub fn minimize(
     x: &mut [f64],
     mut f: impl FnMut(&[f64], &mut [f64]) -> f64,
@@ -21,6 +23,7 @@ pub fn minimize(
     gtol: f64,
     first_step: f64,
     max_step: f64,
+    mut done: impl FnMut() -> bool,
 ) -> usize {
     let n = x.len();
     if n == 0 {
@@ -111,7 +114,7 @@ pub fn minimize(
             s_hist.push(s);
             y_hist.push(y);
         }
-        if decrease <= 1e-14 * fx.abs() {
+        if decrease <= 1e-14 * fx.abs() || done() {
             return it + 1;
         }
     }
@@ -147,6 +150,7 @@ mod tests {
             1e-9,
             0.1,
             f64::INFINITY,
+            || false,
         );
         assert!(
             (x[0] - 1.0).abs() < 1e-6 && (x[1] - 1.0).abs() < 1e-6,

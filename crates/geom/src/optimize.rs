@@ -32,7 +32,15 @@ pub struct Cells<'a, const D: usize, const K: usize> {
     /// of the input triangle nearest the quad's centre), taken at the
     /// start of every round; `None`: the frames stay.
     pub reframe: Option<&'a Reframe<'a, D>>,
+    /// The movable vertices within `rings` rings of the flagged cells
+    /// (per cell); `None`: the region never shrinks
+    /// ([`Params::shrink_rings`]).
+    pub region: Option<&'a Region<'a>>,
 }
+
+/// The vertices within `rings` rings of the flagged cells, movable ones
+/// only.
+pub type Region<'a> = dyn Fn(&[bool], usize) -> Vec<bool> + Sync + 'a;
 
 /// The frame of cell `c` from positions `x`.
 pub type Reframe<'a, const D: usize> = dyn Fn(&[[f64; 3]], usize) -> [[f64; 3]; D] + Sync + 'a;
@@ -49,6 +57,11 @@ pub struct Params {
     /// Stop once nothing is inverted (untangling) instead of when the
     /// energy settles (smoothing).
     pub stop_when_untangled: bool,
+    /// Untangling: after a round, the region becomes the vertices within
+    /// this many rings of the cells still inverted ([`Cells::region`])
+    /// when that is at most half of it: the later rounds, on a few folds
+    /// left, cost a fraction of the first. 0: the region stays.
+    pub shrink_rings: usize,
 }
 
 /// What [`optimize`] did.
@@ -106,6 +119,9 @@ struct Local<'a, const D: usize, const K: usize> {
     uses: Vec<(u32, u8)>,
     /// Inverted corner simplices at the last evaluation.
     inverted: std::sync::atomic::AtomicUsize,
+    /// Every frame is the identity (hexes): the Jacobian is the edges'
+    /// coordinates, no projection.
+    identity: bool,
 }
 
 impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
@@ -153,8 +169,16 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
                 }
             }
         }
-        let frames = cells.iter().map(|&ci| c.frames[ci as usize]).collect();
+        let frames: Vec<[[f64; 3]; D]> = cells.iter().map(|&ci| c.frames[ci as usize]).collect();
+        let identity = D == 3
+            && c.reframe.is_none()
+            && frames.iter().all(|f| {
+                f.iter()
+                    .enumerate()
+                    .all(|(r, row)| (0..3).all(|a| row[a] == f64::from(u8::from(a == r))))
+            });
         Local {
+            identity,
             c,
             frames,
             cells,
@@ -177,6 +201,12 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
         let mut j = [[0.0; D]; D];
         for k in 0..D {
             let e = sub(x[cell[corner[k + 1]] as usize], p0);
+            if self.identity {
+                for (r, jr) in j.iter_mut().enumerate() {
+                    jr[k] = e[r] * inv_h;
+                }
+                continue;
+            }
             for (r, row) in frame.iter().enumerate() {
                 j[r][k] = (row[0] * e[0] + row[1] * e[1] + row[2] * e[2]) * inv_h;
             }
@@ -203,9 +233,15 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
         let mut g0 = [0.0; 3];
         for k in 0..D {
             let mut gk = [0.0; 3];
-            for (r, row) in frame.iter().enumerate() {
-                for a in 0..3 {
-                    gk[a] += row[a] * de[r][k] * w / h;
+            if self.identity {
+                for (r, g) in gk.iter_mut().enumerate() {
+                    *g = de[r][k] * w / h;
+                }
+            } else {
+                for (r, row) in frame.iter().enumerate() {
+                    for a in 0..3 {
+                        gk[a] += row[a] * de[r][k] * w / h;
+                    }
                 }
             }
             for a in 0..3 {
@@ -215,6 +251,23 @@ impl<'a, const D: usize, const K: usize> Local<'a, D, K> {
         }
         g[0] = g0;
         (e * w, det)
+    }
+
+    /// Per cell of the mesh: one of its corner simplices here has a
+    /// determinant ≤ 0 at `x` (cells outside the region: `false`).
+    fn inverted_cells(&self, x: &[[f64; 3]]) -> Vec<bool> {
+        let bad: Vec<bool> = self
+            .simplices
+            .par_iter()
+            .map(|&s| crate::energy::det_cofactor(&self.jacobian(s, x)).0 <= 0.0)
+            .collect();
+        let mut out = vec![false; self.c.cells.len()];
+        for (&(a, _), b) in self.simplices.iter().zip(bad) {
+            if b {
+                out[self.cells[a as usize] as usize] = true;
+            }
+        }
+        out
     }
 
     /// Energy, least determinant, and per simplex the gradient on its
@@ -264,6 +317,7 @@ pub fn optimize<const D: usize, const K: usize>(
     budget: &mut usize,
 ) -> Outcome {
     let mut l = Local::new(cells, movable, x.len());
+    let n = x.len();
     let mut out = Outcome {
         det_min: f64::INFINITY,
         ..Default::default()
@@ -359,6 +413,10 @@ pub fn optimize<const D: usize, const K: usize>(
             1e-9 * mean_h,
             0.05 * mean_h,
             LBFGS_MAX_STEP * mean_h,
+            // untangling: once no corner simplex is inverted, the round
+            // ends (the projection and the measure come next); the
+            // energy's minimum is the smoothing's business
+            || p.stop_when_untangled && l.inverted.load(std::sync::atomic::Ordering::Relaxed) == 0,
         );
         place(&y, &mut xt);
         let moved: Vec<([f64; 3], crate::constraint::Basis)> = l
@@ -407,6 +465,15 @@ pub fn optimize<const D: usize, const K: usize>(
         }
         if det_min > 0.0 && (p.stop_when_untangled || settled) {
             break;
+        }
+        if let (Some(region), true) = (cells.region, p.shrink_rings > 0 && inverted > 0) {
+            let flagged = l.inverted_cells(x);
+            let smaller = region(&flagged, p.shrink_rings);
+            if 2 * smaller.iter().filter(|&&m| m).count() <= l.vars.len() {
+                l = Local::new(cells, &smaller, n);
+                grads = vec![[[0.0; 3]; 4]; l.simplices.len()];
+                bases.clear();
+            }
         }
     }
     out.det_min = det_min;

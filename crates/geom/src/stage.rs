@@ -426,6 +426,7 @@ fn run<const D: usize, const K: usize>(
         frames: input.frames,
         h,
         reframe: bound.as_ref().map(|b| b as &crate::optimize::Reframe<D>),
+        region: None,
     };
     // the values at `x`, quads measured against the triangles nearest
     // their centres there (frames updated)
@@ -436,6 +437,21 @@ fn run<const D: usize, const K: usize>(
         measure(x, &c.frames)
     };
     let movable_kind: Vec<bool> = cons.kind.iter().map(|k| k.dof() > 0).collect();
+    // the movable vertices within `rings` rings of the flagged cells
+    let region = |flagged: &[bool], rings: usize| {
+        let mut region = vec![false; movable_kind.len()];
+        for (cell, _) in cells.iter().zip(flagged).filter(|(_, &f)| f) {
+            for &u in cell {
+                region[u as usize] = true;
+            }
+        }
+        grow(&mut region, &around, cells, rings);
+        for (r, m) in region.iter_mut().zip(&movable_kind) {
+            *r &= *m;
+        }
+        region
+    };
+    c.region = Some(&region);
     // the work allowed, in corner-simplex evaluations: the same for every
     // thread count (a time limit would not be)
     let mut budget = (BUDGET_PER_SIMPLEX * cells.len() * input.corners.len()).max(MIN_BUDGET);
@@ -458,6 +474,7 @@ fn run<const D: usize, const K: usize>(
             rounds: rounds.max(1),
             iterations: SMOOTH_ITERATIONS,
             stop_when_untangled: false,
+            shrink_rings: 0,
         };
         rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p, &mut budget).rounds;
         bad = remeasure(x, &mut c);
@@ -476,25 +493,14 @@ fn run<const D: usize, const K: usize>(
         if now == 0 || budget == 0 {
             break;
         }
-        let mut region = vec![false; x.len()];
-        for (ci, &v) in bad.iter().enumerate() {
-            if v <= quality::DEGENERATE {
-                for &u in &cells[ci] {
-                    region[u as usize] = true;
-                }
-            }
-        }
-        grow(&mut region, &around, cells, rings);
-        let movable: Vec<bool> = region
-            .iter()
-            .zip(&movable_kind)
-            .map(|(a, b)| *a && *b)
-            .collect();
+        let flagged: Vec<bool> = bad.iter().map(|&v| v <= quality::DEGENERATE).collect();
+        let movable = region(&flagged, rings);
         let p = Params {
             theta: 0.5,
             rounds: UNTANGLE_ROUNDS,
             iterations: ITERATIONS,
             stop_when_untangled: true,
+            shrink_rings: rings,
         };
         rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p, &mut budget).rounds;
         rep.rings = rings;
