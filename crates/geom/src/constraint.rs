@@ -52,6 +52,10 @@ pub struct Constraints {
     /// (`u32::MAX`: none), where the next one starts: it changes the work
     /// of a query, never its answer.
     feet: Vec<AtomicU32>,
+    /// Per vertex on the boundary curves, the arc it stays on
+    /// (`u32::MAX`: the nearest of any): the arc between the input corners
+    /// that hold the mesh's corners around it (`stage::corners`).
+    pub arc: Vec<u32>,
 }
 
 /// Whether the mesh is a surface (D = 2: every vertex on the reference)
@@ -107,7 +111,13 @@ impl Constraints {
         let feet = (0..positions.len())
             .map(|_| AtomicU32::new(u32::MAX))
             .collect();
-        Constraints { kind, hint, feet }
+        let arc = vec![u32::MAX; positions.len()];
+        Constraints {
+            kind,
+            hint,
+            feet,
+            arc,
+        }
     }
 
     /// The point of vertex `v`'s set nearest `p`.
@@ -117,7 +127,22 @@ impl Constraints {
             Kind::Surface => r
                 .closest_cached(p, Some(self.hint[v]), self.feet.get(v))
                 .map_or(p, |f| f.point),
-            Kind::Curve { boundary } => r.closest_on_curves(p, boundary).map_or(p, |c| c.1),
+            Kind::Curve { boundary } => self.curve_foot(r, v, p, boundary).map_or(p, |c| c.1),
+        }
+    }
+
+    /// The nearest point to `p` on vertex `v`'s curves: its arc when it
+    /// has one, else any curve (boundary ones only when `boundary`).
+    fn curve_foot(
+        &self,
+        r: &Reference,
+        v: usize,
+        p: [f64; 3],
+        boundary: bool,
+    ) -> Option<(u32, [f64; 3], f64)> {
+        match self.arc[v] {
+            u32::MAX => r.closest_on_curves(p, boundary),
+            a => r.closest_on_arc(p, a),
         }
     }
 
@@ -146,7 +171,7 @@ impl Constraints {
                 let t1 = unit(perpendicular(n));
                 (q, (2, [t1, cross(n, t1), [0.0; 3]]))
             }
-            (Kind::Curve { boundary }, Some(r)) => match r.closest_on_curves(p, boundary) {
+            (Kind::Curve { boundary }, Some(r)) => match self.curve_foot(r, v, p, boundary) {
                 Some((s, q, _)) if norm(r.direction(s)) > 0.0 => {
                     (q, (1, [r.direction(s), [0.0; 3], [0.0; 3]]))
                 }

@@ -13,8 +13,11 @@
 
 use crate::bvh::{Aabb, Bvh};
 use crate::quality::{cross, dot, norm, sub};
-use std::collections::HashMap;
+pub use curves::MIN_FEATURE_SEGMENTS;
+use curves::{corners, drop_short_features, label_arcs};
 use std::sync::atomic::{AtomicU32, Ordering};
+
+mod curves;
 
 /// A curve segment of the reference.
 #[derive(Clone, Copy, Debug)]
@@ -23,6 +26,10 @@ pub struct Segment {
     pub ends: [u32; 2],
     /// A boundary edge (one triangle); otherwise a feature edge.
     pub boundary: bool,
+    /// Its arc: the chain of segments between corners it lies on
+    /// (segments meeting at a vertex that is no corner share it; a closed
+    /// curve without a corner is one arc).
+    pub arc: u32,
 }
 
 /// A point of the reference surface nearest a query.
@@ -107,12 +114,14 @@ impl Reference {
                 segments.push(Segment {
                     ends: ts[0].0,
                     boundary,
+                    arc: u32::MAX,
                 });
             }
         }
         segments.sort_unstable_by_key(|s| s.ends);
         drop_short_features(&mut segments, positions.len());
         let corner = corners(positions, &segments, cos);
+        label_arcs(&mut segments, &corner);
         let mut angle = vec![0.0; positions.len()];
         for t in triangles {
             let p = t.map(|v| positions[v as usize]);
@@ -254,6 +263,37 @@ impl Reference {
         Some((s, self.closest_on_segment(s, p), d2.sqrt()))
     }
 
+    /// The nearest point to `p` on the boundary segments of `arc`: the
+    /// segment, the point, the distance.
+    pub fn closest_on_arc(&self, p: [f64; 3], arc: u32) -> Option<(u32, [f64; 3], f64)> {
+        self.closest_on(p, |seg| seg.boundary && seg.arc == arc)
+    }
+
+    /// The arcs of the curve segments at vertex `v`.
+    pub fn arcs_at(&self, v: u32) -> Vec<u32> {
+        let mut out: Vec<u32> = self
+            .segments
+            .iter()
+            .filter(|s| s.ends.contains(&v))
+            .map(|s| s.arc)
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
+    /// The corner of the curves at `p` (within `tol`), if any.
+    pub fn corner_at(&self, p: [f64; 3], tol: f64) -> Option<u32> {
+        let (s, _, d) = self.closest_on_curves(p, false)?;
+        if d > tol {
+            return None;
+        }
+        self.segments[s as usize]
+            .ends
+            .into_iter()
+            .find(|&e| self.corner[e as usize] && norm(sub(self.positions[e as usize], p)) <= tol)
+    }
+
     /// The corner of the curves nearest `p` within `radius` whose
     /// [`angle`](Self::angle) is at most `max_angle`.
     pub fn nearest_corner(&self, p: [f64; 3], radius: f64, max_angle: f64) -> Option<[f64; 3]> {
@@ -384,57 +424,6 @@ impl Reference {
         let (v, w) = (vb / denom, vc / denom);
         [0, 1, 2].map(|k| a[k] + ab[k] * v + ac[k] * w)
     }
-}
-
-/// Feature curves (connected sets of feature segments) of fewer than this
-/// many segments are noise (a coarse smooth surface), not features.
-pub const MIN_FEATURE_SEGMENTS: usize = 4;
-
-/// Drops the feature segments of curves shorter than
-/// [`MIN_FEATURE_SEGMENTS`]; boundary segments stay.
-fn drop_short_features(segments: &mut Vec<Segment>, n: usize) {
-    let mut parent: Vec<u32> = (0..n as u32).collect();
-    fn find(p: &mut [u32], mut v: u32) -> u32 {
-        while p[v as usize] != v {
-            p[v as usize] = p[p[v as usize] as usize];
-            v = p[v as usize];
-        }
-        v
-    }
-    for s in segments.iter().filter(|s| !s.boundary) {
-        let (a, b) = (find(&mut parent, s.ends[0]), find(&mut parent, s.ends[1]));
-        parent[a.max(b) as usize] = a.min(b);
-    }
-    let mut size: HashMap<u32, usize> = HashMap::new();
-    for s in segments.iter().filter(|s| !s.boundary) {
-        *size.entry(find(&mut parent, s.ends[0])).or_default() += 1;
-    }
-    segments.retain(|s| s.boundary || size[&find(&mut parent, s.ends[0])] >= MIN_FEATURE_SEGMENTS);
-}
-
-/// Per vertex: a corner of the curves (see the module docs).
-fn corners(positions: &[[f64; 3]], segments: &[Segment], cos: f64) -> Vec<bool> {
-    let mut around: Vec<Vec<u32>> = vec![Vec::new(); positions.len()];
-    for s in segments {
-        around[s.ends[0] as usize].push(s.ends[1]);
-        around[s.ends[1] as usize].push(s.ends[0]);
-    }
-    around
-        .iter()
-        .enumerate()
-        .map(|(v, n)| match n.len() {
-            // an end of a curve is where a ridge fades out, not a corner
-            0 | 1 => false,
-            2 => {
-                let p = positions[v];
-                let a = sub(p, positions[n[0] as usize]);
-                let b = sub(positions[n[1] as usize], p);
-                let l = norm(a) * norm(b);
-                l > 0.0 && dot(a, b) < cos * l
-            }
-            _ => true,
-        })
-        .collect()
 }
 
 #[cfg(test)]

@@ -11,7 +11,7 @@ use dualex_map::cells::{HEX_EDGES, HEX_FACES};
 
 mod corners;
 mod topology;
-use corners::{mesh_corners_to_input_corners, release_flat_corners};
+use corners::{bind_to_arcs, mesh_corners_to_input_corners, release_flat_corners};
 use std::time::Instant;
 use topology::{boundary_vertices, grow, vertex_cells};
 
@@ -372,6 +372,7 @@ fn run<const D: usize, const K: usize>(
         });
         if far || rep.before.inverted > 0 || opts.mode != Mode::Auto {
             mesh_corners_to_input_corners(x, &input, &r, &around, &mut cons, rep.mean_edge);
+            bind_to_arcs(x, &input, &r, &mut cons, tol.max(1e-9 * r.diagonal));
             for v in 0..x.len() {
                 if !input.on_boundary[v] {
                     continue;

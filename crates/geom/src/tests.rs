@@ -281,3 +281,22 @@ fn smoothing_raises_the_5th_percentile_and_keeps_the_boundary() {
     let r = quads(&mut y, &q, &p, &t, &sources, &o);
     assert!(r.before.inverted > 0 && r.after.inverted == r.before.inverted && !r.moved());
 }
+
+/// A boundary vertex the map put past a corner of the input (on the
+/// other side's edge) goes back to its own side: it is bound to the arc
+/// between the corners of the mesh around it, not to the nearest curve.
+#[test]
+fn a_boundary_vertex_past_a_corner_goes_back_to_its_arc() {
+    let n = 4;
+    let (p, q, t) = quad_grid(n);
+    let mut x = p.clone();
+    // vertex (1, 0), on the bottom edge, put on the left edge past the
+    // corner (0, 0): the corner quad is flat
+    x[1] = [0.0, 0.3, 0.0];
+    let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
+    let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
+    assert!(r.before.inverted > 0, "{r:?}");
+    assert_eq!(r.after.inverted, 0, "{r:?}");
+    assert_eq!(x[0], [0.0, 0.0, 0.0], "the mesh corner stays on the corner");
+    assert!(x[1][1].abs() <= 1e-9 && x[1][0] > 0.0, "{:?}", x[1]);
+}

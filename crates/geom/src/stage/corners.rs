@@ -74,10 +74,12 @@ pub(super) fn release_flat_corners<const D: usize, const K: usize>(
         for e in input.edges {
             let (a, b) = (cell[e[0]] as usize, cell[e[1]] as usize);
             for (u, w) in [(a, b), (b, a)] {
+                // (a vertex bound to its arc has its place: `bind_to_arcs`)
                 if u == v
                     && input.on_boundary[w]
                     && cons.kind[w] != Kind::Fixed
                     && cons.kind[w] != free
+                    && cons.arc[w] == u32::MAX
                 {
                     x[w] = start[w];
                     cons.kind[w] = free;
@@ -117,4 +119,89 @@ fn corner_value<const D: usize, const K: usize>(
     } else {
         0.0
     }
+}
+
+/// The boundary vertices of a quad mesh between two of its corners fixed
+/// at input corners `A`, `B` (next along a boundary loop) stay on the
+/// input's arc from `A` to `B` when one arc joins them
+/// ([`Constraints::arc`]); the nearest curve point could be on the arc
+/// past a corner, where a vertex the map put beyond that corner would
+/// otherwise stay, its quad folded over the corner. Returns the vertices
+/// so bound. A loop with a vertex of two boundary edges out (non-manifold)
+/// binds nothing.
+pub(super) fn bind_to_arcs<const D: usize, const K: usize>(
+    x: &[[f64; 3]],
+    input: &Input<D, K>,
+    r: &Reference,
+    cons: &mut Constraints,
+    tol: f64,
+) -> usize {
+    if input.role != Role::Surface {
+        return 0;
+    }
+    // boundary edges (of one cell), as the cells run them
+    let mut keys: Vec<(u64, u32, u32)> = input
+        .cells
+        .iter()
+        .flat_map(|c| {
+            input.edges.iter().map(move |e| {
+                let (a, b) = (c[e[0]], c[e[1]]);
+                ((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), a, b)
+            })
+        })
+        .collect();
+    keys.sort_unstable();
+    let mut next = vec![u32::MAX; x.len()];
+    for run in keys.chunk_by(|a, b| a.0 == b.0) {
+        if let [(_, a, b)] = run {
+            if next[*a as usize] != u32::MAX {
+                return 0;
+            }
+            next[*a as usize] = *b;
+        }
+    }
+    let mut bound = 0;
+    let mut seen = vec![false; x.len()];
+    for start in 0..x.len() {
+        if next[start] == u32::MAX || seen[start] {
+            continue;
+        }
+        let mut lp = Vec::new();
+        let mut v = start;
+        while !seen[v] && next[v] != u32::MAX {
+            seen[v] = true;
+            lp.push(v);
+            v = next[v] as usize;
+        }
+        // the loop's vertices at input corners, with those corners
+        let at: Vec<(usize, u32)> = lp
+            .iter()
+            .enumerate()
+            .filter(|(_, &v)| cons.kind[v] == Kind::Fixed)
+            .filter_map(|(i, &v)| r.corner_at(x[v], tol).map(|c| (i, c)))
+            .collect();
+        if at.len() < 2 {
+            continue;
+        }
+        for (k, &(i, a)) in at.iter().enumerate() {
+            let (j, b) = at[(k + 1) % at.len()];
+            let arcs_b = r.arcs_at(b);
+            let common: Vec<u32> = r
+                .arcs_at(a)
+                .into_iter()
+                .filter(|c| arcs_b.contains(c))
+                .collect();
+            let [arc] = common[..] else { continue };
+            let mut m = (i + 1) % lp.len();
+            while m != j {
+                let v = lp[m];
+                if matches!(cons.kind[v], Kind::Curve { boundary: true }) {
+                    cons.arc[v] = arc;
+                    bound += 1;
+                }
+                m = (m + 1) % lp.len();
+            }
+        }
+    }
+    bound
 }
