@@ -22,7 +22,8 @@
 //! - with positions, a cell is *inverted* when the Jacobian determinant at
 //!   one of its 8 corners is `<= 0`;
 //! - *interior edges* are edges on no boundary face; their valence is the
-//!   number of cells around them;
+//!   number of cells around them; one of valence 1 or 2 is an error (a
+//!   doublet: its cells share two faces and cannot all be positive);
 //! - the boundary faces, oriented outwards, are checked as a quad mesh
 //!   ([`HexReport::boundary`]): its components, Euler characteristic and
 //!   non-manifold edges/vertices are those of the boundary surface;
@@ -307,6 +308,14 @@ impl HexReport {
         );
         if self.missing_positions {
             out.push("fewer positions than vertices".to_string());
+        }
+        // an interior edge needs 3 cells at least: in 2, they share two
+        // faces (a doublet) and are flat or inverted wherever they lie
+        let thin: usize = self.interior_edge_valence.range(..3).map(|(_, n)| n).sum();
+        if thin > 0 {
+            out.push(format!(
+                "{thin} interior edges in fewer than 3 cells (doublets: two hexes sharing two faces)"
+            ));
         }
         for e in self.boundary.errors() {
             out.push(format!("boundary surface: {e}"));

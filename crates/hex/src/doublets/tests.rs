@@ -2,9 +2,15 @@ use super::*;
 use dualex_gen::from_mesh::meshes::{extrude, grid_with_doublet};
 use dualex_map::QuadMesh;
 
+/// The check's report: valid but for doublets (interior edges in 2
+/// hexes, which it reports as errors exactly when there are some).
 fn check(m: &HexMesh) -> dualex_check::HexReport {
     let r = dualex_check::check_hex_mesh(m.positions.len(), &m.cells, None);
-    assert!(r.is_valid(), "{:?}", r.errors());
+    let (doublets, other): (Vec<String>, Vec<String>) =
+        r.errors().into_iter().partition(|e| e.contains("doublets"));
+    assert!(other.is_empty(), "{other:?}");
+    let thin = r.interior_edge_valence.range(..3).count() > 0;
+    assert_eq!(doublets.is_empty(), !thin, "{doublets:?}");
     r
 }
 
