@@ -346,14 +346,38 @@ pub const NAMED: &[(&str, &str)] = &[
     ("surface_sweep_genus6", "smoothed polycube plate of genus 6, thin handles (sweep)"),
     ("surface_sweep_genus7", "smoothed polycube plate of genus 7, thin handles (sweep)"),
     ("surface_sweep_genus8", "smoothed polycube plate of genus 8, thin handles (sweep)"),
-    ("surface_sweep_holes1", "bumpy square with 1 hole 1-17 cells apart (sweep)"),
-    ("surface_sweep_holes2", "bumpy square with 2 holes 1-17 cells apart (sweep)"),
-    ("surface_sweep_holes3", "bumpy square with 3 holes 1-17 cells apart (sweep)"),
-    ("surface_sweep_holes4", "bumpy square with 4 holes 1-17 cells apart (sweep)"),
-    ("surface_sweep_holes5", "bumpy square with 5 holes 1-17 cells apart (sweep)"),
-    ("surface_sweep_holes6", "bumpy square with 6 holes 1-17 cells apart (sweep)"),
-    ("surface_sweep_holes7", "bumpy square with 7 holes 1-17 cells apart (sweep)"),
-    ("surface_sweep_holes8", "bumpy square with 8 holes 1-17 cells apart (sweep)"),
+    (
+        "surface_sweep_holes1",
+        "bumpy square, 1 hole 3 cells from the border (sweep)",
+    ),
+    (
+        "surface_sweep_holes2",
+        "bumpy square, 2 holes: 3 cells from the border, then 1 cell apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes3",
+        "bumpy square, 3 holes: 3 cells from the border, then 1, 2 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes4",
+        "bumpy square, 4 holes: 3 cells from the border, then 1, 2, 3 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes5",
+        "bumpy square, 5 holes: 3 cells from the border, then 1, 2, 3, 5 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes6",
+        "bumpy square, 6 holes: 3 cells from the border, then 1, 2, 3, 5, 8 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes7",
+        "bumpy square, 7 holes: 3 cells from the border, then 1, 2, 3, 5, 8, 12 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes8",
+        "bumpy square, 8 holes: 3 cells from the border, then 1, 2, 3, 5, 8, 12, 17 cells apart (sweep)",
+    ),
 ];
 
 /// A generated surface by its name in [`NAMED`].
