@@ -67,47 +67,7 @@ fn run(
     let (mesh, rep) = read_valid_quads(std::path::Path::new(&out), surface);
     let s = json(&stats);
     let n = mesh.faces.len();
-    let mut problems = Vec::new();
-    let (components, euler, loops) = shape;
-    let topo = (rep.components, rep.euler, rep.boundary_loops);
-    if topo != (components, euler, loops) {
-        problems.push(format!(
-            "components/Euler/boundary loops {topo:?}, surface {shape:?}"
-        ));
-    }
-    let low: u64 = s["output"]["valence_interior"]
-        .as_object()
-        .map(|h| {
-            h.iter()
-                .filter(|(k, _)| k.parse::<u32>().is_ok_and(|v| v <= 2))
-                .filter_map(|(_, v)| v.as_u64())
-                .sum()
-        })
-        .unwrap_or(0);
-    let allowed: u64 = s["remesh"]["singularity_index"]
-        .as_object()
-        .map(|h| {
-            h.iter()
-                .filter(|(k, _)| {
-                    k.trim_end_matches("/4")
-                        .parse::<i32>()
-                        .is_ok_and(|q| q >= 2)
-                })
-                .filter_map(|(_, v)| v.as_u64())
-                .sum()
-        })
-        .unwrap_or(0);
-    if low > allowed {
-        problems.push(format!(
-            "{low} interior vertices of valence ≤ 2 (allowed {allowed})"
-        ));
-    }
-    // issue 21: no inverted quad (the geometric stage's count, against
-    // the input triangle nearest each quad's centre)
-    let inverted = s["geometry"]["after"]["inverted"].as_u64();
-    if inverted != Some(0) {
-        problems.push(format!("{inverted:?} inverted quads"));
-    }
+    let mut problems = remesh_problems(&rep, &s, shape);
     let off = (n as f64 - quads as f64).abs() / quads as f64;
     if off > 0.10 {
         problems.push(format!(

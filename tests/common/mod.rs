@@ -121,6 +121,62 @@ pub fn shared_data(sub: &str) -> Option<PathBuf> {
     }
 }
 
+/// What a valid `dualex remesh` output breaks, from its checker report
+/// and its stats: `shape` (components, Euler characteristic, boundary
+/// loops) not the input's, interior vertices of valence ≤ 2 beyond
+/// [`low_valence`]'s allowance, inverted quads left (issue 21: the
+/// geometric stage's count, against the input triangle nearest each
+/// quad's centre).
+pub fn remesh_problems(
+    rep: &dualex_check::QuadReport,
+    stats: &serde_json::Value,
+    shape: (usize, i64, usize),
+) -> Vec<String> {
+    let mut problems = Vec::new();
+    let topo = (rep.components, rep.euler, rep.boundary_loops);
+    if topo != shape {
+        problems.push(format!(
+            "components/Euler/boundary loops {topo:?}, surface {shape:?}"
+        ));
+    }
+    let (low, allowed) = low_valence(stats);
+    if low > allowed {
+        problems.push(format!(
+            "{low} interior vertices of valence ≤ 2 (allowed {allowed})"
+        ));
+    }
+    let inverted = stats["geometry"]["after"]["inverted"].as_u64();
+    if inverted != Some(0) {
+        problems.push(format!("{inverted:?} inverted quads"));
+    }
+    problems
+}
+
+/// From `dualex remesh`'s stats: the output's interior vertices of
+/// valence ≤ 2, and how many its singularities allow (one per
+/// singularity of index ≥ +½: such a vertex is its quad-mesh image).
+pub fn low_valence(stats: &serde_json::Value) -> (u64, u64) {
+    let sum = |h: &serde_json::Value, keep: &dyn Fn(&str) -> bool| -> u64 {
+        h.as_object()
+            .map(|h| {
+                h.iter()
+                    .filter(|(k, _)| keep(k))
+                    .filter_map(|(_, v)| v.as_u64())
+                    .sum()
+            })
+            .unwrap_or(0)
+    };
+    let low = sum(&stats["output"]["valence_interior"], &|k| {
+        k.parse::<u32>().is_ok_and(|v| v <= 2)
+    });
+    let allowed = sum(&stats["remesh"]["singularity_index"], &|k| {
+        k.trim_end_matches("/4")
+            .parse::<i32>()
+            .is_ok_and(|q| q >= 2)
+    });
+    (low, allowed)
+}
+
 /// Reads a JSON file.
 pub fn json(path: &Path) -> serde_json::Value {
     let s = std::fs::read_to_string(path).expect("read json");

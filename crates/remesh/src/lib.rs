@@ -22,7 +22,8 @@
 //! Beside the steps: [`sparse`] (the sparse Cholesky solves, over `faer`)
 //! and [`shapes`] (generated test surfaces: sphere, torus, cube, polycube
 //! of genus `g`, patches with boundary; [`shapes_cad`]: CAD-style
-//! tessellations, fan caps and strips).
+//! tessellations, fan caps and strips; [`shapes_sweep`]: genus 0–8 and
+//! 1–8 close holes, the sweep's surfaces).
 //!
 //! Invariants: [`Surface`] is an oriented 2-manifold (with or without
 //! boundary) without degenerate triangles; every edge has one or two faces.
@@ -40,6 +41,7 @@ pub mod recount;
 pub mod refine;
 pub mod shapes;
 pub mod shapes_cad;
+pub mod shapes_sweep;
 pub mod singularity;
 pub mod smooth;
 pub mod sparse;

@@ -28,8 +28,24 @@
 //! asks of the translations.
 //!
 //! An integer unknown that already follows from earlier ones is not
-//! imposed; if it follows as a non-integer it is counted in
-//! [`QuantizeReport::conflicts`].
+//! imposed; if it follows as a non-integer it is a conflict.
+//!
+//! **Conflicts.** Singular vertices rounded one by one to integer points
+//! do not always agree: each fixes the translations around it up to the
+//! sublattice `(I − M)·ℤ²` (of index 2 for a quarter turn), and around a
+//! handle a translation can follow from several of them as a
+//! half-integer (issue 23: the smoothed genus-7 plate at 5000 quads, seed
+//! 1, left 84 integer unknowns at ½ — translations of seams with no
+//! rotation along the handle loops — and the extraction refused the map:
+//! `the transition … is not integral (residual 0.5)`). A map with a
+//! translation off the integers is not grid-preserving, while a singular
+//! vertex off the grid only costs the extraction a local repair. So each
+//! conflict is traced back to the rounded unknowns it follows from
+//! ([`trace_conflicts`]), and one singular coordinate it depends on by a
+//! fraction is left free (not rounded; [`QuantizeReport::freed`]), until
+//! no conflict is left or none can be traced to a singular vertex (those
+//! stay counted in [`QuantizeReport::conflicts`]). Maps without a
+//! conflict are not touched.
 
 use crate::integrate::constraints::Gauge;
 use crate::integrate::elim::{Eliminator, Form, RowOutcome};
@@ -58,6 +74,8 @@ pub struct QuantizeReport {
     pub rounded: usize,
     /// Integer unknowns that followed from earlier ones as non-integers.
     pub conflicts: usize,
+    /// Singular coordinates left free to resolve conflicts (module docs).
+    pub freed: usize,
     /// Integer unknowns whose final value is off the integers by more
     /// than 10⁻⁶ (0 for a consistent input when rounding).
     pub off_grid: usize,
@@ -90,6 +108,8 @@ pub fn quantize(
         ..QuantizeReport::default()
     };
     let mut fixed: Vec<Form> = Vec::new();
+    // per row of `fixed`: the integer unknown it rounds
+    let mut fixed_ids: Vec<usize> = Vec::new();
     let mut done = vec![false; integers.len()];
     let batches = match rounding {
         Rounding::Continuous => 0,
@@ -98,7 +118,24 @@ pub fn quantize(
     };
     let mut round = 0;
     loop {
-        let el = eliminate(n, rows, &fixed, &mut report);
+        let mut el = eliminate(n, rows, &fixed, &mut report);
+        while report.conflicts > 0 {
+            let free = trace_conflicts(n, rows, &fixed, &fixed_ids, first);
+            if free.is_empty() {
+                break;
+            }
+            report.freed += free.len();
+            let keep = |k: &usize| !free.contains(k);
+            fixed = (0..fixed.len())
+                .filter(keep)
+                .map(|k| fixed[k].clone())
+                .collect();
+            fixed_ids = (0..fixed_ids.len())
+                .filter(keep)
+                .map(|k| fixed_ids[k])
+                .collect();
+            el = eliminate(n, rows, &fixed, &mut report);
+        }
         let x = match start.take() {
             Some(x) if x.len() == n => x,
             _ => {
@@ -138,6 +175,7 @@ pub fn quantize(
             let mut row = integers[i].clone();
             row.constant -= value.round();
             fixed.push(row);
+            fixed_ids.push(i);
         }
         round += 1;
     }
@@ -211,6 +249,58 @@ impl Pending<'_> {
     }
 }
 
+/// The rows of `fixed` (rounded integer unknowns, `ids` the unknowns'
+/// indices) to leave free so that the conflicts go (module docs): per
+/// conflict that follows from none of those already chosen with a
+/// fractional coefficient, the first singular one (index below `first`)
+/// it follows from so. Each rounded row `k` gets a
+/// parameter `z_k` (unknown `n + k`, never eliminated), `row_k − z_k = 0`:
+/// a dependent row reduces to `Σ α_k·z_k + c`, its dependencies.
+fn trace_conflicts(
+    n: usize,
+    rows: &[Form],
+    fixed: &[Form],
+    ids: &[usize],
+    first: usize,
+) -> Vec<usize> {
+    let mut el = Eliminator::new(n + fixed.len());
+    for r in rows {
+        el.add_row(r.clone(), TOLERANCE);
+    }
+    let mut free: Vec<usize> = Vec::new();
+    for (k, r) in fixed.iter().enumerate() {
+        let mut row = r.clone();
+        row.add((n + k) as u32, -1.0);
+        let reduced = el.reduce(row);
+        if reduced.terms.iter().any(|t| (t.0 as usize) < n) {
+            el.add_row_pivot_below(reduced, TOLERANCE, n as u32);
+            continue;
+        }
+        // dependent: `z_k` follows from earlier parameters
+        let c = reduced.constant;
+        if (c - c.round()).abs() <= TOLERANCE {
+            continue;
+        }
+        let fractional = |a: f64| (a - a.round()).abs() > TOLERANCE;
+        // one already left free may resolve it (the next pass tells)
+        let resolved = reduced
+            .terms
+            .iter()
+            .any(|&(z, a)| free.contains(&(z as usize - n)) && fractional(a));
+        if resolved {
+            continue;
+        }
+        let culprit = reduced.terms.iter().find(|&&(z, a)| {
+            let j = z as usize - n;
+            j != k && ids[j] < first && fractional(a) && !free.contains(&j)
+        });
+        if let Some(&(z, _)) = culprit {
+            free.push(z as usize - n);
+        }
+    }
+    free
+}
+
 /// The rows, then the rounded integer unknowns, eliminated (the gauge
 /// comes after, in [`quantize`]).
 fn eliminate(n: usize, rows: &[Form], fixed: &[Form], report: &mut QuantizeReport) -> Eliminator {
@@ -233,4 +323,51 @@ fn eliminate(n: usize, rows: &[Form], fixed: &[Form], report: &mut QuantizeRepor
         }
     }
     el
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrate::elim::form;
+
+    /// Two singular coordinates rounded to 0 and 1 make a translation
+    /// `t = (s₀ + s₁)/2` a half-integer: the conflict is traced to one of
+    /// them, which is left free, and every integer unknown ends integral
+    /// (the freed one too, as it happens: `2·t` minus the other). Without
+    /// the trace, `t` stayed at ½.
+    #[test]
+    fn a_half_integer_translation_frees_a_singular_coordinate() {
+        // unknowns s₀, s₁, t, and a free one; the energy pulls x to b
+        let b = vec![0.2, 0.9, 0.55, 0.3];
+        let energy = Energy {
+            k: (0..4).map(|i| (i, i, 1.0)).collect(),
+            b: b.clone(),
+        };
+        let rows = vec![form(&[(2, 2.0), (0, -1.0), (1, -1.0)], 0.0)];
+        let gauge = Gauge {
+            wedge: vec![0],
+            component: vec![0, 0],
+            offset: [0.0, 0.0],
+        };
+        let integers: Vec<Form> = (0..3).map(|i| form(&[(i, 1.0)], 0.0)).collect();
+        let (x, report) = quantize(
+            &energy,
+            &rows,
+            &gauge,
+            &integers,
+            2,
+            Rounding::Direct,
+            Some(b),
+        )
+        .expect("solve");
+        assert_eq!((report.conflicts, report.freed, report.off_grid), (0, 1, 0));
+        for (i, v) in x[..3].iter().enumerate() {
+            assert!((v - v.round()).abs() < 1e-9, "unknown {i}: {v}");
+        }
+        assert!((x[2] - 1.0).abs() < 1e-9, "t rounded to 1: {x:?}");
+        assert!(
+            (2.0 * x[2] - x[0] - x[1]).abs() < 1e-9,
+            "the row holds: {x:?}"
+        );
+    }
 }

@@ -337,6 +337,47 @@ pub const NAMED: &[(&str, &str)] = &[
         "surface_cad_needles",
         "cylinder of 1000 sectors in one strip: needle triangles of aspect ratio 1000, fan caps",
     ),
+    ("surface_sweep_genus0", "smoothed polycube plate of genus 0, thin handles (sweep)"),
+    ("surface_sweep_genus1", "smoothed polycube plate of genus 1, thin handles (sweep)"),
+    ("surface_sweep_genus2", "smoothed polycube plate of genus 2, thin handles (sweep)"),
+    ("surface_sweep_genus3", "smoothed polycube plate of genus 3, thin handles (sweep)"),
+    ("surface_sweep_genus4", "smoothed polycube plate of genus 4, thin handles (sweep)"),
+    ("surface_sweep_genus5", "smoothed polycube plate of genus 5, thin handles (sweep)"),
+    ("surface_sweep_genus6", "smoothed polycube plate of genus 6, thin handles (sweep)"),
+    ("surface_sweep_genus7", "smoothed polycube plate of genus 7, thin handles (sweep)"),
+    ("surface_sweep_genus8", "smoothed polycube plate of genus 8, thin handles (sweep)"),
+    (
+        "surface_sweep_holes1",
+        "bumpy square, 1 hole 3 cells from the border (sweep)",
+    ),
+    (
+        "surface_sweep_holes2",
+        "bumpy square, 2 holes: 3 cells from the border, then 1 cell apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes3",
+        "bumpy square, 3 holes: 3 cells from the border, then 1, 2 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes4",
+        "bumpy square, 4 holes: 3 cells from the border, then 1, 2, 3 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes5",
+        "bumpy square, 5 holes: 3 cells from the border, then 1, 2, 3, 5 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes6",
+        "bumpy square, 6 holes: 3 cells from the border, then 1, 2, 3, 5, 8 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes7",
+        "bumpy square, 7 holes: 3 cells from the border, then 1, 2, 3, 5, 8, 12 cells apart (sweep)",
+    ),
+    (
+        "surface_sweep_holes8",
+        "bumpy square, 8 holes: 3 cells from the border, then 1, 2, 3, 5, 8, 12, 17 cells apart (sweep)",
+    ),
 ];
 
 /// A generated surface by its name in [`NAMED`].
@@ -355,8 +396,19 @@ pub fn by_name(name: &str) -> Option<Surface> {
         "surface_cad_box_boss" => crate::shapes_cad::cad_box_with_boss(8, 0.5),
         "surface_cad_filleted" => crate::shapes_cad::cad_filleted_slab(2.0, 1.0, 0.3, 8, 0.4),
         "surface_cad_needles" => crate::shapes_cad::cad_cylinder(1000, 1, 6.3),
-        _ => return None,
+        _ => return sweep_by_name(name),
     })
+}
+
+/// A surface of [`crate::shapes_sweep`] by its name in [`NAMED`].
+fn sweep_by_name(name: &str) -> Option<Surface> {
+    use crate::shapes_sweep::{smooth_genus, square_with_holes};
+    let number = |prefix: &str| name.strip_prefix(prefix)?.parse::<u32>().ok();
+    match (number("surface_sweep_genus"), number("surface_sweep_holes")) {
+        (Some(g), _) if g <= 8 => Some(smooth_genus(g)),
+        (_, Some(k)) if (1..=8).contains(&k) => Some(square_with_holes(k)),
+        _ => None,
+    }
 }
 
 /// The signed volume a closed surface encloses (> 0 with outward normals).

@@ -110,8 +110,18 @@ impl Eliminator {
 
     /// Imposes `row = 0` (module docs).
     pub fn add_row(&mut self, row: Form, tolerance: f64) -> RowOutcome {
+        self.add_row_pivot_below(row, tolerance, u32::MAX)
+    }
+
+    /// [`Self::add_row`] eliminating only an unknown below `limit` (the
+    /// others are parameters: a row naming only them is redundant or in
+    /// conflict by its constant alone when it has no other term).
+    pub fn add_row_pivot_below(&mut self, row: Form, tolerance: f64, limit: u32) -> RowOutcome {
         let mut r = self.reduce(row);
-        let Some(pivot) = (0..r.terms.len()).max_by(|&i, &j| {
+        let candidates: Vec<usize> = (0..r.terms.len())
+            .filter(|&i| r.terms[i].0 < limit)
+            .collect();
+        let Some(pivot) = candidates.into_iter().max_by(|&i, &j| {
             let (a, b) = (r.terms[i], r.terms[j]);
             a.1.abs().total_cmp(&b.1.abs()).then(a.0.cmp(&b.0))
         }) else {
