@@ -90,10 +90,21 @@ fn shared_surfaces_that_broke_the_gluing_are_repaired() {
         return;
     };
     // (surface, quads, rounding, seed, the repair counter that must be > 0)
+    // The maps change with remesh (sharp edges on grid lines, the field's
+    // quarters, the quantization's freed coordinates: 2026-12-05): each
+    // case is a run whose first grid position still needs that repair,
+    // found by a scan of sizes 100–2000, both roundings, seeds 1–6.
     let cases = [
         (
-            "decimated-knight-param",
+            "dragon-param-full-seamless",
             100,
+            "off",
+            3,
+            "repair.parallel_edges_split",
+        ),
+        (
+            "dragon-param-full-seamless",
+            500,
             "off",
             1,
             "repair.parallel_edges_split",
@@ -102,27 +113,26 @@ fn shared_surfaces_that_broke_the_gluing_are_repaired() {
             "dragon-param-full-seamless",
             100,
             "off",
-            5,
+            4,
             "repair.folded_cells_cut",
+        ),
+        (
+            "decimated-knight-param",
+            2000,
+            "off",
+            4,
+            "repair.pinched_vertices_split",
         ),
         (
             "horsers-param-full-seamless",
             100,
             "off",
             4,
-            "repair.parallel_edges_split",
+            "digons_pinched",
         ),
-        (
-            "dragon-param-full-seamless",
-            500,
-            "off",
-            3,
-            "repair.pinched_vertices_split",
-        ),
-        ("decimated-knight-param", 2000, "off", 4, "digons_pinched"),
-        // a graph shattered into pieces none of which is most of the
-        // surface (483 singularities for 100 quads): the grid moved
-        ("dragon-param-full-seamless", 100, "off", 1, "grid moved"),
+        // a map the extraction refuses at the seed's grid position: the
+        // grid moved
+        ("decimated-knight-param", 2000, "off", 5, "grid moved"),
     ];
     let scratch = Scratch::new("recover-shared");
     for (surface, quads, rounding, seed, counter) in cases {

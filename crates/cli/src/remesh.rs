@@ -106,10 +106,11 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
     let mut show = |k: usize, made: &dualex::RemeshedMap| -> Result<(), dualex::Error> {
         describe(&name, k, made, a, g);
         written = write_map(&made.map, a, &name);
-        // (the writer's own message is the run's, below)
+        // (the writer's own message is the run's, below; not a remesh bug,
+        // which would send the run to the next grid position)
         written
             .as_ref()
-            .map_err(|e| dualex::Error::Bug(e.clone()))?;
+            .map_err(|e| dualex::Error::Input(dualex::InputError::new(e.clone())))?;
         Ok(())
     };
     let staged = dualex::remesh_staged(&positions, &triangles, &opts, &mut show);

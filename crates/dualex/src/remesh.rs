@@ -299,9 +299,12 @@ pub struct Staged {
 
 /// Steps 1–5 (module docs). `each` sees every attempt's map, with the
 /// attempt's index, before its checks (the CLI writes and describes it
-/// there); its error ends the run. An error of the first attempt is the
-/// run's; a later attempt's error ends the attempts (the best so far is
-/// kept).
+/// there); its error ends the run. A remesh bug (a collapsed map, a map
+/// the extraction refuses) sends the run to the next grid position, and
+/// is the run's error when no position gives a mesh; any other error of
+/// the first attempt is the run's; a later attempt's error ends the
+/// attempts (the best so far is kept). `remesh.grid_attempts` lists the
+/// attempts that gave a mesh.
 #[doc(hidden)]
 pub fn remesh_staged(
     positions: &[[f64; 3]],
@@ -312,12 +315,19 @@ pub fn remesh_staged(
     let retry = opts.extract.geometry.mode != GeometryMode::Off;
     let mut best: Option<Staged> = None;
     let mut inverted = Vec::new();
+    let mut first_error = None;
     for k in 0..if retry { GRID_ATTEMPTS } else { 1 } {
         let mut o = opts.clone();
         o.map.seed = attempt_seed(opts.map.seed, k);
         let attempt = attempt(positions, triangles, o, k, each);
         let staged = match (attempt, &best) {
             (Ok(s), _) => s,
+            // a map of its own collapsed or refused (remesh's bug): the
+            // next grid position, the error kept for when none works
+            (Err(e @ Error::Bug(_)), None) => {
+                first_error.get_or_insert(e);
+                continue;
+            }
             (Err(e), None) => return Err(e),
             (Err(_), Some(_)) => break,
         };
@@ -339,7 +349,7 @@ pub fn remesh_staged(
         }
     }
     let Some(mut best) = best else {
-        return Err(Error::Bug("remesh: no attempt was made".to_string()));
+        return Err(first_error.unwrap_or_else(|| Error::Bug("remesh: no attempt was made".into())));
     };
     best.stats.grid_attempts = inverted;
     Ok(best)
