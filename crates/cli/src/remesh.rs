@@ -103,7 +103,9 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
     // written and pictured before its checks, so that a refused one can
     // be inspected
     let mut written: Result<(), String> = Ok(());
+    let mut last = 0;
     let mut show = |k: usize, made: &dualex::RemeshedMap| -> Result<(), dualex::Error> {
+        last = k;
         describe(&name, k, made, a, g);
         written = write_map(&made.map, a, &name);
         // (the writer's own message is the run's, below; not a remesh bug,
@@ -117,7 +119,7 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
     written?;
     let staged = staged.map_err(|e| format!("{name}: {e}"))?;
     laps.lap("map");
-    if staged.attempt + 1 < staged.stats.grid_attempts.len() {
+    if staged.attempt != last {
         // a later attempt was written last: the map kept once more
         write_map(&staged.map, a, &name)?;
     }
@@ -155,7 +157,7 @@ fn describe(name: &str, k: usize, made: &dualex::RemeshedMap, a: &RemeshArgs, g:
     }
     if k > 0 {
         eprintln!(
-            "dualex: {name}: inverted quads left at the seed's grid position: another one (attempt {} of at most {}; remesh.grid_attempts in the stats)",
+            "dualex: {name}: the last grid position left inverted quads or a map remesh could not use: another one (attempt {} of at most {}; remesh.grid_attempts in the stats)",
             k + 1,
             dualex::GRID_ATTEMPTS
         );

@@ -301,7 +301,8 @@ pub struct Staged {
 /// attempt's index, before its checks (the CLI writes and describes it
 /// there); its error ends the run. A remesh bug (a collapsed map, a map
 /// the extraction refuses) sends the run to the next grid position, and
-/// is the run's error when no position gives a mesh; any other error of
+/// the last such error is the run's when no position gives a mesh (its
+/// map is the last `each` saw); any other error of
 /// the first attempt is the run's; a later attempt's error ends the
 /// attempts (the best so far is kept). `remesh.grid_attempts` lists the
 /// attempts that gave a mesh.
@@ -315,7 +316,7 @@ pub fn remesh_staged(
     let retry = opts.extract.geometry.mode != GeometryMode::Off;
     let mut best: Option<Staged> = None;
     let mut inverted = Vec::new();
-    let mut first_error = None;
+    let mut last_error = None;
     for k in 0..if retry { GRID_ATTEMPTS } else { 1 } {
         let mut o = opts.clone();
         o.map.seed = attempt_seed(opts.map.seed, k);
@@ -323,9 +324,10 @@ pub fn remesh_staged(
         let staged = match (attempt, &best) {
             (Ok(s), _) => s,
             // a map of its own collapsed or refused (remesh's bug): the
-            // next grid position, the error kept for when none works
+            // next grid position, the error kept for when none works (the
+            // last one's: its map is the one `each` saw last)
             (Err(e @ Error::Bug(_)), None) => {
-                first_error.get_or_insert(e);
+                last_error = Some(e);
                 continue;
             }
             (Err(e), None) => return Err(e),
@@ -349,7 +351,7 @@ pub fn remesh_staged(
         }
     }
     let Some(mut best) = best else {
-        return Err(first_error.unwrap_or_else(|| Error::Bug("remesh: no attempt was made".into())));
+        return Err(last_error.unwrap_or_else(|| Error::Bug("remesh: no attempt was made".into())));
     };
     best.stats.grid_attempts = inverted;
     Ok(best)
