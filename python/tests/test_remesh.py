@@ -91,10 +91,16 @@ def test_bad_input_and_bad_options():
         dualex.remesh(V, F, quads=-3)
 
 
-def test_a_collapsed_map_is_a_bug_of_remesh_not_an_empty_mesh():
+def test_a_cad_cone_of_two_fans_is_remeshed():
+    # its map collapsed before remesh split long edges and spread the
+    # caps' +1 into quarters (issue 23); the collapse check itself is
+    # tested in Rust (`dualex::remesh`'s unit tests)
     V, F = fan_cone()
-    msg = raises("internal error \\(bug\\) in remesh: the map collapsed", dualex.remesh, V, F, quads=300)
-    assert "triangles flipped" in msg and "please report this input" in msg
+    Q, quads, stats = dualex.remesh(V, F, quads=300)
+    assert stats["topology_matches_input"] is True
+    assert abs(stats["quads"] - 300) <= 45 and len(quads) == stats["quads"]
+    assert stats["geometry"]["after"]["inverted"] == 0
+    assert quads.min() >= 0 and quads.max() < len(Q)
 
 
 def test_the_one_liner_of_the_issue(tmp_path):

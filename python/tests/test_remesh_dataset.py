@@ -1,8 +1,9 @@
 """The Dask example (examples/remesh_dataset.py) as a user runs it: a
 folder of surfaces on a LocalCluster of 2 workers, one surface failing on
-purpose (a cone of two fans, whose map collapses: remesh's own bug, said),
-one file that is no surface; the batch goes on and the summary lists
-every row with its error. Dask is a test dependency (.ci/run installs
+purpose (three triangles on one edge: not a manifold), one file that is no
+surface, and a CAD cone of two fans (whose map collapsed before issue 23's
+refinement; remeshed now); the batch goes on and the summary lists every
+row with its error. Dask is a test dependency (.ci/run installs
 it), not one of the module."""
 
 import csv
@@ -30,6 +31,10 @@ def test_a_folder_on_a_local_cluster_with_a_failure(tmp_path):
     write_obj(src / "torus_b.obj", *torus(48, 16, 1.0, 0.3))
     write_obj(src / "cone.obj", *fan_cone())
     (src / "broken.obj").write_text("v 0 0 0\nf 1 2 3\n")
+    # three triangles on one edge: remesh refuses a non-manifold surface
+    (src / "fin.obj").write_text(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n"
+    )
     run = subprocess.run(
         [sys.executable, str(EXAMPLE), str(src), str(out), "--workers", "2", "--quads", "300"],
         capture_output=True,
@@ -37,21 +42,21 @@ def test_a_folder_on_a_local_cluster_with_a_failure(tmp_path):
         timeout=300,
     )
     assert run.returncode == 0, run.stderr
-    assert "4 surfaces, 2 failed or invalid" in run.stdout, run.stdout
-    assert "4/4" in run.stderr  # the progress bar's last state
+    assert "5 surfaces, 2 failed or invalid" in run.stdout, run.stdout
+    assert "5/5" in run.stderr  # the progress bar's last state
     with open(out / "summary.csv") as f:
         rows = {r["surface"]: r for r in csv.DictReader(f)}
-    assert sorted(rows) == ["broken.obj", "cone.obj", "torus_a.obj", "torus_b.obj"]
-    for name in ["torus_a.obj", "torus_b.obj"]:
+    assert sorted(rows) == ["broken.obj", "cone.obj", "fin.obj", "torus_a.obj", "torus_b.obj"]
+    for name in ["torus_a.obj", "torus_b.obj", "cone.obj"]:
         r = rows[name]
         assert r["valid"] == "True" and r["error"] == "", r
         assert abs(int(r["quads"]) - 300) <= 45, r
         cells = [l for l in (out / name).read_text().splitlines() if l.startswith("f ")]
         assert len(cells) == int(r["quads"])
-    cone = rows["cone.obj"]
-    assert cone["valid"] == "False" and cone["quads"] == ""
-    assert "internal error (bug) in remesh: the map collapsed" in cone["error"]
-    assert not (out / "cone.obj").exists()
+    fin = rows["fin.obj"]
+    assert fin["valid"] == "False" and fin["quads"] == ""
+    assert "non-manifold" in fin["error"], fin
+    assert not (out / "fin.obj").exists()
     assert rows["broken.obj"]["valid"] == "False"
     assert "broken.obj" in rows["broken.obj"]["error"]
     assert not (out / "broken.obj").exists()
