@@ -97,7 +97,7 @@ def test_a_cad_cone_of_two_fans_is_remeshed():
     # tested in Rust (`dualex::remesh`'s unit tests)
     V, F = fan_cone()
     Q, quads, stats = dualex.remesh(V, F, quads=300)
-    assert stats["topology_matches_input"] is True
+    assert stats["topology"]["matches"] is True
     assert abs(stats["quads"] - 300) <= 45 and len(quads) == stats["quads"]
     assert stats["geometry"]["after"]["inverted"] == 0
     assert quads.min() >= 0 and quads.max() < len(Q)
