@@ -8,6 +8,7 @@
 //! around each vertex, the constraints. Output: positions and constraints
 //! changed in place; counts.
 
+use super::topology::boundary_edges;
 use super::{Input, FLAT, MESH_CORNER_ANGLE};
 use crate::constraint::{Constraints, Kind, Role};
 use crate::quality::{self, norm, sub};
@@ -139,26 +140,12 @@ pub(super) fn bind_to_arcs<const D: usize, const K: usize>(
     if input.role != Role::Surface {
         return 0;
     }
-    // boundary edges (of one cell), as the cells run them
-    let mut keys: Vec<(u64, u32, u32)> = input
-        .cells
-        .iter()
-        .flat_map(|c| {
-            input.edges.iter().map(move |e| {
-                let (a, b) = (c[e[0]], c[e[1]]);
-                ((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), a, b)
-            })
-        })
-        .collect();
-    keys.sort_unstable();
     let mut next = vec![u32::MAX; x.len()];
-    for run in keys.chunk_by(|a, b| a.0 == b.0) {
-        if let [(_, a, b)] = run {
-            if next[*a as usize] != u32::MAX {
-                return 0;
-            }
-            next[*a as usize] = *b;
+    for [a, b] in boundary_edges(input.cells, input.edges) {
+        if next[a as usize] != u32::MAX {
+            return 0;
         }
+        next[a as usize] = b;
     }
     let mut bound = 0;
     let mut seen = vec![false; x.len()];

@@ -3,26 +3,38 @@
 //!
 //! Input: cells (vertex indices). Output: per-vertex flags and CSR lists.
 
-/// Vertices on edges of one quad.
-pub(super) fn boundary_vertices(n: usize, cells: &[[u32; 4]], edges: &[[usize; 2]]) -> Vec<bool> {
+/// The edges of one cell, as that cell runs them (`[a, b]`), in the
+/// order of their sorted keys.
+pub(super) fn boundary_edges<const K: usize>(
+    cells: &[[u32; K]],
+    edges: &[[usize; 2]],
+) -> Vec<[u32; 2]> {
     use rayon::prelude::*;
-    // edges as sorted keys: an edge of one quad appears once
-    let mut keys: Vec<u64> = cells
+    // edges as sorted keys: an edge of one cell appears once
+    let mut keys: Vec<(u64, [u32; 2])> = cells
         .par_iter()
         .flat_map_iter(|c| {
             edges.iter().map(move |e| {
                 let (a, b) = (c[e[0]], c[e[1]]);
-                (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
+                ((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), [a, b])
             })
         })
         .collect();
-    keys.par_sort_unstable();
+    keys.par_sort_unstable_by_key(|k| k.0);
+    keys.chunk_by(|a, b| a.0 == b.0)
+        .filter_map(|run| match run {
+            [(_, ab)] => Some(*ab),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Vertices on edges of one quad.
+pub(super) fn boundary_vertices(n: usize, cells: &[[u32; 4]], edges: &[[usize; 2]]) -> Vec<bool> {
     let mut out = vec![false; n];
-    for run in keys.chunk_by(|a, b| a == b) {
-        if let [key] = run {
-            out[(key >> 32) as usize] = true;
-            out[(key & 0xffff_ffff) as usize] = true;
-        }
+    for [a, b] in boundary_edges(cells, edges) {
+        out[a as usize] = true;
+        out[b as usize] = true;
     }
     out
 }
