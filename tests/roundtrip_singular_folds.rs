@@ -32,8 +32,8 @@ use std::time::Instant;
 /// ball_cutout5, ball_hole69 and polycube_notch (degenerate cells: the
 /// graph is already wrong when untangling ends). Refined maps flip about
 /// half of the simplices near each centre, against 0–20 % at k = 1 and in
-/// the magnified maps (`fold_tests.rs` in dualex-gen). No quad case fails
-/// since the untangling order of issue 22.
+/// the magnified maps (`fold_tests.rs` in dualex-gen). The quad cases are
+/// the two prism seeds below, among 67 500 maps (seeds 1–1500).
 #[rustfmt::skip]
 const KNOWN_FAILING: &[&str] = &[
     "ball_cutout4/k2/centre/s1",
@@ -64,7 +64,18 @@ const KNOWN_FAILING: &[&str] = &[
     "polycube_notch/k3/centre/s2",
     "polycube_notch/k3/s1",
     "polycube_notch/k3/s2",
+    // wrong (exit 0, a mesh unlike M_k): a pole of valence 5 back as a 6
+    // and a stray 3, whatever the untangling order (docs/messy-cases.md)
+    "prism5_poles/k2/s696",
+    "prism5_poles/k2/s918",
+    "prism5_poles/k3/s696",
+    "prism5_poles/k3/s918",
 ];
+
+/// Seeds on which the long runs found a quad map coming back wrong: 442,
+/// 483, 1209 and 1385 came back exact once other untangling orders were
+/// tried (`NodeGraph::untangle_best`); 696 and 918 do not.
+const QUAD_SEEDS_FOUND: [u64; 6] = [442, 483, 696, 918, 1209, 1385];
 
 /// Fold centres per map (all of them on the smaller meshes);
 /// `DUALEX_FOLDS_CENTRES=N` for fewer (two already break the refined
@@ -100,17 +111,31 @@ fn quad_meshes() -> Vec<String> {
     out
 }
 
-/// `(case name, mesh, options)` for every mesh, k ∈ 1..=3 and seed.
-fn cases(names: Vec<String>, splits: &[TetSplit]) -> Vec<(String, String, FromMeshOptions)> {
-    let seeds = env_usize("DUALEX_FOLDS_SEEDS", 2);
+/// The seeds `DUALEX_FOLDS_SEEDS` and `DUALEX_FOLDS_SEED_FROM` ask for, or
+/// `default` (then `1..=default`, and `extra`).
+fn seeds(default: u64, extra: &[u64]) -> Vec<u64> {
+    let n = env_usize("DUALEX_FOLDS_SEEDS", default);
     // the first seed (long runs go on from where the last one stopped)
     let from = env_usize("DUALEX_FOLDS_SEED_FROM", 1);
+    let mut out: Vec<u64> = (from..from + n).collect();
+    if std::env::var_os("DUALEX_FOLDS_SEEDS").is_none() {
+        out.extend(extra);
+    }
+    out
+}
+
+/// `(case name, mesh, options)` for every mesh, k ∈ 1..=3 and seed.
+fn cases(
+    names: Vec<String>,
+    splits: &[TetSplit],
+    seeds: &[u64],
+) -> Vec<(String, String, FromMeshOptions)> {
     let only = std::env::var("DUALEX_FOLDS_ONLY").unwrap_or_default();
     let mut out = Vec::new();
     for m in names {
         for k in 1..=3 {
             for &tet_split in splits {
-                for (seed, magnify) in (from..from + seeds).flat_map(|s| [(s, false), (s, true)]) {
+                for (seed, magnify) in seeds.iter().flat_map(|&s| [(s, false), (s, true)]) {
                     let (scale, magnify) = if magnify { (1, k) } else { (k, 1) };
                     let o = FromMeshOptions {
                         scale,
@@ -213,7 +238,7 @@ fn hexes_folded_at_singular_nodes_come_back_at_every_scale() {
     let mut table = BTreeMap::new();
     let mut built = BTreeMap::new();
     let splits = [TetSplit::LeastVertex, TetSplit::Centre];
-    for (name, mesh, o) in cases(hex_meshes(), &splits) {
+    for (name, mesh, o) in cases(hex_meshes(), &splits, &seeds(2, &[])) {
         let m = built
             .entry(mesh.clone())
             .or_insert_with(|| meshes::hex_mesh_by_name(&mesh).expect("a built-in mesh"));
@@ -232,7 +257,11 @@ fn hexes_folded_at_singular_nodes_come_back_at_every_scale() {
 #[test]
 fn quads_folded_at_singular_vertices_come_back_at_every_scale() {
     let mut table = BTreeMap::new();
-    for (name, mesh, o) in cases(quad_meshes(), &[TetSplit::LeastVertex]) {
+    // quads are cheap (2 ms a map): 200 seeds, and those the long runs
+    // found a split pole on (fixed by other untangling orders, or not:
+    // KNOWN_FAILING)
+    let seeds = seeds(200, &QUAD_SEEDS_FOUND);
+    for (name, mesh, o) in cases(quad_meshes(), &[TetSplit::LeastVertex], &seeds) {
         table.insert(name, timed(|| quad_case(&mesh, &o)));
     }
     report("quad folds at singular vertices", &table);

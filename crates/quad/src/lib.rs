@@ -6,7 +6,8 @@
 //! 2. [`sanitize`]: snap to exact GP, move vertices off the dual isos;
 //! 3. [`nodes`]: integer points inside triangles, reverted flags;
 //! 4. [`trace`]: walk every side along its iso to the opposite side;
-//! 5. untangling (pleat removal, `dualex_graph`);
+//! 5. untangling (pleat removal, `dualex_graph`; other orders tried while
+//!    fairing leaves valence-1 or 2 vertices, `NodeGraph::untangle_best`);
 //! 6. index fairing (`dualex_graph`, optional); folded corners collapsed,
 //!    pillows and [`bubbles`] (components beyond one per input component)
 //!    deleted; doublets (valence-2 vertices fairing found no partner for)
@@ -193,13 +194,20 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     st.isolated_dropped = graph.drop_isolated_lost(&ends);
     st.label_violations = graph.label_violations();
     laps.lap("trace");
-    // 5
-    st.untangle = Some(graph.untangle());
+    // 5 + 6: untangling and index fairing; while fairing leaves valence-1
+    // or 2 vertices, other untangling orders are tried (`untangle_best`)
+    let (ust, fst) = graph.untangle_best(fairing::UNTANGLE_ORDERS, |g| {
+        if opts.fairing {
+            let f = fairing::fair(g);
+            let left = f.valence1_after + f.valence2_after;
+            (Some(f), left)
+        } else {
+            (None, 0)
+        }
+    });
+    st.untangle = Some(ust);
+    st.fairing = fst.map(|f| f.to_json());
     laps.lap("untangle");
-    // 6
-    if opts.fairing {
-        st.fairing = Some(fairing::fair(&mut graph));
-    }
     // 6b: a valence-1 vertex left (no partner for fairing) is a folded quad;
     // collapse it so the output has no repeated vertex
     st.folded_corners_collapsed = graph.collapse_folded_corners();

@@ -319,3 +319,39 @@ fn a_pillow_among_folds_is_one_pure_op1() {
         pillow_first(&spec);
     }
 }
+
+/// `untangle_best`: while the next step leaves degenerate vertices, other
+/// orders are tried from the graph as it was (each one untangles it
+/// completely), and the first with the fewest is kept; a graph without
+/// pleats is not copied and no order is tried.
+fn best_order<const D: usize>(dims: [usize; D]) {
+    let spec = GridSpec::regular(dims).fold(2).fold_back();
+    // the first order "leaves" 2, seed 1 leaves 1, seed 2 leaves 0
+    let mut g = spec.build();
+    let mut calls = 0;
+    let (st, last) = g.untangle_best(4, |g| {
+        g.check().unwrap();
+        assert_eq!(g.pleat_sides().len(), 0);
+        calls += 1;
+        (calls, 3 - calls)
+    });
+    g.check().unwrap();
+    assert_eq!((calls, last), (3, 3), "stops at the first order leaving 0");
+    assert_eq!((st.orders_tried, st.order_kept), (2, Some(2)));
+    assert_eq!((st.pleats_left, st.reverted_left), (0, 0));
+    // no order better than the first: the first is kept
+    let mut g = spec.build();
+    let (st, ()) = g.untangle_best(3, |_| ((), 1));
+    assert_eq!((st.orders_tried, st.order_kept), (3, None));
+    g.check().unwrap();
+    // no pleat: nothing tried, even when the next step leaves some
+    let mut g = GridSpec::regular(dims).build();
+    let (st, _) = g.untangle_best(4, |_| ((), 5));
+    assert_eq!((st.pleats_found, st.orders_tried), (0, 0));
+}
+
+#[test]
+fn untangle_best_keeps_the_first_order_leaving_fewest() {
+    best_order([6, 5]);
+    best_order([5, 4, 3]);
+}
