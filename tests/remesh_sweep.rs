@@ -26,20 +26,25 @@ use std::time::Instant;
 /// The runs CI makes: `(surface, quads, seed)`. Genus 7 at 5000 quads,
 /// seed 1, left a seam translation at ½ (the extraction refused the map)
 /// before the quantization traced its conflicts.
+/// Holes 1 cell apart (a sixth of a target edge at 300 quads) merged
+/// before facing boundary walls were rounded apart
+/// (`crates/remesh/src/separate.rs`); holes5 at 300 quads has gaps of
+/// ⅙–⅚ of a target edge, holes8 at 1000 of 0.3–5.
 const CI: &[(&str, usize, u64)] = &[
     ("surface_sweep_genus1", 300, 1),
     ("surface_sweep_genus3", 1000, 1),
     ("surface_sweep_genus7", 5000, 1),
     ("surface_sweep_genus8", 300, 1),
     ("surface_sweep_holes2", 300, 1),
+    ("surface_sweep_holes5", 300, 1),
+    ("surface_sweep_holes8", 1000, 1),
     ("surface_sweep_holes8", 5000, 1),
 ];
 
 /// CI runs that fail today, as `surface quads seed` (must match
-/// exactly): holes 1 cell apart (a sixth of a target edge at 300 quads)
-/// merged, the strip between them lost; two inverted quads on the thin
-/// handles of genus 8 at 300 quads (docs/messy-cases.md).
-const KNOWN: &[&str] = &["surface_sweep_genus8 300 1", "surface_sweep_holes2 300 1"];
+/// exactly): two inverted quads on the thin handles of genus 8 at 300
+/// quads (docs/messy-cases.md).
+const KNOWN: &[&str] = &["surface_sweep_genus8 300 1"];
 
 /// (name, components, Euler characteristic, boundary loops) of every
 /// surface of the sweep.
@@ -252,4 +257,39 @@ fn every_run_of_the_sweep_is_valid() {
             .collect();
         assert_eq!(keys, KNOWN, "the failing CI runs differ from KNOWN");
     }
+}
+
+/// A hole smaller than a quad (holes1's 6 × 10 cells at 10 quads, a
+/// fifth by a third of a target edge) is lost: the run warns and exits 0,
+/// and with `--strict` it exits 1 and writes nothing.
+#[test]
+fn strict_refuses_a_lost_hole() {
+    let dir = Scratch::new("remesh-strict");
+    let name = "surface_sweep_holes1";
+    dir.generate(name);
+    let input = dir.arg(&format!("{name}.obj"));
+    let run = |out: &str, strict: bool| {
+        let mut args = vec!["remesh", &input, "-o", out, "--quads", "10", "-q"];
+        if strict {
+            args.push("--strict");
+        }
+        dualex(&args)
+    };
+    let loose = dir.arg("loose.obj");
+    let out = run(&loose, false);
+    assert!(out.status.success(), "{}", text(&out));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("WARNING") && err.contains("boundary components 1 (input 2)"),
+        "{err}"
+    );
+    let strict = dir.arg("strict.obj");
+    let out = run(&strict, true);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--strict") && err.contains("nothing written"),
+        "{err}"
+    );
+    assert!(!dir.path("strict.obj").exists());
 }

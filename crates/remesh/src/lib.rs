@@ -15,6 +15,7 @@
 //! | quarters for +½ and +1 | [`quarters`] | a singular vertex's star fixed, the field solved again |
 //! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
 //! | seamless integration | [`integrate`](mod@integrate) | field + cut → per-corner `(u, v)` |
+//! | facing boundary walls | [`integrate::facing`] | continuous map → walls across a strip, to round apart ([`separate`]) |
 //! | direct rounding | [`quantize`] | integer unknowns rounded at once, one more solve |
 //! | the extraction's count | [`recount`] | a count that misses `N` → the map once more for the area it asks |
 //!
@@ -39,6 +40,7 @@ pub mod quantize;
 pub mod quarters;
 pub mod recount;
 pub mod refine;
+pub mod separate;
 pub mod shapes;
 pub mod shapes_cad;
 pub mod shapes_sweep;

@@ -46,10 +46,18 @@
 //! no conflict is left or none can be traced to a singular vertex (those
 //! stay counted in [`QuantizeReport::conflicts`]). Maps without a
 //! conflict are not touched.
+//!
+//! **Facing walls.** Boundary iso-values of walls facing each other across
+//! a strip narrower than a unit would round to one integer and lose the
+//! strip (issue 23: holes merged); each batch's targets are directed so
+//! that such walls end at least 1 apart ([`crate::separate`]). When that
+//! leaves more conflicts than the nearest rounding, the nearest rounding
+//! is kept ([`QuantizeReport::walls_moved`] then 0).
 
 use crate::integrate::constraints::Gauge;
 use crate::integrate::elim::{Eliminator, Form, RowOutcome};
 use crate::integrate::system::{minimize, Energy};
+use crate::separate::Apart;
 
 /// How the integer unknowns are rounded (module docs).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -79,11 +87,39 @@ pub struct QuantizeReport {
     /// Integer unknowns whose final value is off the integers by more
     /// than 10⁻⁶ (0 for a consistent input when rounding).
     pub off_grid: usize,
+    /// Boundary walls moved off their nearest integer to keep a strip
+    /// between facing walls ([`crate::separate`]; 0 when that made a
+    /// conflict and the nearest rounding was kept).
+    pub walls_moved: usize,
     /// Largest distance moved by a rounding.
     pub max_rounding: f64,
     /// Sparse solves (in [`crate::integrate::IntegrateReport`]: of the
     /// whole integration, area fit and re-roundings included).
     pub solves: usize,
+}
+
+/// The integer unknowns of [`quantize`]: forms over the map's unknowns,
+/// the first `first` rounded before the others (module docs), and the
+/// facing boundary walls to round apart.
+#[derive(Clone, Copy, Debug)]
+pub struct Integers<'a> {
+    /// The integer unknowns.
+    pub forms: &'a [Form],
+    /// How many come first (singular coordinates).
+    pub first: usize,
+    /// Facing walls ([`crate::separate`]).
+    pub apart: Apart<'a>,
+}
+
+impl<'a> Integers<'a> {
+    /// `forms`, the first `first` first, no walls.
+    pub fn new(forms: &'a [Form], first: usize) -> Self {
+        Integers {
+            forms,
+            first,
+            apart: Apart::default(),
+        }
+    }
 }
 
 /// Agreement asked of a redundant row.
@@ -96,11 +132,44 @@ pub fn quantize(
     energy: &Energy,
     rows: &[Form],
     gauge: &Gauge,
-    integers: &[Form],
-    first: usize,
+    integers: &Integers,
     rounding: Rounding,
     start: Option<Vec<f64>>,
 ) -> Result<(Vec<f64>, QuantizeReport), String> {
+    let system = (energy, rows, gauge);
+    let separated = round(system, integers, rounding, start.clone())?;
+    if separated.1.conflicts == 0 || separated.1.walls_moved == 0 {
+        return Ok(separated);
+    }
+    // the walls moved apart made a conflict the trace did not resolve:
+    // the nearest rounding instead
+    let plain = Integers {
+        apart: Apart::default(),
+        ..*integers
+    };
+    let (x, mut report) = round(system, &plain, rounding, start)?;
+    if report.conflicts >= separated.1.conflicts {
+        let (x, mut kept) = separated;
+        kept.solves += report.solves;
+        return Ok((x, kept));
+    }
+    report.solves += separated.1.solves;
+    Ok((x, report))
+}
+
+/// [`quantize`] of `(energy, rows, gauge)` with the walls of
+/// `integers.apart` moved apart as asked.
+fn round(
+    (energy, rows, gauge): (&Energy, &[Form], &Gauge),
+    integers: &Integers,
+    rounding: Rounding,
+    start: Option<Vec<f64>>,
+) -> Result<(Vec<f64>, QuantizeReport), String> {
+    let Integers {
+        forms: integers,
+        first,
+        apart,
+    } = *integers;
     let mut start = start;
     let n = energy.b.len();
     let mut report = QuantizeReport {
@@ -158,6 +227,15 @@ pub fn quantize(
         } else {
             Vec::new()
         };
+        let mut batch: Vec<(usize, f64, f64)> =
+            batch.into_iter().map(|(i, v)| (i, v, v.round())).collect();
+        if !apart.pairs.is_empty() {
+            let before: Vec<(usize, f64)> = fixed_ids
+                .iter()
+                .map(|&i| (i, integers[i].eval(&x)))
+                .collect();
+            report.walls_moved += apart.separate(&mut batch, &before);
+        }
         if batch.is_empty() {
             if batches > 0 {
                 report.off_grid = integers
@@ -170,10 +248,10 @@ pub fn quantize(
             }
             return Ok((x, report));
         }
-        for (i, value) in batch {
-            report.max_rounding = report.max_rounding.max((value - value.round()).abs());
+        for (i, value, target) in batch {
+            report.max_rounding = report.max_rounding.max((value - target).abs());
             let mut row = integers[i].clone();
-            row.constant -= value.round();
+            row.constant -= target;
             fixed.push(row);
             fixed_ids.push(i);
         }
@@ -354,8 +432,7 @@ mod tests {
             &energy,
             &rows,
             &gauge,
-            &integers,
-            2,
+            &Integers::new(&integers, 2),
             Rounding::Direct,
             Some(b),
         )

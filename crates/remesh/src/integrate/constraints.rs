@@ -57,12 +57,26 @@ pub struct Constraints {
     pub singular: Vec<Form>,
     /// Integer unknowns of the aligned boundary edges.
     pub boundary: Vec<Form>,
+    /// Per entry of `boundary`: its edge, face and coordinate.
+    pub boundary_edges: Vec<AlignedEdge>,
     /// Integer unknowns of the aligned sharp edges (module docs).
     pub sharp: Vec<Form>,
     /// Integer unknowns of the seams (two per seam edge).
     pub translations: Vec<Form>,
     /// Boundary edges aligned.
     pub aligned_edges: usize,
+}
+
+/// An aligned boundary edge: an iso-line of `coordinate` (0: u, 1: v)
+/// in the chart of `face`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AlignedEdge {
+    /// The edge.
+    pub edge: u32,
+    /// Its face.
+    pub face: u32,
+    /// The coordinate constant along it.
+    pub coordinate: u32,
 }
 
 /// Where the translations of the components are fixed (module docs).
@@ -233,7 +247,7 @@ fn align(
         }
         // along ±d: v is constant; along ±d⊥: u is
         let c = if (turns as i64).rem_euclid(2) == 0 {
-            1
+            1u32
         } else {
             0
         };
@@ -248,6 +262,11 @@ fn align(
         };
         if f1 == NO_FACE {
             out.boundary.push(value);
+            out.boundary_edges.push(AlignedEdge {
+                edge: e as u32,
+                face: f,
+                coordinate: c,
+            });
         } else {
             out.sharp.push(value);
         }

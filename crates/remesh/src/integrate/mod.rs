@@ -26,6 +26,7 @@
 pub mod charts;
 pub mod constraints;
 pub mod elim;
+pub mod facing;
 pub mod fit;
 pub mod system;
 #[cfg(test)]
@@ -34,7 +35,8 @@ mod test_cut;
 use crate::field::CrossField;
 use crate::integrate::constraints::Gauge;
 use crate::integrate::elim::Form;
-use crate::quantize::{quantize, QuantizeReport, Rounding};
+use crate::quantize::{quantize, Integers, QuantizeReport, Rounding};
+use crate::separate::{Apart, NO_WALL};
 use crate::surface::Surface;
 use dualex_map::TriMap;
 
@@ -186,8 +188,7 @@ pub fn integrate_report(
             &energy,
             &cons.rows,
             &origin,
-            &[],
-            0,
+            &Integers::new(&[], 0),
             Rounding::Continuous,
             None,
         )?;
@@ -206,6 +207,33 @@ pub fn integrate_report(
     } else {
         0
     };
+    // the facing walls need a continuous map: the one of the area fit, or
+    // one solved here, the first rounding's start then
+    if fit.is_none() && !cons.boundary.is_empty() {
+        let mut origin = cons.gauge.clone();
+        origin.offset = [0.0, 0.0];
+        let none = Integers::new(&[], 0);
+        fit = Some(
+            quantize(
+                &energy,
+                &cons.rows,
+                &origin,
+                &none,
+                Rounding::Continuous,
+                None,
+            )?
+            .0,
+        );
+        solves += 1;
+    }
+    let walls = Walls::find(
+        surface,
+        &charts,
+        &cons,
+        fit.as_deref(),
+        first,
+        integers.len(),
+    );
     // the rounding moves the area again: round anew at the scales of
     // [`fit::ScaleSearch`] (at most `max_roundings` in all), keeping the map whose
     // area is closest to `N`
@@ -228,12 +256,20 @@ pub fn integrate_report(
         let start = fit
             .as_ref()
             .and_then(|x0| scaled_start(x0, scale / first_scale, &cons.rows, &cons.gauge));
+        let pairs = walls.pairs(scale / first_scale);
+        let ints = Integers {
+            forms: &integers,
+            first,
+            apart: Apart {
+                wall: &walls.wall,
+                pairs: &pairs,
+            },
+        };
         let (x, q) = quantize(
             &energy,
             &cons.rows,
             &cons.gauge,
-            &integers,
-            first,
+            &ints,
             opts.rounding,
             start,
         )?;
@@ -311,6 +347,63 @@ fn scaled_start(x0: &[f64], k: f64, rows: &[Form], gauge: &Gauge) -> Option<Vec<
         .all(|r| r.eval(&x).abs() <= 1e-9 * size);
     feasible.then_some(x)
 }
+
+/// The facing boundary walls of one integration ([`facing`]), found once
+/// in the continuous map at the first scale.
+struct Walls {
+    /// Per integer unknown: its wall or [`NO_WALL`].
+    wall: Vec<u32>,
+    /// [`facing::Facing::pairs`] at the first scale.
+    pairs: Vec<(u32, u32, f64)>,
+}
+
+impl Walls {
+    /// The walls of `cons`'s boundary unknowns (at `offset` among the
+    /// `count` integer unknowns) in `x0`, the continuous map at the first
+    /// scale (none without it).
+    fn find(
+        surface: &Surface,
+        charts: &charts::Charts,
+        cons: &constraints::Constraints,
+        x0: Option<&[f64]>,
+        offset: usize,
+        count: usize,
+    ) -> Walls {
+        let mut walls = Walls {
+            wall: vec![NO_WALL; count],
+            pairs: Vec::new(),
+        };
+        let Some(x0) = x0 else {
+            return walls;
+        };
+        let facing = facing::find(surface, charts, cons, x0, WALL_REACH * FIRST_TO_LAST);
+        for (k, &w) in facing.wall.iter().enumerate() {
+            if let Some(slot) = walls.wall.get_mut(offset + k) {
+                *slot = w;
+            }
+        }
+        walls.pairs = facing.pairs;
+        walls
+    }
+
+    /// The pairs within [`WALL_REACH`] at `ratio` times the first scale.
+    fn pairs(&self, ratio: f64) -> Vec<(u32, u32)> {
+        self.pairs
+            .iter()
+            .filter(|p| p.2 * ratio < WALL_REACH)
+            .map(|p| (p.0, p.1))
+            .collect()
+    }
+}
+
+/// Facing walls further apart than this (map units) are left to the
+/// nearest rounding: it keeps walls 1 apart apart, and [`crate::separate`]
+/// moves a wall by less than 1.5.
+const WALL_REACH: f64 = 3.0;
+
+/// Largest ratio of a rounding's scale to the first scale whose facing
+/// walls are all found.
+const FIRST_TO_LAST: f64 = 2.5;
 
 /// Default of [`IntegrateOptions::max_roundings`]: the first rounding and
 /// at most 4 re-roundings.
