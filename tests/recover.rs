@@ -36,6 +36,24 @@ fn a_zipped_fold_is_collapsed() {
     assert!(st["folded_corners_collapsed"].as_u64() >= Some(1), "{st}");
 }
 
+/// A collapsed folded corner is a repair where the mesh may differ from
+/// the map's own (a pole split, docs/messy-cases.md): said under `-q` too,
+/// with the counts of the stats.
+#[test]
+fn a_collapsed_fold_is_said_under_quiet() {
+    let dir = Scratch::new("recover-warn");
+    let (quads, stats) = (dir.arg("q.obj"), dir.arg("st.json"));
+    let fx = fixture("torus_zipped_fold.obj");
+    let out = dualex(&["quad", &fx, "-o", &quads, "--stats", &stats, "-q"]);
+    assert!(out.status.success(), "{}", text(&out));
+    let st = json(&dir.path("st.json"));
+    let folded = st["folded_corners_collapsed"].as_u64().unwrap_or(0);
+    let err = String::from_utf8_lossy(&out.stderr);
+    let said = format!("{folded} folded corner");
+    assert!(folded >= 1 && err.contains(&said), "{said}: {err}");
+    assert!(err.contains("the mesh may differ from the map's"), "{err}");
+}
+
 #[test]
 fn a_saddle_lift_never_glues_both_ends_of_a_side() {
     quad_is_valid("genus3_lift_loop.obj");

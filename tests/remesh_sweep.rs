@@ -37,6 +37,9 @@ const CI: &[(&str, usize, u64)] = &[
     ("surface_sweep_genus8", 300, 1),
     ("surface_sweep_holes2", 300, 1),
     ("surface_sweep_holes5", 300, 1),
+    // its first grid position loses the 1-cell strip (⅙ of a quad); the
+    // second keeps it (`remesh_staged`)
+    ("surface_sweep_holes2", 300, 7),
     ("surface_sweep_holes8", 1000, 1),
     ("surface_sweep_holes8", 5000, 1),
 ];

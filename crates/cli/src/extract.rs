@@ -188,6 +188,7 @@ pub fn quad_map(
     }
     warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
     geometry::warn(&geo, ("quad", "quads"));
+    warn_degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
     if stats.repair_paths > 0 {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(
@@ -353,6 +354,20 @@ fn finish_stats(
         );
     }
     Ok(())
+}
+
+/// The warning for valence-1 and 2 vertices index fairing could not
+/// merge (collapsed, dissolved), printed under -q too: such a repair is
+/// where a messy map's mesh may differ from the map's own (a singularity
+/// split by the untangling, docs/messy-cases.md).
+fn warn_degenerate(folded: usize, doublets: usize) {
+    if folded + doublets > 0 {
+        eprintln!(
+            "dualex: warning: {} collapsed and {} dissolved: degenerate vertices that index fairing found no partner for (the mesh may differ from the map's there); see \"folded_corners_collapsed\" and \"doublets\" in the stats",
+            count(folded, "folded corner", "folded corners"),
+            count(doublets, "doublet", "doublets"),
+        );
+    }
 }
 
 /// The warning for transitions rounded without `--round-transitions`

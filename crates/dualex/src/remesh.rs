@@ -22,10 +22,12 @@
 //!    no quad at all is [`Error::Empty`];
 //! 5. the geometric stage on the quads, as [`crate::quad()`] runs it; when
 //!    it leaves inverted quads (a coarse map's flipped triangles can give
-//!    a fold no move of the vertices undoes), steps 2–5 again at another
-//!    grid position (the seed's attempt `k`, [`attempt_seed`]), at most
-//!    [`GRID_ATTEMPTS`] in all; the first with the fewest inverted quads
-//!    is kept, and every attempt's count is in
+//!    a fold no move of the vertices undoes), or the quads' topology is
+//!    not the surface's (holes a sixth of a quad apart whose strip the
+//!    map still loses), steps 2–5 again at another grid position (the
+//!    seed's attempt `k`, [`attempt_seed`]), at most [`GRID_ATTEMPTS`] in
+//!    all; the first with the surface's topology and the fewest inverted
+//!    quads is kept, and every attempt's inverted count is in
 //!    [`RemeshStats::grid_attempts`]. Only runs that leave inverted quads
 //!    pay for it: 3 of the 120 runs of `tests/remesh.rs` before it
 //!    (genus-3 plate and torus at 100 quads, all fixed by the second
@@ -99,6 +101,8 @@ pub struct RemeshedMap {
     extracted: Option<dualex_quad::Extracted>,
     /// The options it was made with.
     opts: RemeshOptions,
+    /// The welded surface's topology.
+    shape: topology::Shape,
 }
 
 /// Steps 1–2 (module docs): the map of a plain surface, counted.
@@ -138,6 +142,7 @@ pub fn remesh_map(
         surface_area: surface.areas.iter().sum(),
         extracted: kept.flatten(),
         opts: opts.clone(),
+        shape,
     })
 }
 
@@ -293,6 +298,8 @@ pub struct Staged {
     pub welded: usize,
     /// The attempt kept (0: the seed's grid position).
     pub attempt: usize,
+    /// Its extraction is a valid quad mesh with the surface's topology.
+    pub same_shape: bool,
     /// The options of the attempt kept (its seed is [`attempt_seed`]'s).
     pub opts: RemeshOptions,
 }
@@ -339,14 +346,19 @@ pub fn remesh_staged(
             break;
         };
         inverted.push(n);
-        if best
-            .as_ref()
-            .and_then(|b| b.geometry.as_ref())
-            .is_none_or(|g| n < g.after.inverted)
-        {
+        // a topology unlike the surface's (holes merged) is worse than
+        // any inverted count
+        let worse = |s: &Staged| {
+            (
+                !s.same_shape,
+                s.geometry.as_ref().map_or(usize::MAX, |g| g.after.inverted),
+            )
+        };
+        let key = worse(&staged);
+        if best.as_ref().is_none_or(|b| key < worse(b)) {
             best = Some(staged);
         }
-        if n == 0 {
+        if key == (false, 0) {
             break;
         }
     }
@@ -368,10 +380,12 @@ fn attempt(
     let made = remesh_map(positions, triangles, &opts)?;
     each(k, &made)?;
     made.check()?;
-    let welded = made.welded;
+    let (welded, made_shape) = (made.welded, made.shape);
     let (map, stats, mut extracted) = made.extract()?;
     let m = &extracted.mesh;
-    let geometry = dualex_check::check_quad_mesh(m.positions.len(), &m.cells)
+    let report = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
+    let same_shape = report.is_valid() && topology::quad_shape(&report) == made_shape;
+    let geometry = report
         .is_valid()
         .then(|| quad_stage(&map, &mut extracted, &opts.extract.geometry));
     Ok(Staged {
@@ -381,6 +395,7 @@ fn attempt(
         geometry,
         welded,
         attempt: k,
+        same_shape,
         opts,
     })
 }
