@@ -103,6 +103,8 @@ pub fn quad_map(
     mut laps: timing::Laps,
     before: Option<Before>,
 ) -> Result<(), String> {
+    // the user's own map (not remesh's): its repairs are said
+    let own_map = before.is_none();
     let (extra, done_before, staged) = match before {
         Some(b) => (Some(b.section), b.extracted, b.geometry),
         None => (None, None, None),
@@ -188,7 +190,9 @@ pub fn quad_map(
     }
     warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
     geometry::warn(&geo, ("quad", "quads"));
-    warn_degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
+    if own_map {
+        warn_degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
+    }
     if stats.repair_paths > 0 {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(
@@ -361,11 +365,18 @@ fn finish_stats(
 /// where a messy map's mesh may differ from the map's own (a singularity
 /// split by the untangling, docs/messy-cases.md).
 fn warn_degenerate(folded: usize, doublets: usize) {
-    if folded + doublets > 0 {
+    let parts: Vec<String> = [
+        (folded, "folded corner", "folded corners", "collapsed"),
+        (doublets, "doublet", "doublets", "dissolved"),
+    ]
+    .into_iter()
+    .filter(|p| p.0 > 0)
+    .map(|(n, one, many, done)| format!("{} {done}", count(n, one, many)))
+    .collect();
+    if !parts.is_empty() {
         eprintln!(
-            "dualex: warning: {} collapsed and {} dissolved: degenerate vertices that index fairing found no partner for (the mesh may differ from the map's there); see \"folded_corners_collapsed\" and \"doublets\" in the stats",
-            count(folded, "folded corner", "folded corners"),
-            count(doublets, "doublet", "doublets"),
+            "dualex: warning: {}: degenerate vertices that index fairing found no partner for (the mesh may differ from the map's there); see \"folded_corners_collapsed\" and \"doublets\" in the stats",
+            parts.join(" and ")
         );
     }
 }

@@ -157,7 +157,7 @@ fn describe(name: &str, k: usize, made: &dualex::RemeshedMap, a: &RemeshArgs, g:
     }
     if k > 0 {
         eprintln!(
-            "dualex: {name}: the last grid position left inverted quads or a map remesh could not use: another one (attempt {} of at most {}; remesh.grid_attempts in the stats)",
+            "dualex: {name}: the last grid position left inverted quads, a topology unlike the surface's or a map remesh could not use: another one (attempt {} of at most {}; remesh.grid_attempts in the stats)",
             k + 1,
             dualex::GRID_ATTEMPTS
         );

@@ -269,7 +269,7 @@ pub fn remesh(
 }
 
 /// Grid positions step 5 tries at most (module docs).
-pub const GRID_ATTEMPTS: usize = 3;
+pub const GRID_ATTEMPTS: usize = 6;
 
 /// The seed of attempt `k` of step 5: the user's for `k = 0`, then seeds
 /// drawn from it (the seed places the grid on the surface).

@@ -142,14 +142,16 @@ impl<const D: usize> NodeGraph<D> {
 
     /// Removes all pleats, fewest OP2 first (see the module docs).
     pub fn untangle(&mut self) -> UntangleStats {
-        self.untangle_with(None)
+        let first = self.pleat_sides();
+        self.untangle_with(None, first)
     }
 
     /// Like [`NodeGraph::untangle`], but ties (pleats needing as many OP2)
     /// are broken at random (seeded): the initial worklist is shuffled and
     /// each push swaps places with a random entry of its bucket.
     pub fn untangle_shuffled(&mut self, seed: u64) -> UntangleStats {
-        self.untangle_with(Some(SplitMix::new(seed)))
+        let first = self.pleat_sides();
+        self.untangle_with(Some(SplitMix::new(seed)), first)
     }
 
     /// Untangles, then runs `next` (the following step, e.g. fairing),
@@ -165,8 +167,9 @@ impl<const D: usize> NodeGraph<D> {
         mut next: impl FnMut(&mut Self) -> (T, usize),
     ) -> (UntangleStats, T) {
         // no pleat: nothing to untangle, no order to choose (no copy)
-        let before = (!self.pleat_sides().is_empty()).then(|| self.clone());
-        let mut st = self.untangle();
+        let first = self.pleat_sides();
+        let before = (!first.is_empty()).then(|| self.clone());
+        let mut st = self.untangle_with(None, first);
         let (mut out, mut left) = next(self);
         let Some(before) = before else {
             return (st, out);
@@ -197,8 +200,8 @@ impl<const D: usize> NodeGraph<D> {
         }
     }
 
-    fn untangle_with(&mut self, mut rng: Option<SplitMix>) -> UntangleStats {
-        let mut first = self.pleat_sides();
+    /// Untangles from the pleat sides `first` ([`Self::pleat_sides`]).
+    fn untangle_with(&mut self, mut rng: Option<SplitMix>, mut first: Vec<Side>) -> UntangleStats {
         let mut st = UntangleStats {
             pleats_found: first.len(),
             ..Default::default()
