@@ -12,23 +12,13 @@ mod common;
 use common::*;
 use dualex_gen::from_mesh::{self, meshes, FromMeshOptions};
 
-/// Cases whose default output keeps inverted quads: noisy maps of meshes
-/// with sharp feature edges (the cube's edges), where a vertex the noise
-/// put on the wrong face leaves a quad bent across the edge that
-/// untangling, with the vertices on the surface, does not undo
-/// (`docs/messy-cases.md`). Run and reported ("NOW PASSES"). The 3-gon
-/// disk's folds at scale 2 left the list when boundary vertices were
-/// bound to the arc between their mesh corners (a vertex beyond a corner
-/// of the triangle stayed on the wrong side).
-const KNOWN_INVERTED: &[&str] = &[
-    "cube6/k2/n0.3/folds",
-    // since the untangling order of issue 22 (other nodes survive the
-    // folds; 24 quads as before): 3 inverted left of 6
-    "cube6/k2/n0.6/folds",
-    "cube6/k3/n0.3/folds",
-    "cube6/k3/n0.6/folds",
-    "cube6/k3/n0.9/folds",
-];
+/// Cases whose default output keeps inverted quads, run and reported
+/// ("NOW PASSES"; `docs/messy-cases.md`). None now: the five noisy folded
+/// cube6 cases (a vertex the noise put on the wrong face, a quad bent
+/// across the cube's edge) left when a surface vertex on a sharp edge was
+/// let cross it (issue 21); the 3-gon disk's folds at scale 2 when
+/// boundary vertices were bound to the arc between their mesh corners.
+const KNOWN_INVERTED: &[&str] = &[];
 
 fn options(k: usize, noise: f64, folds: bool) -> FromMeshOptions {
     FromMeshOptions {

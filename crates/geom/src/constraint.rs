@@ -7,11 +7,19 @@
 //! [`Reference`]. Output: a [`Kind`] per vertex, a linear tangent basis
 //! at its current position, and the projection back onto its set.
 //! Invariants: a vertex's basis spans exactly its [`Kind::dof`]
-//! directions, orthonormal; projecting a point of the set leaves it there.
+//! directions, orthonormal, but for a [`Kind::Surface`] vertex on a
+//! feature curve (a sharp edge), whose basis is all of space (its
+//! projection decides which face it lands on); projecting a point of the
+//! set leaves it there.
 
 use crate::quality::{cross, dot, norm, sub, unit};
 use crate::reference::Reference;
 use std::sync::atomic::AtomicU32;
+
+/// A point of the surface within this fraction of the bounding box's
+/// diagonal of a feature curve is on it (a foot found on a triangle's
+/// edge is on it up to rounding).
+pub const ON_FEATURE: f64 = 1e-9;
 
 /// The set a vertex stays on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -147,7 +155,12 @@ impl Constraints {
     }
 
     /// An orthonormal basis of the directions vertex `v` may move in at
-    /// `p` (on its set), and their count.
+    /// `p` (on its set), and their count: for a vertex on the surface,
+    /// its foot triangle's tangent plane, or all of space where the foot
+    /// is on a feature curve. (With one face's plane a vertex on a sharp
+    /// edge could only slide along it or back onto that face, never cross
+    /// onto the other: the noisy cube's round trips kept inverted quads
+    /// bent across the edge, issue 21.)
     pub fn basis(&self, r: Option<&Reference>, v: usize, p: [f64; 3]) -> Basis {
         self.project_basis(r, v, p).1
     }
@@ -167,6 +180,12 @@ impl Constraints {
                 let q = foot.map_or(p, |f| f.point);
                 if norm(n) == 0.0 {
                     return (q, (0, id));
+                }
+                // on a sharp edge: free to leave it onto either face (the
+                // projection puts it back on the surface); one face's
+                // tangent plane would keep it on that face's side
+                if r.on_feature(q, ON_FEATURE * r.diagonal) {
+                    return (q, (3, id));
                 }
                 let t1 = unit(perpendicular(n));
                 (q, (2, [t1, cross(n, t1), [0.0; 3]]))
@@ -197,4 +216,37 @@ pub(crate) fn perpendicular(n: [f64; 3]) -> [f64; 3] {
     let t = cross(n, axis);
     debug_assert!(dot(t, n).abs() < 1e-9 * norm(n).max(1.0));
     t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A surface vertex moves in its face's plane, on a sharp edge in
+    /// space, and a step off the edge lands on the face it went towards.
+    #[test]
+    fn a_surface_vertex_on_a_sharp_edge_may_cross_it() {
+        let r = crate::tests::unit_cube_surface(60.0);
+        let top = [0.5, 0.5, 1.0];
+        let c = Constraints::classify(
+            &r,
+            &[top],
+            &[true],
+            vec![[0.0, 1.0, 1.0]],
+            Role::Volume,
+            1e-6,
+        );
+        assert_eq!(c.kind[0], Kind::Surface);
+        assert_eq!(c.basis(Some(&r), 0, top).0, 2);
+        // on the edge y = 1, z = 1 (a corner of the cube too)
+        for on_edge in [[0.5, 1.0, 1.0], [1.0, 1.0, 1.0]] {
+            let (q, b) = c.project_basis(Some(&r), 0, on_edge);
+            assert_eq!((q, b.0), (on_edge, 3));
+        }
+        // down the face y = 1, and back onto the top face
+        let q = c.project(&r, 0, [0.5, 1.01, 0.8]);
+        assert!((q[1] - 1.0).abs() < 1e-15 && (q[2] - 0.8).abs() < 1e-15);
+        let q = c.project(&r, 0, [0.5, 0.8, 1.01]);
+        assert!((q[1] - 0.8).abs() < 1e-15 && (q[2] - 1.0).abs() < 1e-15);
+    }
 }

@@ -269,6 +269,13 @@ impl Reference {
         self.closest_on(p, |seg| seg.boundary && seg.arc == arc)
     }
 
+    /// Whether `p` lies on a feature curve (within `tol`): a sharp edge
+    /// of the surface, where a vertex on it may cross onto either side.
+    pub fn on_feature(&self, p: [f64; 3], tol: f64) -> bool {
+        self.closest_on(p, |seg| !seg.boundary)
+            .is_some_and(|(_, _, d)| d <= tol)
+    }
+
     /// The arcs of the curve segments at vertex `v`.
     pub fn arcs_at(&self, v: u32) -> Vec<u32> {
         let mut out: Vec<u32> = self
@@ -451,18 +458,7 @@ mod tests {
 
     #[test]
     fn cube_boundary_has_12_feature_edges() {
-        let p: Vec<[f64; 3]> = (0..8)
-            .map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2 & 1) as f64])
-            .collect();
-        let tets = [
-            [0, 1, 3, 7],
-            [0, 3, 2, 7],
-            [0, 2, 6, 7],
-            [0, 6, 4, 7],
-            [0, 4, 5, 7],
-            [0, 5, 1, 7],
-        ];
-        let r = Reference::volume_boundary(&p, &tets, 35.0);
+        let r = crate::tests::unit_cube_surface(35.0);
         assert_eq!(r.triangles.len(), 12);
         assert_eq!(r.segments.len(), 12);
         assert!(r.segments.iter().all(|s| !s.boundary));
