@@ -11,7 +11,7 @@
 //!
 //! CI runs a subset of a few seconds ([`CI`]), whose failing runs must be
 //! exactly [`KNOWN`]. `DUALEX_REMESH_SWEEP=1` runs every surface at 300,
-//! 1000 and 5000 quads (the needles at 300 and 1000), seeds 1–20, on
+//! 1000 and 5000 quads, seeds 1–20, on
 //! `DUALEX_REMESH_SWEEP_JOBS` threads (default 1); `DUALEX_REMESH_SWEEP_ONLY`
 //! keeps the surfaces whose name contains it, `DUALEX_REMESH_SWEEP_SEEDS`
 //! (`a-b`) the seeds. The full sweep prints one line per surface and size
@@ -184,12 +184,7 @@ fn every_run_of_the_sweep_is_valid() {
             }
             continue;
         }
-        let sizes: &[usize] = if s.0 == "surface_cad_needles" {
-            &[300, 1000]
-        } else {
-            &[300, 1000, 5000]
-        };
-        for &n in sizes {
+        for n in [300, 1000, 5000] {
             for seed in seeds(20) {
                 cases.push((s.clone(), n, seed));
             }
