@@ -98,8 +98,7 @@ fn remesh_of_generated_surfaces_is_valid() {
 
 /// `dualex remesh` runs on the shared surfaces' geometry that the gluing
 /// broke before step 8a (`dualex_quad::ambiguous`), the pinch split
-/// (`dualex_quad::pinched`), the handle digons and the grid moved on a
-/// refused map (`dualex_remesh::recount`): each now gives a valid mesh of
+/// (`dualex_quad::pinched`) and the handle digons: each now gives a valid mesh of
 /// the surface's topology (sphere: one component, Euler 2), and the stats
 /// name the repair that did it.
 #[test]
@@ -136,10 +135,10 @@ fn shared_surfaces_that_broke_the_gluing_are_repaired() {
             "repair.folded_cells_cut",
         ),
         (
-            "decimated-knight-param",
-            2000,
+            "dragon-param-full-seamless",
+            100,
             "off",
-            4,
+            1,
             "repair.pinched_vertices_split",
         ),
         (
@@ -149,9 +148,10 @@ fn shared_surfaces_that_broke_the_gluing_are_repaired() {
             4,
             "digons_pinched",
         ),
-        // a map the extraction refuses at the seed's grid position: the
-        // grid moved
-        ("decimated-knight-param", 2000, "off", 5, "grid moved"),
+        // (a map the extraction refuses at the seed's grid position, the
+        // grid moved: no shared run of the scan reaches it any more; the
+        // unit test `a_refused_map_is_made_again_with_the_grid_moved` of
+        // `dualex_remesh::recount` covers it)
     ];
     let scratch = Scratch::new("recover-shared");
     for (surface, quads, rounding, seed, counter) in cases {
@@ -172,11 +172,6 @@ fn shared_surfaces_that_broke_the_gluing_are_repaired() {
         assert_eq!((rep.components, rep.euler), (1, 2), "{name}");
         let st = json(&scratch.path("st.json"));
         assert_eq!(st["topology_matches_input"], true, "{name}");
-        if counter == "grid moved" {
-            let counted = &st["remesh"]["counted"];
-            assert!(counted[0].is_null(), "{name}: {counted}");
-            continue;
-        }
         let v = counter
             .split('.')
             .fold(&st, |v, k| &v[k])

@@ -231,6 +231,39 @@ fn recount_target(n: usize, area: f64, quads: usize) -> Option<usize> {
 mod tests {
     use super::*;
 
+    /// A map the extraction refuses is made again with the grid moved by
+    /// each of [`MOVES`] in turn until one is counted; when all are
+    /// refused, the first is taken. (The shared surfaces no longer reach
+    /// this path at sizes 100–2000, seeds 1–6.)
+    #[test]
+    fn a_refused_map_is_made_again_with_the_grid_moved() {
+        let opts = IntegrateOptions::default();
+        for (accept_from, index) in [(1, 0), (3, 2), (99, 0)] {
+            let mut offsets = Vec::new();
+            let mut integrate = |o: &IntegrateOptions| {
+                offsets.push(o.gauge_offset);
+                Ok((TriMap::default(), IntegrateReport::default()))
+            };
+            let mut made = 0;
+            let mut count = |_: &TriMap| {
+                made += 1;
+                (made >= accept_from).then_some(40 + made)
+            };
+            let mut counted = Vec::new();
+            let t = taken(&mut integrate, &mut count, &opts, MOVES.len(), &mut counted)
+                .expect("no integration error");
+            assert_eq!(t.index, index);
+            assert_eq!(t.count, counted[index]);
+            assert_eq!(t.opts.gauge_offset, offsets[index]);
+            let tried = counted.len();
+            assert_eq!(tried, accept_from.min(1 + MOVES.len()));
+            for (k, shift) in MOVES.iter().enumerate().take(tried - 1) {
+                let moved = [0, 1].map(|i| (offsets[0][i] + shift[i]).rem_euclid(1.0));
+                assert_eq!(offsets[k + 1], moved);
+            }
+        }
+    }
+
     #[test]
     fn secant_targets() {
         // 88 quads at area 100, 112 at 120: 100 quads at area 110
