@@ -193,7 +193,15 @@ pub fn quad_map(
     if own_map {
         warn_degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
     }
-    if stats.repair_paths > 0 {
+    let faces = stats.repair_triangles + stats.holes_filled;
+    if stats.repair_paths > 0 && faces == 0 {
+        // the odd faces came from step 8a's splits (parallel edges, folded
+        // cells), not from triangles or holes: said as such
+        eprintln!(
+            "dualex: warning: faces with an odd number of sides (left by splitting parallel edges and folded cells) were made quads along {} (local repair)",
+            count(stats.repair_paths, "path", "paths"),
+        );
+    } else if stats.repair_paths > 0 {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(
             "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads along {} between them (local repair)",
