@@ -194,32 +194,34 @@ pub fn quad_map(
         warn_degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
     }
     let faces = stats.repair_triangles + stats.holes_filled;
-    if stats.repair_paths > 0 && faces == 0 {
-        // the odd faces came from step 8a's splits (parallel edges, folded
-        // cells), not from triangles or holes: said as such
-        eprintln!(
-            "dualex: warning: faces with an odd number of sides (left by splitting parallel edges and folded cells) were made quads along {} (local repair)",
-            count(stats.repair_paths, "path", "paths"),
-        );
-    } else if stats.repair_paths > 0 {
+    if stats.repair_paths > 0 {
         // printed under -q too: the output is not the map's own mesh
-        eprintln!(
-            "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads along {} between them (local repair)",
-            count(stats.repair_triangles + stats.holes_filled, "face", "faces"),
-            count(stats.repair_triangles, "triangle", "triangles"),
-            count(stats.holes_filled, "hole", "holes"),
-            summary::plural(stats.repair_triangles + stats.holes_filled, "was", "were"),
-            count(stats.repair_paths, "path", "paths"),
-        );
+        if faces == 0 {
+            // the odd faces came from step 8a's splits (parallel edges,
+            // folded cells), not from triangles or holes: said as such
+            eprintln!(
+                "dualex: warning: faces with an odd number of sides (left by splitting parallel edges and folded cells) were made quads along {} (local repair)",
+                count(stats.repair_paths, "path", "paths"),
+            );
+        } else {
+            eprintln!(
+                "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads along {} between them (local repair)",
+                count(faces, "face", "faces"),
+                count(stats.repair_triangles, "triangle", "triangles"),
+                count(stats.holes_filled, "hole", "holes"),
+                summary::plural(faces, "was", "were"),
+                count(stats.repair_paths, "path", "paths"),
+            );
+        }
     }
     if stats.subdivided {
         // printed under -q too: the output is not the map's own mesh
         eprintln!(
             "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads by one step of subdivision of the whole mesh",
-            count(stats.repair_triangles + stats.holes_filled, "face", "faces"),
+            count(faces, "face", "faces"),
             count(stats.repair_triangles, "triangle", "triangles"),
             count(stats.holes_filled, "hole", "holes"),
-            summary::plural(stats.repair_triangles + stats.holes_filled, "was", "were"),
+            summary::plural(faces, "was", "were"),
         );
     }
     if !g.quiet {

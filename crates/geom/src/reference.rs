@@ -252,7 +252,18 @@ impl Reference {
         p: [f64; 3],
         keep: impl Fn(&Segment) -> bool,
     ) -> Option<(u32, [f64; 3], f64)> {
-        let (s, d2) = self.segment_bvh.nearest(p, |s| {
+        self.closest_on_within(p, f64::INFINITY, keep)
+    }
+
+    /// [`Self::closest_on`] among the segments within squared distance
+    /// `max_d2` of `p` (the search prunes every box farther).
+    fn closest_on_within(
+        &self,
+        p: [f64; 3],
+        max_d2: f64,
+        keep: impl Fn(&Segment) -> bool,
+    ) -> Option<(u32, [f64; 3], f64)> {
+        let (s, d2) = self.segment_bvh.nearest_within(p, max_d2, |s| {
             let seg = self.segments[s as usize];
             keep(&seg).then(|| {
                 let q = self.closest_on_segment(s, p);
@@ -271,9 +282,11 @@ impl Reference {
 
     /// Whether `p` lies on a feature curve (within `tol`): a sharp edge
     /// of the surface, where a vertex on it may cross onto either side.
+    /// It runs for every surface vertex at every step of the untangler:
+    /// the search stops at `tol` instead of finding the nearest curve.
     pub fn on_feature(&self, p: [f64; 3], tol: f64) -> bool {
-        self.closest_on(p, |seg| !seg.boundary)
-            .is_some_and(|(_, _, d)| d <= tol)
+        self.closest_on_within(p, tol * tol, |seg| !seg.boundary)
+            .is_some()
     }
 
     /// The arcs of the curve segments at vertex `v`.
