@@ -182,16 +182,7 @@ pub fn integrate_report(
     let mut fit = None;
     let mut solves = 0;
     if let (true, None, Some(n)) = (opts.fit_area, opts.scale, opts.quads) {
-        let mut origin = cons.gauge.clone();
-        origin.offset = [0.0, 0.0];
-        let (x, _) = quantize(
-            &energy,
-            &cons.rows,
-            &origin,
-            &Integers::new(&[], 0),
-            Rounding::Continuous,
-            None,
-        )?;
+        let x = continuous(&energy, &cons)?;
         let area = signed_area(&charts.corner_wedge, &x);
         // the continuous map is linear in s: its area goes as s²
         if area > 0.0 && area.is_finite() {
@@ -210,20 +201,7 @@ pub fn integrate_report(
     // the facing walls need a continuous map: the one of the area fit, or
     // one solved here, the first rounding's start then
     if fit.is_none() && !cons.boundary.is_empty() {
-        let mut origin = cons.gauge.clone();
-        origin.offset = [0.0, 0.0];
-        let none = Integers::new(&[], 0);
-        fit = Some(
-            quantize(
-                &energy,
-                &cons.rows,
-                &origin,
-                &none,
-                Rounding::Continuous,
-                None,
-            )?
-            .0,
-        );
+        fit = Some(continuous(&energy, &cons)?);
         solves += 1;
     }
     let walls = Walls::find(
@@ -346,6 +324,27 @@ fn scaled_start(x0: &[f64], k: f64, rows: &[Form], gauge: &Gauge) -> Option<Vec<
         .chain(&gauge.rows(rows.iter()))
         .all(|r| r.eval(&x).abs() <= 1e-9 * size);
     feasible.then_some(x)
+}
+
+/// The continuous map of `energy` under `cons`'s rows (no integer
+/// unknown), the gauge at the origin: the area fit's, and the facing
+/// walls' when there is no fit.
+fn continuous(
+    energy: &system::Energy,
+    cons: &constraints::Constraints,
+) -> Result<Vec<f64>, String> {
+    let mut origin = cons.gauge.clone();
+    origin.offset = [0.0, 0.0];
+    let none = Integers::new(&[], 0);
+    let (x, _) = quantize(
+        energy,
+        &cons.rows,
+        &origin,
+        &none,
+        Rounding::Continuous,
+        None,
+    )?;
+    Ok(x)
 }
 
 /// The facing boundary walls of one integration ([`facing`]), found once
