@@ -210,6 +210,14 @@ fn directional_cut_meshes_give_valid_meshes() {
             st["output"]["boundary_loops"], expect_loops,
             "{name}: graph boundary"
         );
+        // issue 21: no inverted quad on any of them by default (the
+        // dragon's last 2 needed the feature release of the untangler's
+        // last attempt)
+        assert_eq!(
+            st["geometry"]["after"]["inverted"], 0,
+            "{name}: {}",
+            st["geometry"]
+        );
         // no interior vertex of valence 2 or less: fairing merges them
         // with negative singularities, doublet removal dissolves the rest
         let low: usize = rep.interior_valence.range(..=2).map(|(_, n)| n).sum();

@@ -50,8 +50,16 @@ pub fn check(name: &str, r: &Report, cell: (&str, &str), strict: bool) -> Result
     Ok(())
 }
 
-/// The warning for inverted elements left, printed under `-q` too.
+/// The warnings for inverted elements left and for vertices taken off
+/// the input's sharp edges to untangle, printed under `-q` too.
 pub fn warn(r: &Report, cell: (&str, &str)) {
+    if r.features_released > 0 {
+        eprintln!(
+            "dualex: warning: {} released from the input's sharp edges to untangle the {} at them (the mesh's edges leave those curves there); see \"features_released\" in the stats",
+            count(r.features_released, "vertex", "vertices"),
+            cell.1,
+        );
+    }
     let n = r.after.inverted;
     if n == 0 {
         return;
@@ -85,6 +93,12 @@ pub fn done_words(r: &Report) -> String {
             s += &format!(
                 ", {} put on the input's boundary",
                 count(r.boundary_off, "boundary vertex", "boundary vertices")
+            );
+        }
+        if r.features_released > 0 {
+            s += &format!(
+                ", {} released from sharp edges",
+                count(r.features_released, "vertex", "vertices")
             );
         }
         s += &format!("; moved ≤ {:.2} edge lengths)", r.max_move_edges());

@@ -11,7 +11,9 @@ use dualex_map::cells::{HEX_EDGES, HEX_FACES};
 
 mod corners;
 mod topology;
-use corners::{bind_to_arcs, mesh_corners_to_input_corners, release_flat_corners};
+use corners::{
+    bind_to_arcs, mesh_corners_to_input_corners, release_features, release_flat_corners,
+};
 use std::time::Instant;
 use topology::{boundary_vertices, grow, vertex_cells};
 
@@ -46,6 +48,10 @@ pub struct Report {
     /// The largest distance of a boundary vertex to the input's boundary,
     /// before and after (model units; 0 when not measured).
     pub boundary_distance: [f64; 2],
+    /// Vertices released from the input's feature curves (left free on
+    /// the surface) because a cell at them stayed inverted after every
+    /// ring of the untangling: the last attempt runs without them bound.
+    pub features_released: usize,
     /// Optimisation rounds, and the rings of the last region (auto).
     pub rounds: usize,
     /// Rings around the inverted elements that were moved (auto).
@@ -89,6 +95,7 @@ impl Report {
                 "max_distance_before": self.boundary_distance[0],
                 "max_distance_after": self.boundary_distance[1],
             },
+            "features_released": self.features_released,
             "rounds": self.rounds,
             "rings": self.rings,
         })
@@ -486,7 +493,10 @@ fn run<const D: usize, const K: usize>(
     }
     // untangling near what is still inverted (after smoothing too), in
     // growing rings (an attempt that makes things worse is undone)
-    for &rings in &RINGS {
+    // then once more on the widest region with the interior vertices of
+    // the cells still inverted released from the feature curves: a
+    // vertex held on a sharp ridge can pin a quad folded across it
+    for (attempt, &rings) in RINGS.iter().chain(&RINGS[RINGS.len() - 1..]).enumerate() {
         let now = inverted_of(&bad);
         if now < best.0 {
             best = (now, x.to_vec());
@@ -495,6 +505,13 @@ fn run<const D: usize, const K: usize>(
             break;
         }
         let flagged: Vec<bool> = bad.iter().map(|&v| v <= quality::DEGENERATE).collect();
+        if attempt == RINGS.len() {
+            let released = release_features(&mut cons, cells, &flagged, &input.on_boundary);
+            if released == 0 {
+                break;
+            }
+            rep.features_released = released;
+        }
         let movable = region(&flagged, rings);
         let p = Params {
             theta: 0.5,
@@ -507,9 +524,12 @@ fn run<const D: usize, const K: usize>(
         rep.rings = rings;
         bad = remeasure(x, &mut c);
     }
-    if inverted_of(&bad) > best.0 {
+    // (a feature release is kept only when it removed something)
+    let now = inverted_of(&bad);
+    if now > best.0 || (rep.features_released > 0 && now == best.0) {
         x.copy_from_slice(&best.1);
         bad = remeasure(x, &mut c);
+        rep.features_released = 0;
     }
     rep.after = Summary::of(&bad);
     for v in 0..x.len() {

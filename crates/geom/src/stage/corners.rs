@@ -192,3 +192,89 @@ pub(super) fn bind_to_arcs<const D: usize, const K: usize>(
     }
     bound
 }
+
+/// Releases the interior vertices of the `flagged` cells bound to a
+/// feature curve onto the surface; the count released.
+pub(super) fn release_features(
+    cons: &mut Constraints,
+    cells: &[impl AsRef<[u32]>],
+    flagged: &[bool],
+    on_boundary: &[bool],
+) -> usize {
+    let mut released = 0;
+    for (cell, _) in cells.iter().zip(flagged).filter(|(_, &f)| f) {
+        for &u in cell.as_ref() {
+            let u = u as usize;
+            if !on_boundary[u] && cons.kind[u] == (Kind::Curve { boundary: false }) {
+                cons.kind[u] = Kind::Surface;
+                released += 1;
+            }
+        }
+    }
+    released
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference::Reference;
+
+    /// Only the interior vertices of the flagged cells that are bound to a
+    /// feature curve are released; boundary ones, fixed ones and those of
+    /// other cells keep their constraint.
+    #[test]
+    fn release_features_frees_only_interior_curve_vertices_of_flagged_cells() {
+        // a roof: two faces meeting at a 90° ridge along x (a feature at
+        // the default 60°), 4 triangle pairs per face along it, open on
+        // its other sides
+        let mut p = Vec::new();
+        for i in 0..5 {
+            let x = i as f64 * 0.5;
+            p.extend([[x, -1.0, 0.0], [x, 0.0, 1.0], [x, 1.0, 0.0]]);
+        }
+        let mut t = Vec::new();
+        for i in 0..4u32 {
+            let (a, b) = (3 * i, 3 * i + 3);
+            t.extend([[a, b, b + 1], [a, b + 1, a + 1]]);
+            t.extend([[a + 1, b + 1, b + 2], [a + 1, b + 2, a + 2]]);
+        }
+        let r = Reference::surface(&p, &t, 60.0);
+        // mesh vertices: 0, 1 on the ridge's interior, 2 on the slope, 3
+        // on the ridge but a boundary vertex of the mesh
+        let x = [
+            [0.5, 0.0, 1.0],
+            [1.5, 0.0, 1.0],
+            [1.0, -0.5, 0.5],
+            [1.0, 0.0, 1.0],
+        ];
+        let on_boundary = [false, false, false, true];
+        let mut cons = Constraints::classify(
+            &r,
+            &x,
+            &on_boundary,
+            vec![[0.0, 0.0, 1.0]; 4],
+            Role::Surface,
+            1e-6,
+        );
+        assert_eq!(cons.kind[0], Kind::Curve { boundary: false });
+        assert_eq!(cons.kind[2], Kind::Surface);
+        let cells = [[0u32, 2, 3, 3], [1, 1, 1, 1]];
+        let released = release_features(&mut cons, &cells, &[true, false], &on_boundary);
+        assert_eq!(released, 1);
+        assert_eq!(
+            cons.kind[0],
+            Kind::Surface,
+            "interior ridge vertex of the flagged cell"
+        );
+        assert_eq!(
+            cons.kind[1],
+            Kind::Curve { boundary: false },
+            "not in a flagged cell"
+        );
+        assert_ne!(
+            cons.kind[3],
+            Kind::Surface,
+            "a boundary vertex keeps its curve"
+        );
+    }
+}
