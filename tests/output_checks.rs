@@ -288,3 +288,55 @@ fn sanitization_leftovers_warn_under_q_and_fail_with_strict() {
     );
     assert!(!dir.path("s.obj").exists(), "nothing written");
 }
+
+/// `-o` and `--stats` through symbolic links whose targets do not exist
+/// yet (issue 24): the targets are created, as `cat > LINK` would, and
+/// the links stay links; a relative link is read from the link's folder,
+/// a link to a dangling link is followed.
+#[cfg(unix)]
+#[test]
+fn dangling_symlinks_are_written_through() {
+    use std::os::unix::fs::symlink;
+    let dir = Scratch::new("dangling");
+    dir.generate("cube");
+    std::fs::create_dir(dir.path("sub")).expect("folder");
+    // relative (from the link's folder) and absolute targets, and a chain
+    symlink("../q_real.obj", dir.path("sub/q.obj")).expect("link");
+    symlink(dir.path("s_real.json"), dir.path("s_mid.json")).expect("link");
+    symlink(dir.path("s_mid.json"), dir.path("s.json")).expect("link");
+    let out = dualex(&[
+        "quad",
+        &dir.arg("cube.obj"),
+        "-o",
+        &dir.arg("sub/q.obj"),
+        "--stats",
+        &dir.arg("s.json"),
+        "-q",
+    ]);
+    assert!(out.status.success(), "{}", text(&out));
+    for link in ["sub/q.obj", "s.json", "s_mid.json"] {
+        let meta = std::fs::symlink_metadata(dir.path(link)).expect("link");
+        assert!(meta.file_type().is_symlink(), "{link} stays a link");
+    }
+    assert_eq!(json(&dir.path("s_real.json"))["output"]["quads"], 54);
+    let obj = std::fs::read_to_string(dir.path("q_real.obj")).expect("the mesh");
+    assert_eq!(obj.lines().filter(|l| l.starts_with("f ")).count(), 54);
+    // a dangling link into a missing folder: refused before any work
+    symlink(dir.path("nodir/x.json"), dir.path("bad.json")).expect("link");
+    let out = dualex(&[
+        "quad",
+        &dir.arg("cube.obj"),
+        "-o",
+        &dir.arg("q2.obj"),
+        "--stats",
+        &dir.arg("bad.json"),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(stderr_of(&out).contains("bad.json"), "{}", text(&out));
+    assert!(!dir.path("q2.obj").exists());
+}
+
+/// stderr of a run as text.
+fn stderr_of(out: &std::process::Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}

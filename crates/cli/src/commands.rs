@@ -1,6 +1,7 @@
 //! `dualex view`, `dualex inspect` and `dualex extrude`.
 
 use crate::args::{ExtrudeArgs, Global, InspectArgs, ViewArgs};
+use crate::error::CliError;
 use crate::quality::{self, Mesh};
 use crate::summary::count;
 use crate::{outputs, timing, PNG_SIZE};
@@ -8,7 +9,7 @@ use crate::{outputs, timing, PNG_SIZE};
 /// `dualex view`: a quad (`.obj`/`.ply`/`.vtk`) or hex (`.mesh`/`.vtk`)
 /// mesh as a self-contained HTML page, with each element's scaled
 /// Jacobian for the page's quality colouring.
-pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
+pub fn view(a: &ViewArgs, g: &Global) -> Result<(), CliError> {
     outputs::check(&a.output, None)?;
     let input = &a.mesh;
     let name = input.display().to_string();
@@ -37,8 +38,11 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
             dualex_render::view_html_hex_quality(m, &title, &q)
         }
     }
-    .map_err(|e| format!("{name}: {e}"))?;
-    dualex_io::write_text(&a.output, &page).map_err(|e| e.to_string())?;
+    .map_err(|error| CliError::Render {
+        file: name.clone(),
+        error,
+    })?;
+    dualex_io::write_text(&a.output, &page)?;
     if !g.quiet {
         eprintln!("dualex: view: {} -> {}", name, a.output.display());
     }
@@ -47,7 +51,7 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), String> {
 
 /// `dualex inspect`: the map report on stdout (text or `--json`), or a
 /// mesh's quality report ([`crate::inspect_mesh`]).
-pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
+pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), CliError> {
     let path = &a.input;
     let name = path.display().to_string();
     let ext = dualex_io::lower_extension(path);
@@ -80,18 +84,21 @@ pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
         ..Default::default()
     };
     let report = if map_3d {
-        let m = dualex_io::read_tet_map(path).map_err(|e| e.to_string())?;
+        let m = dualex_io::read_tet_map(path)?;
         dualex_map::report::inspect(&m, &opts)
     } else {
-        let m = dualex_io::read_tri_map(path).map_err(|e| e.to_string())?;
+        let m = dualex_io::read_tri_map(path)?;
         if let Some(png) = &a.png {
             let bytes =
-                dualex_render::map_png_bytes(&m, PNG_SIZE).map_err(|e| format!("{name}: {e}"))?;
+                dualex_render::map_png_bytes(&m, PNG_SIZE).map_err(|error| CliError::Render {
+                    file: name.clone(),
+                    error,
+                })?;
             outputs::write_png(png, &bytes)?;
         }
         dualex_map::report::inspect(&m, &opts)
     }
-    .map_err(|e| e.in_file(name).to_string())?;
+    .map_err(|e| e.in_file(name))?;
     if a.json {
         println!("{}", report.to_json());
     } else {
@@ -102,7 +109,7 @@ pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
 
 /// `dualex extrude`: a 2D map into a 3D one (prisms tetrahedralized by
 /// TetGen, run as an external program; see dualex-extrude).
-pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), String> {
+pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), CliError> {
     outputs::check(&a.output, Some(dualex_io::TET_MAP_EXTENSIONS))?;
     let name = a.input.display().to_string();
     let map = crate::read_2d(&a.input, &a.weld, g, &mut timing::Laps::start())?;
@@ -113,8 +120,11 @@ pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), String> {
         program: std::env::var_os("DUALEX_TETGEN").map_or("tetgen".into(), Into::into),
         fallback: a.fallback,
     };
-    let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|e| format!("{name}: {e}"))?;
-    dualex_io::write_tet_map(&a.output, &tets).map_err(|e| e.to_string())?;
+    let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|error| CliError::Extrude {
+        file: name.clone(),
+        error,
+    })?;
+    dualex_io::write_tet_map(&a.output, &tets)?;
     if let Some(note) = rep.note.as_deref().filter(|_| !g.quiet) {
         eprintln!("dualex: {name}: {note}");
     }

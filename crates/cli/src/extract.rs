@@ -7,8 +7,9 @@
 //! and names the quality problems left ([`crate::summary`]).
 
 use crate::args::{ExtractArgs, Global, HexArgs, QuadArgs};
+use crate::error::CliError;
 use crate::summary::{count, problems_suffix};
-use crate::{geometry, outputs, progress, summary, timing, verify, EMBEDDED, PNG_SIZE};
+use crate::{geometry, outputs, progress, summary, timing, verify, warnings, EMBEDDED, PNG_SIZE};
 use dualex_check::topology as topo;
 use std::path::Path;
 
@@ -18,7 +19,7 @@ fn check_outputs(
     exts: &'static [&'static str],
     x: &ExtractArgs,
     png: Option<&Path>,
-) -> Result<(), String> {
+) -> Result<(), CliError> {
     let mut all = vec![(mesh, Some(exts))];
     if let Some(s) = &x.stats {
         all.push((s.as_path(), None));
@@ -30,7 +31,7 @@ fn check_outputs(
 }
 
 /// `dualex quad`.
-pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
+pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), CliError> {
     if a.uv {
         refuse_uv(&a.output);
     }
@@ -50,7 +51,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), String> {
             if !g.quiet {
                 eprintln!("dualex: no INPUT given: running on the embedded map (a folded, noisy cube surface)");
             }
-            let m = dualex_io::parse_obj(EMBEDDED).map_err(|e| format!("embedded map: {e}"))?;
+            let m = dualex_io::parse_obj(EMBEDDED).map_err(CliError::EmbeddedMap)?;
             let name = "embedded map".to_string();
             (crate::weld_if(m, &a.weld, g, &name), name)
         }
@@ -102,7 +103,7 @@ pub fn quad_map(
     g: &Global,
     mut laps: timing::Laps,
     before: Option<Before>,
-) -> Result<(), String> {
+) -> Result<(), CliError> {
     // the user's own map (not remesh's): its repairs are said
     let own_map = before.is_none();
     let (extra, done_before, staged) = match before {
@@ -110,120 +111,48 @@ pub fn quad_map(
         None => (None, None, None),
     };
     let x = &a.extract;
-    let name = name.to_string();
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting quads");
-    let dualex_quad::Extracted {
-        mut mesh,
-        stats,
-        corner_uv,
-        sources,
-    } = match done_before {
-        // the same map, extracted with the same options already
-        Some(x) => x,
-        None => dualex_quad::extract_full(map, &quad_options(a, g))
-            .map_err(|e| e.in_file(name.clone()).to_string())?,
-    };
-    laps.lap("extract");
-    let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
-    laps.lap("check");
-    if !rep.is_valid() {
-        return Err(format!(
-            "{name}: could not make a valid quad mesh ({}); nothing written — please report this input",
-            rep.errors().join("; ")
-        ));
-    }
-    let topology = topo::Comparison {
-        input: topo::surface_shape(map.positions.len(), &map.simplices),
-        output: topo::quad_shape(&rep),
-    };
-    let summary = verify::Output {
-        cell: "quad",
-        cells: mesh.cells.len(),
-        nodes: stats.nodes,
-        measure: verify::measure(map),
-        topology,
-    };
-    verify::last_check(&name, &summary, x.strict)?;
-    verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
+    // 1. extracted (unless done before), checked
+    let (mut ex, topology) = extract_quads(map, name, a, g, done_before, &mut laps)?;
+    // 2. the geometric stage (unless run on `done_before` already)
     progress.stage("geometry");
     let geo = match staged {
         Some(geo) => geo,
-        None => geometry::quads(&mut mesh, map, &sources, &x.geometry),
+        None => geometry::quads(&mut ex.mesh, map, &ex.sources, &x.geometry),
     };
     laps.lap("geometry");
-    geometry::check(&name, &geo, ("quad", "quads"), x.strict)?;
-    let png = match (&a.png, mesh.cells.is_empty()) {
-        (Some(_), false) => Some(
-            dualex_render::quad_png_bytes(&mesh, PNG_SIZE).map_err(|e| format!("{name}: {e}"))?,
-        ),
+    geometry::check(name, &geo, ("quad", "quads"), x.strict)?;
+    // 3. the picture, in memory
+    let png = match (&a.png, ex.mesh.cells.is_empty()) {
+        (Some(_), false) => Some(dualex_render::quad_png_bytes(&ex.mesh, PNG_SIZE).map_err(
+            |error| CliError::Render {
+                file: name.to_string(),
+                error,
+            },
+        )?),
         _ => None,
     };
+    // 4. the mesh written, then the stats and the picture
     progress.stage("writing");
     if a.uv {
-        dualex_io::write_quad_mesh_uv(&a.output, &mesh, &corner_uv)
+        dualex_io::write_quad_mesh_uv(&a.output, &ex.mesh, &ex.corner_uv)
     } else {
-        dualex_io::write_quad_mesh(&a.output, &mesh)
-    }
-    .map_err(|e| e.to_string())?;
+        dualex_io::write_quad_mesh(&a.output, &ex.mesh)
+    }?;
     laps.lap("write");
     drop(progress);
-    let mut json = stats.to_json();
-    verify::add_to_stats(&mut json, &topology);
-    if let Some(obj) = json.as_object_mut() {
-        obj.insert("geometry".to_string(), geo.to_json());
-        if let Some(t) = obj.get_mut("time_ms").and_then(|t| t.as_object_mut()) {
-            t.insert("geometry".to_string(), geo.time_ms.into());
-        }
-        if let Some((key, value)) = extra {
-            obj.insert(key.to_string(), value);
-        }
-    }
-    finish_stats(x, g, &json, &laps, &stats.time_ms)?;
-    if let (Some(path), Some(bytes)) = (&a.png, &png) {
-        outputs::write_png(path, bytes)?;
-    } else if let Some(path) = &a.png {
-        eprintln!(
-            "dualex: warning: {}: not written: the mesh is empty",
-            path.display()
-        );
-    }
-    warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    let json = stats_json(ex.stats.to_json(), &topology, &geo, extra);
+    finish_stats(x, g, &json, &laps, &ex.stats.time_ms)?;
+    write_picture(a, png.as_deref())?;
+    // 5. the warnings and the summary line
+    let stats = &ex.stats;
+    warnings::rounded(g, stats.snapped_transitions, stats.max_transition_residual);
     geometry::warn(&geo, ("quad", "quads"));
     if own_map {
-        warn_degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
+        warnings::degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
     }
-    let faces = stats.repair_triangles + stats.holes_filled;
-    if stats.repair_paths > 0 {
-        // printed under -q too: the output is not the map's own mesh
-        if faces == 0 {
-            // the odd faces came from step 8a's splits (parallel edges,
-            // folded cells), not from triangles or holes: said as such
-            eprintln!(
-                "dualex: warning: faces with an odd number of sides (left by splitting parallel edges and folded cells) were made quads along {} (local repair)",
-                count(stats.repair_paths, "path", "paths"),
-            );
-        } else {
-            eprintln!(
-                "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads along {} between them (local repair)",
-                count(faces, "face", "faces"),
-                count(stats.repair_triangles, "triangle", "triangles"),
-                count(stats.holes_filled, "hole", "holes"),
-                summary::plural(faces, "was", "were"),
-                count(stats.repair_paths, "path", "paths"),
-            );
-        }
-    }
-    if stats.subdivided {
-        // printed under -q too: the output is not the map's own mesh
-        eprintln!(
-            "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads by one step of subdivision of the whole mesh",
-            count(faces, "face", "faces"),
-            count(stats.repair_triangles, "triangle", "triangles"),
-            count(stats.holes_filled, "hole", "holes"),
-            summary::plural(faces, "was", "were"),
-        );
-    }
+    warnings::quad_repairs(stats);
     if !g.quiet {
         eprintln!(
             "dualex: {}: {}, {}, {}, {}{} -> {}{}",
@@ -234,10 +163,86 @@ pub fn quad_map(
             count(stats.components, "component", "components"),
             geometry::done_words(&geo),
             a.output.display(),
-            problems_suffix(&summary::quad_problems(&stats)),
+            problems_suffix(&summary::quad_problems(stats)),
         );
     }
     Ok(())
+}
+
+/// Step 1 of [`quad_map`]: the extraction (`done_before`, or made
+/// here), its validity and the last checks ([`crate::verify`]), with the
+/// topology compared.
+fn extract_quads(
+    map: &dualex_map::TriMap,
+    name: &str,
+    a: &QuadArgs,
+    g: &Global,
+    done_before: Option<dualex_quad::Extracted>,
+    laps: &mut timing::Laps,
+) -> Result<(dualex_quad::Extracted, topo::Comparison), CliError> {
+    let ex = match done_before {
+        // the same map, extracted with the same options already
+        Some(x) => x,
+        None => dualex_quad::extract_full(map, &quad_options(a, g))
+            .map_err(|e| e.in_file(name.to_string()))?,
+    };
+    laps.lap("extract");
+    let rep = dualex_check::check_quad_mesh(ex.mesh.positions.len(), &ex.mesh.cells);
+    laps.lap("check");
+    let topology = topo::Comparison {
+        input: topo::surface_shape(map.positions.len(), &map.simplices),
+        output: topo::quad_shape(&rep),
+    };
+    let out = verify::Output {
+        cell: "quad",
+        cells: ex.mesh.cells.len(),
+        nodes: ex.stats.nodes,
+        measure: verify::measure(map),
+        topology,
+    };
+    verify::before_writing(
+        name,
+        &out,
+        rep.errors(),
+        &ex.stats.sanitize,
+        a.extract.strict,
+    )?;
+    Ok((ex, topology))
+}
+
+/// The `--png` picture written (made in memory before), or the warning
+/// that the mesh is empty.
+fn write_picture(a: &QuadArgs, png: Option<&[u8]>) -> Result<(), CliError> {
+    if let (Some(path), Some(bytes)) = (&a.png, png) {
+        outputs::write_png(path, bytes)?;
+    } else if let Some(path) = &a.png {
+        eprintln!(
+            "dualex: warning: {}: not written: the mesh is empty",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// The stats JSON of an extraction: its own, the topology compared, the
+/// geometric stage's report and time, and the caller's section.
+fn stats_json(
+    mut json: serde_json::Value,
+    topology: &topo::Comparison,
+    geo: &dualex_geom::Report,
+    extra: Option<(&str, serde_json::Value)>,
+) -> serde_json::Value {
+    verify::add_to_stats(&mut json, topology);
+    if let Some(obj) = json.as_object_mut() {
+        obj.insert("geometry".to_string(), geo.to_json());
+        if let Some(t) = obj.get_mut("time_ms").and_then(|t| t.as_object_mut()) {
+            t.insert("geometry".to_string(), geo.time_ms.into());
+        }
+        if let Some((key, value)) = extra {
+            obj.insert(key.to_string(), value);
+        }
+    }
+    json
 }
 
 /// `--uv` with an output format that cannot carry per-corner map
@@ -255,88 +260,33 @@ pub(crate) fn refuse_uv(output: &Path) {
 }
 
 /// `dualex hex`.
-pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
+pub fn hex(a: &HexArgs, g: &Global) -> Result<(), CliError> {
     let x = &a.extract;
     check_outputs(&a.output, dualex_io::HEX_MESH_EXTENSIONS, x, None)?;
     let name = a.input.display().to_string();
     let mut laps = timing::Laps::start();
-    let map = dualex_io::read_tet_map(&a.input).map_err(|e| e.to_string())?;
+    let map = dualex_io::read_tet_map(&a.input)?;
     laps.lap("read");
-    let opts = dualex_hex::HexOptions {
-        transitions: dualex_map::TransitionOptions {
-            round: x.round.round,
-            ..Default::default()
-        },
-        seed: x.seed,
-        grid_offset: x.grid_offset,
-        ..dualex_hex::HexOptions::default()
-    };
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting hexes");
-    let (mut mesh, stats) =
-        dualex_hex::extract(&map, &opts).map_err(|e| e.in_file(name.clone()).to_string())?;
-    laps.lap("extract");
-    // combinatorial validity (hexes of a messy map may be geometrically
-    // inverted: vertices sit on noisy preimages)
-    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
-    laps.lap("check");
-    if !rep.is_valid() {
-        return Err(format!(
-            "{name}: could not make a valid hex mesh ({}); nothing written",
-            rep.errors().join("; ")
-        ));
-    }
-    let topology = topo::Comparison {
-        input: topo::tet_shape(map.positions.len(), &map.simplices),
-        output: topo::hex_shape(&rep),
-    };
-    let summary = verify::Output {
-        cell: "hex",
-        cells: mesh.cells.len(),
-        nodes: stats.nodes,
-        measure: verify::measure(&map),
-        topology,
-    };
-    verify::last_check(&name, &summary, x.strict)?;
-    verify::sanitize_check(&name, &stats.sanitize, x.strict)?;
+    // 1. extracted, checked
+    let (mut mesh, stats, topology) = extract_hexes(&map, &name, x, &mut laps)?;
+    // 2. the geometric stage
     progress.stage("geometry");
     let geo = geometry::hexes(&mut mesh, &map, &x.geometry);
     laps.lap("geometry");
     geometry::check(&name, &geo, ("hex", "hexes"), x.strict)?;
+    // 3. the mesh written, then the stats
     progress.stage("writing");
-    dualex_io::write_hex_mesh(&a.output, &mesh).map_err(|e| e.to_string())?;
+    dualex_io::write_hex_mesh(&a.output, &mesh)?;
     laps.lap("write");
     drop(progress);
-    let mut json = stats.to_json();
-    verify::add_to_stats(&mut json, &topology);
-    if let Some(obj) = json.as_object_mut() {
-        obj.insert("geometry".to_string(), geo.to_json());
-        if let Some(t) = obj.get_mut("time_ms").and_then(|t| t.as_object_mut()) {
-            t.insert("geometry".to_string(), geo.time_ms.into());
-        }
-    }
+    let json = stats_json(stats.to_json(), &topology, &geo, None);
     finish_stats(x, g, &json, &laps, &stats.time_ms)?;
-    warn_rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    // 4. the warnings and the summary line
+    warnings::rounded(g, stats.snapped_transitions, stats.max_transition_residual);
     geometry::warn(&geo, ("hex", "hexes"));
-    if stats.columns.holes > 0 {
-        // printed under -q too: the output is not the map's own mesh
-        let c = &stats.columns;
-        eprintln!(
-            "dualex: warning: {} through {} that hexes cannot represent (singular edges through dual nodes) {} filled, and {} split along {} between them (local repair on columns, as in 2D)",
-            count(c.holes, "hole", "holes"),
-            count(c.layers, "layer", "layers"),
-            summary::plural(c.holes, "was", "were"),
-            count(c.split, "column", "columns"),
-            count(c.paths, "path", "paths"),
-        );
-    }
-    if stats.open_interior_faces > 0 {
-        // loud: printed even with -q (a crack is a wrong mesh, not noise)
-        eprintln!(
-            "dualex: WARNING: {} left open (walks lost at singular edges: cracks, not input boundary); see \"holes\" in the stats",
-            count(stats.open_interior_faces, "interior face", "interior faces")
-        );
-    }
+    warnings::hex_repairs(&stats);
     if !g.quiet {
         eprintln!(
             "dualex: done: {}, {}{} -> {}{}",
@@ -350,6 +300,44 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), String> {
     Ok(())
 }
 
+/// Step 1 of [`hex`]: the extraction, its combinatorial validity (hexes
+/// of a messy map may be geometrically inverted: vertices sit on noisy
+/// preimages) and the last checks ([`crate::verify`]), with the topology
+/// compared.
+fn extract_hexes(
+    map: &dualex_map::TetMap,
+    name: &str,
+    x: &ExtractArgs,
+    laps: &mut timing::Laps,
+) -> Result<(dualex_map::HexMesh, dualex_hex::HexStats, topo::Comparison), CliError> {
+    let opts = dualex_hex::HexOptions {
+        transitions: dualex_map::TransitionOptions {
+            round: x.round.round,
+            ..Default::default()
+        },
+        seed: x.seed,
+        grid_offset: x.grid_offset,
+        ..dualex_hex::HexOptions::default()
+    };
+    let (mesh, stats) = dualex_hex::extract(map, &opts).map_err(|e| e.in_file(name.to_string()))?;
+    laps.lap("extract");
+    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    laps.lap("check");
+    let topology = topo::Comparison {
+        input: topo::tet_shape(map.positions.len(), &map.simplices),
+        output: topo::hex_shape(&rep),
+    };
+    let out = verify::Output {
+        cell: "hex",
+        cells: mesh.cells.len(),
+        nodes: stats.nodes,
+        measure: verify::measure(map),
+        topology,
+    };
+    verify::before_writing(name, &out, rep.errors(), &stats.sanitize, x.strict)?;
+    Ok((mesh, stats, topology))
+}
+
 /// Writes `--stats`, and prints the `-v` table.
 fn finish_stats(
     x: &ExtractArgs,
@@ -357,7 +345,7 @@ fn finish_stats(
     json: &serde_json::Value,
     laps: &timing::Laps,
     stages: &[(String, f64)],
-) -> Result<(), String> {
+) -> Result<(), CliError> {
     if let Some(s) = &x.stats {
         outputs::write_stats(s, json)?;
     }
@@ -368,37 +356,4 @@ fn finish_stats(
         );
     }
     Ok(())
-}
-
-/// The warning for valence-1 and 2 vertices index fairing could not
-/// merge (collapsed, dissolved), printed under -q too: such a repair is
-/// where a messy map's mesh may differ from the map's own (a singularity
-/// split by the untangling, docs/messy-cases.md).
-fn warn_degenerate(folded: usize, doublets: usize) {
-    let parts: Vec<String> = [
-        (folded, "folded corner", "folded corners", "collapsed"),
-        (doublets, "doublet", "doublets", "dissolved"),
-    ]
-    .into_iter()
-    .filter(|p| p.0 > 0)
-    .map(|(n, one, many, done)| format!("{} {done}", count(n, one, many)))
-    .collect();
-    if !parts.is_empty() {
-        eprintln!(
-            "dualex: warning: {}: degenerate vertices that index fairing found no partner for (the mesh may differ from the map's there); see \"folded_corners_collapsed\" and \"doublets\" in the stats",
-            parts.join(" and ")
-        );
-    }
-}
-
-/// The warning for transitions rounded without `--round-transitions`
-/// (or with it): how many, and the largest residual.
-fn warn_rounded(g: &Global, rounded: usize, max_residual: f64) {
-    if rounded > 0 && !g.quiet {
-        eprintln!(
-            "dualex: warning: rounded {} that {} not integral (largest residual {max_residual:.3e}); the map is not exactly grid-preserving",
-            count(rounded, "transition translation", "transition translations"),
-            summary::plural(rounded, "was", "were"),
-        );
-    }
 }

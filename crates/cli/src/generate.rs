@@ -8,6 +8,7 @@
 //! `6·N³` tets for the blocks, half a map unit per grid step).
 
 use crate::args::{usage_error, GenerateArgs, Global};
+use crate::error::CliError;
 use crate::generate_from_mesh::{self, Input};
 use crate::summary::count;
 use dualex_gen::from_mesh::meshes;
@@ -54,7 +55,7 @@ fn describe(name: &str) -> &'static str {
 }
 
 /// `dualex generate`.
-pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), String> {
+pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), CliError> {
     if a.list {
         list(a.seed);
         return Ok(());
@@ -88,7 +89,7 @@ pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), String> {
     }
     if let Some(map) = tri_map(name, a)? {
         crate::outputs::check(out, Some(dualex_io::TRI_MAP_EXTENSIONS))?;
-        dualex_io::write_tri_map(out, &map).map_err(|e| e.to_string())?;
+        dualex_io::write_tri_map(out, &map)?;
         if !g.quiet {
             let n = map.len();
             eprintln!(
@@ -99,10 +100,9 @@ pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), String> {
         }
         return Ok(());
     }
-    let map =
-        tet_map(name, a)?.ok_or_else(|| format!("generate: unknown map {name:?} (see --list)"))?;
+    let map = tet_map(name, a)?.ok_or_else(|| CliError::UnknownMap(name.clone()))?;
     crate::outputs::check(out, Some(dualex_io::TET_MAP_EXTENSIONS))?;
-    dualex_io::write_tet_map(out, &map).map_err(|e| e.to_string())?;
+    dualex_io::write_tet_map(out, &map)?;
     if !g.quiet {
         eprintln!(
             "dualex: {name}: {} -> {}",
@@ -119,7 +119,7 @@ fn refuse_size(a: &GenerateArgs, what: &str) {
     }
 }
 
-fn sized(name: &str, a: &GenerateArgs) -> Result<Option<usize>, String> {
+fn sized(name: &str, a: &GenerateArgs) -> Result<Option<usize>, CliError> {
     match a.size {
         Some(_) if !SIZEABLE.contains(&name) => {
             if dualex_gen::by_name(name, a.seed).is_some()
@@ -142,7 +142,7 @@ fn span(r: usize) -> (f64, f64) {
     (0.2, 0.2 + r as f64 / 2.0)
 }
 
-fn tri_map(name: &str, a: &GenerateArgs) -> Result<Option<TriMap>, String> {
+fn tri_map(name: &str, a: &GenerateArgs) -> Result<Option<TriMap>, CliError> {
     let Some(r) = sized(name, a)? else {
         return Ok(dualex_gen::by_name(name, a.seed).map(|(m, _)| m));
     };
@@ -162,7 +162,7 @@ fn tri_map(name: &str, a: &GenerateArgs) -> Result<Option<TriMap>, String> {
     })
 }
 
-fn tet_map(name: &str, a: &GenerateArgs) -> Result<Option<TetMap>, String> {
+fn tet_map(name: &str, a: &GenerateArgs) -> Result<Option<TetMap>, CliError> {
     let Some(r) = sized(name, a)? else {
         return Ok(dualex_gen::by_name_3d(name, a.seed).map(|(m, _)| m));
     };
@@ -217,7 +217,7 @@ fn write_surface(
     s: &dualex_remesh::Surface,
     out: &std::path::Path,
     g: &Global,
-) -> Result<(), String> {
+) -> Result<(), CliError> {
     use std::fmt::Write as _;
     crate::outputs::check(out, Some(&["obj"]))?;
     let mut text = format!("# {name}: a plain surface (dualex generate)\n");
@@ -227,7 +227,7 @@ fn write_surface(
     for t in &s.triangles {
         let _ = writeln!(text, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
     }
-    dualex_io::write_text(out, &text).map_err(|e| e.to_string())?;
+    dualex_io::write_text(out, &text)?;
     if !g.quiet {
         eprintln!(
             "dualex: {name}: {} -> {}",

@@ -5,8 +5,9 @@
 //! Every file is written atomically; errors are one line naming the file.
 
 use crate::args::{GenerateArgs, Global};
+use crate::error::{CliError, Need};
 use crate::summary::plural;
-use dualex_gen::from_mesh::{from_hexes, from_quads, FromMeshOptions};
+use dualex_gen::from_mesh::{from_hexes, from_quads, FromMeshError, FromMeshOptions};
 use dualex_map::{HexMesh, QuadMesh};
 use std::path::Path;
 
@@ -19,21 +20,23 @@ pub enum Input {
 }
 
 /// Reads MESH: `.mesh` hexes, `.obj` / `.ply` quads (other faces refused).
-pub fn read(path: &Path) -> Result<Input, String> {
+pub fn read(path: &Path) -> Result<Input, CliError> {
     let name = path.display().to_string();
     let ext = dualex_io::lower_extension(path);
     if ext == "mesh" {
-        let m = dualex_io::read_hex_mesh(path).map_err(|e| e.to_string())?;
+        let m = dualex_io::read_hex_mesh(path)?;
         return Ok(Input::Hexes(m, name));
     }
-    let poly = dualex_io::read_polygon_mesh(path).map_err(|e| e.to_string())?;
+    let poly = dualex_io::read_polygon_mesh(path)?;
     let mut cells = Vec::with_capacity(poly.faces.len());
     for (i, f) in poly.faces.iter().enumerate() {
         let [a, b, c, d] = f[..] else {
-            return Err(format!(
-                "{name}: face {i} has {} vertices; --from-mesh needs a quad mesh",
-                f.len()
-            ));
+            return Err(CliError::Face {
+                file: name,
+                face: i,
+                sides: f.len(),
+                need: Need::FromMesh,
+            });
         };
         cells.push([a, b, c, d]);
     }
@@ -68,7 +71,7 @@ fn json_of(pairs: impl Iterator<Item = (u32, usize)>) -> serde_json::Value {
 }
 
 /// Generates and writes (module docs).
-pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<(), String> {
+pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<(), CliError> {
     let o = options(args);
     let json_path = out.with_extension("expected.json");
     let (map_exts, refined): (&'static [&'static str], _) = match &input {
@@ -84,7 +87,7 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
     crate::outputs::check_all(&[(out, Some(map_exts)), (&json_path, None), (&refined, None)])?;
     let (what, count, json) = match &input {
         Input::Quads(m, name) => {
-            let gen = from_quads(m, &o).map_err(|e| format!("{name}: {e}"))?;
+            let gen = from_quads(m, &o).map_err(|error| from_mesh(name, error))?;
             let e = &gen.expected;
             let json = serde_json::json!({
                 "dimension": 2,
@@ -96,8 +99,8 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
                 "euler": e.euler,
                 "boundary_loops": e.boundary_loops,
             });
-            dualex_io::write_tri_map(out, &gen.map).map_err(|e| e.to_string())?;
-            dualex_io::write_quad_mesh(&refined, &gen.refined).map_err(|e| e.to_string())?;
+            dualex_io::write_tri_map(out, &gen.map)?;
+            dualex_io::write_quad_mesh(&refined, &gen.refined)?;
             (
                 plural(gen.map.len(), "triangle", "triangles"),
                 gen.map.len(),
@@ -105,7 +108,7 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
             )
         }
         Input::Hexes(m, name) => {
-            let gen = from_hexes(m, &o).map_err(|e| format!("{name}: {e}"))?;
+            let gen = from_hexes(m, &o).map_err(|error| from_mesh(name, error))?;
             let e = &gen.expected;
             let json = serde_json::json!({
                 "dimension": 3,
@@ -114,13 +117,16 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
                 "boundary_components": e.boundary_components,
                 "boundary_euler": e.boundary_euler,
             });
-            dualex_io::write_tet_map(out, &gen.map).map_err(|e| e.to_string())?;
-            dualex_io::write_hex_mesh(&refined, &gen.refined).map_err(|e| e.to_string())?;
+            dualex_io::write_tet_map(out, &gen.map)?;
+            dualex_io::write_hex_mesh(&refined, &gen.refined)?;
             (plural(gen.map.len(), "tet", "tets"), gen.map.len(), json)
         }
     };
-    let text = serde_json::to_string_pretty(&json).map_err(|e| format!("bug: {e}"))?;
-    dualex_io::write_text(&json_path, &text).map_err(|e| e.to_string())?;
+    let text = serde_json::to_string_pretty(&json).map_err(|e| CliError::Bug {
+        what: "",
+        reason: e.to_string(),
+    })?;
+    dualex_io::write_text(&json_path, &text)?;
     if !g.quiet {
         eprintln!(
             "dualex: {count} {what} -> {} (expected: {})",
@@ -129,4 +135,12 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
         );
     }
     Ok(())
+}
+
+/// The error of making a map from the mesh `name`.
+fn from_mesh(name: &str, error: FromMeshError) -> CliError {
+    CliError::FromMesh {
+        file: name.to_string(),
+        error,
+    }
 }

@@ -4,6 +4,7 @@
 //! for inverted elements left).
 
 use crate::args::GeometryArgs;
+use crate::error::{CliError, Refusal};
 use crate::summary::{count, plural};
 use dualex_geom::Report;
 
@@ -37,14 +38,21 @@ pub fn hexes(mesh: &mut dualex_map::HexMesh, map: &dualex_map::TetMap, a: &Geome
 
 /// Inverted elements left: an error under `strict` (nothing written),
 /// else `Ok` (the warning is [`warn`]'s, after writing).
-pub fn check(name: &str, r: &Report, cell: (&str, &str), strict: bool) -> Result<(), String> {
+pub fn check(
+    name: &str,
+    r: &Report,
+    cell: (&'static str, &'static str),
+    strict: bool,
+) -> Result<(), CliError> {
     let n = r.after.inverted;
     if strict && n > 0 {
-        return Err(format!(
-            "{name}: {} (scaled Jacobian ≤ 0) {} after the geometric stage ({}); nothing written (--strict)",
-            count(n, &format!("inverted {}", cell.0), &format!("inverted {}", cell.1)),
-            plural(n, "remains", "remain"),
-            r.mode,
+        return Err(crate::verify::refused(
+            name,
+            Refusal::Inverted {
+                count: n,
+                cell,
+                mode: r.mode,
+            },
         ));
     }
     Ok(())

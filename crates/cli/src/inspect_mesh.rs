@@ -10,11 +10,12 @@
 use dualex_geom::Summary;
 
 use crate::args::InspectArgs;
+use crate::error::CliError;
 use crate::quality::{elements, hex_quality, quad_quality, Mesh, Normals};
 use crate::{outputs, PNG_SIZE};
 
 /// The report of `mesh` read from `name` (see the module docs).
-pub fn inspect_mesh(mesh: &Mesh, a: &InspectArgs, name: &str) -> Result<(), String> {
+pub fn inspect_mesh(mesh: &Mesh, a: &InspectArgs, name: &str) -> Result<(), CliError> {
     let (values, normals, vertices) = match mesh {
         Mesh::Quads(m) => {
             let (v, n) = quad_quality(m, a.surface.as_deref())?;
@@ -31,7 +32,10 @@ pub fn inspect_mesh(mesh: &Mesh, a: &InspectArgs, name: &str) -> Result<(), Stri
         );
         let bytes =
             dualex_render::quality_histogram_png(&values, &title, PNG_SIZE, PNG_SIZE * 5 / 8)
-                .map_err(|e| format!("{name}: {e}"))?;
+                .map_err(|error| CliError::Render {
+                    file: name.to_string(),
+                    error,
+                })?;
         outputs::write_png(png, &bytes)?;
     }
     if a.json {

@@ -9,6 +9,7 @@
 
 mod args;
 mod commands;
+mod error;
 mod extract;
 mod generate;
 mod generate_from_mesh;
@@ -21,9 +22,11 @@ mod remesh;
 mod summary;
 mod timing;
 mod verify;
+mod warnings;
 
 use args::{Cli, Command, Global, WeldArgs};
 use clap::Parser;
+use error::CliError;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -60,7 +63,7 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("dualex: {}", e.replace('\n', " "));
+            eprintln!("dualex: {}", e.to_string().replace('\n', " "));
             ExitCode::from(1)
         }
     }
@@ -72,8 +75,8 @@ fn read_2d(
     weld: &WeldArgs,
     g: &Global,
     laps: &mut timing::Laps,
-) -> Result<dualex_map::TriMap, String> {
-    let map = dualex_io::read_tri_map(path).map_err(|e| e.to_string())?;
+) -> Result<dualex_map::TriMap, CliError> {
+    let map = dualex_io::read_tri_map(path)?;
     laps.lap("read");
     let map = weld_if(map, weld, g, &path.display().to_string());
     laps.lap("weld");

@@ -6,6 +6,7 @@
 //! nothing written, instead of after the extraction or after the mesh.
 //! `--stats -` writes the JSON to stdout (the summary line is on stderr).
 
+use crate::error::CliError;
 use std::path::Path;
 
 /// The path meaning stdout for `--stats`.
@@ -13,7 +14,7 @@ pub const STDOUT: &str = "-";
 
 /// Checks `path` for a writer accepting `allowed` extensions (any
 /// extension when `None`); `-` (stdout) passes.
-pub fn check(path: &Path, allowed: Option<&'static [&'static str]>) -> Result<(), String> {
+pub fn check(path: &Path, allowed: Option<&'static [&'static str]>) -> Result<(), CliError> {
     if path.as_os_str() == STDOUT {
         return Ok(());
     }
@@ -21,15 +22,15 @@ pub fn check(path: &Path, allowed: Option<&'static [&'static str]>) -> Result<()
         Some(exts) => dualex_io::check_output(path, exts),
         None => dualex_io::check_writable(path),
     }
-    .map_err(|e| e.to_string())
+    .map_err(CliError::Output)
 }
 
 /// Checks every path of `outputs` (module docs); two outputs on one
 /// file are refused too.
-pub fn check_all(outputs: &[(&Path, Option<&'static [&'static str]>)]) -> Result<(), String> {
+pub fn check_all(outputs: &[(&Path, Option<&'static [&'static str]>)]) -> Result<(), CliError> {
     for (k, (p, exts)) in outputs.iter().enumerate() {
         if outputs[..k].iter().any(|(q, _)| q == p) && p.as_os_str() != STDOUT {
-            return Err(format!("{}: named for two outputs", p.display()));
+            return Err(CliError::TwoOutputs(p.to_path_buf()));
         }
         check(p, *exts)?;
     }
@@ -37,19 +38,22 @@ pub fn check_all(outputs: &[(&Path, Option<&'static [&'static str]>)]) -> Result
 }
 
 /// Writes the stats JSON to `path` (`-`: stdout).
-pub fn write_stats(path: &Path, json: &serde_json::Value) -> Result<(), String> {
-    let text = serde_json::to_string_pretty(json).map_err(|e| format!("bug: stats: {e}"))?;
+pub fn write_stats(path: &Path, json: &serde_json::Value) -> Result<(), CliError> {
+    let text = serde_json::to_string_pretty(json).map_err(|e| CliError::Bug {
+        what: "stats: ",
+        reason: e.to_string(),
+    })?;
     if path.as_os_str() == STDOUT {
         use std::io::Write;
         let mut out = std::io::stdout().lock();
         return writeln!(out, "{text}")
             .and_then(|()| out.flush())
-            .map_err(|e| format!("stdout: {e}"));
+            .map_err(CliError::Stdout);
     }
-    dualex_io::write_text(path, &text).map_err(|e| e.to_string())
+    Ok(dualex_io::write_text(path, &text)?)
 }
 
 /// Writes PNG bytes to `path`.
-pub fn write_png(path: &Path, png: &[u8]) -> Result<(), String> {
-    dualex_io::write_bytes(path, png).map_err(|e| e.to_string())
+pub fn write_png(path: &Path, png: &[u8]) -> Result<(), CliError> {
+    Ok(dualex_io::write_bytes(path, png)?)
 }

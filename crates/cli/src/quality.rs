@@ -24,6 +24,10 @@ use dualex_geom::Reference;
 use dualex_map::{HexMesh, QuadMesh};
 use rayon::prelude::*;
 
+use crate::error::{CliError, Need};
+use dualex_render::valence::check_cells;
+use dualex_render::RenderError;
+
 /// A mesh read for its quality.
 pub enum Mesh {
     /// A quad mesh.
@@ -72,44 +76,46 @@ impl Normals {
 /// Reads a quad or hex mesh; `what` (the subcommand) is named in the
 /// errors. Errors: an unsupported extension, a face other than a quad,
 /// an index out of range, a position not finite.
-pub fn read_mesh(path: &Path, what: &str) -> Result<Mesh, String> {
+pub fn read_mesh(path: &Path, what: &'static str) -> Result<Mesh, CliError> {
     let name = path.display().to_string();
     let mesh = match dualex_io::lower_extension(path).as_str() {
-        "mesh" => Mesh::Hexes(dualex_io::read_hex_mesh(path).map_err(|e| e.to_string())?),
-        "vtk" => match dualex_io::read_vtk(path).map_err(|e| e.to_string())? {
+        "mesh" => Mesh::Hexes(dualex_io::read_hex_mesh(path)?),
+        "vtk" => match dualex_io::read_vtk(path)? {
             dualex_io::VtkMesh::Quads(m) => Mesh::Quads(m),
             dualex_io::VtkMesh::Hexes(m) => Mesh::Hexes(m),
         },
         "obj" | "ply" => {
-            let poly = dualex_io::read_polygon_mesh(path).map_err(|e| e.to_string())?;
+            let poly = dualex_io::read_polygon_mesh(path)?;
             Mesh::Quads(quads_of(poly, &name, what)?)
         }
         ext => {
-            return Err(format!(
-                "{name}: {what} reads quad meshes (.obj, .ply, .vtk) and hex meshes (.mesh, .vtk), not `.{ext}`"
-            ))
+            return Err(CliError::NotAMesh {
+                file: name,
+                what,
+                ext: ext.to_string(),
+            })
         }
     };
     match &mesh {
-        Mesh::Quads(m) => check(&m.positions, &m.cells, "quad"),
-        Mesh::Hexes(m) => check(&m.positions, &m.cells, "hex"),
+        Mesh::Quads(m) => check_cells(&m.positions, &m.cells, "quad"),
+        Mesh::Hexes(m) => check_cells(&m.positions, &m.cells, "hex"),
     }
-    .map_err(|e| format!("{name}: {e}"))?;
+    .map_err(|error| CliError::Mesh { file: name, error })?;
     Ok(mesh)
 }
 
 /// What `dualex inspect` reads at `path`: a mesh (`Some`), or a map
 /// (`None`: `.hexex`/`.ovm`, an `.obj`/`.ply` of triangles, or one the
 /// polygon reader refuses, whose error the map reader then gives).
-pub fn inspected_mesh(path: &Path) -> Result<Option<Mesh>, String> {
+pub fn inspected_mesh(path: &Path) -> Result<Option<Mesh>, CliError> {
     match dualex_io::lower_extension(path).as_str() {
         "mesh" | "vtk" => read_mesh(path, "inspect").map(Some),
         "obj" | "ply" => match dualex_io::read_polygon_mesh(path) {
             Ok(poly) if poly.faces.iter().any(|f| f.len() != 3) => {
                 let name = path.display().to_string();
                 let quads = quads_of(poly, &name, "inspect")?;
-                check(&quads.positions, &quads.cells, "quad")
-                    .map_err(|e| format!("{name}: {e}"))?;
+                check_cells(&quads.positions, &quads.cells, "quad")
+                    .map_err(|error| CliError::Mesh { file: name, error })?;
                 Ok(Some(Mesh::Quads(quads)))
             }
             _ => Ok(None),
@@ -119,19 +125,20 @@ pub fn inspected_mesh(path: &Path) -> Result<Option<Mesh>, String> {
 }
 
 /// The quads of a polygon mesh whose faces all have 4 vertices.
-fn quads_of(poly: dualex_io::PolyMesh, name: &str, what: &str) -> Result<QuadMesh, String> {
+fn quads_of(
+    poly: dualex_io::PolyMesh,
+    name: &str,
+    what: &'static str,
+) -> Result<QuadMesh, CliError> {
     let mut cells = Vec::with_capacity(poly.faces.len());
     for (i, f) in poly.faces.iter().enumerate() {
         let [a, b, c, d] = f[..] else {
-            return Err(format!(
-                "{name}: face {i} has {} vertices; {what} reads quad meshes (4 per face){}",
-                f.len(),
-                if what == "inspect" {
-                    " and triangle maps"
-                } else {
-                    ""
-                }
-            ));
+            return Err(CliError::Face {
+                file: name.to_string(),
+                face: i,
+                sides: f.len(),
+                need: Need::Quads(what),
+            });
         };
         cells.push([a, b, c, d]);
     }
@@ -139,30 +146,6 @@ fn quads_of(poly: dualex_io::PolyMesh, name: &str, what: &str) -> Result<QuadMes
         positions: poly.positions,
         cells,
     })
-}
-
-/// Every position finite, every index in range; the error names the
-/// first offender.
-fn check<const K: usize>(
-    positions: &[[f64; 3]],
-    cells: &[[u32; K]],
-    what: &str,
-) -> Result<(), String> {
-    if let Some(v) = positions
-        .iter()
-        .position(|p| p.iter().any(|x| !x.is_finite()))
-    {
-        return Err(format!("vertex {v}: position is not finite"));
-    }
-    let nv = positions.len();
-    for (e, cell) in cells.iter().enumerate() {
-        if let Some(&v) = cell.iter().find(|&&v| v as usize >= nv) {
-            return Err(format!(
-                "{what} {e} refers to vertex {v}, but there are {nv} vertices"
-            ));
-        }
-    }
-    Ok(())
 }
 
 /// The scaled Jacobian of every hex.
@@ -176,7 +159,7 @@ pub fn hex_quality(mesh: &HexMesh) -> Vec<f64> {
 pub fn quad_quality(
     mesh: &QuadMesh,
     surface: Option<&Path>,
-) -> Result<(Vec<f64>, Normals), String> {
+) -> Result<(Vec<f64>, Normals), CliError> {
     let (normals, kind) = match surface {
         Some(path) => (surface_normals(mesh, path)?, Normals::Surface),
         None => (own_normals(mesh), Normals::Own),
@@ -185,16 +168,18 @@ pub fn quad_quality(
 }
 
 /// Per quad, the normal of the surface triangle nearest its centre.
-fn surface_normals(mesh: &QuadMesh, path: &Path) -> Result<Vec<[f64; 3]>, String> {
+fn surface_normals(mesh: &QuadMesh, path: &Path) -> Result<Vec<[f64; 3]>, CliError> {
     let name = path.display().to_string();
-    let poly = dualex_io::read_polygon_mesh(path).map_err(|e| format!("--surface: {e}"))?;
+    let poly = dualex_io::read_polygon_mesh(path).map_err(CliError::SurfaceRead)?;
     let mut triangles = Vec::with_capacity(poly.faces.len());
     for (i, f) in poly.faces.iter().enumerate() {
         let [a, b, c] = f[..] else {
-            return Err(format!(
-                "--surface: {name}: face {i} has {} vertices; the surface must be triangles",
-                f.len()
-            ));
+            return Err(CliError::Face {
+                file: name,
+                face: i,
+                sides: f.len(),
+                need: Need::SurfaceTriangles,
+            });
         };
         triangles.push([a, b, c]);
     }
@@ -203,9 +188,10 @@ fn surface_normals(mesh: &QuadMesh, path: &Path) -> Result<Vec<[f64; 3]>, String
         .iter()
         .position(|p| p.iter().any(|x| !x.is_finite()))
     {
-        return Err(format!(
-            "--surface: {name}: vertex {v}: position is not finite"
-        ));
+        return Err(CliError::Surface {
+            file: name,
+            error: RenderError::VertexNotFinite { vertex: v },
+        });
     }
     let reference = Reference::surface(&poly.positions, &triangles, 180.0);
     let normals = mesh

@@ -11,6 +11,7 @@
 //! refused output writes no mesh.
 
 use crate::args::{ExtractArgs, Global, QuadArgs, RemeshArgs, RoundArgs, RoundingArg, WeldArgs};
+use crate::error::CliError;
 use crate::summary::count;
 use crate::{outputs, timing, PNG_SIZE};
 use dualex::{GridOffset, Quantization, Target};
@@ -18,11 +19,78 @@ use dualex::{GridOffset, Quantization, Target};
 /// The surface `dualex remesh` runs on without INPUT.
 const EMBEDDED_SURFACE: &str = "a bumpy sphere of 5120 triangles";
 
-/// `dualex remesh`.
-pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
+/// `dualex remesh`: the outputs checked, the surface read, the map made
+/// (written and pictured as it goes), the extraction handed on.
+pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), CliError> {
     if a.uv {
         crate::extract::refuse_uv(&a.output);
     }
+    // 1. every output checked first
+    check_outputs(a)?;
+    let mut laps = timing::Laps::start();
+    // 2. the surface read
+    let (positions, triangles, name) = read_input(a, g)?;
+    laps.lap("read");
+    // 3. weld, map, the extraction's count, the geometric stage, at
+    // another grid position while quads are left inverted (the library's
+    // pipeline, as Python's `remesh` runs it); each map is described,
+    // written and pictured before its checks, so that a refused one can
+    // be inspected
+    let mut written: Result<(), CliError> = Ok(());
+    let mut last = 0;
+    let mut show = |k: usize, made: &dualex::RemeshedMap| -> Result<(), dualex::Error> {
+        last = k;
+        describe(&name, k, made, a, g);
+        written = write_map(&made.map, a, &name);
+        // (the writer's own message is the run's, below; not a remesh bug,
+        // which would send the run to the next grid position)
+        written
+            .as_ref()
+            .map_err(|e| dualex::Error::Input(dualex::InputError::new(e.to_string())))?;
+        Ok(())
+    };
+    let staged = dualex::remesh_staged(&positions, &triangles, &options(a), &mut show);
+    written?;
+    let staged = staged.map_err(|error| CliError::Library {
+        file: name.clone(),
+        error,
+    })?;
+    laps.lap("map");
+    if staged.attempt != last {
+        // a later attempt was written last: the map kept once more
+        write_map(&staged.map, a, &name)?;
+    }
+    // 4. the extraction kept, checked and written as `dualex quad` does
+    let dualex::Staged {
+        map,
+        stats,
+        extracted,
+        geometry,
+        ..
+    } = staged;
+    let done = if a.input.is_some() {
+        "done"
+    } else {
+        "embedded surface"
+    };
+    crate::extract::quad_map(
+        &map,
+        &name,
+        done,
+        &quad_args(a),
+        g,
+        laps,
+        Some(crate::extract::Before {
+            section: ("remesh", stats.to_json()),
+            extracted: Some(extracted),
+            geometry,
+        }),
+    )
+}
+
+/// Step 1 of [`remesh`]: the mesh, `--map-out`, `--png` and `--stats`
+/// checked ([`outputs::check_all`]).
+fn check_outputs(a: &RemeshArgs) -> Result<(), CliError> {
     let mut all = vec![(a.output.as_path(), Some(dualex_io::QUAD_MESH_EXTENSIONS))];
     if let Some(m) = &a.map_out {
         all.push((m.as_path(), Some(dualex_io::TRI_MAP_EXTENSIONS)));
@@ -30,19 +98,23 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
     for p in [&a.png, &a.stats].into_iter().flatten() {
         all.push((p.as_path(), None));
     }
-    outputs::check_all(&all)?;
-    let mut laps = timing::Laps::start();
-    let (positions, triangles, name) = match &a.input {
+    outputs::check_all(&all)
+}
+
+/// Step 2 of [`remesh`]: the surface of INPUT (OBJ or PLY; polygons
+/// fanned into triangles) or the embedded one, with its name.
+fn read_input(a: &RemeshArgs, g: &Global) -> Result<Input, CliError> {
+    match &a.input {
         Some(p) => {
             let name = p.display().to_string();
-            let read = dualex::read_surface(p).map_err(|e| e.to_string())?;
+            let read = dualex::read_surface(p).map_err(CliError::ReadSurface)?;
             if read.fanned > 0 && !g.quiet {
                 eprintln!(
                     "dualex: {name}: {} split into triangles",
                     count(read.fanned, "polygon", "polygons")
                 );
             }
-            (read.positions, read.triangles, name)
+            Ok((read.positions, read.triangles, name))
         }
         None => {
             if !g.quiet {
@@ -51,11 +123,17 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
                 );
             }
             let (p, t) = dualex_remesh::shapes::embedded();
-            (p, t, "embedded surface".to_string())
+            Ok((p, t, "embedded surface".to_string()))
         }
-    };
-    laps.lap("read");
-    let opts = dualex::RemeshOptions {
+    }
+}
+
+/// A surface read: positions, triangles, the name said.
+type Input = (Vec<[f64; 3]>, Vec<[u32; 3]>, String);
+
+/// The library's options of `remesh` from the arguments.
+fn options(a: &RemeshArgs) -> dualex::RemeshOptions {
+    dualex::RemeshOptions {
         map: dualex::MapOptions {
             target: match (a.scale, a.quads) {
                 (Some(s), _) => Target::EdgeLength(s),
@@ -78,8 +156,13 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             strict: a.strict,
             geometry: a.geometry.smooth_by_default().options(),
         },
-    };
-    let quad = QuadArgs {
+    }
+}
+
+/// The arguments of `dualex quad` that `remesh` hands its extraction to
+/// ([`crate::extract::quad_map`]).
+fn quad_args(a: &RemeshArgs) -> QuadArgs {
+    QuadArgs {
         input: a.input.clone(),
         output: a.output.clone(),
         png: None,
@@ -96,58 +179,7 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), String> {
             geometry: a.geometry.smooth_by_default(),
         },
         weld: WeldArgs { no_weld: true },
-    };
-    // weld, map, the extraction's count, the geometric stage, at another
-    // grid position while quads are left inverted (the library's
-    // pipeline, as Python's `remesh` runs it); each map is described,
-    // written and pictured before its checks, so that a refused one can
-    // be inspected
-    let mut written: Result<(), String> = Ok(());
-    let mut last = 0;
-    let mut show = |k: usize, made: &dualex::RemeshedMap| -> Result<(), dualex::Error> {
-        last = k;
-        describe(&name, k, made, a, g);
-        written = write_map(&made.map, a, &name);
-        // (the writer's own message is the run's, below; not a remesh bug,
-        // which would send the run to the next grid position)
-        written
-            .as_ref()
-            .map_err(|e| dualex::Error::Input(dualex::InputError::new(e.clone())))?;
-        Ok(())
-    };
-    let staged = dualex::remesh_staged(&positions, &triangles, &opts, &mut show);
-    written?;
-    let staged = staged.map_err(|e| format!("{name}: {e}"))?;
-    laps.lap("map");
-    if staged.attempt != last {
-        // a later attempt was written last: the map kept once more
-        write_map(&staged.map, a, &name)?;
     }
-    let dualex::Staged {
-        map,
-        stats,
-        extracted,
-        geometry,
-        ..
-    } = staged;
-    let done = if a.input.is_some() {
-        "done"
-    } else {
-        "embedded surface"
-    };
-    crate::extract::quad_map(
-        &map,
-        &name,
-        done,
-        &quad,
-        g,
-        laps,
-        Some(crate::extract::Before {
-            section: ("remesh", stats.to_json()),
-            extracted: Some(extracted),
-            geometry,
-        }),
-    )
 }
 
 /// What the map of attempt `k` is (stderr, unless quiet).
@@ -191,13 +223,16 @@ fn describe(name: &str, k: usize, made: &dualex::RemeshedMap, a: &RemeshArgs, g:
 }
 
 /// The map (`--map-out`) and its picture (`--png`), when asked.
-fn write_map(map: &dualex::TriMap, a: &RemeshArgs, name: &str) -> Result<(), String> {
+fn write_map(map: &dualex::TriMap, a: &RemeshArgs, name: &str) -> Result<(), CliError> {
     if let Some(path) = &a.map_out {
-        dualex_io::write_tri_map(path, map).map_err(|e| e.to_string())?;
+        dualex_io::write_tri_map(path, map)?;
     }
     if let Some(path) = &a.png {
         let bytes =
-            dualex_render::map_png_bytes(map, PNG_SIZE).map_err(|e| format!("{name}: {e}"))?;
+            dualex_render::map_png_bytes(map, PNG_SIZE).map_err(|error| CliError::Render {
+                file: name.to_string(),
+                error,
+            })?;
         outputs::write_png(path, &bytes)?;
     }
     Ok(())

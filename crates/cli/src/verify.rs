@@ -23,6 +23,7 @@
 //!   after every round, singular vertices on an iso, singular vertices not
 //!   snapped): the mesh near them may be wrong ([`sanitize_check`]).
 
+use crate::error::{CliError, Refusal};
 use dualex_check::topology::Comparison;
 use dualex_map::sanitize_report::SanitizeReport;
 use dualex_map::SimplexMap;
@@ -34,9 +35,9 @@ pub fn measure<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> f64 {
 }
 
 /// What the extraction gave, for [`last_check`].
-pub struct Output<'a> {
+pub struct Output {
     /// `"quad"` or `"hex"` (names the cells in messages).
-    pub cell: &'a str,
+    pub cell: &'static str,
     /// Cells written.
     pub cells: usize,
     /// Nodes the extraction found.
@@ -48,19 +49,24 @@ pub struct Output<'a> {
 }
 
 /// Applies the rules of the module docs; prints the warnings.
-pub fn last_check(name: &str, out: &Output, strict: bool) -> Result<(), String> {
+pub fn last_check(name: &str, out: &Output, strict: bool) -> Result<(), CliError> {
     let (i, o) = (out.topology.input, out.topology.output);
     if out.cells == 0 {
         if out.nodes > 0 {
-            return Err(format!(
-                "{name}: empty output: {} nodes found but no {} survived (all sides unmatched); nothing written",
-                out.nodes, out.cell
+            return Err(refused(
+                name,
+                Refusal::LostCells {
+                    nodes: out.nodes,
+                    cell: out.cell.to_string(),
+                },
             ));
         }
         if out.measure >= 1.0 {
-            return Err(format!(
-                "{name}: empty output: no node found although the map covers {:.3} grid cells (try --grid-offset); nothing written",
-                out.measure
+            return Err(refused(
+                name,
+                Refusal::NoNode {
+                    measure: out.measure,
+                },
             ));
         }
         eprintln!(
@@ -70,16 +76,17 @@ pub fn last_check(name: &str, out: &Output, strict: bool) -> Result<(), String> 
         return Ok(());
     }
     if o.components > i.components {
-        return Err(format!(
-            "{name}: the output has {} components, the input {}: a wrong mesh; nothing written — please report this input",
-            o.components, i.components
+        return Err(refused(
+            name,
+            Refusal::Components {
+                output: o.components,
+                input: i.components,
+            },
         ));
     }
     if let Some(what) = out.topology.mismatch() {
         if strict {
-            return Err(format!(
-                "{name}: the output's topology differs from the input's: {what} (--strict); nothing written"
-            ));
+            return Err(refused(name, Refusal::Topology(what.to_string())));
         }
         // loud: printed even with -q
         eprintln!(
@@ -91,20 +98,43 @@ pub fn last_check(name: &str, out: &Output, strict: bool) -> Result<(), String> 
 
 /// What sanitization left on the dual grid: a warning printed even with
 /// `-q`, an error with `--strict` (nothing written then).
-pub fn sanitize_check(name: &str, rep: &SanitizeReport, strict: bool) -> Result<(), String> {
+pub fn sanitize_check(name: &str, rep: &SanitizeReport, strict: bool) -> Result<(), CliError> {
     let Some(what) = rep.leftovers() else {
         return Ok(());
     };
     if strict {
-        return Err(format!(
-            "{name}: sanitization left vertices on the dual grid ({what}) (--strict); nothing written"
-        ));
+        return Err(refused(name, Refusal::Leftovers(what.to_string())));
     }
     // loud: printed even with -q
     eprintln!(
         "dualex: warning: {name}: sanitization left vertices on the dual grid ({what}); the mesh near them may be wrong (see \"sanitize\" in the stats; --strict makes this an error)"
     );
     Ok(())
+}
+
+/// The checks before writing, in order: the mesh's validity (`errors`:
+/// the checker's, empty when valid), [`last_check`], [`sanitize_check`].
+pub fn before_writing(
+    name: &str,
+    out: &Output,
+    errors: Vec<String>,
+    sanitize: &SanitizeReport,
+    strict: bool,
+) -> Result<(), CliError> {
+    if !errors.is_empty() {
+        let cell = out.cell;
+        return Err(refused(name, Refusal::Invalid { cell, errors }));
+    }
+    last_check(name, out, strict)?;
+    sanitize_check(name, sanitize, strict)
+}
+
+/// The refusal `why` of the output of `name`.
+pub fn refused(name: &str, why: Refusal) -> CliError {
+    CliError::Refused {
+        file: name.to_string(),
+        why,
+    }
 }
 
 /// Adds the comparison to the stats JSON (`topology_matches_input`,
@@ -121,13 +151,7 @@ mod tests {
     use super::*;
     use dualex_check::topology::Shape;
 
-    fn out(
-        cells: usize,
-        nodes: usize,
-        measure: f64,
-        input: Shape,
-        output: Shape,
-    ) -> Output<'static> {
+    fn out(cells: usize, nodes: usize, measure: f64, input: Shape, output: Shape) -> Output {
         Output {
             cell: "quad",
             cells,
@@ -150,15 +174,26 @@ mod tests {
             boundary_components: 2,
         };
         let empty = Shape::default();
-        let e = last_check("m", &out(0, 5, 0.5, disk, empty), false).expect_err("lost cells");
+        let lost = last_check("m", &out(0, 5, 0.5, disk, empty), false).expect_err("lost cells");
+        assert!(
+            matches!(&lost, CliError::Refused { file, why: Refusal::LostCells { nodes: 5, .. } } if file == "m"),
+            "{lost}"
+        );
+        let e = lost.to_string();
         assert!(e.contains("all sides unmatched"), "{e}");
-        let e = last_check("m", &out(0, 0, 3.0, disk, empty), false).expect_err("no node");
+        let e = last_check("m", &out(0, 0, 3.0, disk, empty), false)
+            .expect_err("no node")
+            .to_string();
         assert!(e.contains("no node found"), "{e}");
         last_check("m", &out(0, 0, 0.5, disk, empty), true).expect("smaller than a cell");
-        let e = last_check("m", &out(9, 9, 9.0, disk, two), false).expect_err("components");
+        let e = last_check("m", &out(9, 9, 9.0, disk, two), false)
+            .expect_err("components")
+            .to_string();
         assert!(e.contains("2 components, the input 1"), "{e}");
         last_check("m", &out(9, 9, 9.0, two, disk), false).expect("a warning");
-        let e = last_check("m", &out(9, 9, 9.0, two, disk), true).expect_err("strict");
+        let e = last_check("m", &out(9, 9, 9.0, two, disk), true)
+            .expect_err("strict")
+            .to_string();
         assert!(e.contains("components 1 (input 2)"), "{e}");
         last_check("m", &out(9, 9, 9.0, disk, disk), true).expect("same topology");
     }
@@ -172,7 +207,9 @@ mod tests {
         rep.singular_on_iso = vec![7];
         rep.singular_snap.left = 1;
         sanitize_check("m", &rep, false).expect("a warning");
-        let e = sanitize_check("m", &rep, true).expect_err("strict");
+        let e = sanitize_check("m", &rep, true)
+            .expect_err("strict")
+            .to_string();
         assert!(
             e.contains("3 non-singular on an iso after 42 rounds")
                 && e.contains("1 singular on an iso")

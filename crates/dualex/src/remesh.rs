@@ -133,7 +133,7 @@ pub fn remesh_map(
     let made = dualex_remesh::remesh_counted(&surface, &opts.map, &mut quads_of)
         // (an option out of range, a solve that fails on this surface:
         // said as the remesher says it, as before the library had it)
-        .map_err(InputError::new)?;
+        .map_err(|e| InputError::new(e.to_string()))?;
     let kept = made.stats.kept.and_then(|k| extracted.into_iter().nth(k));
     Ok(RemeshedMap {
         map: made.map,

@@ -8,7 +8,9 @@
 //!
 //! Only regular files are replaced that way. A symbolic link is written
 //! through: its target file is replaced (atomically, beside the target), the
-//! link stays. Devices, pipes and anything under `/dev/` or `/proc/`
+//! link stays; a link whose target does not exist yet has it created
+//! there (read from the link, relative to the link's folder; chains of
+//! such links followed), as `cat > LINK` would. Devices, pipes and anything under `/dev/` or `/proc/`
 //! (`/dev/stdout`, `/dev/null`) are opened and written directly.
 //!
 //! [`check_writable`] tells before any work whether a path can be written:
@@ -139,8 +141,17 @@ enum Target {
     Replace(PathBuf),
 }
 
+/// Most symbolic links followed to a target that does not exist yet (as
+/// the kernel's limit, `ELOOP`).
+const MAX_LINKS: usize = 40;
+
 /// Where the bytes for `path` go (module docs).
 fn target(path: &Path) -> Target {
+    target_within(path, MAX_LINKS)
+}
+
+/// [`target`], following at most `links` dangling symbolic links.
+fn target_within(path: &Path, links: usize) -> Target {
     if path.starts_with("/dev") || path.starts_with("/proc") {
         return Target::Direct;
     }
@@ -150,6 +161,9 @@ fn target(path: &Path) -> Target {
     if meta.file_type().is_symlink() {
         return match (fs::metadata(path), fs::canonicalize(path)) {
             (Ok(m), Ok(real)) if m.is_file() => Target::Replace(real),
+            (Err(e), _) if e.kind() == io::ErrorKind::NotFound && links > 0 => {
+                dangling(path, links)
+            }
             _ => Target::Direct,
         };
     }
@@ -159,6 +173,19 @@ fn target(path: &Path) -> Target {
     } else {
         Target::Direct
     }
+}
+
+/// A link whose target does not exist yet: the target (read from the
+/// link, relative to the link's folder), created as `cat > LINK` would.
+fn dangling(link: &Path, links: usize) -> Target {
+    let Ok(to) = fs::read_link(link) else {
+        return Target::Direct;
+    };
+    let to = match link.parent() {
+        Some(dir) if to.is_relative() => dir.join(to),
+        _ => to,
+    };
+    target_within(&to, links - 1)
 }
 
 fn write_direct(
@@ -319,6 +346,23 @@ mod tests {
             .unwrap()
             .file_type()
             .is_char_device());
+        assert_eq!(leftovers(p.parent().unwrap()), 0);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn dangling_symlinks_create_their_targets() {
+        let p = scratch("made.txt");
+        let link = p.with_file_name("link.txt");
+        std::os::unix::fs::symlink("made.txt", &link).unwrap();
+        check_writable(&link).unwrap();
+        assert!(!p.exists(), "the check writes nothing");
+        write_text(&link, "new").unwrap();
+        assert_eq!(fs::read_to_string(&p).unwrap(), "new");
+        assert!(fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
         assert_eq!(leftovers(p.parent().unwrap()), 0);
     }
 

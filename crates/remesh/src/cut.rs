@@ -22,6 +22,7 @@
 //! The cut is not the shortest possible one (a BFS tree from one face);
 //! the seamless integration does not depend on its shape.
 
+use crate::error::RemeshError;
 use crate::field::CrossField;
 use crate::surface::{Surface, NO_FACE};
 use crate::union_find::{find, union};
@@ -36,14 +37,16 @@ pub struct Cut {
 
 /// The cut of `surface` through the vertices `singularities` (the first
 /// entry of each pair; indices out of range are an error).
-pub fn cut_to_disk(surface: &Surface, singularities: &[(u32, i32)]) -> Result<Cut, String> {
+pub fn cut_to_disk(surface: &Surface, singularities: &[(u32, i32)]) -> Result<Cut, RemeshError> {
     let nv = surface.positions.len();
     let mut keep = vec![false; nv];
     for &(v, _) in singularities {
         *keep
             .get_mut(v as usize)
-            .ok_or_else(|| format!("cut: singular vertex {v} out of range ({nv} vertices)"))? =
-            true;
+            .ok_or(RemeshError::CutVertexOutOfRange {
+                vertex: v,
+                vertices: nv,
+            })? = true;
     }
     let mut is_cut = dual_tree_complement(surface);
     prune(surface, &keep, &mut is_cut);
@@ -137,7 +140,7 @@ impl Cut {
     /// (`r_f1 = r_f0 + p_e mod 4`). Possible exactly when no singularity
     /// is left inside the cut-open surface; the error names the first
     /// edge where the quarter turns disagree.
-    pub fn comb(&self, surface: &Surface, field: &CrossField) -> Result<Vec<u8>, String> {
+    pub fn comb(&self, surface: &Surface, field: &CrossField) -> Result<Vec<u8>, RemeshError> {
         let nf = surface.triangles.len();
         let mut rot = vec![u8::MAX; nf];
         let mut stack = Vec::new();
@@ -164,10 +167,10 @@ impl Cut {
                         stack.push(g);
                     } else if rot[g as usize] != want {
                         let [a, b] = surface.edges[e as usize];
-                        return Err(format!(
-                            "the field does not comb across uncut edge {e} ({a}–{b}): \
-                             a singularity is not on the cut"
-                        ));
+                        return Err(RemeshError::NotCombed {
+                            edge: e,
+                            ends: [a, b],
+                        });
                     }
                 }
             }
@@ -212,12 +215,16 @@ impl Cut {
     /// Checks that cutting leaves one disk per connected component
     /// (Euler characteristic 1 each) and that every singular vertex is on
     /// the cut or the boundary.
-    pub fn check(&self, surface: &Surface, singularities: &[(u32, i32)]) -> Result<(), String> {
+    pub fn check(
+        &self,
+        surface: &Surface,
+        singularities: &[(u32, i32)],
+    ) -> Result<(), RemeshError> {
         let mut on_cut = surface.boundary_vertex.clone();
         for (e, [a, b]) in surface.edges.iter().enumerate() {
             if self.is_cut[e] {
                 if surface.is_boundary_edge(e as u32) {
-                    return Err(format!("boundary edge {e} is marked cut"));
+                    return Err(RemeshError::BoundaryEdgeCut { edge: e });
                 }
                 on_cut[*a as usize] = true;
                 on_cut[*b as usize] = true;
@@ -225,7 +232,7 @@ impl Cut {
         }
         for &(v, _) in singularities {
             if !on_cut.get(v as usize).copied().unwrap_or(false) {
-                return Err(format!("singular vertex {v} is not on the cut"));
+                return Err(RemeshError::SingularOffCut { vertex: v });
             }
         }
         let (comp, ncomp) = crate::smooth::face_components(surface);
@@ -248,10 +255,10 @@ impl Cut {
             chi[c as usize] += 1;
         }
         match chi.iter().position(|&x| x != 1) {
-            Some(c) => Err(format!(
-                "component {c} cut open has Euler characteristic {} (a disk has 1)",
-                chi[c]
-            )),
+            Some(c) => Err(RemeshError::ComponentNotDisk {
+                component: c,
+                euler: chi[c],
+            }),
             None => Ok(()),
         }
     }

@@ -2,24 +2,30 @@
 //!
 //! The cheap pipeline real tools use, as the paper's evaluation did
 //! ("field integration as geometric objective and rounding as
-//! quantization"):
+//! quantization"). The steps are numbered as the driver [`pipeline`] runs them, one call
+//! each:
 //!
 //! | step | module | input → output |
 //! |---|---|---|
-//! | connectivity, face frames | [`surface`] | positions, triangles → [`Surface`] |
-//! | long edges split (fans, strips) | [`refine`] | [`Surface`] → the same surface, edges ≤ 2 quad edges |
-//! | feature curves | [`features`] | dihedral threshold → the sharp edges on curves (noise dropped) |
-//! | denoised surface for the field | [`denoise`] | [`Surface`] → the same smoothed along its normals |
-//! | smoothest 4-RoSy field | [`smooth`] (type in [`field`]) | [`Surface`] → [`CrossField`] (angle per face, matching per edge), aligned to boundary and sharp edges |
-//! | singular vertices | [`singularity`] | field → `(vertex, index·4)` |
-//! | quarters for +½ and +1 | [`quarters`] | a singular vertex's star fixed, the field solved again |
-//! | cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
-//! | seamless integration | [`integrate`](mod@integrate) | field + cut → per-corner `(u, v)` |
-//! | facing boundary walls | [`integrate::facing`] | continuous map → walls across a strip, to round apart ([`separate`]) |
-//! | direct rounding | [`quantize`] | integer unknowns rounded at once, one more solve |
-//! | the extraction's count | [`recount`] | a count that misses `N` → the map once more for the area it asks |
+//! | 0. connectivity, face frames (the input) | [`surface`] | positions, triangles → [`Surface`] |
+//! | 1. long edges split (fans, strips) | [`refine`] | [`Surface`] → the same surface, edges ≤ 2 quad edges |
+//! | 2. feature curves | [`features`] | dihedral threshold → the sharp edges on curves (noise dropped) |
+//! | 3. denoised surface for the field | [`denoise`] | [`Surface`] → the same smoothed along its normals |
+//! | 4. smoothest 4-RoSy field | [`smooth`] (type in [`field`]) | [`Surface`] → [`CrossField`] (angle per face, matching per edge), aligned to boundary and sharp edges |
+//! | 4. its singular vertices | [`singularity`] | field → `(vertex, index·4)` |
+//! | 5. quarters for +½ and +1 | [`quarters`] | a singular vertex's star fixed, the field solved again |
+//! | 6. the seed's turn of free components | [`pipeline`] | the field turned where nothing fixes it |
+//! | 7. cut to a disk | [`cut`] | singularities → cut edges leaving a disk; the field combed on it |
+//! | 8. seamless integration | [`integrate`](mod@integrate) | field + cut → per-corner `(u, v)` |
+//! | 9. facing boundary walls | [`integrate::facing`] | continuous map → walls across a strip, to round apart ([`separate`]) |
+//! | 9. rounding | [`quantize`] | integer unknowns rounded at once, one more solve |
+//! | 10. the extraction's count | [`recount`] | a count that misses `N` → the map once more for the area it asks |
+//! | 11. the numbers | [`pipeline`] | → [`RemeshStats`] |
 //!
 //! The output is a [`dualex_map::TriMap`] that `dualex quad` extracts.
+//! Errors are [`RemeshError`] (and [`SolveError`] beneath), naming the
+//! step and the element ([`error`]).
+//!
 //! Beside the steps: [`sparse`] (the sparse Cholesky solves, over `faer`)
 //! and [`shapes`] (generated test surfaces: sphere, torus, cube, polycube
 //! of genus `g`, patches with boundary; [`shapes_cad`]: CAD-style
@@ -32,6 +38,7 @@
 
 pub mod cut;
 pub mod denoise;
+pub mod error;
 pub mod features;
 pub mod field;
 pub mod integrate;
@@ -53,6 +60,7 @@ mod union_find;
 pub mod weld;
 
 pub use cut::{cut_to_disk, Cut};
+pub use error::{RemeshError, SolveError};
 pub use field::CrossField;
 pub use integrate::{integrate, integrate_report, IntegrateOptions, IntegrateReport};
 pub use pipeline::{

@@ -4,21 +4,37 @@
 //! per-corner map (a [`TriMap`] over the surface's own vertices and
 //! triangles, which `dualex quad` extracts) and [`RemeshStats`].
 //!
-//! Steps, each its own module: the edges longer than two target quad
-//! edges split ([`crate::refine`]: a CAD fan cap or cone gets free faces
-//! inside its feature rim; the map is over this refined surface, which
-//! is the input's exactly), the smoothest cross field aligned to the
-//! boundary and feature curves ([`crate::features`]), solved on the
-//! surface denoised along its normals ([`crate::denoise`],
-//! [`crate::smooth`]), its singular vertices, a cut through them to a disk
-//! per component ([`crate::cut`]), seamless least-squares integration and
-//! rounding ([`crate::integrate`](mod@crate::integrate)) at a scale fitted so that the map
-//! covers about `N` cells ([`IntegrateOptions::fit_area`]). With
-//! [`remesh_counted`] the extraction's quad count of that map is
-//! measured and, when it misses `N` by more than
-//! [`recount::RECOUNT_TOLERANCE`],
-//! the map is made once more for the area that count asks (`dualex
-//! remesh` does; the extraction is not a dependency of this crate).
+//! Steps, one call each in the driver `make` (numbered alike there), each its
+//! own module:
+//! 1. **refine** ([`crate::refine`]): the edges longer than two target
+//!    quad edges split (a CAD fan cap or cone gets free faces inside its
+//!    feature rim; the map is over this refined surface, which is the
+//!    input's exactly);
+//! 2. **features** ([`smooth::features`], [`crate::features`]): the
+//!    options and the surface checked, the feature curves, the
+//!    directions they and the boundary fix;
+//! 3. **denoise** ([`smooth::denoise`], [`crate::denoise`]): the surface
+//!    smoothed along its normals, which the field is solved on;
+//! 4. **cross field** ([`smooth::solve`], [`crate::smooth`]): the
+//!    smoothest field aligned to the boundary and feature curves,
+//!    carried back to the surface, its singular vertices
+//!    ([`crate::singularity`]);
+//! 5. **quarters** ([`smooth::quarters`], [`crate::quarters`]): +½ and +1
+//!    singularities split into quarters, the field solved again;
+//! 6. **seed**: the field of every free component turned (below);
+//! 7. **cut** ([`crate::cut`]): a cut through the singular vertices to a
+//!    disk per component;
+//! 8. **integrate** ([`integrate::setup`]): seamless least-squares
+//!    integration at a scale fitted so that the map covers about `N`
+//!    cells ([`IntegrateOptions::fit_area`]);
+//! 9. **quantize** ([`integrate::round`], [`crate::quantize`]): the
+//!    integer unknowns rounded, at the scales of the area fit;
+//! 10. **recount** ([`crate::recount`]): with [`remesh_counted`] the
+//!     extraction's quad count of that map is measured and, when it
+//!     misses `N` by more than [`recount::RECOUNT_TOLERANCE`], steps 8–9
+//!     run once more for the area that count asks (`dualex remesh` does;
+//!     the extraction is not a dependency of this crate);
+//! 11. **stats**: the numbers ([`RemeshStats`]).
 //!
 //! Measured defaults (crate README, "Realistic maps"): on the shared real
 //! surfaces 4–483 singularities (reference maps: 30–403) and 0–3.4 %
@@ -32,14 +48,16 @@
 //! give different, equally cheap maps of one surface: the messy maps the
 //! tests run (see the "maps made the cheap way").
 
-use crate::cut::cut_to_disk;
+use crate::cut::{cut_to_disk, Cut};
+use crate::error::RemeshError;
 use crate::field::CrossField;
-use crate::integrate::{integrate_report, IntegrateOptions};
+use crate::integrate::{self, IntegrateOptions, IntegrateReport};
 use crate::quantize::Rounding;
-use crate::recount::{self, CountQuads};
-use crate::smooth::{cross_field, FieldOptions};
+use crate::recount::{self, CountQuads, Counted};
+use crate::smooth::{self, FieldOptions, FieldResult};
 use crate::surface::{Surface, NO_FACE};
 use crate::union_find::{find, union};
+use dualex_map::timing::Laps;
 use dualex_map::TriMap;
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
@@ -157,7 +175,7 @@ pub struct Remeshed {
 }
 
 /// The map of `surface` (module docs).
-pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, String> {
+pub fn remesh(surface: &Surface, opts: &RemeshOptions) -> Result<Remeshed, RemeshError> {
     make(surface, opts, None)
 }
 
@@ -180,39 +198,72 @@ pub fn remesh_counted(
     surface: &Surface,
     opts: &RemeshOptions,
     count: &mut CountQuads<'_>,
-) -> Result<Remeshed, String> {
+) -> Result<Remeshed, RemeshError> {
     make(surface, opts, Some(count))
 }
 
-/// [`remesh`], and [`remesh_counted`] when `count` is given.
+/// [`remesh`], and [`remesh_counted`] when `count` is given: the steps
+/// of the module docs, one call each, in their order.
 fn make(
     surface: &Surface,
     opts: &RemeshOptions,
     count: Option<&mut CountQuads<'_>>,
-) -> Result<Remeshed, String> {
+) -> Result<Remeshed, RemeshError> {
     let t0 = Instant::now();
-    // long edges split: fans and strips get room (crate::refine)
+    // 1. long edges split: fans and strips get room (crate::refine)
     let longest = crate::refine::QUAD_EDGES * quad_edge(surface, opts.target);
     let refined = crate::refine::split_long_edges(surface, longest);
-    let input_triangles = surface.triangles.len();
+    let input = surface;
     let surface = refined.as_ref().unwrap_or(surface);
     let fopts = FieldOptions {
         sharp_degrees: opts.sharp_degrees,
         ..FieldOptions::default()
     };
-    let mut f = cross_field(surface, &fopts)?;
+    // (the field's laps are its own: the stats time the field as a whole)
+    let mut laps = Laps::start();
+    // 2. feature curves, and the directions they and the boundary fix
+    let features = smooth::features(surface, &fopts)?;
+    // 3. the surface denoised along its normals, the field's
+    let mut on = smooth::denoise(surface, &fopts, features);
+    // 4. the smoothest cross field, carried back, its singular vertices
+    let mut solved = smooth::solve(surface, &on, &fopts, &mut laps)?;
+    // 5. quarter singularities in place of +1/2 and +1
+    smooth::quarters(surface, &mut on, &fopts, &mut solved, &mut laps)?;
+    let mut f = solved.result(surface, on, &fopts, laps);
+    // 6. the seed turns the field of every free component
     let mut rng = dualex_map::rng::SplitMix::new(opts.seed);
-    turn_free_components(
-        surface,
-        &mut f.field,
-        &f.fixed,
-        rng.unit() * std::f64::consts::FRAC_PI_2,
-    );
+    let angle = rng.unit() * std::f64::consts::FRAC_PI_2;
+    turn_free_components(surface, &mut f.field, &f.fixed, angle);
     let t1 = Instant::now();
+    // 7. a cut through the singular vertices to a disk per component
     let cut = cut_to_disk(surface, &f.singularities)?;
     let t2 = Instant::now();
+    let iopts = integrate_options(opts, [rng.unit(), rng.unit()], &f.sharp);
     let singular: Vec<u32> = f.singularities.iter().map(|&(v, _)| v).collect();
-    let iopts = IntegrateOptions {
+    let run = |o: &IntegrateOptions| {
+        // 8. seamless integration at the scale fitted to the area
+        let setup = integrate::setup(surface, &f.field, &cut.is_cut, &singular, o)?;
+        // 9. the integer unknowns rounded (crate::quantize)
+        integrate::round(surface, &f.field, &cut.is_cut, &singular, o, setup)
+    };
+    // 10. the extraction's count: steps 8–9 again when it misses N
+    let (made, kept) = counted(run, iopts, opts.target, count)?;
+    let t3 = Instant::now();
+    // 11. the numbers
+    let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
+    let counting = made.counting.as_secs_f64() * 1e3;
+    let time_ms = [ms(t0, t1), ms(t1, t2), ms(t2, t3) - counting, counting];
+    let stats = stats(input, surface, &f, &cut, &made, kept, time_ms);
+    Ok(Remeshed {
+        map: made.map,
+        stats,
+    })
+}
+
+/// The options of steps 8–9: the target, the rounding, the gauge offset
+/// drawn from the seed, the sharp edges the field follows.
+fn integrate_options(opts: &RemeshOptions, gauge: [f64; 2], sharp: &[bool]) -> IntegrateOptions {
+    IntegrateOptions {
         quads: match opts.target {
             Target::Quads(n) => Some(n),
             Target::EdgeLength(_) => None,
@@ -226,31 +277,62 @@ fn make(
             _ => Rounding::Direct,
         },
         round_singularities: opts.quantization != Quantization::SingularitiesOff,
-        gauge_offset: [rng.unit(), rng.unit()],
-        sharp: f.sharp.clone(),
+        gauge_offset: gauge,
+        sharp: sharp.to_vec(),
         ..IntegrateOptions::default()
-    };
-    let run = |o: &IntegrateOptions| integrate_report(surface, &f.field, &cut.is_cut, &singular, o);
-    let (map, rep, counted, kept, counting) = match (opts.target, count) {
+    }
+}
+
+/// Step 10: the map of `run` counted by the extraction and made again
+/// when the count misses `N` ([`recount`]), with a count and a quad
+/// target (`Some` index of the map kept); else the one map of `run`.
+fn counted(
+    mut run: impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), RemeshError>,
+    iopts: IntegrateOptions,
+    target: Target,
+    count: Option<&mut CountQuads<'_>>,
+) -> Result<(Counted, Option<usize>), RemeshError> {
+    match (target, count) {
         (Target::Quads(n), Some(count)) => {
             let c = recount::integrate_counted(run, iopts, n, count)?;
-            (c.map, c.report, c.counted, Some(c.kept), c.counting)
+            let kept = Some(c.kept);
+            Ok((c, kept))
         }
         _ => {
-            let (map, rep) = run(&iopts)?;
-            (map, rep, Vec::new(), None, Duration::ZERO)
+            let (map, report) = run(&iopts)?;
+            let one = Counted {
+                map,
+                report,
+                counted: Vec::new(),
+                kept: 0,
+                counting: Duration::ZERO,
+            };
+            Ok((one, None))
         }
-    };
-    let t3 = Instant::now();
+    }
+}
+
+/// Step 11: the numbers of the map made (`input`: the surface given,
+/// `surface`: refined; `kept`: the index of the map kept among those
+/// counted).
+fn stats(
+    input: &Surface,
+    surface: &Surface,
+    f: &FieldResult,
+    cut: &Cut,
+    made: &Counted,
+    kept: Option<usize>,
+    time_ms: [f64; 4],
+) -> RemeshStats {
     let mut singularity_index = BTreeMap::new();
     for &(_, q) in &f.singularities {
         *singularity_index.entry(q).or_insert(0) += 1;
     }
-    let (flipped, degenerate) = orientation_counts(&map);
-    let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
-    let stats = RemeshStats {
+    let (flipped, degenerate) = orientation_counts(&made.map);
+    let rep = &made.report;
+    RemeshStats {
         triangles: surface.triangles.len(),
-        input_triangles,
+        input_triangles: input.triangles.len(),
         singularities: f.singularities.len(),
         singularity_index,
         boundary_singularities: f.boundary_singularities.len(),
@@ -265,17 +347,11 @@ fn make(
         rounded: rep.quantize.rounded,
         off_grid: rep.quantize.off_grid,
         max_rounding: rep.quantize.max_rounding,
-        counted,
+        counted: made.counted.clone(),
         kept,
         grid_attempts: Vec::new(),
-        time_ms: [
-            ms(t0, t1),
-            ms(t1, t2),
-            ms(t2, t3) - counting.as_secs_f64() * 1e3,
-            counting.as_secs_f64() * 1e3,
-        ],
-    };
-    Ok(Remeshed { map, stats })
+        time_ms,
+    }
 }
 
 /// The target's quad edge length in model units ([`crate::refine`] splits
@@ -329,105 +405,4 @@ pub fn orientation_counts(map: &TriMap) -> (usize, usize) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Seeds move the grid: two seeds give two maps of the sphere, each
-    /// with the sphere's 8 singularities of index ¼, no flipped triangle,
-    /// and a translation-free difference only up to the rounding.
-    #[test]
-    fn seeds_give_different_maps_of_one_surface() {
-        let s = crate::shapes::icosphere(3);
-        let run = |seed| {
-            let opts = RemeshOptions {
-                target: Target::Quads(300),
-                seed,
-                ..RemeshOptions::default()
-            };
-            remesh(&s, &opts).expect("the sphere's map")
-        };
-        let (a, b) = (run(1), run(2));
-        for r in [&a, &b] {
-            assert_eq!(r.stats.singularity_index.get(&1), Some(&8));
-            assert_eq!(r.stats.singularities, 8);
-            assert_eq!((r.stats.flipped, r.stats.degenerate), (0, 0));
-            assert_eq!(r.stats.off_grid, 0);
-        }
-        assert_ne!(
-            a.map.coords, b.map.coords,
-            "seed 2 gives the same map as seed 1"
-        );
-        assert_eq!(run(1).map.coords, a.map.coords, "a seed gives one map");
-    }
-
-    /// The map's signed area (map units²).
-    fn area(map: &TriMap) -> f64 {
-        map.coords
-            .iter()
-            .map(|[a, b, d]| 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0])))
-            .sum()
-    }
-
-    /// An extraction that makes 30 % more quads than cells: the map is
-    /// made again for a smaller area and that one is kept; one that
-    /// refuses the second map keeps the first; no count, one map.
-    #[test]
-    fn the_extractions_count_retargets_the_map_once() {
-        let s = crate::shapes::icosphere(3);
-        let opts = RemeshOptions {
-            target: Target::Quads(300),
-            ..RemeshOptions::default()
-        };
-        let plain = remesh(&s, &opts).expect("the sphere's map");
-        assert!(plain.stats.counted.is_empty(), "no count, no entry");
-        assert_eq!(plain.stats.kept, None);
-        let mut calls = 0;
-        let mut more = |m: &TriMap| {
-            calls += 1;
-            Some((1.3 * area(m)).round() as usize)
-        };
-        let r = remesh_counted(&s, &opts, &mut more).expect("the sphere's map");
-        assert_eq!(calls, 2);
-        let [Some(q1), Some(q2)] = r.stats.counted[..] else {
-            panic!("two counts: {:?}", r.stats.counted);
-        };
-        assert!(q1.abs_diff(300) > 15, "{q1}: no recount needed");
-        assert!(q2.abs_diff(300) <= 15, "{q2} for 300");
-        assert_eq!(
-            (1.3 * area(&r.map)).round() as usize,
-            q2,
-            "the second map kept"
-        );
-        assert_eq!(r.stats.kept, Some(1));
-        // the second map refused: the first kept
-        let mut first_only =
-            |m: &TriMap| (area(m) > 260.0).then(|| (1.3 * area(m)).round() as usize);
-        let r = remesh_counted(&s, &opts, &mut first_only).expect("the sphere's map");
-        assert_eq!(r.stats.counted, vec![Some(q1), None]);
-        assert_eq!(r.stats.kept, Some(0));
-        assert_eq!(r.map.coords, plain.map.coords);
-        // a count within the tolerance: one map, the plain one
-        let mut exact = |m: &TriMap| Some(area(m).round() as usize);
-        let r = remesh_counted(&s, &opts, &mut exact).expect("the sphere's map");
-        assert_eq!(r.stats.counted.len(), 1);
-        assert_eq!(r.map.coords, plain.map.coords);
-        // the first map refused: made again with the grid moved, kept
-        let mut calls = 0;
-        let mut refuse_first = |m: &TriMap| {
-            calls += 1;
-            (calls > 1).then(|| area(m).round() as usize)
-        };
-        let r = remesh_counted(&s, &opts, &mut refuse_first).expect("the sphere's map");
-        assert_eq!(r.stats.counted.len(), 2);
-        assert_eq!(r.stats.kept, Some(1), "the map the grid move made");
-        assert_eq!(r.stats.counted[0], None);
-        assert!(r.stats.counted[1].is_some());
-        assert_ne!(r.map.coords, plain.map.coords, "the grid moved");
-        // every map refused: all the moves tried, the first map returned
-        let mut never = |_: &TriMap| None;
-        let r = remesh_counted(&s, &opts, &mut never).expect("the sphere's map");
-        assert_eq!(r.stats.counted, vec![None; 1 + crate::recount::MOVES.len()]);
-        assert_eq!(r.stats.kept, Some(0), "all refused: the first map");
-        assert_eq!(r.map.coords, plain.map.coords);
-    }
-}
+mod tests;

@@ -54,6 +54,7 @@
 //! leaves more conflicts than the nearest rounding, the nearest rounding
 //! is kept ([`QuantizeReport::walls_moved`] then 0).
 
+use crate::error::SolveError;
 use crate::integrate::constraints::Gauge;
 use crate::integrate::elim::{Eliminator, Form, RowOutcome};
 use crate::integrate::system::{minimize, Energy};
@@ -135,7 +136,7 @@ pub fn quantize(
     integers: &Integers,
     rounding: Rounding,
     start: Option<Vec<f64>>,
-) -> Result<(Vec<f64>, QuantizeReport), String> {
+) -> Result<(Vec<f64>, QuantizeReport), SolveError> {
     let system = (energy, rows, gauge);
     let separated = round(system, integers, rounding, start.clone())?;
     if separated.1.conflicts == 0 || separated.1.walls_moved == 0 {
@@ -164,7 +165,7 @@ fn round(
     integers: &Integers,
     rounding: Rounding,
     start: Option<Vec<f64>>,
-) -> Result<(Vec<f64>, QuantizeReport), String> {
+) -> Result<(Vec<f64>, QuantizeReport), SolveError> {
     let Integers {
         forms: integers,
         first,

@@ -31,6 +31,7 @@
 //! for the count; the one kept has the count closer to `N` (the first on a
 //! tie); a map counted `None` never replaces one counted.
 
+use crate::error::RemeshError;
 use crate::integrate::{IntegrateOptions, IntegrateReport, ROUNDINGS};
 use dualex_map::TriMap;
 use std::time::{Duration, Instant};
@@ -74,11 +75,11 @@ struct Taken {
 /// Integrates with `opts` (for `n` quads), counts, and integrates once
 /// more when the count asks for it (module docs).
 pub fn integrate_counted(
-    mut integrate: impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), String>,
+    mut integrate: impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), RemeshError>,
     opts: IntegrateOptions,
     n: usize,
     count: &mut CountQuads<'_>,
-) -> Result<Counted, String> {
+) -> Result<Counted, RemeshError> {
     let mut counting = Duration::ZERO;
     let mut count = |m: &TriMap| {
         let t = Instant::now();
@@ -137,12 +138,12 @@ pub fn integrate_counted(
 /// one when every one is refused) with its report, count, options and
 /// index in `counted`.
 fn taken(
-    integrate: &mut impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), String>,
+    integrate: &mut impl FnMut(&IntegrateOptions) -> Result<(TriMap, IntegrateReport), RemeshError>,
     count: &mut impl FnMut(&TriMap) -> Option<usize>,
     opts: &IntegrateOptions,
     moves: usize,
     counted: &mut Vec<Option<usize>>,
-) -> Result<Taken, String> {
+) -> Result<Taken, RemeshError> {
     let (map, rep) = integrate(opts)?;
     let first = Taken {
         count: count(&map),

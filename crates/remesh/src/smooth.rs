@@ -57,14 +57,18 @@
 //! 2.6 s on 328k faces (the fill-in grows faster than the size). Under
 //! a load of ~8 the same runs took about twice as long.
 
+use crate::error::RemeshError;
 pub use crate::features::sharp_edges;
 use crate::features::{feature_edges, MinCurve};
 use crate::field::CrossField;
 use crate::singularity::{boundary_indices, vertex_indices};
-use crate::sparse::HpdSolver;
-use crate::surface::{dot, norm, sub, Surface, NO_FACE};
+use crate::surface::{norm, sub, Surface, NO_FACE};
 use dualex_map::timing::Laps;
 use faer::c64;
+pub use solve::field_energy;
+use solve::solve_field;
+
+mod solve;
 
 /// Options of [`cross_field`].
 #[derive(Clone, Debug)]
@@ -132,87 +136,185 @@ pub struct FieldResult {
     pub laps: Vec<(String, f64)>,
 }
 
-/// The smoothest cross field of `surface`; see the module docs.
-pub fn cross_field(surface: &Surface, opts: &FieldOptions) -> Result<FieldResult, String> {
-    let nf = surface.triangles.len();
-    if nf == 0 {
-        return Err("cross field: the surface has no triangle".into());
+/// The smoothest cross field of `surface`; see the module docs. Steps
+/// 2–5 of the pipeline ([`crate::pipeline`]), in its order:
+/// [`features`], [`denoise`], [`solve`], [`quarters`], then
+/// [`Solved::result`].
+pub fn cross_field(surface: &Surface, opts: &FieldOptions) -> Result<FieldResult, RemeshError> {
+    let mut laps = Laps::start();
+    let features = features(surface, opts)?;
+    let mut on = denoise(surface, opts, features);
+    laps.lap("field: checks, constraints, denoising");
+    let mut solved = solve(surface, &on, opts, &mut laps)?;
+    quarters(surface, &mut on, opts, &mut solved, &mut laps)?;
+    Ok(solved.result(surface, on, opts, laps))
+}
+
+/// What step 2 ([`features`]) finds: the feature edges and the
+/// directions they and the boundary fix on the input.
+pub struct Features {
+    /// Per edge: a sharp interior edge on a feature curve.
+    pub sharp: Vec<bool>,
+    /// Per face: the direction of its longest boundary or sharp edge.
+    fixed: Vec<Option<f64>>,
+}
+
+/// The surface the field is solved on (step 3, [`denoise`]) with the
+/// [`Features`] of the input.
+pub struct FieldInput {
+    /// The input's features.
+    features: Features,
+    /// The denoised surface (`None`: the input itself).
+    denoised: Option<Surface>,
+    /// Per face of the surface solved on: its fixed direction, the stars
+    /// pinned by [`quarters`] included.
+    fixed_on: Vec<Option<f64>>,
+}
+
+impl FieldInput {
+    /// The surface the field is solved on.
+    fn on<'a>(&'a self, surface: &'a Surface) -> &'a Surface {
+        self.denoised.as_ref().unwrap_or(surface)
+    }
+}
+
+/// The field solved (steps 4–5): `z` per face of the surface solved on,
+/// the field carried back to the input and its singular vertices.
+pub struct Solved {
+    z: Vec<c64>,
+    field: CrossField,
+    singularities: Vec<(u32, i32)>,
+}
+
+/// Step 2: the options and the surface checked (a triangle at least,
+/// manifold vertices), the feature curves ([`crate::features`]) and the
+/// directions fixed by them and the boundary.
+pub fn features(surface: &Surface, opts: &FieldOptions) -> Result<Features, RemeshError> {
+    if surface.triangles.is_empty() {
+        return Err(RemeshError::NoTriangle);
     }
     if !(opts.sharp_degrees.is_finite() && opts.sharp_degrees > 0.0) {
-        return Err(format!(
-            "cross field: sharp angle {} is not a positive number of degrees",
-            opts.sharp_degrees
-        ));
+        return Err(RemeshError::SharpAngle(opts.sharp_degrees));
     }
     if opts.unit_steps > 0 && !(opts.unit_shift.is_finite() && opts.unit_shift > 0.0) {
-        return Err(format!(
-            "cross field: unit-step shift {} is not a positive number",
-            opts.unit_shift
-        ));
+        return Err(RemeshError::UnitShift(opts.unit_shift));
     }
-    let mut laps = Laps::start();
     check_manifold_vertices(surface)?;
     let sharp = feature_edges(surface, opts.sharp_degrees, opts.min_feature);
-    let fixed_angle = fixed_directions(surface, &sharp, opts.align_boundary);
-    // the field is solved on the denoised surface, then carried back
-    let denoised = crate::denoise::smoothed(surface, opts.denoise_steps, &sharp);
-    let on = denoised.as_ref().unwrap_or(surface);
-    let mut fixed_on = match &denoised {
-        Some(d) => fixed_directions(d, &sharp, opts.align_boundary),
-        None => fixed_angle.clone(),
+    let fixed = fixed_directions(surface, &sharp, opts.align_boundary);
+    Ok(Features { sharp, fixed })
+}
+
+/// Step 3: the surface denoised along its normals ([`crate::denoise`]),
+/// with its fixed directions; the field is solved on it, then carried
+/// back.
+pub fn denoise(surface: &Surface, opts: &FieldOptions, features: Features) -> FieldInput {
+    let denoised = crate::denoise::smoothed(surface, opts.denoise_steps, &features.sharp);
+    let fixed_on = match &denoised {
+        Some(d) => fixed_directions(d, &features.sharp, opts.align_boundary),
+        None => features.fixed.clone(),
     };
-    laps.lap("field: checks, constraints, denoising");
-    let mut z = solve_field(on, &fixed_on, opts, &mut laps)?;
-    let angles = |z: &[c64]| -> Vec<f64> {
-        (0..nf)
-            .map(|f| match fixed_angle[f] {
-                Some(a) => a,
-                None => {
-                    z[f].arg() / 4.0
-                        + denoised
-                            .as_ref()
-                            .map_or(0.0, |d| crate::denoise::frame_turn(d, surface, f as u32))
-                }
-            })
-            .collect()
-    };
-    let mut field = CrossField::from_angles(surface, angles(&z));
-    let mut singularities = vertex_indices(surface, &field);
-    // quarter singularities in place of +1/2 and +1 (crate::quarters)
+    FieldInput {
+        features,
+        denoised,
+        fixed_on,
+    }
+}
+
+/// Step 4: the smoothest field on the surface of `input`, carried back
+/// to `surface`, and its singular vertices ([`crate::singularity`]).
+pub fn solve(
+    surface: &Surface,
+    input: &FieldInput,
+    opts: &FieldOptions,
+    laps: &mut Laps,
+) -> Result<Solved, RemeshError> {
+    let z = solve_field(input.on(surface), &input.fixed_on, opts, laps)?;
+    let field = CrossField::from_angles(surface, angles(surface, input, &z));
+    let singularities = vertex_indices(surface, &field);
+    Ok(Solved {
+        z,
+        field,
+        singularities,
+    })
+}
+
+/// Step 5: quarter singularities in place of +1/2 and +1
+/// ([`crate::quarters`]): their stars pinned and the field solved again,
+/// up to [`QUARTER_ROUNDS`] times.
+pub fn quarters(
+    surface: &Surface,
+    input: &mut FieldInput,
+    opts: &FieldOptions,
+    solved: &mut Solved,
+    laps: &mut Laps,
+) -> Result<(), RemeshError> {
     for _ in 0..QUARTER_ROUNDS {
         let mut pinned = false;
-        for &(v, q) in &singularities {
+        let on = input.denoised.as_ref().unwrap_or(surface);
+        for &(v, q) in &solved.singularities {
             if q >= 2 {
-                pinned |= crate::quarters::pin_star(on, &z, &mut fixed_on, v);
+                pinned |= crate::quarters::pin_star(on, &solved.z, &mut input.fixed_on, v);
             }
         }
         if !pinned {
             break;
         }
-        z = solve_field(on, &fixed_on, opts, &mut laps)?;
-        field = CrossField::from_angles(surface, angles(&z));
-        singularities = vertex_indices(surface, &field);
+        *solved = solve(surface, input, opts, laps)?;
     }
-    let boundary_singularities = if opts.align_boundary {
-        boundary_indices(surface, &field)
-    } else {
-        Vec::new()
-    };
-    laps.lap("field: matchings, singularities");
-    let fixed = fixed_angle.iter().map(Option::is_some).collect();
-    Ok(FieldResult {
-        field,
-        singularities,
-        boundary_singularities,
-        sharp,
-        fixed,
-        laps: laps.into_laps(),
-    })
+    Ok(())
+}
+
+impl Solved {
+    /// The [`FieldResult`]: the field, its interior and boundary
+    /// singularities, the features.
+    pub fn result(
+        self,
+        surface: &Surface,
+        input: FieldInput,
+        opts: &FieldOptions,
+        mut laps: Laps,
+    ) -> FieldResult {
+        let boundary_singularities = if opts.align_boundary {
+            boundary_indices(surface, &self.field)
+        } else {
+            Vec::new()
+        };
+        laps.lap("field: matchings, singularities");
+        let Features { sharp, fixed } = input.features;
+        FieldResult {
+            field: self.field,
+            singularities: self.singularities,
+            boundary_singularities,
+            sharp,
+            fixed: fixed.iter().map(Option::is_some).collect(),
+            laps: laps.into_laps(),
+        }
+    }
+}
+
+/// The field's angle per face of `surface` from `z` on the surface of
+/// `input`: a fixed face keeps its direction, a free one turns by the
+/// denoised frame's turn ([`crate::denoise::frame_turn`]).
+fn angles(surface: &Surface, input: &FieldInput, z: &[c64]) -> Vec<f64> {
+    let fixed = &input.features.fixed;
+    (0..surface.triangles.len())
+        .map(|f| match fixed[f] {
+            Some(a) => a,
+            None => {
+                z[f].arg() / 4.0
+                    + input
+                        .denoised
+                        .as_ref()
+                        .map_or(0.0, |d| crate::denoise::frame_turn(d, surface, f as u32))
+            }
+        })
+        .collect()
 }
 
 /// An error naming the first vertex whose faces form more than one fan
 /// (two sheets touching at a vertex): its index would be meaningless.
-fn check_manifold_vertices(surface: &Surface) -> Result<(), String> {
+fn check_manifold_vertices(surface: &Surface) -> Result<(), RemeshError> {
     let uncut = crate::cut::Cut {
         is_cut: vec![false; surface.edges.len()],
     };
@@ -227,9 +329,7 @@ fn check_manifold_vertices(surface: &Surface) -> Result<(), String> {
     for v in owner {
         fans[v as usize] += 1;
         if fans[v as usize] > 1 {
-            return Err(format!(
-                "cross field: vertex {v} is not manifold (its triangles form several fans)"
-            ));
+            return Err(RemeshError::NonManifoldVertex { vertex: v });
         }
     }
     Ok(())
@@ -284,226 +384,4 @@ pub(crate) fn face_components(surface: &Surface) -> (Vec<u32>, u32) {
         count += 1;
     }
     (comp, count)
-}
-
-/// The energy on the free faces: `L`, `b` (from the fixed faces), the
-/// mass, and which components are pinned by a fixed face.
-struct System {
-    /// Free faces, in unknown order.
-    free: Vec<u32>,
-    /// `L` as full Hermitian triplets.
-    laplacian: Vec<(u32, u32, c64)>,
-    /// The right-hand side from the fixed faces.
-    b: Vec<c64>,
-    /// Per unknown: the face area.
-    mass: Vec<f64>,
-    /// Per unknown: its component; per component: has a fixed face.
-    comp: Vec<u32>,
-    pinned: Vec<bool>,
-    /// Mean edge weight over mean face area: the scale of the shifts.
-    scale: f64,
-}
-
-/// `z` per face: fixed faces keep `exp(4i·angle)`, free faces are solved
-/// for (see the module docs).
-fn solve_field(
-    surface: &Surface,
-    fixed: &[Option<f64>],
-    opts: &FieldOptions,
-    laps: &mut Laps,
-) -> Result<Vec<c64>, String> {
-    let mut z: Vec<c64> = fixed
-        .iter()
-        .map(|a| a.map_or(c64::new(0.0, 0.0), |a| c64::cis(4.0 * a)))
-        .collect();
-    let sys = system(surface, fixed, &z);
-    if sys.free.is_empty() {
-        return Ok(z);
-    }
-    laps.lap("field: assemble");
-    let eps = 1e-6 * sys.scale;
-    let solver = shifted(&sys, eps, None)?;
-    laps.lap("field: factorise");
-    // a fixed pseudo-random start (matters only without fixed faces)
-    let mut x: Vec<c64> = sys
-        .free
-        .iter()
-        .map(|&f| c64::cis(f64::from(f.wrapping_mul(2_654_435_761) >> 8) * 1e-3))
-        .collect();
-    for _ in 0..opts.max_iterations.max(1) {
-        let rhs: Vec<c64> = (0..x.len())
-            .map(|k| sys.b[k] + x[k] * (eps * sys.mass[k]))
-            .collect();
-        let mut y = solver
-            .solve(&rhs)
-            .map_err(|e| format!("cross field: {e}"))?;
-        normalise_components(&sys, &mut y);
-        let change: f64 = y.iter().zip(&x).map(|(a, b)| (a - b).norm_sqr()).sum();
-        let size: f64 = y.iter().map(|a| a.norm_sqr()).sum();
-        x = y;
-        if change <= 1e-12 * size.max(f64::MIN_POSITIVE) {
-            break;
-        }
-    }
-    laps.lap("field: linear iteration");
-    if opts.unit_steps > 0 {
-        // diffuse and project to unit length (see `FieldOptions::unit_steps`)
-        let mu = opts.unit_shift * sys.scale;
-        let solver = shifted(&sys, mu, Some(&solver))?;
-        laps.lap("field: factorise (unit steps)");
-        for _ in 0..opts.unit_steps {
-            let rhs: Vec<c64> = (0..x.len())
-                .map(|k| {
-                    let r = x[k].norm();
-                    let unit = if r > 0.0 { x[k] / r } else { x[k] };
-                    sys.b[k] + unit * (mu * sys.mass[k])
-                })
-                .collect();
-            x = solver
-                .solve(&rhs)
-                .map_err(|e| format!("cross field: {e}"))?;
-        }
-        laps.lap("field: unit steps");
-    }
-    for (k, &f) in sys.free.iter().enumerate() {
-        z[f as usize] = x[k];
-    }
-    Ok(z)
-}
-
-/// Numbers the free faces and assembles their [`System`].
-fn system(surface: &Surface, fixed: &[Option<f64>], z: &[c64]) -> System {
-    let nf = surface.triangles.len();
-    let mut unknown = vec![u32::MAX; nf];
-    let mut free = Vec::new();
-    for f in 0..nf {
-        if fixed[f].is_none() {
-            unknown[f] = free.len() as u32;
-            free.push(f as u32);
-        }
-    }
-    let (laplacian, b, mean_w) = assemble(surface, &unknown, z);
-    let mass = free.iter().map(|&f| surface.areas[f as usize]).collect();
-    let (face_comp, ncomp) = face_components(surface);
-    let mut pinned = vec![false; ncomp as usize];
-    for f in 0..nf {
-        pinned[face_comp[f] as usize] |= fixed[f].is_some();
-    }
-    let comp = free.iter().map(|&f| face_comp[f as usize]).collect();
-    let mean_area = surface.areas.iter().sum::<f64>() / nf as f64;
-    System {
-        free,
-        laplacian,
-        b,
-        mass,
-        comp,
-        pinned,
-        scale: mean_w / mean_area,
-    }
-}
-
-/// Factorises `L + shift·M` (reusing the symbolic factorisation of
-/// `like`, a matrix of the same pattern, when given).
-fn shifted(sys: &System, shift: f64, like: Option<&HpdSolver>) -> Result<HpdSolver, String> {
-    let mut t = sys.laplacian.clone();
-    for (k, &m) in sys.mass.iter().enumerate() {
-        t.push((k as u32, k as u32, c64::new(shift * m, 0.0)));
-    }
-    match like {
-        Some(s) => s.refactor(&t),
-        None => HpdSolver::new(sys.mass.len(), &t),
-    }
-    .map_err(|e| format!("cross field: {e}"))
-}
-
-/// The Hermitian matrix `L` of the energy on the free faces (full, as
-/// triplets), its right-hand side `b` from the fixed ones, and the mean
-/// edge weight.
-fn assemble(
-    surface: &Surface,
-    unknown: &[u32],
-    z: &[c64],
-) -> (Vec<(u32, u32, c64)>, Vec<c64>, f64) {
-    let n = unknown.iter().filter(|&&u| u != u32::MAX).count();
-    let mut t = Vec::with_capacity(8 * n);
-    let mut b = vec![c64::new(0.0, 0.0); n];
-    let (mut wsum, mut wcount) = (0.0, 0usize);
-    for e in 0..surface.edges.len() as u32 {
-        let [f0, f1] = surface.edge_faces[e as usize];
-        if f1 == NO_FACE {
-            continue;
-        }
-        let w = edge_weight(surface, e);
-        wsum += w;
-        wcount += 1;
-        let r = c64::cis(4.0 * (surface.edge_angle(e, f1) - surface.edge_angle(e, f0)));
-        let (u0, u1) = (unknown[f0 as usize], unknown[f1 as usize]);
-        // w·|z1 − r z0|²: L00 = L11 = w, L10 = −w r, L01 = −w r̄
-        for u in [u0, u1] {
-            if u != u32::MAX {
-                t.push((u, u, c64::new(w, 0.0)));
-            }
-        }
-        match (u0 != u32::MAX, u1 != u32::MAX) {
-            (true, true) => {
-                t.push((u1, u0, -r * w));
-                t.push((u0, u1, -r.conj() * w));
-            }
-            (true, false) => b[u0 as usize] += r.conj() * z[f1 as usize] * w,
-            (false, true) => b[u1 as usize] += r * z[f0 as usize] * w,
-            (false, false) => {}
-        }
-    }
-    (
-        t,
-        b,
-        if wcount > 0 {
-            wsum / wcount as f64
-        } else {
-            1.0
-        },
-    )
-}
-
-/// The weight `|e|² / (A_f0 + A_f1)` of interior edge `e`.
-fn edge_weight(surface: &Surface, e: u32) -> f64 {
-    let [f0, f1] = surface.edge_faces[e as usize];
-    let [p, q] = surface.edges[e as usize];
-    let d = sub(surface.positions[q as usize], surface.positions[p as usize]);
-    dot(d, d) / (surface.areas[f0 as usize] + surface.areas[f1 as usize])
-}
-
-/// Scales the unknowns of every component without a fixed face to unit
-/// area-weighted norm.
-fn normalise_components(sys: &System, x: &mut [c64]) {
-    let mut norm2 = vec![0.0; sys.pinned.len()];
-    let mut area = vec![0.0; sys.pinned.len()];
-    for (k, z) in x.iter().enumerate() {
-        norm2[sys.comp[k] as usize] += sys.mass[k] * z.norm_sqr();
-        area[sys.comp[k] as usize] += sys.mass[k];
-    }
-    for (k, z) in x.iter_mut().enumerate() {
-        let c = sys.comp[k] as usize;
-        if !sys.pinned[c] && norm2[c] > 0.0 {
-            *z *= (area[c] / norm2[c]).sqrt();
-        }
-    }
-}
-
-/// The energy `Σ_e w_e·|z_f1 − r_e·z_f0|²` of the angles `angle` (one per
-/// face), as minimised by [`cross_field`] (for tests and reports).
-pub fn field_energy(surface: &Surface, angle: &[f64]) -> f64 {
-    let mut total = 0.0;
-    for e in 0..surface.edges.len() as u32 {
-        let [_, f1] = surface.edge_faces[e as usize];
-        if f1 == NO_FACE {
-            continue;
-        }
-        let w = edge_weight(surface, e);
-        let t = crate::field::transported(surface, angle, e);
-        let a = 4.0 * (angle[f1 as usize] - t);
-        // |z1 − r z0|² with |z| = 1
-        total += w * (2.0 - 2.0 * a.cos());
-    }
-    total
 }

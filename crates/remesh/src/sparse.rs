@@ -12,6 +12,7 @@
 //! The factorisation is kept ([`SpdSolver`]) so that repeated solves with
 //! one matrix (inverse iteration, rounding) pay for it once.
 
+use crate::error::SolveError;
 use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
 use faer::sparse::{SparseColMat, Triplet};
@@ -26,16 +27,20 @@ pub struct SpdSolver {
 impl SpdSolver {
     /// Factorises the `n × n` matrix given by `triplets` (lower triangle
     /// read, duplicates summed).
-    pub fn new(n: usize, triplets: &[(u32, u32, f64)]) -> Result<Self, String> {
+    pub fn new(n: usize, triplets: &[(u32, u32, f64)]) -> Result<Self, SolveError> {
         let a = lower(n, triplets)?;
         let llt = a
             .sp_cholesky(Side::Lower)
-            .map_err(|e| format!("sparse Cholesky ({n} unknowns): {e}"))?;
+            .map_err(|e| SolveError::Factorise {
+                hermitian: false,
+                unknowns: n,
+                reason: e.to_string(),
+            })?;
         Ok(SpdSolver { n, llt })
     }
 
     /// Solves `A·x = rhs`.
-    pub fn solve(&self, rhs: &[f64]) -> Result<Vec<f64>, String> {
+    pub fn solve(&self, rhs: &[f64]) -> Result<Vec<f64>, SolveError> {
         solve_with(&self.llt, self.n, rhs)
     }
 }
@@ -55,22 +60,26 @@ pub struct HpdSolver {
 impl HpdSolver {
     /// Factorises the `n × n` matrix given by `triplets` (lower triangle
     /// read, duplicates summed).
-    pub fn new(n: usize, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
+    pub fn new(n: usize, triplets: &[(u32, u32, c64)]) -> Result<Self, SolveError> {
         let a = lower(n, triplets)?;
-        let symbolic = SymbolicLlt::try_new(a.symbolic(), Side::Lower)
-            .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e:?}"))?;
+        let symbolic =
+            SymbolicLlt::try_new(a.symbolic(), Side::Lower).map_err(|e| SolveError::Factorise {
+                hermitian: true,
+                unknowns: n,
+                reason: format!("{e:?}"),
+            })?;
         Self::numeric(n, a, symbolic)
     }
 
     /// Factorises another matrix with the same pattern (the same triplet
     /// positions), reusing the fill-reducing ordering and the symbolic
     /// factorisation (a quarter of the cost, measured).
-    pub fn refactor(&self, triplets: &[(u32, u32, c64)]) -> Result<Self, String> {
+    pub fn refactor(&self, triplets: &[(u32, u32, c64)]) -> Result<Self, SolveError> {
         let a = lower(self.n, triplets)?;
         let sym = a.symbolic();
         if sym.col_ptr() != self.pattern.0.as_slice() || sym.row_idx() != self.pattern.1.as_slice()
         {
-            return Err("sparse refactorisation: the pattern differs".into());
+            return Err(SolveError::PatternDiffers);
         }
         Self::numeric(self.n, a, self.symbolic.clone())
     }
@@ -79,9 +88,15 @@ impl HpdSolver {
         n: usize,
         a: SparseColMat<usize, c64>,
         symbolic: SymbolicLlt<usize>,
-    ) -> Result<Self, String> {
-        let llt = Llt::try_new_with_symbolic(symbolic.clone(), a.as_ref(), Side::Lower)
-            .map_err(|e| format!("sparse Hermitian Cholesky ({n} unknowns): {e}"))?;
+    ) -> Result<Self, SolveError> {
+        let llt =
+            Llt::try_new_with_symbolic(symbolic.clone(), a.as_ref(), Side::Lower).map_err(|e| {
+                SolveError::Factorise {
+                    hermitian: true,
+                    unknowns: n,
+                    reason: e.to_string(),
+                }
+            })?;
         let pattern = (
             a.symbolic().col_ptr().to_vec(),
             a.symbolic().row_idx().to_vec(),
@@ -95,7 +110,7 @@ impl HpdSolver {
     }
 
     /// Solves `A·x = rhs`.
-    pub fn solve(&self, rhs: &[c64]) -> Result<Vec<c64>, String> {
+    pub fn solve(&self, rhs: &[c64]) -> Result<Vec<c64>, SolveError> {
         solve_with(&self.llt, self.n, rhs)
     }
 }
@@ -119,46 +134,55 @@ impl Entry for c64 {
 
 /// The lower triangle of the `n × n` matrix given by `triplets`
 /// (duplicates summed; indices and values checked).
-fn lower<T: Entry>(n: usize, triplets: &[(u32, u32, T)]) -> Result<SparseColMat<usize, T>, String> {
+fn lower<T: Entry>(
+    n: usize,
+    triplets: &[(u32, u32, T)],
+) -> Result<SparseColMat<usize, T>, SolveError> {
     let mut lower = Vec::with_capacity(triplets.len());
     for &(r, c, v) in triplets {
         let (r, c) = (r as usize, c as usize);
         if r >= n || c >= n {
-            return Err(format!(
-                "sparse entry ({r}, {c}) outside a {n} × {n} matrix"
-            ));
+            return Err(SolveError::EntryOutside {
+                row: r,
+                column: c,
+                size: n,
+            });
         }
         if !v.finite() {
-            return Err(format!("sparse entry ({r}, {c}) is not finite"));
+            return Err(SolveError::EntryNotFinite { row: r, column: c });
         }
         if r >= c {
             lower.push(Triplet::new(r, c, v));
         }
     }
     SparseColMat::<usize, T>::try_new_from_triplets(n, n, &lower)
-        .map_err(|e| format!("sparse matrix: {e:?}"))
+        .map_err(|e| SolveError::Matrix(format!("{e:?}")))
 }
 
 /// Solves `A·x = rhs` with a factorisation of `A` (`n` unknowns).
-fn solve_with<T: Entry>(llt: &Llt<usize, T>, n: usize, rhs: &[T]) -> Result<Vec<T>, String> {
+fn solve_with<T: Entry>(llt: &Llt<usize, T>, n: usize, rhs: &[T]) -> Result<Vec<T>, SolveError> {
     if rhs.len() != n {
-        return Err(format!(
-            "right-hand side of length {} for {n} unknowns",
-            rhs.len()
-        ));
+        return Err(SolveError::RhsLength {
+            len: rhs.len(),
+            unknowns: n,
+        });
     }
     let mut x = rhs.to_vec();
     llt.solve_in_place(MatMut::from_column_major_slice_mut(&mut x, n, 1));
     if x.iter().all(Entry::finite) {
         Ok(x)
     } else {
-        Err(format!("sparse solve ({n} unknowns): non-finite solution"))
+        Err(SolveError::NonFinite { unknowns: n })
     }
 }
 
 /// Solves the symmetric positive definite system `A·x = rhs`, `A` given
 /// by `triplets` as for [`SpdSolver::new`].
-pub fn solve_spd(n: usize, triplets: &[(u32, u32, f64)], rhs: &[f64]) -> Result<Vec<f64>, String> {
+pub fn solve_spd(
+    n: usize,
+    triplets: &[(u32, u32, f64)],
+    rhs: &[f64],
+) -> Result<Vec<f64>, SolveError> {
     SpdSolver::new(n, triplets)?.solve(rhs)
 }
 
@@ -219,15 +243,22 @@ mod tests {
         assert!((x[0] - c64::new(3.0 / 8.0, 0.0)).norm() < 1e-12, "{x:?}");
         assert!((x[1] - c64::new(0.0, -1.0 / 8.0)).norm() < 1e-12, "{x:?}");
         let e = solver.refactor(&[(0, 0, three), (1, 1, three)]).err();
-        assert!(e.is_some_and(|e| e.contains("pattern differs")));
+        assert_eq!(e, Some(SolveError::PatternDiffers));
     }
 
     #[test]
     fn rejects_indefinite_and_out_of_range() {
         assert!(solve_spd(2, &[(0, 0, 1.0), (1, 1, -1.0)], &[1.0, 1.0]).is_err());
         let e = solve_spd(2, &[(0, 2, 1.0)], &[1.0, 1.0]).unwrap_err();
-        assert!(e.contains("outside"), "{e}");
+        assert_eq!(
+            e,
+            SolveError::EntryOutside {
+                row: 0,
+                column: 2,
+                size: 2
+            }
+        );
         let e = solve_spd(1, &[(0, 0, 1.0)], &[1.0, 1.0]).unwrap_err();
-        assert!(e.contains("length"), "{e}");
+        assert_eq!(e.to_string(), "right-hand side of length 2 for 1 unknowns");
     }
 }

@@ -5,7 +5,9 @@ use dualex_remesh::shapes::{
 };
 use dualex_remesh::singularity::vertex_turning;
 use dualex_remesh::smooth::field_energy;
-use dualex_remesh::{cross_field, cut_to_disk, Cut, FieldOptions, FieldResult, Surface};
+use dualex_remesh::{
+    cross_field, cut_to_disk, Cut, FieldOptions, FieldResult, RemeshError, Surface,
+};
 use std::f64::consts::FRAC_PI_2;
 
 fn field(s: &Surface) -> FieldResult {
@@ -379,7 +381,8 @@ fn non_manifold_vertices_are_errors() {
     ];
     let s = Surface::new(p, vec![[0, 1, 2], [0, 3, 4]]).unwrap();
     let e = cross_field(&s, &FieldOptions::default()).unwrap_err();
-    assert!(e.contains("vertex 0 is not manifold"), "{e}");
+    assert_eq!(e, RemeshError::NonManifoldVertex { vertex: 0 }, "{e}");
+    assert!(e.to_string().contains("vertex 0 is not manifold"), "{e}");
 }
 
 #[test]
@@ -389,16 +392,26 @@ fn the_checker_rejects_bad_cuts() {
         is_cut: vec![false; s.edges.len()],
     };
     let e = none.check(&s, &[]).unwrap_err();
-    assert!(e.contains("Euler characteristic 0"), "{e}");
+    assert!(
+        matches!(e, RemeshError::ComponentNotDisk { euler: 0, .. }),
+        "{e}"
+    );
     let s = icosphere(1);
     let r = field(&s);
     let cut = cut_to_disk(&s, &r.singularities[..1]).unwrap();
     let e = cut.check(&s, &r.singularities).unwrap_err();
-    assert!(e.contains("not on the cut"), "{e}");
+    assert!(matches!(e, RemeshError::SingularOffCut { .. }), "{e}");
     // a singularity inside the cut-open surface: the field does not comb
     let e = cut.comb(&s, &r.field).unwrap_err();
-    assert!(e.contains("does not comb"), "{e}");
-    assert!(cut_to_disk(&s, &[(9999, 1)]).is_err());
+    assert!(matches!(e, RemeshError::NotCombed { .. }), "{e}");
+    assert!(e.to_string().contains("does not comb"), "{e}");
+    assert_eq!(
+        cut_to_disk(&s, &[(9999, 1)]).unwrap_err(),
+        RemeshError::CutVertexOutOfRange {
+            vertex: 9999,
+            vertices: s.positions.len()
+        }
+    );
 }
 
 #[test]

@@ -7,21 +7,20 @@
 
 use std::path::Path;
 
+use crate::error::RenderError;
+
 use tiny_skia::{Color, Paint, Pixmap};
 
 /// Smallest and largest accepted picture size in pixels.
 pub const SIZE_RANGE: std::ops::RangeInclusive<u32> = 16..=16384;
 
 /// A white square pixmap of `size × size` pixels.
-pub fn white(size: u32) -> Result<Pixmap, String> {
+pub fn white(size: u32) -> Result<Pixmap, RenderError> {
     if !SIZE_RANGE.contains(&size) {
-        return Err(format!(
-            "picture size {size} is outside {}..={} pixels",
-            SIZE_RANGE.start(),
-            SIZE_RANGE.end()
-        ));
+        return Err(RenderError::Size(size));
     }
-    let mut pix = Pixmap::new(size, size).ok_or_else(|| format!("cannot allocate {size}²"))?;
+    let mut pix =
+        Pixmap::new(size, size).ok_or_else(|| RenderError::Allocate(format!("{size}²")))?;
     pix.fill(Color::WHITE);
     Ok(pix)
 }
@@ -90,27 +89,33 @@ pub fn bbox(points: impl Iterator<Item = [f64; 2]>) -> Option<([f64; 2], [f64; 2
 }
 
 /// Encodes `pix` as PNG.
-pub fn encode(pix: &Pixmap) -> Result<Vec<u8>, String> {
-    pix.encode_png()
-        .map_err(|e| format!("cannot encode PNG: {e}"))
+pub fn encode(pix: &Pixmap) -> Result<Vec<u8>, RenderError> {
+    pix.encode_png().map_err(|e| RenderError::Encode {
+        file: None,
+        reason: e.to_string(),
+    })
 }
 
 /// Encodes `pix` as PNG and writes it to `path` through a temporary file
 /// and a rename.
-pub fn write_png(pix: &Pixmap, path: &Path) -> Result<(), String> {
-    let data = pix
-        .encode_png()
-        .map_err(|e| format!("{}: cannot encode PNG: {e}", path.display()))?;
+pub fn write_png(pix: &Pixmap, path: &Path) -> Result<(), RenderError> {
+    let data = pix.encode_png().map_err(|e| RenderError::Encode {
+        file: Some(path.to_path_buf()),
+        reason: e.to_string(),
+    })?;
     let name = path
         .file_name()
-        .ok_or_else(|| format!("{}: not a file name", path.display()))?;
+        .ok_or_else(|| RenderError::NotAFileName(path.to_path_buf()))?;
     let mut tmp_name = name.to_os_string();
     tmp_name.push(format!(".tmp-{}", std::process::id()));
     let tmp = path.with_file_name(tmp_name);
     let result = std::fs::write(&tmp, &data).and_then(|()| std::fs::rename(&tmp, path));
-    result.map_err(|e| {
+    result.map_err(|error| {
         let _ = std::fs::remove_file(&tmp);
-        format!("{}: {e}", path.display())
+        RenderError::Write {
+            file: path.to_path_buf(),
+            error,
+        }
     })
 }
 
@@ -141,7 +146,10 @@ mod tests {
         let path = dir.join("x.png");
         let pix = white(16).unwrap();
         let err = write_png(&pix, &path).unwrap_err();
-        assert!(err.starts_with(&path.display().to_string()), "{err}");
+        assert!(
+            err.to_string().starts_with(&path.display().to_string()),
+            "{err}"
+        );
         assert!(!dir.exists());
     }
 }

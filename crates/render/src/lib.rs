@@ -23,11 +23,12 @@
 //! Invariant: a PNG is written to a temporary file beside the target and
 //! renamed over it, so the target is either the old file or the whole new
 //! one. Bad input (index out of range, non-finite coordinate, nothing to
-//! draw) is an `Err(String)`, never a panic.
+//! draw) is an `Err(`[`RenderError`]`)` naming the element, never a panic.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod canvas;
+mod error;
 mod glyphs;
 mod map_png;
 mod project;
@@ -41,6 +42,7 @@ mod gallery;
 #[cfg(test)]
 mod test_png;
 
+pub use error::RenderError;
 pub use map_png::{map_png, map_png_bytes, map_png_marked, MapMark};
 pub use quad_png::{quad_png, quad_png_bytes};
 pub use quality_png::quality_histogram_png;

@@ -30,6 +30,7 @@ use dualex_map::{Topology, TransitionOptions, Transitions, TriMap};
 use tiny_skia::{FillRule, PathBuilder, Pixmap, Stroke, Transform};
 
 use crate::canvas::{bbox, encode, paint, white, write_png, Fit};
+use crate::error::RenderError;
 use crate::valence::ValenceClass;
 
 /// A vertex to mark, with the class of the quad vertex it becomes.
@@ -67,8 +68,8 @@ const EDGE: [u8; 3] = [0x9a, 0xa4, 0xb4];
 pub const PURPLE: [u8; 3] = [0x8e, 0x44, 0xad];
 
 /// Renders `map` with its singular vertices marked (see the module docs).
-pub fn map_png(map: &TriMap, path: &Path, size: u32) -> Result<(), String> {
-    map.validate().map_err(|e| e.to_string())?;
+pub fn map_png(map: &TriMap, path: &Path, size: u32) -> Result<(), RenderError> {
+    map.validate()?;
     let (welded, _) = weld(map);
     let marks = singular_marks(&welded);
     map_png_marked(&welded, &marks, path, size)
@@ -76,8 +77,8 @@ pub fn map_png(map: &TriMap, path: &Path, size: u32) -> Result<(), String> {
 
 /// The PNG bytes of [`map_png`], for the caller to write (errors name no
 /// file).
-pub fn map_png_bytes(map: &TriMap, size: u32) -> Result<Vec<u8>, String> {
-    map.validate().map_err(|e| e.to_string())?;
+pub fn map_png_bytes(map: &TriMap, size: u32) -> Result<Vec<u8>, RenderError> {
+    map.validate()?;
     let (welded, _) = weld(map);
     let marks = singular_marks(&welded);
     encode(&draw_map(&welded, &marks, size)?)
@@ -109,24 +110,24 @@ pub fn map_png_marked(
     marks: &[MapMark],
     path: &Path,
     size: u32,
-) -> Result<(), String> {
+) -> Result<(), RenderError> {
     let pix = draw_map(map, marks, size)?;
     write_png(&pix, path)
 }
 
 /// Draws the picture of [`map_png_marked`] into a pixmap.
-pub(crate) fn draw_map(map: &TriMap, marks: &[MapMark], size: u32) -> Result<Pixmap, String> {
-    map.validate().map_err(|e| e.to_string())?;
+pub(crate) fn draw_map(map: &TriMap, marks: &[MapMark], size: u32) -> Result<Pixmap, RenderError> {
+    map.validate()?;
     let nv = map.positions.len();
     if let Some(m) = marks.iter().find(|m| m.vertex as usize >= nv) {
-        return Err(format!(
-            "mark on vertex {}, but there are {nv} vertices",
-            m.vertex
-        ));
+        return Err(RenderError::MarkOutOfRange {
+            vertex: m.vertex,
+            vertices: nv,
+        });
     }
     let mut pix = white(size)?;
     let uv = map.coords.iter().flatten().copied();
-    let (lo, hi) = bbox(uv).ok_or("nothing to draw: the map has no triangles")?;
+    let (lo, hi) = bbox(uv).ok_or(RenderError::NoTriangles)?;
     let fit = Fit::new(lo, hi, size);
     draw_triangles(&mut pix, map, &fit);
     draw_grid(&mut pix, lo, hi, &fit);

@@ -17,20 +17,21 @@ use dualex_map::QuadMesh;
 use tiny_skia::{FillRule, PathBuilder, Pixmap, Stroke, Transform};
 
 use crate::canvas::{bbox, paint, white, write_png, Fit};
+use crate::error::RenderError;
 use crate::project::{newell_normal, View};
 use crate::valence::{check_quads, valence_classes, ValenceClass};
 
 /// Renders `mesh` to a `size`² PNG at `path` (see the module docs).
 /// Errors: a quad referring to a missing vertex, a non-finite position, no
 /// quad, a size outside 16..=16384, or the file cannot be written.
-pub fn quad_png(mesh: &QuadMesh, path: &Path, size: u32) -> Result<(), String> {
+pub fn quad_png(mesh: &QuadMesh, path: &Path, size: u32) -> Result<(), RenderError> {
     let pix = draw_quads(mesh, size)?;
     write_png(&pix, path)
 }
 
 /// The PNG bytes of [`quad_png`], for the caller to write (errors name no
 /// file).
-pub fn quad_png_bytes(mesh: &QuadMesh, size: u32) -> Result<Vec<u8>, String> {
+pub fn quad_png_bytes(mesh: &QuadMesh, size: u32) -> Result<Vec<u8>, RenderError> {
     crate::canvas::encode(&draw_quads(mesh, size)?)
 }
 
@@ -47,10 +48,10 @@ struct Scene {
 }
 
 /// Draws the picture of [`quad_png`] into a pixmap.
-pub(crate) fn draw_quads(mesh: &QuadMesh, size: u32) -> Result<Pixmap, String> {
+pub(crate) fn draw_quads(mesh: &QuadMesh, size: u32) -> Result<Pixmap, RenderError> {
     check_quads(mesh)?;
     if mesh.cells.is_empty() {
-        return Err("nothing to draw: the mesh has no quads".into());
+        return Err(RenderError::NoQuads);
     }
     let mut pix = white(size)?;
     let scene = scene(mesh, size);

@@ -21,6 +21,7 @@
 use tiny_skia::{Color, Pixmap, Rect, Transform};
 
 use crate::canvas::{encode, paint, SIZE_RANGE};
+use crate::error::RenderError;
 use crate::glyphs::{draw_text, text_width, HEIGHT};
 use crate::valence::V5_RGB;
 
@@ -42,11 +43,14 @@ pub fn bin(v: f64) -> usize {
 }
 
 /// The count of every bin. Errors: a value is not finite.
-pub fn bin_counts(values: &[f64]) -> Result<[usize; BINS], String> {
+pub fn bin_counts(values: &[f64]) -> Result<[usize; BINS], RenderError> {
     let mut counts = [0; BINS];
     for (i, &v) in values.iter().enumerate() {
         if !v.is_finite() {
-            return Err(format!("element {i}: its quality {v} is not a number"));
+            return Err(RenderError::QualityValue {
+                element: i,
+                value: v,
+            });
         }
         counts[bin(v)] += 1;
     }
@@ -60,107 +64,156 @@ pub fn quality_histogram_png(
     title: &str,
     width: u32,
     height: u32,
-) -> Result<Vec<u8>, String> {
+) -> Result<Vec<u8>, RenderError> {
     encode(&draw_histogram(values, title, width, height)?)
 }
 
-/// Draws the histogram into a pixmap.
+/// Draws the histogram into a pixmap: the title, then the plot box
+/// ([`Plot`]) with its bars and axes.
 pub(crate) fn draw_histogram(
     values: &[f64],
     title: &str,
     width: u32,
     height: u32,
-) -> Result<Pixmap, String> {
+) -> Result<Pixmap, RenderError> {
     for side in [width, height] {
         if !SIZE_RANGE.contains(&side) {
-            return Err(format!(
-                "picture size {width}×{height} is outside {}..={} pixels",
-                SIZE_RANGE.start(),
-                SIZE_RANGE.end()
-            ));
+            return Err(RenderError::Sides { width, height });
         }
     }
     let counts = bin_counts(values)?;
-    let mut pix =
-        Pixmap::new(width, height).ok_or_else(|| format!("cannot allocate {width}×{height}"))?;
+    let mut pix = Pixmap::new(width, height)
+        .ok_or_else(|| RenderError::Allocate(format!("{width}×{height}")))?;
     pix.fill(Color::WHITE);
-    // font scale: 3 on a 1000 px wide picture, smaller when a title line
-    // would not fit
-    let margin = (width / 40).max(4);
-    let mut s = (width / 330).max(1);
-    let widest = title.lines().map(|l| text_width(l, 1)).max().unwrap_or(0);
-    while s > 1 && widest * s + 2 * margin > width {
-        s -= 1;
-    }
-    let line = (HEIGHT * s) as f32;
-    let mut lines = 0;
-    for (i, l) in title.lines().enumerate() {
-        let y = margin as f32 + i as f32 * 1.6 * line;
-        draw_text(&mut pix, l, margin as f32, y, s, INK);
-        lines += 1;
-    }
     let max = counts.iter().copied().max().unwrap_or(0);
     let max_label = max.to_string();
-    // plot box: right of the y labels, under the title, over the x labels
-    let left = (margin + text_width(&max_label, s) + 6 * s) as f32;
-    let right = (width - margin) as f32;
-    let top = margin as f32 + (1.6 * lines as f32 + 1.0) * line;
-    let bottom = height as f32 - margin as f32 - 1.8 * line;
-    if right - left < BINS as f32 || bottom - top < 4.0 * MIN_BAR {
-        return Err(format!("picture size {width}×{height} is too small"));
-    }
-    let id = Transform::identity();
-    let fill = |pix: &mut Pixmap, x: f32, y: f32, w: f32, h: f32, rgb: [u8; 3]| {
-        if let Some(r) = Rect::from_xywh(x, y, w, h) {
-            pix.fill_rect(r, &paint(rgb, 255), id, None);
-        }
-    };
-    let x_of = |v: f64| left + (right - left) * ((v + 1.0) / 2.0) as f32;
-    // the guide at 0, under the bars
-    fill(&mut pix, x_of(0.0) - 0.5, top, 1.0, bottom - top, GUIDE);
-    let bin_w = (right - left) / BINS as f32;
-    let gap = (0.12 * bin_w).max(1.0);
-    for (k, &n) in counts.iter().enumerate() {
-        if n == 0 {
-            continue;
-        }
-        let h = ((bottom - top) * n as f32 / max as f32).max(MIN_BAR);
-        let rgb = if k < BINS / 2 {
-            INVERTED_RGB
-        } else {
-            VALID_RGB
-        };
-        let x = left + k as f32 * bin_w + gap / 2.0;
-        fill(&mut pix, x, bottom - h, bin_w - gap, h, rgb);
-    }
-    // axes: x along the bottom, y on the left
-    let t = s as f32;
-    fill(&mut pix, left - t, bottom, right - left + t, t, INK);
-    fill(&mut pix, left - t, top, t, bottom - top + t, INK);
-    for (v, label) in [
-        (-1.0, "-1"),
-        (-0.5, "-0.5"),
-        (0.0, "0"),
-        (0.5, "0.5"),
-        (1.0, "1"),
-    ] {
-        let x = x_of(v);
-        let tick = if v == 0.0 || v == 1.0 || v == -1.0 {
-            3.0 * t
-        } else {
-            2.0 * t
-        };
-        fill(&mut pix, x - t / 2.0, bottom, t, tick, INK);
-        let w = text_width(label, s) as f32;
-        let lx = (x - w / 2.0).clamp(0.0, width as f32 - w);
-        draw_text(&mut pix, label, lx, bottom + tick + t, s, INK);
-    }
-    for (y, label) in [(bottom, "0".to_string()), (top, max_label)] {
-        let w = text_width(&label, s) as f32;
-        fill(&mut pix, left - 3.0 * t, y - t / 2.0, 2.0 * t, t, INK);
-        draw_text(&mut pix, &label, left - 5.0 * t - w, y - line / 2.0, s, INK);
-    }
+    let plot = Plot::new(&mut pix, title, &max_label, width, height)?;
+    plot.bars(&mut pix, &counts, max);
+    plot.axes(&mut pix, max_label, width);
     Ok(pix)
+}
+
+/// The plot box of a histogram (pixels) and its font.
+struct Plot {
+    /// Font scale.
+    s: u32,
+    /// Height of a text line.
+    line: f32,
+    left: f32,
+    right: f32,
+    top: f32,
+    bottom: f32,
+}
+
+impl Plot {
+    /// Draws the title and places the plot box: right of the y labels
+    /// (`max_label` the widest), under the title, over the x labels.
+    /// Errors: the picture is too small for it.
+    fn new(
+        pix: &mut Pixmap,
+        title: &str,
+        max_label: &str,
+        width: u32,
+        height: u32,
+    ) -> Result<Plot, RenderError> {
+        // font scale: 3 on a 1000 px wide picture, smaller when a title line
+        // would not fit
+        let margin = (width / 40).max(4);
+        let mut s = (width / 330).max(1);
+        let widest = title.lines().map(|l| text_width(l, 1)).max().unwrap_or(0);
+        while s > 1 && widest * s + 2 * margin > width {
+            s -= 1;
+        }
+        let line = (HEIGHT * s) as f32;
+        let mut lines = 0;
+        for (i, l) in title.lines().enumerate() {
+            let y = margin as f32 + i as f32 * 1.6 * line;
+            draw_text(pix, l, margin as f32, y, s, INK);
+            lines += 1;
+        }
+        let left = (margin + text_width(max_label, s) + 6 * s) as f32;
+        let right = (width - margin) as f32;
+        let top = margin as f32 + (1.6 * lines as f32 + 1.0) * line;
+        let bottom = height as f32 - margin as f32 - 1.8 * line;
+        if right - left < BINS as f32 || bottom - top < 4.0 * MIN_BAR {
+            return Err(RenderError::TooSmall { width, height });
+        }
+        Ok(Plot {
+            s,
+            line,
+            left,
+            right,
+            top,
+            bottom,
+        })
+    }
+
+    /// The x of quality `v` in [−1, 1].
+    fn x_of(&self, v: f64) -> f32 {
+        self.left + (self.right - self.left) * ((v + 1.0) / 2.0) as f32
+    }
+
+    /// The guide at 0, then a bar per non-empty bin (inverted red).
+    fn bars(&self, pix: &mut Pixmap, counts: &[usize; BINS], max: usize) {
+        let (left, right, top, bottom) = (self.left, self.right, self.top, self.bottom);
+        // the guide at 0, under the bars
+        fill(pix, self.x_of(0.0) - 0.5, top, 1.0, bottom - top, GUIDE);
+        let bin_w = (right - left) / BINS as f32;
+        let gap = (0.12 * bin_w).max(1.0);
+        for (k, &n) in counts.iter().enumerate() {
+            if n == 0 {
+                continue;
+            }
+            let h = ((bottom - top) * n as f32 / max as f32).max(MIN_BAR);
+            let rgb = if k < BINS / 2 {
+                INVERTED_RGB
+            } else {
+                VALID_RGB
+            };
+            let x = left + k as f32 * bin_w + gap / 2.0;
+            fill(pix, x, bottom - h, bin_w - gap, h, rgb);
+        }
+    }
+
+    /// The axes (x along the bottom, y on the left), their ticks and
+    /// labels (`max_label` at the top of y).
+    fn axes(&self, pix: &mut Pixmap, max_label: String, width: u32) {
+        let (s, line) = (self.s, self.line);
+        let (left, right, top, bottom) = (self.left, self.right, self.top, self.bottom);
+        let t = s as f32;
+        fill(pix, left - t, bottom, right - left + t, t, INK);
+        fill(pix, left - t, top, t, bottom - top + t, INK);
+        for (v, label) in [
+            (-1.0, "-1"),
+            (-0.5, "-0.5"),
+            (0.0, "0"),
+            (0.5, "0.5"),
+            (1.0, "1"),
+        ] {
+            let x = self.x_of(v);
+            let tick = if v == 0.0 || v == 1.0 || v == -1.0 {
+                3.0 * t
+            } else {
+                2.0 * t
+            };
+            fill(pix, x - t / 2.0, bottom, t, tick, INK);
+            let w = text_width(label, s) as f32;
+            let lx = (x - w / 2.0).clamp(0.0, width as f32 - w);
+            draw_text(pix, label, lx, bottom + tick + t, s, INK);
+        }
+        for (y, label) in [(bottom, "0".to_string()), (top, max_label)] {
+            let w = text_width(&label, s) as f32;
+            fill(pix, left - 3.0 * t, y - t / 2.0, 2.0 * t, t, INK);
+            draw_text(pix, &label, left - 5.0 * t - w, y - line / 2.0, s, INK);
+        }
+    }
+}
+
+/// A solid rectangle (none when it is empty).
+fn fill(pix: &mut Pixmap, x: f32, y: f32, w: f32, h: f32, rgb: [u8; 3]) {
+    if let Some(r) = Rect::from_xywh(x, y, w, h) {
+        pix.fill_rect(r, &paint(rgb, 255), Transform::identity(), None);
+    }
 }
 
 #[cfg(test)]
@@ -176,9 +229,10 @@ mod tests {
         assert_eq!(bin(1e-12), BINS / 2);
         assert_eq!(bin(1.0), BINS - 1);
         assert_eq!(bin(1.5), BINS - 1);
-        assert!(bin_counts(&[0.5, f64::NAN])
-            .unwrap_err()
-            .contains("element 1"));
+        assert!(matches!(
+            bin_counts(&[0.5, f64::NAN]),
+            Err(RenderError::QualityValue { element: 1, .. })
+        ));
     }
 
     #[test]

@@ -12,6 +12,7 @@
 
 use std::collections::HashMap;
 
+use crate::error::RenderError;
 use dualex_map::QuadMesh;
 
 /// What a vertex is coloured as.
@@ -76,18 +77,32 @@ pub const OTHER_RGB: [u8; 3] = [0x2c, 0xa0, 0x2c];
 
 /// Checks that every quad refers to existing vertices and every position
 /// is finite; the error names the first offender.
-pub fn check_quads(mesh: &QuadMesh) -> Result<(), String> {
-    for (i, p) in mesh.positions.iter().enumerate() {
+pub fn check_quads(mesh: &QuadMesh) -> Result<(), RenderError> {
+    check_cells(&mesh.positions, &mesh.cells, "quad")
+}
+
+/// Checks that every position is finite, then that every cell (`kind`:
+/// `"quad"`, `"hex"`) refers to existing vertices; the error names the
+/// first offender.
+pub fn check_cells<const K: usize>(
+    positions: &[[f64; 3]],
+    cells: &[[u32; K]],
+    kind: &'static str,
+) -> Result<(), RenderError> {
+    for (i, p) in positions.iter().enumerate() {
         if p.iter().any(|x| !x.is_finite()) {
-            return Err(format!("vertex {i}: position is not finite"));
+            return Err(RenderError::VertexNotFinite { vertex: i });
         }
     }
-    let nv = mesh.positions.len();
-    for (q, cell) in mesh.cells.iter().enumerate() {
+    let nv = positions.len();
+    for (c, cell) in cells.iter().enumerate() {
         if let Some(&v) = cell.iter().find(|&&v| v as usize >= nv) {
-            return Err(format!(
-                "quad {q} refers to vertex {v}, but there are {nv} vertices"
-            ));
+            return Err(RenderError::CellOutOfRange {
+                kind,
+                cell: c,
+                vertex: v,
+                vertices: nv,
+            });
         }
     }
     Ok(())
@@ -240,14 +255,26 @@ mod tests {
     fn check_quads_names_the_offender() {
         let mut mesh = grid_quads(1, 1);
         mesh.cells.push([0, 1, 9, 2]);
+        let e = check_quads(&mesh).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                RenderError::CellOutOfRange {
+                    cell: 1,
+                    vertex: 9,
+                    ..
+                }
+            ),
+            "{e}"
+        );
         assert_eq!(
-            check_quads(&mesh),
-            Err("quad 1 refers to vertex 9, but there are 4 vertices".into())
+            e.to_string(),
+            "quad 1 refers to vertex 9, but there are 4 vertices"
         );
         let mut mesh = grid_quads(1, 1);
         mesh.positions[2][1] = f64::NAN;
         assert_eq!(
-            check_quads(&mesh),
+            check_quads(&mesh).map_err(|e| e.to_string()),
             Err("vertex 2: position is not finite".into())
         );
     }

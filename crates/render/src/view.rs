@@ -26,6 +26,7 @@ use std::fmt::Write;
 
 use dualex_map::{HexMesh, QuadMesh};
 
+use crate::error::RenderError;
 use crate::valence::{check_quads, valence_classes};
 
 const VIEWER_JS: &str = include_str!("viewer.js");
@@ -44,15 +45,21 @@ pub struct Quality<'a> {
 
 impl Quality<'_> {
     /// Checks one finite value per element.
-    fn check(&self, elements: usize, one: &str, many: &str) -> Result<(), String> {
+    fn check(
+        &self,
+        elements: usize,
+        one: &'static str,
+        many: &'static str,
+    ) -> Result<(), RenderError> {
         if self.values.len() != elements {
-            return Err(format!(
-                "{} quality values for {elements} {many}",
-                self.values.len()
-            ));
+            return Err(RenderError::QualityCount {
+                values: self.values.len(),
+                elements,
+                many,
+            });
         }
         match self.values.iter().position(|v| !v.is_finite()) {
-            Some(i) => Err(format!("{one} {i}: its quality is not a number")),
+            Some(element) => Err(RenderError::QualityNotNumber { one, element }),
             None => Ok(()),
         }
     }
@@ -60,7 +67,7 @@ impl Quality<'_> {
 
 /// The page showing `mesh` (see the module docs). Errors: a quad refers to
 /// a missing vertex, or a position is not finite.
-pub fn view_html(mesh: &QuadMesh, title: &str) -> Result<String, String> {
+pub fn view_html(mesh: &QuadMesh, title: &str) -> Result<String, RenderError> {
     check_quads(mesh)?;
     let json = mesh_json(mesh, title, None, None);
     Ok(page(&html_escape(title), &json))
@@ -73,7 +80,7 @@ pub fn view_html_quality(
     mesh: &QuadMesh,
     title: &str,
     quality: &Quality,
-) -> Result<String, String> {
+) -> Result<String, RenderError> {
     check_quads(mesh)?;
     quality.check(mesh.cells.len(), "quad", "quads")?;
     let json = mesh_json(mesh, title, None, Some((quality, None)));
@@ -84,7 +91,7 @@ pub fn view_html_quality(
 /// valences, the hex count, and a cut plane to look inside (see the
 /// module docs). Errors: a hex refers to a missing vertex, or a position
 /// is not finite.
-pub fn view_html_hex(mesh: &HexMesh, title: &str) -> Result<String, String> {
+pub fn view_html_hex(mesh: &HexMesh, title: &str) -> Result<String, RenderError> {
     hex_page(mesh, title, None)
 }
 
@@ -95,12 +102,12 @@ pub fn view_html_hex_quality(
     mesh: &HexMesh,
     title: &str,
     quality: &Quality,
-) -> Result<String, String> {
+) -> Result<String, RenderError> {
     quality.check(mesh.cells.len(), "hex", "hexes")?;
     hex_page(mesh, title, Some(quality))
 }
 
-fn hex_page(mesh: &HexMesh, title: &str, quality: Option<&Quality>) -> Result<String, String> {
+fn hex_page(mesh: &HexMesh, title: &str, quality: Option<&Quality>) -> Result<String, RenderError> {
     let (cells, hex_of) = boundary_faces(mesh)?;
     let boundary = QuadMesh {
         positions: mesh.positions.clone(),
@@ -165,7 +172,7 @@ fn mesh_json(
 /// The boundary quads of a hex mesh (faces used by one hex), outward,
 /// with its vertices renumbered in order of first use. Errors: a hex
 /// refers to a missing vertex.
-pub fn hex_boundary(mesh: &HexMesh) -> Result<QuadMesh, String> {
+pub fn hex_boundary(mesh: &HexMesh) -> Result<QuadMesh, RenderError> {
     let mut out = QuadMesh::default();
     let mut new_id: HashMap<u32, u32> = HashMap::new();
     for f in boundary_faces(mesh)?.0 {
@@ -182,13 +189,16 @@ pub fn hex_boundary(mesh: &HexMesh) -> Result<QuadMesh, String> {
 
 /// The faces used by one hex, outward, on the vertex ids of `mesh`, and
 /// the hex of each. Errors: a hex refers to a missing vertex.
-fn boundary_faces(mesh: &HexMesh) -> Result<(Vec<[u32; 4]>, Vec<u32>), String> {
+fn boundary_faces(mesh: &HexMesh) -> Result<(Vec<[u32; 4]>, Vec<u32>), RenderError> {
     let nv = mesh.positions.len();
     for (h, cell) in mesh.cells.iter().enumerate() {
         if let Some(&v) = cell.iter().find(|&&v| v as usize >= nv) {
-            return Err(format!(
-                "hex {h} refers to vertex {v}, but there are {nv} vertices"
-            ));
+            return Err(RenderError::CellOutOfRange {
+                kind: "hex",
+                cell: h,
+                vertex: v,
+                vertices: nv,
+            });
         }
     }
     let mut count: HashMap<[u32; 4], u32> = HashMap::new();

@@ -16,6 +16,7 @@
 //! piece of the cut-open surface is a disk (Euler characteristic 1), so
 //! that a map exists on it.
 
+use crate::error::RemeshError;
 use crate::field::CrossField;
 use crate::surface::{Surface, NO_FACE};
 use crate::union_find::UnionFind;
@@ -50,18 +51,26 @@ impl Charts {
 }
 
 /// Builds the [`Charts`]; see the module docs for the checks.
-pub fn build(surface: &Surface, field: &CrossField, is_cut: &[bool]) -> Result<Charts, String> {
+pub fn build(
+    surface: &Surface,
+    field: &CrossField,
+    is_cut: &[bool],
+) -> Result<Charts, RemeshError> {
     let (nf, ne) = (surface.triangles.len(), surface.edges.len());
     if field.angle.len() != nf || field.matching.len() != ne || is_cut.len() != ne {
-        return Err(format!(
-            "integrate: {} angles, {} matchings, {} cut flags for {nf} faces and {ne} edges",
-            field.angle.len(),
-            field.matching.len(),
-            is_cut.len()
-        ));
+        return Err(RemeshError::Sizes {
+            angles: field.angle.len(),
+            matchings: field.matching.len(),
+            cut_flags: is_cut.len(),
+            faces: nf,
+            edges: ne,
+        });
     }
     if let Some(f) = field.angle.iter().position(|a| !a.is_finite()) {
-        return Err(format!("integrate: face {f} has angle {}", field.angle[f]));
+        return Err(RemeshError::FaceAngle {
+            face: f,
+            angle: field.angle[f],
+        });
     }
     let joined = |e: usize| !is_cut[e] && surface.edge_faces[e][1] != NO_FACE;
     let turns = comb(surface, field, &joined)?;
@@ -79,9 +88,10 @@ pub fn build(surface: &Surface, field: &CrossField, is_cut: &[bool]) -> Result<C
             seam[e] = Some(p);
         } else if p != 0 {
             let [a, b] = surface.edges[e];
-            return Err(format!(
-                "integrate: the cut misses a singularity (edge {a}–{b} keeps matching {p} after combing)"
-            ));
+            return Err(RemeshError::CutMissesSingularity {
+                ends: [a, b],
+                matching: p,
+            });
         }
     }
     let (corner_wedge, wedges) = wedges(surface, &joined);
@@ -110,7 +120,7 @@ fn comb(
     surface: &Surface,
     field: &CrossField,
     joined: &dyn Fn(usize) -> bool,
-) -> Result<Vec<u8>, String> {
+) -> Result<Vec<u8>, RemeshError> {
     let nf = surface.triangles.len();
     let mut turns: Vec<Option<u8>> = vec![None; nf];
     let mut queue = VecDeque::new();
@@ -171,7 +181,7 @@ fn check_disks(
     is_cut: &[bool],
     corner_wedge: &[u32],
     wedges: usize,
-) -> Result<(), String> {
+) -> Result<(), RemeshError> {
     // pieces: faces joined through uncut interior edges = faces sharing a wedge
     let mut uf = UnionFind::new(wedges);
     for f in 0..surface.triangles.len() {
@@ -200,10 +210,7 @@ fn check_disks(
         }
     }
     match chi.iter().position(|&c| c != 1) {
-        Some(p) => Err(format!(
-            "integrate: the cut does not open the surface to disks (a piece has Euler characteristic {})",
-            chi[p]
-        )),
+        Some(p) => Err(RemeshError::NotDisks { euler: chi[p] }),
         None => Ok(()),
     }
 }

@@ -42,6 +42,7 @@
 
 use super::charts::Charts;
 use super::elim::Form;
+use crate::error::RemeshError;
 use crate::field::wrap;
 use crate::surface::{Surface, NO_FACE};
 use std::f64::consts::FRAC_PI_2;
@@ -166,7 +167,7 @@ pub fn build(
     singular_vertices: &[u32],
     align_boundary: Option<f64>,
     sharp: &[bool],
-) -> Result<Constraints, String> {
+) -> Result<Constraints, RemeshError> {
     let mut out = Constraints::default();
     // gauge: the first wedge of each component
     out.gauge.component = vec![0; charts.wedges];
@@ -200,7 +201,7 @@ pub fn build(
     }
     for &v in singular_vertices {
         if v as usize >= surface.positions.len() {
-            return Err(format!("integrate: singular vertex {v} out of range"));
+            return Err(RemeshError::SingularOutOfRange { vertex: v });
         }
     }
     let mut is_singular = vec![false; surface.positions.len()];

@@ -8,14 +8,19 @@
 //! coordinates are the map (`dualex quad` extracts it), with an
 //! [`IntegrateReport`].
 //!
-//! Steps, one module each:
+//! Steps, one module each; [`setup`] runs 1–3 (the pipeline's step 8,
+//! [`crate::pipeline`]) and [`round`] runs 4–5 (its step 9):
 //! 1. [`charts`]: comb the field across uncut edges, find the wedges
 //!    (one `(u, v)` per wedge), the seams and their matchings;
 //! 2. [`constraints`]: seams' transitions (rotation + translation), aligned
 //!    boundary edges, gauge; the integer unknowns;
-//! 3. [`system`]: the energy `Σ_f area_f·|∇(u, v) − s·(d_f, d_f⊥)|²`;
+//! 3. [`system`]: the energy `Σ_f area_f·|∇(u, v) − s·(d_f, d_f⊥)|²`, at
+//!    the scale fitted to the area by one continuous solve
+//!    ([`IntegrateOptions::fit_area`]);
 //! 4. [`crate::quantize`]: constraints eliminated by substitution
-//!    ([`elim`]), SPD solves, rounding of the integer unknowns.
+//!    ([`elim`]), SPD solves, rounding of the integer unknowns, at the
+//!    scales of [`fit::ScaleSearch`], facing walls kept apart ([`facing`]);
+//! 5. the map kept and its report.
 //!
 //! Invariants of the output (rounded modes, consistent input): across
 //! every interior edge the two triangles' coordinates of the shared
@@ -28,15 +33,17 @@ pub mod constraints;
 pub mod elim;
 pub mod facing;
 pub mod fit;
+mod rounding;
 pub mod system;
+
+pub use rounding::round;
 #[cfg(test)]
 mod test_cut;
 
+use crate::error::RemeshError;
 use crate::field::CrossField;
-use crate::integrate::constraints::Gauge;
 use crate::integrate::elim::Form;
 use crate::quantize::{quantize, Integers, QuantizeReport, Rounding};
-use crate::separate::{Apart, NO_WALL};
 use crate::surface::Surface;
 use dualex_map::TriMap;
 
@@ -139,43 +146,58 @@ pub fn integrate(
     is_cut: &[bool],
     singular_vertices: &[u32],
     opts: &IntegrateOptions,
-) -> Result<TriMap, String> {
+) -> Result<TriMap, RemeshError> {
     integrate_report(surface, field, is_cut, singular_vertices, opts).map(|r| r.0)
 }
 
-/// [`integrate`] with its report.
+/// [`integrate`] with its report: steps 1–3 ([`setup`]), then steps
+/// 4–5 ([`round`]).
 pub fn integrate_report(
     surface: &Surface,
     field: &CrossField,
     is_cut: &[bool],
     singular_vertices: &[u32],
     opts: &IntegrateOptions,
-) -> Result<(TriMap, IntegrateReport), String> {
+) -> Result<(TriMap, IntegrateReport), RemeshError> {
+    let setup = setup(surface, field, is_cut, singular_vertices, opts)?;
+    round(surface, field, is_cut, singular_vertices, opts, setup)
+}
+
+/// What steps 1–3 made ([`setup`]), for the rounding ([`round`]).
+pub struct Setup {
+    /// Step 1: the cut-open surface.
+    charts: charts::Charts,
+    /// Step 2: the constraints, the gauge at its offset.
+    cons: constraints::Constraints,
+    /// Step 2: the integer unknowns (singular vertices first when they
+    /// are rounded, then boundary, sharp edges, seams' translations).
+    integers: Vec<Form>,
+    /// The scale of the options ([`scale`]).
+    first_scale: f64,
+    /// Step 3: the scale fitted to the area, and the energy at it.
+    scale: f64,
+    energy: system::Energy,
+    /// Step 3: the continuous map of the area fit (at `first_scale`).
+    fit: Option<Vec<f64>>,
+    /// Sparse solves made.
+    solves: usize,
+}
+
+/// Steps 1–3 (module docs): the charts, the constraints and integer
+/// unknowns, the energy at the scale fitted to the area (one continuous
+/// solve).
+pub fn setup(
+    surface: &Surface,
+    field: &CrossField,
+    is_cut: &[bool],
+    singular_vertices: &[u32],
+    opts: &IntegrateOptions,
+) -> Result<Setup, RemeshError> {
     let first_scale = scale(surface, opts)?;
     // 1. the cut-open surface
     let charts = charts::build(surface, field, is_cut)?;
     // 2. constraints and integer unknowns
-    let mut cons = constraints::build(
-        surface,
-        &charts,
-        singular_vertices,
-        opts.align_boundary,
-        &opts.sharp,
-    )?;
-    if !opts.gauge_offset.iter().all(|x| x.is_finite()) {
-        return Err(format!(
-            "gauge offset {:?} is not finite",
-            opts.gauge_offset
-        ));
-    }
-    cons.gauge.offset = opts.gauge_offset;
-    let mut integers = Vec::new();
-    if opts.round_singularities {
-        integers.extend(cons.singular.iter().cloned());
-    }
-    integers.extend(cons.boundary.iter().cloned());
-    integers.extend(cons.sharp.iter().cloned());
-    integers.extend(cons.translations.iter().cloned());
+    let (cons, integers) = constrain(surface, &charts, singular_vertices, opts)?;
     // 3. energy, the scale fitted to the area (one continuous solve)
     let mut scale = first_scale;
     let mut energy = system::energy(surface, &charts, scale);
@@ -192,138 +214,45 @@ pub fn integrate_report(
         fit = Some(x);
         solves += 1;
     }
-    // 4. solve, round, solve
-    let first = if opts.round_singularities {
-        cons.singular.len()
-    } else {
-        0
-    };
-    // the facing walls need a continuous map: the one of the area fit, or
-    // one solved here, the first rounding's start then
-    if fit.is_none() && !cons.boundary.is_empty() {
-        fit = Some(continuous(&energy, &cons)?);
-        solves += 1;
-    }
-    let walls = Walls::find(
-        surface,
-        &charts,
-        &cons,
-        fit.as_deref(),
-        first,
-        integers.len(),
-    );
-    // the rounding moves the area again: round anew at the scales of
-    // [`fit::ScaleSearch`] (at most `max_roundings` in all), keeping the map whose
-    // area is closest to `N`
-    let target = match (opts.fit_area, opts.scale, opts.quads) {
-        (true, None, Some(n)) => Some(n as f64),
-        _ => None,
-    };
-    let mut best: Option<(f64, Vec<f64>, QuantizeReport, f64)> = None;
-    let mut search = None;
-    if let Some(n) = target {
-        let (seeded, again) = fit::ScaleSearch::with_seen(n, &opts.seen, REFIT_TOLERANCE);
-        search = Some(seeded);
-        if let Some(s) = again {
-            scale = s;
-            energy = system::energy(surface, &charts, scale);
-        }
-    }
-    let mut roundings_seen = Vec::new();
-    for _ in 0..opts.max_roundings.max(1) {
-        let start = fit
-            .as_ref()
-            .and_then(|x0| scaled_start(x0, scale / first_scale, &cons.rows, &cons.gauge));
-        let pairs = walls.pairs(scale / first_scale);
-        let ints = Integers {
-            forms: &integers,
-            first,
-            apart: Apart {
-                wall: &walls.wall,
-                pairs: &pairs,
-            },
-        };
-        let (x, q) = quantize(
-            &energy,
-            &cons.rows,
-            &cons.gauge,
-            &ints,
-            opts.rounding,
-            start,
-        )?;
-        solves += q.solves;
-        let area = signed_area(&charts.corner_wedge, &x);
-        roundings_seen.push((scale, area));
-        let miss = target.map_or(0.0, |n| (area - n).abs() / n);
-        if best.as_ref().is_none_or(|b| miss < b.0) {
-            best = Some((miss, x, q, scale));
-        }
-        match search.as_mut() {
-            Some(search) if miss > REFIT_TOLERANCE => {
-                let next = search.next(scale, area);
-                if next == scale {
-                    break;
-                }
-                scale = next;
-                energy = system::energy(surface, &charts, scale);
-            }
-            _ => break,
-        }
-    }
-    let Some((_, x, mut quantize, scale)) = best else {
-        return Err("integrate: no solve".into());
-    };
-    // sharp edges on iso-lines only where the rounding keeps every
-    // integer unknown whole (constraints' module docs): else without them
-    if quantize.conflicts > 0 && !cons.sharp.is_empty() {
-        let mut o = opts.clone();
-        o.sharp = Vec::new();
-        return integrate_report(surface, field, is_cut, singular_vertices, &o);
-    }
-    quantize.solves = solves;
-    let coords = charts
-        .corner_wedge
-        .chunks_exact(3)
-        .map(|w| std::array::from_fn(|i| [x[2 * w[i] as usize], x[2 * w[i] as usize + 1]]))
-        .collect();
-    let map = TriMap {
-        positions: surface.positions.clone(),
-        simplices: surface.triangles.clone(),
-        coords,
-    };
-    let report = IntegrateReport {
-        scale,
+    Ok(Setup {
+        charts,
+        cons,
+        integers,
         first_scale,
-        map_area: signed_area(&charts.corner_wedge, &x),
-        roundings: roundings_seen.len(),
-        roundings_seen,
-        wedges: charts.wedges,
-        seams: charts.seam.iter().flatten().count(),
-        rotated_seams: charts.seam.iter().flatten().filter(|&&p| p != 0).count(),
-        aligned_edges: cons.aligned_edges,
-        quantize,
-    };
-    Ok((map, report))
+        scale,
+        energy,
+        fit,
+        solves,
+    })
 }
 
-/// The continuous minimizer at `k` times the scale of `x0` (the
-/// minimizer with the gauge at the origin), with the gauge at its offset:
-/// the energy is quadratic with a target linear in the scale and the rows
-/// are homogeneous, so the minimizer is `k·x0` plus the minimizer without
-/// target, which is the uniform translation to the offset whenever that
-/// translation satisfies every row (checked; `None` otherwise: solve).
-fn scaled_start(x0: &[f64], k: f64, rows: &[Form], gauge: &Gauge) -> Option<Vec<f64>> {
-    let x: Vec<f64> = x0
-        .iter()
-        .enumerate()
-        .map(|(i, &v)| k * v + gauge.offset[i % 2])
-        .collect();
-    let size = x.iter().fold(1.0f64, |m, v| m.max(v.abs()));
-    let feasible = rows
-        .iter()
-        .chain(&gauge.rows(rows.iter()))
-        .all(|r| r.eval(&x).abs() <= 1e-9 * size);
-    feasible.then_some(x)
+/// Step 2: the [`constraints`] with the gauge at its offset, and the
+/// integer unknowns in their order ([`Setup::integers`]).
+fn constrain(
+    surface: &Surface,
+    charts: &charts::Charts,
+    singular_vertices: &[u32],
+    opts: &IntegrateOptions,
+) -> Result<(constraints::Constraints, Vec<Form>), RemeshError> {
+    let mut cons = constraints::build(
+        surface,
+        charts,
+        singular_vertices,
+        opts.align_boundary,
+        &opts.sharp,
+    )?;
+    if !opts.gauge_offset.iter().all(|x| x.is_finite()) {
+        return Err(RemeshError::GaugeOffset(opts.gauge_offset));
+    }
+    cons.gauge.offset = opts.gauge_offset;
+    let mut integers = Vec::new();
+    if opts.round_singularities {
+        integers.extend(cons.singular.iter().cloned());
+    }
+    integers.extend(cons.boundary.iter().cloned());
+    integers.extend(cons.sharp.iter().cloned());
+    integers.extend(cons.translations.iter().cloned());
+    Ok((cons, integers))
 }
 
 /// The continuous map of `energy` under `cons`'s rows (no integer
@@ -332,7 +261,7 @@ fn scaled_start(x0: &[f64], k: f64, rows: &[Form], gauge: &Gauge) -> Option<Vec<
 fn continuous(
     energy: &system::Energy,
     cons: &constraints::Constraints,
-) -> Result<Vec<f64>, String> {
+) -> Result<Vec<f64>, RemeshError> {
     let mut origin = cons.gauge.clone();
     origin.offset = [0.0, 0.0];
     let none = Integers::new(&[], 0);
@@ -347,69 +276,9 @@ fn continuous(
     Ok(x)
 }
 
-/// The facing boundary walls of one integration ([`facing`]), found once
-/// in the continuous map at the first scale.
-struct Walls {
-    /// Per integer unknown: its wall or [`NO_WALL`].
-    wall: Vec<u32>,
-    /// [`facing::Facing::pairs`] at the first scale.
-    pairs: Vec<(u32, u32, f64)>,
-}
-
-impl Walls {
-    /// The walls of `cons`'s boundary unknowns (at `offset` among the
-    /// `count` integer unknowns) in `x0`, the continuous map at the first
-    /// scale (none without it).
-    fn find(
-        surface: &Surface,
-        charts: &charts::Charts,
-        cons: &constraints::Constraints,
-        x0: Option<&[f64]>,
-        offset: usize,
-        count: usize,
-    ) -> Walls {
-        let mut walls = Walls {
-            wall: vec![NO_WALL; count],
-            pairs: Vec::new(),
-        };
-        let Some(x0) = x0 else {
-            return walls;
-        };
-        let facing = facing::find(surface, charts, cons, x0, WALL_REACH * FIRST_TO_LAST);
-        for (k, &w) in facing.wall.iter().enumerate() {
-            if let Some(slot) = walls.wall.get_mut(offset + k) {
-                *slot = w;
-            }
-        }
-        walls.pairs = facing.pairs;
-        walls
-    }
-
-    /// The pairs within [`WALL_REACH`] at `ratio` times the first scale.
-    fn pairs(&self, ratio: f64) -> Vec<(u32, u32)> {
-        self.pairs
-            .iter()
-            .filter(|p| p.2 * ratio < WALL_REACH)
-            .map(|p| (p.0, p.1))
-            .collect()
-    }
-}
-
-/// Facing walls further apart than this (map units) are left to the
-/// nearest rounding: it keeps walls 1 apart apart, and [`crate::separate`]
-/// moves a wall by less than 1.5.
-const WALL_REACH: f64 = 3.0;
-
-/// Largest ratio of a rounding's scale to the first scale whose facing
-/// walls are all found.
-const FIRST_TO_LAST: f64 = 2.5;
-
 /// Default of [`IntegrateOptions::max_roundings`]: the first rounding and
 /// at most 4 re-roundings.
 pub const ROUNDINGS: usize = 5;
-
-/// Relative miss of the rounded map's area that asks for a re-rounding.
-const REFIT_TOLERANCE: f64 = 0.05;
 
 /// The map's signed area: `Σ_t` of its triangles' signed areas, with
 /// `x` the wedges' `(u, v)` and `corner_wedge` the wedge of every corner.
@@ -425,18 +294,16 @@ fn signed_area(corner_wedge: &[u32], x: &[f64]) -> f64 {
 }
 
 /// The scale from the options (module docs of [`IntegrateOptions`]).
-fn scale(surface: &Surface, opts: &IntegrateOptions) -> Result<f64, String> {
+fn scale(surface: &Surface, opts: &IntegrateOptions) -> Result<f64, RemeshError> {
     let s = match (opts.scale, opts.quads) {
         (Some(s), _) => s,
         (None, Some(n)) => (n as f64 / surface.areas.iter().sum::<f64>()).sqrt(),
-        (None, None) => return Err("integrate: neither a scale nor a quad count".into()),
+        (None, None) => return Err(RemeshError::NoScale),
     };
     if s.is_finite() && s > 0.0 {
         Ok(s)
     } else {
-        Err(format!(
-            "integrate: scale {s} (needs a positive finite number)"
-        ))
+        Err(RemeshError::Scale(s))
     }
 }
 

@@ -11,6 +11,7 @@
 
 use super::charts::Charts;
 use super::elim::Form;
+use crate::error::SolveError;
 use crate::sparse::solve_spd;
 use crate::surface::Surface;
 
@@ -62,7 +63,7 @@ pub fn energy(surface: &Surface, charts: &Charts, scale: f64) -> Energy {
 
 /// Minimizes the [`Energy`] over `x = P·y + c` (`p` per unknown, `free`
 /// unknowns `y`); returns `x`.
-pub fn minimize(energy: &Energy, p: &[Form], free: usize) -> Result<Vec<f64>, String> {
+pub fn minimize(energy: &Energy, p: &[Form], free: usize) -> Result<Vec<f64>, SolveError> {
     let n = p.len();
     // b − K·c
     let mut rhs_full = energy.b.clone();

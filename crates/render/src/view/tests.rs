@@ -80,7 +80,7 @@ fn hex_boundary_refuses_bad_ids() {
     let mut m = hex_grid(1);
     m.cells[0][7] = 8;
     assert_eq!(
-        hex_boundary(&m),
+        hex_boundary(&m).map_err(|e| e.to_string()),
         Err("hex 0 refers to vertex 8, but there are 8 vertices".into())
     );
 }
@@ -357,7 +357,9 @@ fn quality_of_the_wrong_length_or_not_finite_is_refused() {
         note: "",
     };
     assert_eq!(
-        view_html_quality(&mesh, "q", &short).unwrap_err(),
+        view_html_quality(&mesh, "q", &short)
+            .unwrap_err()
+            .to_string(),
         "3 quality values for 24 quads"
     );
     let mut values = vec![1.0; 8];
@@ -367,7 +369,9 @@ fn quality_of_the_wrong_length_or_not_finite_is_refused() {
         note: "",
     };
     assert_eq!(
-        view_html_hex_quality(&hex_grid(2), "h", &nan).unwrap_err(),
+        view_html_hex_quality(&hex_grid(2), "h", &nan)
+            .unwrap_err()
+            .to_string(),
         "hex 5: its quality is not a number"
     );
 }
