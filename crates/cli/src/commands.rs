@@ -93,7 +93,7 @@ pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), String> {
     }
     .map_err(|e| e.in_file(name).to_string())?;
     if a.json {
-        println!("{}", report.to_json());
+        println!("{}", dualex::map_report_json(&report));
     } else {
         println!("{report}");
     }

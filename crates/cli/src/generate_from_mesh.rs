@@ -6,8 +6,8 @@
 
 use crate::args::{GenerateArgs, Global};
 use crate::summary::plural;
+use dualex_cells::{HexMesh, QuadMesh};
 use dualex_gen::from_mesh::{from_hexes, from_quads, FromMeshOptions};
-use dualex_map::{HexMesh, QuadMesh};
 use std::path::Path;
 
 /// The mesh to turn into a map, with its name for messages.

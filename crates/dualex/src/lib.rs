@@ -52,18 +52,21 @@
 #![warn(missing_docs)]
 
 mod extract;
+mod inspect;
 mod map;
 pub mod remesh;
 pub mod stats;
 mod surface;
 
+pub use dualex_cells::{HexMesh, QuadMesh};
 pub use dualex_geom::{
     Mode as GeometryMode, Options as GeometryOptions, Report as GeometryReport, Summary as Quality,
     SMOOTH_ROUNDS,
 };
 pub use dualex_io::OutputError;
-pub use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
+pub use dualex_map::{InputError, TetMap, TriMap};
 pub use extract::{hex, quad, HexOptions, HexOutput, QuadOptions, QuadOutput};
+pub use inspect::map_report_json;
 pub use map::{tet_map_from_slices, tri_map_from_slices};
 pub use remesh::{
     attempt_seed, remesh, remesh_map, remesh_staged, MapOptions, Quantization, RemeshOptions,

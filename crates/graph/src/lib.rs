@@ -41,7 +41,7 @@ pub mod ids;
 pub mod ops;
 pub mod pillow;
 pub mod place;
-use dualex_map::rng;
+use dualex_util::rng;
 pub mod testgrid;
 pub mod uf;
 pub mod untangle;

@@ -147,7 +147,7 @@ fn triangle_components(topo: &Topology<3>, n: usize) -> (Vec<u32>, Vec<bool>) {
 /// Returns the cells kept (indices) and how many components were deleted;
 /// `None` when nothing is deleted.
 pub fn drop_mesh_bubbles(
-    mesh: &dualex_map::QuadMesh,
+    mesh: &dualex_cells::QuadMesh,
     topo: &Topology<3>,
     sources: &[u32],
 ) -> Option<(Vec<u32>, usize)> {

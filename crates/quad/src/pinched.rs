@@ -15,8 +15,8 @@
 //! Output: the number of copies made. Invariant: cells keep their count,
 //! order and corner order; only vertex ids of the pinched fans change.
 
+use dualex_cells::QuadMesh;
 use dualex_graph::uf::UnionFind;
-use dualex_map::QuadMesh;
 use std::collections::HashMap;
 
 /// Splits the pinched vertices of `mesh` (module docs); returns how many

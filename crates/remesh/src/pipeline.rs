@@ -201,7 +201,7 @@ fn make(
         ..FieldOptions::default()
     };
     let mut f = cross_field(surface, &fopts)?;
-    let mut rng = dualex_map::rng::SplitMix::new(opts.seed);
+    let mut rng = dualex_util::rng::SplitMix::new(opts.seed);
     turn_free_components(
         surface,
         &mut f.field,

@@ -63,7 +63,7 @@ use crate::field::CrossField;
 use crate::singularity::{boundary_indices, vertex_indices};
 use crate::sparse::HpdSolver;
 use crate::surface::{dot, norm, sub, Surface, NO_FACE};
-use dualex_map::timing::Laps;
+use dualex_util::timing::Laps;
 use faer::c64;
 
 /// Options of [`cross_field`].

@@ -12,7 +12,7 @@
 
 use std::collections::HashMap;
 
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 
 /// What a vertex is coloured as.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

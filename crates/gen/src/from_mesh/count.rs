@@ -9,7 +9,7 @@
 
 use crate::block::ExpectedHex;
 use crate::expected::Expected;
-use dualex_map::{HexMesh, QuadMesh};
+use dualex_cells::{HexMesh, QuadMesh};
 use std::collections::{BTreeMap, HashMap};
 
 /// Smallest union–find (path halving).
@@ -107,7 +107,7 @@ pub fn expected_quad(mesh: &QuadMesh) -> Expected {
 pub fn expected_hex(mesh: &HexMesh) -> ExpectedHex {
     let mut count: HashMap<[u32; 4], (usize, Vec<u32>)> = HashMap::new();
     for h in &mesh.cells {
-        for f in dualex_map::cells::HEX_FACES {
+        for f in dualex_cells::cells::HEX_FACES {
             let cyc: Vec<u32> = f.iter().map(|&i| h[i]).collect();
             let mut key = [cyc[0], cyc[1], cyc[2], cyc[3]];
             key.sort_unstable();

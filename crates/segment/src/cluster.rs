@@ -11,7 +11,7 @@
 //! away from it. Generic over
 //! the dimension: used by both extractions.
 
-use crate::{Rot, SimplexMap, Stars};
+use dualex_map::{Rot, SimplexMap, Stars};
 use std::collections::HashMap;
 
 /// The collapsed clusters of a map.
