@@ -30,7 +30,7 @@
 //! - the volume Euler characteristic is `V − E + F − C` over good cells.
 
 use crate::quad::{check_quad_mesh, QuadReport};
-use crate::union_find::UnionFind;
+use dualex_util::union_find::UnionFind;
 use std::collections::{BTreeMap, HashMap};
 
 /// The 6 faces of a hex, oriented outwards for a positive hex (the same as

@@ -43,7 +43,6 @@ pub mod pillow;
 pub mod place;
 use dualex_util::rng;
 pub mod testgrid;
-pub mod uf;
 pub mod untangle;
 pub mod walk;
 

@@ -152,7 +152,7 @@ pub fn drop_mesh_bubbles(
     sources: &[u32],
 ) -> Option<(Vec<u32>, usize)> {
     let n = mesh.cells.len();
-    let mut uf = dualex_graph::uf::UnionFind::new(mesh.positions.len());
+    let mut uf = dualex_util::union_find::UnionFind::new(mesh.positions.len());
     for q in &mesh.cells {
         for k in 1..4 {
             uf.union(q[0] as usize, q[k] as usize);

@@ -39,8 +39,8 @@ use crate::quantize::Rounding;
 use crate::recount::{self, CountQuads};
 use crate::smooth::{cross_field, FieldOptions};
 use crate::surface::{Surface, NO_FACE};
-use crate::union_find::{find, union};
 use dualex_map::TriMap;
+use dualex_util::union_find::{find, union};
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 

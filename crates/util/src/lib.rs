@@ -15,7 +15,7 @@
 //! - [`timing`]: wall-clock laps (the stats' `time_ms`, the CLI's `-v`);
 //! - [`round`]: `f64::round` / `ceil` / `floor` bit for bit without a
 //!   library call;
-
+//! - [`union_find`]: the one union–find (path halving) of the workspace.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -23,3 +23,4 @@ pub mod par;
 pub mod rng;
 pub mod round;
 pub mod timing;
+pub mod union_find;

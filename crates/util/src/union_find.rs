@@ -146,7 +146,10 @@ mod tests {
                 assert!(uf.union(a, b));
             }
             assert!(!uf.union(2, 1));
-            assert_eq!((0..5).map(|x| uf.find(x)).collect::<Vec<_>>(), [0, 0, 0, 0, 4]);
+            assert_eq!(
+                (0..5).map(|x| uf.find(x)).collect::<Vec<_>>(),
+                [0, 0, 0, 0, 4]
+            );
             assert_eq!(uf.count_sets(0..5), 2);
             assert_eq!(uf.labels(), (vec![0, 0, 0, 0, 1], 2));
         }
