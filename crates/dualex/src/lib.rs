@@ -16,6 +16,7 @@
 //! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`, `.ovm`) |
 //! | with corner map coordinates | [`write_quad_mesh_uv`] (`.obj`, `.ply`) | — ([`HexOutput::corner_uvw`] only) |
 //! | a map to a file | [`write_tri_map`] (`.obj`, `.ply`) | [`write_tet_map`] (`.hexex`, `.ovm`) |
+//! | a map's `inspect` report as JSON | [`map_report_json`] | [`map_report_json`] |
 //!
 //! Errors are one [`Error`] enum; input errors name the file and the
 //! element (`triangle 17: …`). Nothing panics on bad input.

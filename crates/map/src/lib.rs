@@ -35,7 +35,9 @@
 //! - [`report`]: `inspect`, all of the above in one report;
 //! - `test_maps` (tests, and the `test-maps` feature for the tests of the
 //!   crates above): small generated maps and tiny readers of the shared
-//!   data.
+//!   data;
+//! - `data_tests` (tests): reverted counts, welding and broken files of the
+//!   shared real data.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
