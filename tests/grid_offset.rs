@@ -6,7 +6,7 @@
 
 mod common;
 use common::*;
-use dualex_map::grid_offset::GridOffset;
+use dualex_segment::grid_offset::GridOffset;
 
 /// Adds ½ to every corner coordinate: transitions stay grid-preserving
 /// (`h − R·h` is integral for `h = (½, …, ½)`).
@@ -16,7 +16,10 @@ fn offset_by_half<const N: usize, const D: usize>(map: &mut dualex_map::SimplexM
     }
 }
 
-fn quads(map: &dualex_map::TriMap, grid: GridOffset) -> (dualex_map::QuadMesh, serde_json::Value) {
+fn quads(
+    map: &dualex_map::TriMap,
+    grid: GridOffset,
+) -> (dualex_cells::QuadMesh, serde_json::Value) {
     let opts = dualex_quad::QuadOptions {
         grid_offset: grid,
         ..Default::default()
@@ -25,7 +28,7 @@ fn quads(map: &dualex_map::TriMap, grid: GridOffset) -> (dualex_map::QuadMesh, s
     (mesh, st.to_json())
 }
 
-fn hexes(map: &dualex_map::TetMap, grid: GridOffset) -> (dualex_map::HexMesh, serde_json::Value) {
+fn hexes(map: &dualex_map::TetMap, grid: GridOffset) -> (dualex_cells::HexMesh, serde_json::Value) {
     let opts = dualex_hex::HexOptions {
         grid_offset: grid,
         ..Default::default()

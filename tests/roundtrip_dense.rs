@@ -112,7 +112,7 @@ fn symptoms(st: &Option<serde_json::Value>) -> String {
 }
 
 /// Runs one hex case: the map of `mesh` with `o`, extracted and compared.
-fn hex_round_trip(mesh: &dualex_map::HexMesh, o: &FromMeshOptions) -> Outcome {
+fn hex_round_trip(mesh: &dualex_cells::HexMesh, o: &FromMeshOptions) -> Outcome {
     let g = from_mesh::from_hexes(mesh, o).map_err(|e| format!("generate: {e}"))?;
     let (r, st) = check_hexes_stats(&g);
     r.map_err(|e| format!("{e} [{}]", symptoms(&st)))
@@ -158,7 +158,7 @@ fn timed(f: impl FnOnce() -> Outcome) -> (Outcome, f64) {
 #[test]
 fn dense_meshes_extract_back_to_themselves_refined() {
     let mut table = BTreeMap::new();
-    let mut built: BTreeMap<String, dualex_map::HexMesh> = BTreeMap::new();
+    let mut built: BTreeMap<String, dualex_cells::HexMesh> = BTreeMap::new();
     for (name, mesh, o) in dense_cases() {
         let m = built
             .entry(mesh.clone())
@@ -189,7 +189,7 @@ fn own_options(k: usize, noise: f64) -> FromMeshOptions {
 }
 
 /// Why the generator cannot take the quad mesh `m`, if it cannot.
-fn quad_unusable(m: &dualex_map::QuadMesh) -> Option<String> {
+fn quad_unusable(m: &dualex_cells::QuadMesh) -> Option<String> {
     let r = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
     if !r.is_valid() {
         return Some(format!("invalid output: {:?}", r.errors()));

@@ -138,5 +138,5 @@ pub fn map_report<'py>(
     r: &dualex_map::report::MapReport,
 ) -> PyResult<Bound<'py, PyAny>> {
     py.import("json")?
-        .call_method1("loads", (r.to_json().to_string(),))
+        .call_method1("loads", (dualex::map_report_json(r).to_string(),))
 }

@@ -43,7 +43,7 @@ pub fn check_quads(g: &from_mesh::FromQuads, o: &FromMeshOptions) -> Outcome {
 pub fn compare_quads(
     g: &from_mesh::FromQuads,
     o: &FromMeshOptions,
-    out: &dualex_map::QuadMesh,
+    out: &dualex_cells::QuadMesh,
 ) -> Outcome {
     let got = dualex_check::check_quad_mesh(out.positions.len(), &out.cells);
     let mut bad = Vec::new();
@@ -119,7 +119,7 @@ pub fn check_hexes_stats(g: &from_mesh::FromHexes) -> (Outcome, Option<serde_jso
 }
 
 /// Compares an extracted hex mesh with the refined mesh's counts.
-pub fn compare_hexes(g: &from_mesh::FromHexes, out: &dualex_map::HexMesh) -> Outcome {
+pub fn compare_hexes(g: &from_mesh::FromHexes, out: &dualex_cells::HexMesh) -> Outcome {
     let got = dualex_check::check_hex_mesh(out.positions.len(), &out.cells, None);
     let want = dualex_check::check_hex_mesh(g.refined.positions.len(), &g.refined.cells, None);
     let mut bad = Vec::new();

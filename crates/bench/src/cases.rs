@@ -103,7 +103,7 @@ impl Fnv {
 }
 
 /// Hash of a cell mesh: every cell's vertex ids, then every position's bits.
-pub fn mesh_hash<const K: usize>(mesh: &dualex_map::CellMesh<K>) -> u64 {
+pub fn mesh_hash<const K: usize>(mesh: &dualex_cells::CellMesh<K>) -> u64 {
     let mut h = Fnv::new();
     for c in &mesh.cells {
         for &v in c {
@@ -205,7 +205,7 @@ mod tests {
 
     #[test]
     fn the_hash_sees_a_changed_position() {
-        let mut m = dualex_map::QuadMesh {
+        let mut m = dualex_cells::QuadMesh {
             positions: vec![[0.0; 3]; 4],
             cells: vec![[0, 1, 2, 3]],
         };

@@ -30,11 +30,11 @@
 //! - the volume Euler characteristic is `V − E + F − C` over good cells.
 
 use crate::quad::{check_quad_mesh, QuadReport};
-use crate::union_find::UnionFind;
+use dualex_util::union_find::UnionFind;
 use std::collections::{BTreeMap, HashMap};
 
 /// The 6 faces of a hex, oriented outwards for a positive hex (the same as
-/// `dualex_map::cells::HEX_FACES`, kept here on purpose: the checker
+/// `dualex_cells::cells::HEX_FACES`, kept here on purpose: the checker
 /// depends on no crate it checks).
 pub const HEX_FACES: [[usize; 4]; 6] = [
     [0, 3, 2, 1],

@@ -20,7 +20,6 @@ pub mod quad;
 #[cfg(test)]
 mod test_meshes;
 pub mod topology;
-mod union_find;
 
 pub use hex::{check_hex_mesh, HexReport};
 pub use quad::{check_quad_mesh, QuadReport};

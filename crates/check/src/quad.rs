@@ -19,7 +19,7 @@
 //!   (number of distinct edges at a vertex) are histogrammed separately for
 //!   interior and boundary vertices.
 
-use crate::union_find::UnionFind;
+use dualex_util::union_find::UnionFind;
 use rayon::slice::ParallelSliceMut;
 use std::collections::{BTreeMap, HashMap};
 

@@ -11,7 +11,7 @@
 //! components of the boundary edges. A volume's shape is (cell components,
 //! Euler characteristic and components of its boundary surface).
 
-use crate::union_find::UnionFind;
+use dualex_util::union_find::UnionFind;
 use serde_json::{json, Value};
 use std::collections::HashMap;
 

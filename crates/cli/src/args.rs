@@ -5,7 +5,7 @@
 //! naming the option, never the input file.
 
 use clap::{Args, Parser, Subcommand};
-use dualex_map::grid_offset::GridOffset;
+use dualex_segment::grid_offset::GridOffset;
 use std::path::PathBuf;
 
 /// dualex — quad and hex meshes from messy grid-preserving maps.

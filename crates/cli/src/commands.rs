@@ -100,7 +100,7 @@ pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), CliError> {
     }
     .map_err(|e| e.in_file(name))?;
     if a.json {
-        println!("{}", report.to_json());
+        println!("{}", dualex::map_report_json(&report));
     } else {
         println!("{report}");
     }

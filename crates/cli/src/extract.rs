@@ -309,7 +309,14 @@ fn extract_hexes(
     name: &str,
     x: &ExtractArgs,
     laps: &mut timing::Laps,
-) -> Result<(dualex_map::HexMesh, dualex_hex::HexStats, topo::Comparison), CliError> {
+) -> Result<
+    (
+        dualex_cells::HexMesh,
+        dualex_hex::HexStats,
+        topo::Comparison,
+    ),
+    CliError,
+> {
     let opts = dualex_hex::HexOptions {
         transitions: dualex_map::TransitionOptions {
             round: x.round.round,

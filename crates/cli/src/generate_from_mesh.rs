@@ -7,8 +7,8 @@
 use crate::args::{GenerateArgs, Global};
 use crate::error::{CliError, Need};
 use crate::summary::plural;
+use dualex_cells::{HexMesh, QuadMesh};
 use dualex_gen::from_mesh::{from_hexes, from_quads, FromMeshError, FromMeshOptions};
-use dualex_map::{HexMesh, QuadMesh};
 use std::path::Path;
 
 /// The mesh to turn into a map, with its name for messages.

@@ -10,7 +10,7 @@ use dualex_geom::Report;
 
 /// The stage on a quad mesh lying on `map`'s surface.
 pub fn quads(
-    mesh: &mut dualex_map::QuadMesh,
+    mesh: &mut dualex_cells::QuadMesh,
     map: &dualex_map::TriMap,
     sources: &[u32],
     a: &GeometryArgs,
@@ -26,7 +26,11 @@ pub fn quads(
 }
 
 /// The stage on a hex mesh inside `map`'s volume.
-pub fn hexes(mesh: &mut dualex_map::HexMesh, map: &dualex_map::TetMap, a: &GeometryArgs) -> Report {
+pub fn hexes(
+    mesh: &mut dualex_cells::HexMesh,
+    map: &dualex_map::TetMap,
+    a: &GeometryArgs,
+) -> Report {
     dualex_geom::hexes(
         &mut mesh.positions,
         &mesh.cells,

@@ -19,9 +19,9 @@
 use std::collections::HashMap;
 use std::path::Path;
 
+use dualex_cells::{HexMesh, QuadMesh};
 use dualex_geom::quality::{corners, cross, hex_values, quad_values, sub, unit};
 use dualex_geom::Reference;
-use dualex_map::{HexMesh, QuadMesh};
 use rayon::prelude::*;
 
 use crate::error::{CliError, Need};

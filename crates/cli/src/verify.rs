@@ -25,8 +25,8 @@
 
 use crate::error::{CliError, Refusal};
 use dualex_check::topology::Comparison;
-use dualex_map::sanitize_report::SanitizeReport;
 use dualex_map::SimplexMap;
+use dualex_segment::sanitize_report::SanitizeReport;
 
 /// Map measure (area in 2D, volume in 3D, unsigned) in grid cells.
 pub fn measure<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> f64 {

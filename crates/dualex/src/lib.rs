@@ -16,6 +16,7 @@
 //! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`, `.ovm`) |
 //! | with corner map coordinates | [`write_quad_mesh_uv`] (`.obj`, `.ply`) | — ([`HexOutput::corner_uvw`] only) |
 //! | a map to a file | [`write_tri_map`] (`.obj`, `.ply`) | [`write_tet_map`] (`.hexex`, `.ovm`) |
+//! | a map's `inspect` report as JSON | [`map_report_json`] | [`map_report_json`] |
 //!
 //! Errors are one [`Error`] enum; input errors name the file and the
 //! element (`triangle 17: …`). Nothing panics on bad input.
@@ -52,18 +53,21 @@
 #![warn(missing_docs)]
 
 mod extract;
+mod inspect;
 mod map;
 pub mod remesh;
 pub mod stats;
 mod surface;
 
+pub use dualex_cells::{HexMesh, QuadMesh};
 pub use dualex_geom::{
     Mode as GeometryMode, Options as GeometryOptions, Report as GeometryReport, Summary as Quality,
     SMOOTH_ROUNDS,
 };
 pub use dualex_io::OutputError;
-pub use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
+pub use dualex_map::{InputError, TetMap, TriMap};
 pub use extract::{hex, quad, HexOptions, HexOutput, QuadOptions, QuadOutput};
+pub use inspect::map_report_json;
 pub use map::{tet_map_from_slices, tri_map_from_slices};
 pub use remesh::{
     attempt_seed, remesh, remesh_map, remesh_staged, MapOptions, Quantization, RemeshOptions,

@@ -277,7 +277,7 @@ pub fn attempt_seed(seed: u64, k: usize) -> u64 {
     if k == 0 {
         seed
     } else {
-        dualex_map::rng::SplitMix::new(seed ^ (k as u64).rotate_left(32)).next_u64()
+        dualex_util::rng::SplitMix::new(seed ^ (k as u64).rotate_left(32)).next_u64()
     }
 }
 

@@ -12,7 +12,7 @@ use crate::GeometryReport;
 use dualex_check::topology::Shape;
 use std::collections::BTreeMap;
 
-pub use dualex_map::grid_offset::GridOffset;
+pub use dualex_segment::grid_offset::GridOffset;
 
 /// Components, Euler characteristic and boundary components of one side
 /// (input or output) of an extraction.

@@ -15,11 +15,11 @@
 //! Input: a triangle map. Output: whether its charts are to be shifted,
 //! and the shifted map. The choice is the one of `dualex quad`: on the
 //! local map with its singular vertices snapped onto their fixed points
-//! (`dualex_map::grid_offset::choose_snapped`).
+//! (`dualex_segment::grid_offset::choose_snapped`).
 
-use dualex_map::grid_offset::{choose_snapped, GridOffset};
-use dualex_map::local::LocalMap;
 use dualex_map::{InputError, Stars, Topology, TransitionOptions, Transitions, TriMap};
+use dualex_segment::grid_offset::{choose_snapped, GridOffset};
+use dualex_segment::local::LocalMap;
 
 /// Whether `dualex quad --grid-offset auto` takes the offset 0 on `map`.
 pub fn zero_in_2d(map: &TriMap) -> Result<bool, InputError> {
@@ -27,7 +27,7 @@ pub fn zero_in_2d(map: &TriMap) -> Result<bool, InputError> {
     let (trans, _) = Transitions::derive(map, &topo, &TransitionOptions::default())?;
     let stars = Stars::build(map, &topo, &trans);
     let mut local = LocalMap::with_grid(map, &topo, trans, GridOffset::Half);
-    dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+    dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
     let choice = choose_snapped(&local, &topo, &stars, GridOffset::Auto);
     Ok(choice.offset == GridOffset::Zero)
 }

@@ -10,8 +10,8 @@
 
 use crate::tetgen::run_poly;
 use crate::ExtrudeError;
-use dualex_map::rng::SplitMix;
 use dualex_map::TetMap;
+use dualex_util::rng::SplitMix;
 use std::fmt::Write;
 use std::path::Path;
 

@@ -7,7 +7,7 @@ use crate::optimize::{optimize, Cells, Params};
 use crate::quality::{self, cross, norm, sub, unit, Summary, HEX_CORNER_EDGES, QUAD_CORNER_EDGES};
 use crate::reference::Reference;
 use crate::{Mode, Options};
-use dualex_map::cells::{HEX_EDGES, HEX_FACES};
+use dualex_cells::cells::{HEX_EDGES, HEX_FACES};
 
 mod corners;
 mod topology;

@@ -17,7 +17,7 @@
 use crate::graph::NodeGraph;
 use crate::ids::Node;
 use crate::ops::OpError;
-use crate::uf::UnionFind;
+use dualex_util::union_find::UnionFind;
 
 /// Marker for dead nodes in [`NodeGraph::component_labels`].
 pub const NO_COMPONENT: u32 = u32::MAX;

@@ -23,8 +23,8 @@
 
 use crate::graph::NodeGraph;
 use crate::ids::{axis, positive, Node, Side};
-use crate::uf::UnionFind;
 use dualex_map::Rot;
+use dualex_util::union_find::UnionFind;
 
 /// Marker for the corners of dead nodes in [`Glued::vertex_of`].
 pub const NO_VERTEX: u32 = u32::MAX;
@@ -142,9 +142,9 @@ impl<const D: usize> NodeGraph<D> {
             }
             let (x, y) = (self.node_of(s).idx(), self.node_of(t).idx());
             match self.matched_corners(s, t) {
-                Some((pairs, n)) => pairs[..n]
-                    .iter()
-                    .for_each(|&(c, ct)| uf.union(x * k + c, y * k + ct)),
+                Some((pairs, n)) => pairs[..n].iter().for_each(|&(c, ct)| {
+                    uf.union(x * k + c, y * k + ct);
+                }),
                 None => corner_mismatches += 1,
             }
         }

@@ -41,9 +41,8 @@ pub mod ids;
 pub mod ops;
 pub mod pillow;
 pub mod place;
-use dualex_map::rng;
+use dualex_util::rng;
 pub mod testgrid;
-pub mod uf;
 pub mod untangle;
 pub mod walk;
 

@@ -37,7 +37,7 @@
 //! result is not a valid hex mesh; else the repaired mesh, what was done,
 //! and for each hex the input hex it comes from.
 
-use dualex_map::{HexMesh, QuadMesh};
+use dualex_cells::{HexMesh, QuadMesh};
 use std::collections::{HashMap, HashSet};
 
 const NONE: u32 = u32::MAX;

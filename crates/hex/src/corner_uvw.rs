@@ -1,5 +1,5 @@
 //! Step 8: the map coordinates of each hex's corners, in the input chart
-//! of the tet that holds the hex's node — see [`dualex_map::corners`] for
+//! of the tet that holds the hex's node — see [`dualex_cells::corners`] for
 //! the definition (node ± ½, exact grid points of the input map: integers
 //! with the grid offset `Half`, half-integers with `Zero`).
 //!
@@ -10,8 +10,9 @@
 
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
+use dualex_cells::corners::Corners;
 use dualex_graph::{Glued, NodeGraph, Takeover};
-use dualex_map::corners::{node_corner, Corners};
+use dualex_segment::local::node_corner;
 
 /// The map coordinates of a hex's corners (module docs).
 pub type HexCorners = Corners<3, 8>;

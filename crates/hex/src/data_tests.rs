@@ -7,7 +7,7 @@ use std::path::Path;
 
 const DIR: &str = "../../../shared/data/hexex";
 
-fn run(file: &str) -> Option<(dualex_map::HexMesh, crate::HexStats)> {
+fn run(file: &str) -> Option<(dualex_cells::HexMesh, crate::HexStats)> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(DIR).join(file);
     if !path.exists() {
         eprintln!("skipped: {} is absent", path.display());

@@ -28,7 +28,7 @@
 //! Input: a valid hex mesh (VTK corner order). Output: the mesh without
 //! the dissolved chains' vertices and hexes, vertices renumbered in order.
 
-use dualex_map::HexMesh;
+use dualex_cells::HexMesh;
 use std::collections::{HashMap, HashSet};
 
 /// What [`dissolve`] did.
@@ -52,7 +52,7 @@ pub struct Chains {
 const CODE: [usize; 8] = [0, 1, 3, 2, 4, 5, 7, 6];
 /// VTK corner of each cube corner code.
 const VTK: [usize; 8] = [0, 1, 3, 2, 4, 5, 7, 6];
-use dualex_map::cells::HEX_FACES as FACES;
+use dualex_cells::cells::HEX_FACES as FACES;
 
 fn key2(a: u32, b: u32) -> (u32, u32) {
     (a.min(b), a.max(b))

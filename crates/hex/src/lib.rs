@@ -38,18 +38,19 @@ pub mod geometry;
 pub mod local;
 pub mod near;
 pub mod nodes;
-use dualex_map::rng;
+use dualex_util::rng;
 pub mod sanitize;
 pub mod simplex;
 pub mod split;
 pub mod stats;
 pub mod trace;
 
+use dualex_cells::HexMesh;
 use dualex_graph::{NodeGraph, Takeover};
-pub use dualex_map::grid_offset::GridOffset;
 use dualex_map::singularity::{edge_singularities_with_stars, quality};
-use dualex_map::timing::Laps;
-use dualex_map::{HexMesh, InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
+use dualex_map::{InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
+pub use dualex_segment::grid_offset::GridOffset;
+use dualex_util::timing::Laps;
 pub use stats::HexStats;
 
 /// Options of [`extract`].
@@ -150,9 +151,9 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
                 GridOffset::Half
             };
             let mut local = local::LocalMap::with_grid(&map, &topo, trans, start);
-            let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+            let snap = dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
             if st.split_faces == 0 {
-                st.grid_offset = dualex_map::grid_offset::choose_snapped(
+                st.grid_offset = dualex_segment::grid_offset::choose_snapped(
                     &local,
                     &topo,
                     &stars,
@@ -173,7 +174,7 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
                 owned = map;
                 break (&*owned, topo, stars, local, snap, free);
             }
-            let (next, applied, pieces) = dualex_map::split::split_faces_traced(&map, &faces);
+            let (next, applied, pieces) = dualex_segment::split::split_faces_traced(&map, &faces);
             parent = pieces.iter().map(|&p| parent[p as usize]).collect();
             st.split_faces += applied;
             map = std::borrow::Cow::Owned(next);
@@ -234,7 +235,7 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         if let Some(rep) = columns::repair(&mesh, &open) {
             st.columns = rep.report;
             st.open_interior_faces -= open.len().min(st.open_interior_faces);
-            corners = dualex_map::corners::carry(&mesh, &corners, &rep.mesh, &rep.origin);
+            corners = dualex_cells::corners::carry(&mesh, &corners, &rep.mesh, &rep.origin);
             mesh = rep.mesh;
             source = rep.origin.iter().map(|&o| source[o as usize]).collect();
             st.finish_mesh(&mesh);
@@ -257,8 +258,8 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         st.doublets.rounds += chains.rounds;
         st.doublets.left = chains.left;
         if folded + chains.edges > 0 {
-            corners = dualex_map::corners::carry(&mesh, &corners, &collapsed, &kept_folded);
-            corners = dualex_map::corners::carry(&collapsed, &corners, &dissolved, &kept_chains);
+            corners = dualex_cells::corners::carry(&mesh, &corners, &collapsed, &kept_folded);
+            corners = dualex_cells::corners::carry(&collapsed, &corners, &dissolved, &kept_chains);
             mesh = dissolved;
             source = kept_chains
                 .iter()

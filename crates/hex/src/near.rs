@@ -20,10 +20,9 @@
 use crate::simplex::face_corners;
 use dualex_map::TetMap;
 
-use dualex_map::grid::{
-    box_bounds, box_spans, ceil, dist2d_below_eps, floor, round, segment_clear_of_grid,
-};
-pub use dualex_map::grid::{dist2d, grid_point_near_segment, near_int, EPS};
+use dualex_segment::grid::{box_bounds, box_spans, dist2d_below_eps, segment_clear_of_grid};
+pub use dualex_segment::grid::{dist2d, grid_point_near_segment, near_int, EPS};
+use dualex_util::round::{ceil, floor, round};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
 /// at `a`, at `b` (within [`EPS`] in the projection), or at neither.

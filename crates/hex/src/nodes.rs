@@ -55,7 +55,7 @@ impl Nodes {
     /// Finds the nodes of every tet (in parallel over chunks of tets,
     /// joined in tet order).
     pub fn find(local: &LocalMap) -> Self {
-        let (items, tet_offsets) = dualex_map::par::csr(local.coords.len(), 2048, |s, out| {
+        let (items, tet_offsets) = dualex_util::par::csr(local.coords.len(), 2048, |s, out| {
             let p = &local.coords[s];
             let d = det(p);
             if d != 0.0 && d.is_finite() {

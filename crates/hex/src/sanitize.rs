@@ -33,8 +33,8 @@ use crate::simplex::face_corners;
 use dualex_map::{Rot3, Stars, TetMap, Topology, Transitions};
 use std::collections::{BTreeSet, HashSet};
 
-use dualex_map::sanitize_report::{amplitude, ROUNDS};
-pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
+use dualex_segment::sanitize_report::{amplitude, ROUNDS};
+pub use dualex_segment::sanitize_report::{SanitizeReport, AMPLITUDE};
 
 /// The free axis (reference chart) of every singular vertex that has one
 /// ([`singular_free_axis`]; `None` for the others).
@@ -226,16 +226,16 @@ pub(crate) fn singular_free_axis(
     }
 }
 
-/// [`dualex_map::bad_scan::BadScan`] with the tet test
+/// [`dualex_segment::bad_scan::BadScan`] with the tet test
 /// ([`crate::near::bad_vertices`] kept up to date incrementally).
-struct BadScan(dualex_map::bad_scan::BadScan);
+struct BadScan(dualex_segment::bad_scan::BadScan);
 
 /// Tets per parallel task.
 const MIN_TASK: usize = 512;
 
 impl BadScan {
     fn new(map: &TetMap, stars: &Stars<3>, coords: &[[[f64; 3]; 4]]) -> Self {
-        BadScan(dualex_map::bad_scan::BadScan::new(
+        BadScan(dualex_segment::bad_scan::BadScan::new(
             map, stars, coords, tet_mask, MIN_TASK,
         ))
     }

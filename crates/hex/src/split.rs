@@ -3,7 +3,7 @@
 //! edges between two singular vertices (`dualex_quad::split`).
 //!
 //! Input: the map, its local shifted coordinates (singular vertices already
-//! on their fixed sets, `dualex_map::singular_snap`), the vertex stars and
+//! on their fixed sets, `dualex_segment::singular_snap`), the vertex stars and
 //! the singular edges. Output: the faces to split:
 //! - every edge whose two ends are singular (they lie on singular edges:
 //!   at most one free axis each) and which passes through an iso-line of
@@ -16,7 +16,7 @@
 //!   strictly inside, unless one of them can move off the triangle's plane
 //!   (its free axis is not parallel to the plane).
 //!
-//! The split itself is the dimension-generic `dualex_map::split`: the new
+//! The split itself is the dimension-generic `dualex_segment::split`: the new
 //! vertex is inside the edge or face, so it is not singular and
 //! sanitization can move it off the grid. The driver repeats until nothing
 //! is left (each pass splits at most one face per tet).
@@ -46,7 +46,7 @@ fn crosses_stuck(a: &[f64; 3], b: &[f64; 3], axes: [Option<usize>; 2]) -> bool {
         let Some(g) = grid_point_near_segment(&pa, &pb) else {
             return false;
         };
-        let near = |p: &[f64; 2]| dualex_map::grid::dist2d(&g, p) < dualex_map::grid::EPS;
+        let near = |p: &[f64; 2]| dualex_segment::grid::dist2d(&g, p) < dualex_segment::grid::EPS;
         let movable = axes.iter().flatten().any(|&k| k == i || k == j);
         !near(&pa) && !near(&pb) && !movable
     })
@@ -121,7 +121,7 @@ fn box_holds_grid_point(t: &[[f64; 3]; 3]) -> bool {
     (0..3).all(|k| {
         let lo = t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
         let hi = t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
-        (lo - dualex_map::grid::EPS).ceil() <= hi + dualex_map::grid::EPS
+        (lo - dualex_segment::grid::EPS).ceil() <= hi + dualex_segment::grid::EPS
     })
 }
 
@@ -156,7 +156,7 @@ mod tests {
                 .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
                 .collect();
         let mut local = LocalMap::new(map, &topo, &trans);
-        dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+        dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
         let free = crate::sanitize::free_axes(&topo, &stars, &local);
         faces_to_split(map, &stars, &free, &singular, &local)
     }
@@ -184,7 +184,7 @@ mod tests {
             if faces.is_empty() {
                 break;
             }
-            let (next, applied) = dualex_map::split::split_faces(&m, &faces);
+            let (next, applied) = dualex_segment::split::split_faces(&m, &faces);
             assert!(applied > 0);
             m = next;
         }

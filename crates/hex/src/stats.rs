@@ -5,8 +5,8 @@
 
 use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
-use dualex_map::sanitize_report::{histogram_json, offset_json, times_json};
-use dualex_map::HexMesh;
+use dualex_cells::HexMesh;
+use dualex_segment::sanitize_report::{histogram_json, offset_json, times_json};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
@@ -34,7 +34,7 @@ pub struct HexStats {
     pub split_faces: usize,
     /// The grid offset used, and the singular vertices on the grid under
     /// each choice (`Auto`).
-    pub grid_offset: dualex_map::grid_offset::OffsetChoice,
+    pub grid_offset: dualex_segment::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
     /// Doublet chains (valence-2 interior edges) dissolved, in the graph

@@ -2,7 +2,8 @@
 //! conforming), with the map given per vertex by a function of its grid
 //! index; and the checks every test output must pass.
 
-use dualex_map::{HexMesh, Rot3, TetMap};
+use dualex_cells::HexMesh;
+use dualex_map::{Rot3, TetMap};
 
 /// Grid lines along one axis.
 pub type Lines = Vec<f64>;

@@ -77,7 +77,8 @@ pub use ply::{parse_ply, parse_polygon_ply};
 pub use ply_header::PlyFormat;
 pub use vtk::{parse_vtk, VtkMesh};
 
-use dualex_map::{HexMesh, InputError, QuadMesh, TetMap, TriMap};
+use dualex_cells::{HexMesh, QuadMesh};
+use dualex_map::{InputError, TetMap, TriMap};
 use output::{extension, write_atomic};
 use std::path::Path;
 

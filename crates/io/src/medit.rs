@@ -3,7 +3,8 @@
 //! record); other sections are skipped by their counts. Used by
 //! `dualex view` to show a hex mesh written by `dualex hex`.
 
-use dualex_map::{HexMesh, InputError};
+use dualex_cells::HexMesh;
+use dualex_map::InputError;
 
 struct Tokens<'a> {
     it: std::iter::Peekable<std::iter::Enumerate<std::str::Lines<'a>>>,

@@ -12,7 +12,8 @@
 //! OpenVolumeMesh accepts them as hexahedra without reordering.
 
 use crate::fmt::{float, floats_line, int};
-use dualex_map::{HexMesh, TetMap};
+use dualex_cells::HexMesh;
+use dualex_map::TetMap;
 use std::collections::HashMap;
 use std::io::{self, Write};
 

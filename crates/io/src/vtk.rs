@@ -7,7 +7,8 @@
 //! against the tokens left before any allocation; every error names the
 //! line.
 
-use dualex_map::{HexMesh, InputError, QuadMesh};
+use dualex_cells::{HexMesh, QuadMesh};
+use dualex_map::InputError;
 
 /// A mesh read from VTK.
 #[derive(Clone, Debug, PartialEq)]

@@ -9,14 +9,14 @@
 //! - hexes: MEDIT ASCII (`MeshVersionFormatted 2`, 1-based, reference 0),
 //!   legacy VTK (`VTK_HEXAHEDRON` = 12).
 //!
-//! Cell corner orders are those of [`dualex_map::cells`] (= VTK = MEDIT),
+//! Cell corner orders are those of [`dualex_cells::cells`] (= VTK = MEDIT),
 //! written unchanged. Precondition, checked by [`check_cells`] before any
 //! byte is written by the file writers: indices in range, positions finite.
 
 use crate::fmt::{floats_line, int, par_lines};
 use crate::ply_out::PlyWriter;
 use crate::PlyFormat;
-use dualex_map::{CellMesh, HexMesh, QuadMesh};
+use dualex_cells::{CellMesh, HexMesh, QuadMesh};
 use std::io::{self, Write};
 
 /// Checks that every cell index is a vertex and every position is finite.

@@ -1,7 +1,7 @@
 //! Quad meshes with per-corner map coordinates (`dualex quad --uv`).
 //!
 //! Each quad carries the map coordinates of its 4 corners in one chart
-//! (see `dualex_map::corners`): a vertex on a seam has different ones in
+//! (see `dualex_cells::corners`): a vertex on a seam has different ones in
 //! the quads around it, so they are per corner, not per vertex.
 //! - OBJ: one `vt u v` per corner (4 per quad, in quad order) after the
 //!   `v` lines, and `f a/ta b/tb c/tc d/td`; a quad without coordinates is
@@ -18,7 +18,7 @@
 use crate::fmt::{floats_line, int, par_lines};
 use crate::ply_out::PlyWriter;
 use crate::PlyFormat;
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 use std::io::{self, Write};
 
 /// Per quad, its corners' map coordinates (or none).

@@ -5,37 +5,7 @@
 //! Output: counts only; nothing is modified.
 
 use crate::{SimplexMap, Topology};
-
-/// Minimal union–find over `u32` ids (path halving, union by index).
-pub(crate) struct UnionFind {
-    parent: Vec<u32>,
-}
-
-impl UnionFind {
-    /// `n` singletons.
-    pub(crate) fn new(n: usize) -> Self {
-        UnionFind {
-            parent: (0..n as u32).collect(),
-        }
-    }
-
-    /// Representative of `x`.
-    pub(crate) fn find(&mut self, mut x: u32) -> u32 {
-        while self.parent[x as usize] != x {
-            let gp = self.parent[self.parent[x as usize] as usize];
-            self.parent[x as usize] = gp;
-            x = gp;
-        }
-        x
-    }
-
-    /// Joins the classes of `a` and `b` (the smaller root wins).
-    pub(crate) fn union(&mut self, a: u32, b: u32) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        let (lo, hi) = (ra.min(rb), ra.max(rb));
-        self.parent[hi as usize] = lo;
-    }
-}
+use dualex_util::union_find::UnionFind;
 
 impl<const N: usize> Topology<N> {
     /// Number of connected components (simplices joined across facets).
@@ -44,13 +14,11 @@ impl<const N: usize> Topology<N> {
         for s in 0..self.adj.len() {
             for f in 0..N {
                 if let Some((n, _)) = self.neighbour(s, f) {
-                    uf.union(s as u32, n as u32);
+                    uf.union(s, n);
                 }
             }
         }
-        (0..self.adj.len() as u32)
-            .filter(|&s| uf.find(s) == s)
-            .count()
+        (0..self.adj.len()).filter(|&s| uf.find(s) == s).count()
     }
 }
 
@@ -64,14 +32,14 @@ impl Topology<3> {
             for f in 0..3 {
                 if self.neighbour(s, f).is_none() {
                     let (a, b) = (simplex[(f + 1) % 3], simplex[(f + 2) % 3]);
-                    uf.union(a, b);
+                    uf.union(a as usize, b as usize);
                     on_boundary[a as usize] = true;
                     on_boundary[b as usize] = true;
                 }
             }
         }
-        (0..map.positions.len() as u32)
-            .filter(|&v| on_boundary[v as usize] && uf.find(v) == v)
+        (0..map.positions.len())
+            .filter(|&v| on_boundary[v] && uf.find(v) == v)
             .count()
     }
 }

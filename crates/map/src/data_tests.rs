@@ -15,7 +15,7 @@ fn report_2d(rel: &str, weld: bool) -> Option<crate::MapReport> {
         ..Default::default()
     };
     let r = inspect(&m, &opts).unwrap_or_else(|e| panic!("{rel}: {e}"));
-    eprintln!("{rel}: {}", r.to_json());
+    eprintln!("{rel}: {r}");
     Some(r)
 }
 
@@ -86,7 +86,7 @@ fn hexex_files() {
             ..Default::default()
         };
         let r = inspect(&read_hexex(&path), &opts).unwrap_or_else(|e| panic!("{rel}: {e}"));
-        eprintln!("{rel}: {}", r.to_json());
+        eprintln!("{rel}: {r}");
         assert_eq!(r.components, 1, "{rel}");
     }
     // its charts agree across every face (vertex 1 moved to w = −1 in all

@@ -2,46 +2,56 @@
 //!
 //! Step 1 of the pipeline: a triangle mesh with a 2D map or a tet mesh with
 //! a 3D map, its adjacency, the transitions between the charts of adjacent
-//! simplices, singularities and reverted simplices.
+//! simplices, singularities and reverted simplices. This crate holds the
+//! model only: the segmentation steps that read it live in
+//! `dualex-segment`, the output meshes in `dualex-cells`, the shared
+//! utilities in `dualex-util`.
+//!
+//! Input: vertex positions, simplices and per-corner map coordinates (from
+//! `dualex-io` or slices). Output: the derived structures below, each built
+//! once and read-only afterwards. Invariants: a map that passes
+//! [`SimplexMap::validate`] and [`Topology::build`] is manifold and
+//! consistently oriented; its [`Transitions`] satisfy
+//! `chart(n) = rot · chart(s) + trans` on every interior facet within the
+//! GP residual; errors caused by the input are [`InputError`]s, never
+//! panics.
 //!
 //! - [`rotation`]: the grid rotation groups (4 in 2D, 24 in 3D);
-//! - [`mesh`]: [`TriMap`] / [`TetMap`], the raw input;
-//! - [`topology`]: facet adjacency, boundary, manifoldness, orientation;
-//! - [`transition`]: per-facet rotation and integer translation;
-//! - [`star`]: vertex stars with rotations; singular vertices;
+//! - [`mesh`]: [`TriMap`] / [`TetMap`], the raw input, and its validation;
+//! - [`error`]: [`InputError`], the errors caused by the input;
+//! - [`topology`]: facet adjacency, boundary, manifoldness, orientation
+//!   (built by `topology_build`, private);
+//! - `components` (private): connected components and boundary loops of a
+//!   built topology;
+//! - [`transition`]: per-facet rotation and integer translation (derived
+//!   by `transition_derive`, one facet fitted by `transition_fit`, both
+//!   private);
+//! - [`star`]: vertex stars with rotations; singular vertices (built by
+//!   `star_build`, private);
 //! - [`holonomy`]: rotation around a vertex (2D) or an edge (3D);
 //! - [`singularity`]: singular vertices (2D) and edges (3D), their indices;
-//! - [`grid_offset`]: the dual grid's offset (½ or 0), chosen from the
-//!   singular vertices;
+//!   reverted and degenerate simplices;
 //! - [`weld`]: welding of cut meshes (vertices duplicated along seams);
-//! - [`report`]: `inspect`, all of the above in one report.
+//! - [`report`]: `inspect`, all of the above in one report;
+//! - `test_maps` (tests, and the `test-maps` feature for the tests of the
+//!   crates above): small generated maps and tiny readers of the shared
+//!   data;
+//! - `data_tests` (tests): reverted counts, welding and broken files of the
+//!   shared real data.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod bad_scan;
-pub mod cells;
-pub mod cluster;
 mod components;
-pub mod corners;
 pub mod error;
-pub mod grid;
-pub mod grid_offset;
 pub mod holonomy;
-pub mod local;
 pub mod mesh;
-pub mod par;
 pub mod report;
 // rotation.rs is owned elsewhere; its index loops read clearer than iterators
-pub mod rng;
 #[allow(clippy::needless_range_loop)]
 pub mod rotation;
-pub mod sanitize_report;
-pub mod singular_snap;
 pub mod singularity;
-pub mod split;
 pub mod star;
 mod star_build;
-pub mod timing;
 pub mod topology;
 mod topology_build;
 pub mod transition;
@@ -51,10 +61,10 @@ pub mod weld;
 
 #[cfg(test)]
 mod data_tests;
-#[cfg(test)]
-mod test_maps;
+#[cfg(any(test, feature = "test-maps"))]
+#[doc(hidden)]
+pub mod test_maps;
 
-pub use cells::{CellMesh, HexMesh, QuadMesh};
 pub use error::InputError;
 pub use mesh::{SimplexMap, TetMap, TriMap};
 pub use report::{inspect, InspectOptions, MapReport};

@@ -5,7 +5,8 @@
 //! 3. topology (manifold, oriented); 4. transitions (optionally rounded);
 //! 5. stars; 6. singularities; 7. reverted and degenerate simplices.
 //!
-//! Output: a [`MapReport`] with a JSON form ([`MapReport::to_json`]) and a
+//! Output: a [`MapReport`] (its JSON form is the facade's
+//! `dualex::map_report_json`: this crate has no JSON dependency) and a
 //! human-readable [`Display`](std::fmt::Display), or the first
 //! [`InputError`]. Singularity indices are reduced fractions of quarters
 //! ("1/4", "-1/2", "1", "-5/4"); vertices whose integer part is unknown
@@ -205,44 +206,6 @@ impl Inspect for TetMap {
     }
 }
 
-impl MapReport {
-    /// The report as one JSON object (keys of the module docs).
-    pub fn to_json(&self) -> serde_json::Value {
-        let mut v = serde_json::json!({
-            "dimension": self.dimension,
-            "simplices": self.simplices,
-            "vertices": self.vertices,
-            "boundary_facets": self.boundary_facets,
-            "components": self.components,
-            "reverted": self.reverted,
-            "degenerate": self.degenerate,
-            "max_transition_residual": self.max_transition_residual,
-            "snapped_transitions": self.snapped_transitions,
-            "ambiguous_facets": self.ambiguous_facets,
-            "non_identity_transitions": self.non_identity_transitions,
-            "singular_vertices": self.singular_vertices,
-            "welded_vertices": self.welded_vertices,
-        });
-        if let Some(obj) = v.as_object_mut() {
-            if self.dimension == 2 {
-                obj.insert("boundary_loops".into(), self.boundary_loops.into());
-                obj.insert("singularities".into(), map_json(&self.singularities));
-                obj.insert(
-                    "singularities_integer_part_unknown".into(),
-                    map_json(&self.singularities_integer_part_unknown),
-                );
-            } else {
-                obj.insert("singular_edges".into(), map_json(&self.singular_edges));
-            }
-        }
-        v
-    }
-}
-
-fn map_json(m: &BTreeMap<String, usize>) -> serde_json::Value {
-    serde_json::Value::Object(m.iter().map(|(k, v)| (k.clone(), (*v).into())).collect())
-}
-
 fn histogram(m: &BTreeMap<String, usize>) -> String {
     if m.is_empty() {
         return "none".into();
@@ -310,7 +273,6 @@ impl fmt::Display for MapReport {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_maps::{cube_surface, edge_fan, rechart};
 
     #[test]
     fn fractions() {
@@ -319,43 +281,5 @@ mod tests {
             got,
             ["1/4", "-1/2", "1", "-5/4", "1/2", "3/4", "3/2", "-1", "0"]
         );
-    }
-
-    #[test]
-    fn cube_report() {
-        let mut m = cube_surface(3);
-        rechart(&mut m, 9);
-        let r = inspect(&m, &InspectOptions::default()).expect("cube");
-        let j = r.to_json();
-        assert_eq!(j["simplices"], 6 * 9 * 2);
-        assert_eq!(j["vertices"], 6 * 9 + 2);
-        assert_eq!(j["boundary_loops"], 0);
-        assert_eq!(j["components"], 1);
-        assert_eq!(j["reverted"], 0);
-        assert_eq!(j["degenerate"], 0);
-        assert_eq!(j["max_transition_residual"], 0.0);
-        assert_eq!(j["singularities"], serde_json::json!({"1/4": 8}));
-        assert_eq!(
-            j["singularities_integer_part_unknown"],
-            serde_json::json!({})
-        );
-        assert_eq!(j["welded_vertices"], 0);
-        assert_eq!(j["ambiguous_facets"], 0);
-        assert!(j.get("singular_edges").is_none());
-        let text = r.to_string();
-        assert!(
-            text.contains("singularities (index: count): 1/4: 8"),
-            "{text}"
-        );
-    }
-
-    #[test]
-    fn tet_report() {
-        let r = inspect(&edge_fan(5), &InspectOptions::default()).expect("fan");
-        let j = r.to_json();
-        assert_eq!(j["simplices"], 5);
-        assert_eq!(j["singular_edges"], serde_json::json!({"-90": 1}));
-        assert!(j.get("boundary_loops").is_none());
-        assert_eq!(r.singular_vertices, 2);
     }
 }

@@ -12,12 +12,12 @@
 //! ([`unique_fit`]) only answers when exactly one rotation is within `tol`
 //! of the best, and then both agree on it and on the best mismatch.
 
-use crate::grid::round;
 use crate::mesh::simplex_word;
 use crate::topology_build::facet_word;
 use crate::transition::ROUND_FIT_LIMIT;
 use crate::transition_derive::num;
 use crate::{InputError, Rot, SimplexMap, Topology, TransitionOptions};
+use dualex_util::round::round;
 
 /// The chosen transition of one facet and what it measured.
 pub(crate) struct Fit<const D: usize> {
@@ -314,7 +314,7 @@ fn mismatch_table<const D: usize>(a: &[[f64; D]], b: &[[f64; D]]) -> [f64; 18] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rng::SplitMix;
+    use dualex_util::rng::SplitMix;
 
     /// The fit as it was first written: every rotation scanned in group
     /// order, with heap-allocated candidate lists and `f64::round`.

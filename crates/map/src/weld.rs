@@ -11,9 +11,9 @@
 //! into a simplex is left unmerged. Afterwards unused vertices are dropped;
 //! simplices keep their order and their per-corner coordinates.
 
-use crate::components::UnionFind;
 use crate::topology_build::{sorted_facets, vertex_corners};
 use crate::SimplexMap;
+use dualex_util::union_find::UnionFind;
 
 /// What [`weld`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -82,11 +82,11 @@ fn weld_pairs<const N: usize, const D: usize>(
     let nv = map.positions.len();
     let mut uf = UnionFind::new(nv);
     for &(a, b) in pairs {
-        uf.union(a, b);
+        uf.union(a as usize, b as usize);
     }
     unmerge_conflicts(map, &mut uf);
     let mut rep = WeldReport::default();
-    let rep_of: Vec<u32> = (0..nv as u32).map(|v| uf.find(v)).collect();
+    let rep_of: Vec<u32> = (0..nv).map(|v| uf.find(v) as u32).collect();
     rep.welded_vertices = (0..nv).filter(|&v| rep_of[v] != v as u32).count();
     // compaction: new ids in order of first use by a representative
     let mut used = vec![false; nv];
@@ -171,21 +171,21 @@ fn unmerge_conflicts<const N: usize, const D: usize>(map: &SimplexMap<N, D>, uf:
     let nv = map.positions.len();
     let mut bad_root = vec![false; nv];
     for simplex in &map.simplices {
-        let roots = simplex.map(|v| uf.find(v));
+        let roots = simplex.map(|v| uf.find(v as usize));
         for i in 0..N {
             if roots[..i].contains(&roots[i]) {
-                bad_root[roots[i] as usize] = true;
+                bad_root[roots[i]] = true;
             }
         }
     }
     if !bad_root.contains(&true) {
         return;
     }
-    let roots: Vec<u32> = (0..nv as u32).map(|v| uf.find(v)).collect();
+    let roots: Vec<usize> = (0..nv).map(|v| uf.find(v)).collect();
     let mut fresh = UnionFind::new(nv);
     for (v, &r) in roots.iter().enumerate() {
-        if !bad_root[r as usize] {
-            fresh.union(v as u32, r);
+        if !bad_root[r] {
+            fresh.union(v, r);
         }
     }
     *uf = fresh;

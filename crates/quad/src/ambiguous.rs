@@ -32,7 +32,7 @@
 //! (not one side glued to the other); invariants: every new point lies on
 //! exactly one edge and is used by exactly the faces beside that edge.
 
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 use std::collections::HashMap;
 
 /// A cell edge: `4 · cell + k`, the edge from corner k to corner k + 1.

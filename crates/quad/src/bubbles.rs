@@ -147,12 +147,12 @@ fn triangle_components(topo: &Topology<3>, n: usize) -> (Vec<u32>, Vec<bool>) {
 /// Returns the cells kept (indices) and how many components were deleted;
 /// `None` when nothing is deleted.
 pub fn drop_mesh_bubbles(
-    mesh: &dualex_map::QuadMesh,
+    mesh: &dualex_cells::QuadMesh,
     topo: &Topology<3>,
     sources: &[u32],
 ) -> Option<(Vec<u32>, usize)> {
     let n = mesh.cells.len();
-    let mut uf = dualex_graph::uf::UnionFind::new(mesh.positions.len());
+    let mut uf = dualex_util::union_find::UnionFind::new(mesh.positions.len());
     for q in &mesh.cells {
         for k in 1..4 {
             uf.union(q[0] as usize, q[k] as usize);

@@ -1,6 +1,6 @@
 //! Step 10: the map coordinates of each quad's corners (`--uv`), in the
 //! input chart of the triangle that holds the quad's node — see
-//! [`dualex_map::corners`] for the definition (node ± ½, exact grid points
+//! [`dualex_cells::corners`] for the definition (node ± ½, exact grid points
 //! of the input map: integers with the grid offset `Half`, half-integers
 //! with `Zero`).
 //!
@@ -13,9 +13,10 @@
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
 use crate::repair::polygon;
+use dualex_cells::corners::Corners;
+use dualex_cells::QuadMesh;
 use dualex_graph::{Glued, NodeGraph, Takeover};
-use dualex_map::corners::{node_corner, Corners};
-use dualex_map::QuadMesh;
+use dualex_segment::local::node_corner;
 
 /// The map coordinates of a quad's corners (module docs).
 pub type QuadCorners = Corners<2, 4>;

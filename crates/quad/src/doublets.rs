@@ -26,7 +26,7 @@
 //! counted in [`Doublets::left`]). Unused vertices are removed at the end
 //! and the others renumbered in order.
 
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 use std::collections::VecDeque;
 
 /// What doublet removal did (the graph's merges, step 6e, and this

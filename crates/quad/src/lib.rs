@@ -40,17 +40,18 @@ pub mod nodes;
 pub mod pinched;
 pub mod repair;
 pub mod repair_local;
-use dualex_map::rng;
+use dualex_util::rng;
 pub mod sanitize;
 mod slots;
 pub mod split;
 pub mod stats;
 pub mod trace;
 
+use dualex_cells::QuadMesh;
 use dualex_graph::{Node, NodeGraph, Side, Takeover};
-pub use dualex_map::grid_offset::GridOffset;
-use dualex_map::timing::Laps;
-use dualex_map::{InputError, QuadMesh, Stars, Topology, TransitionOptions, Transitions, TriMap};
+use dualex_map::{InputError, Stars, Topology, TransitionOptions, Transitions, TriMap};
+pub use dualex_segment::grid_offset::GridOffset;
+use dualex_util::timing::Laps;
 pub use stats::QuadStats;
 
 /// Options of [`extract`].
@@ -131,7 +132,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     let mut map = map;
     // the input triangle of each triangle of the (split) map
     let mut parent: Vec<u32> = (0..map.len() as u32).collect();
-    let mut grid: Option<dualex_map::grid_offset::OffsetChoice> = None;
+    let mut grid: Option<dualex_segment::grid_offset::OffsetChoice> = None;
     let (topo, stars, mut local, singular_snap) = loop {
         let topo = Topology::build(map)?;
         let (trans, trep) = Transitions::derive(map, &topo, &opts.transitions)?;
@@ -157,9 +158,9 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
             GridOffset::Half
         };
         let mut local = local::LocalMap::with_grid(map, &topo, trans, start);
-        let snap = dualex_map::singular_snap::snap_singular(&mut local, &topo, &stars);
+        let snap = dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
         let choice = *grid.get_or_insert_with(|| {
-            dualex_map::grid_offset::choose_snapped(&local, &topo, &stars, opts.grid_offset)
+            dualex_segment::grid_offset::choose_snapped(&local, &topo, &stars, opts.grid_offset)
         });
         if choice.offset == GridOffset::Zero {
             local.unshift(&topo);
@@ -295,7 +296,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         corners = if rep.subdivided {
             corner_uv::subdivided(&mesh, &corners, &rep.mesh, &carried)
         } else {
-            dualex_map::corners::carry(&mesh, &corners, &rep.mesh, &carried)
+            dualex_cells::corners::carry(&mesh, &corners, &rep.mesh, &carried)
         };
         source = rep
             .origin
@@ -318,7 +319,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
                 positions: mesh.positions.clone(),
                 cells,
             };
-            corners = dualex_map::corners::carry(&mesh, &corners, &pruned, &kept);
+            corners = dualex_cells::corners::carry(&mesh, &corners, &pruned, &kept);
             source = kept.iter().map(|&c| source[c as usize]).collect();
             mesh = pruned.without_unused_vertices();
         }
@@ -331,7 +332,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         st.doublets.dissolved += rep.dissolved;
         st.doublets.left = rep.left;
         if rep.dissolved > 0 {
-            corners = dualex_map::corners::carry(&mesh, &corners, &dissolved, &kept);
+            corners = dualex_cells::corners::carry(&mesh, &corners, &dissolved, &kept);
             mesh = dissolved;
             source = kept.iter().map(|&k| source[k as usize]).collect();
             st.finish_mesh(&mesh);

@@ -55,7 +55,7 @@ impl Nodes {
     /// Finds the nodes of every triangle (in parallel over chunks of
     /// triangles, joined in triangle order).
     pub fn find(local: &LocalMap) -> Self {
-        let (items, tri_offsets) = dualex_map::par::csr(local.coords.len(), 4096, |s, out| {
+        let (items, tri_offsets) = dualex_util::par::csr(local.coords.len(), 4096, |s, out| {
             let det = local.det(s);
             if det != 0.0 && det.is_finite() {
                 in_triangle(s, &local.coords[s], det, out);

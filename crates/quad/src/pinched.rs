@@ -15,8 +15,8 @@
 //! Output: the number of copies made. Invariant: cells keep their count,
 //! order and corner order; only vertex ids of the pinched fans change.
 
-use dualex_graph::uf::UnionFind;
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
+use dualex_util::union_find::UnionFind;
 use std::collections::HashMap;
 
 /// Splits the pinched vertices of `mesh` (module docs); returns how many
@@ -40,7 +40,9 @@ pub fn split_pinched(mesh: &mut QuadMesh) -> usize {
     for corners in at_edge.values() {
         match corners[..] {
             [_] => {} // a boundary edge
-            [a, b] => uf.union(a, b),
+            [a, b] => {
+                uf.union(a, b);
+            }
             _ => return 0, // an edge used more than twice: not ours to fix
         }
     }

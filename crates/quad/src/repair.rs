@@ -17,7 +17,7 @@
 //! four distinct corners in cyclic order (nothing to do), else the
 //! repaired all-quad mesh.
 
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 use std::collections::HashMap;
 
 /// The cell without consecutive repeated corners (cyclically).

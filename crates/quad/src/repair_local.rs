@@ -23,7 +23,7 @@
 //! corners; interior edges have two faces. The result is checked by the
 //! caller like any output.
 
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 use fast_hash::FastMap as HashMap;
 
 mod fast_hash;

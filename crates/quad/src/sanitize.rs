@@ -12,7 +12,7 @@
 //!   rotations (translations untouched: no transition changes). Vertices
 //!   joined by zero-length map edges (collapsed regions) move as one cluster.
 //!
-//! The amplitude follows [`dualex_map::sanitize_report::amplitude`]: 40
+//! The amplitude follows [`dualex_segment::sanitize_report::amplitude`]: 40
 //! ordinary rounds, then extra rounds of growing amplitude (up to 0.1) while
 //! a non-singular vertex is still on the grid. A stuck cluster (its
 //! rotations disagree: it surrounds a singularity) waits for the extra
@@ -35,11 +35,11 @@ use crate::rng::SplitMix;
 use dualex_map::{Stars, Topology, TriMap};
 
 /// The collapsed clusters of a triangle map (moved as one).
-type Clusters = dualex_map::cluster::Clusters<2>;
+type Clusters = dualex_segment::cluster::Clusters<2>;
 
-pub use dualex_map::grid::EPS;
-use dualex_map::sanitize_report::{amplitude, ROUNDS};
-pub use dualex_map::sanitize_report::{SanitizeReport, AMPLITUDE};
+pub use dualex_segment::grid::EPS;
+use dualex_segment::sanitize_report::{amplitude, ROUNDS};
+pub use dualex_segment::sanitize_report::{SanitizeReport, AMPLITUDE};
 
 /// Sanitizes `local` in place.
 pub fn sanitize(
@@ -159,13 +159,13 @@ pub fn edge_near_grid_point(a: &[f64; 2], b: &[f64; 2]) -> bool {
 }
 
 /// An integer point within [`EPS`] of segment `a`–`b`, if any.
-pub use dualex_map::grid::grid_point_near_segment as grid_point_near_edge;
-use dualex_map::grid::{
+pub use dualex_segment::grid::grid_point_near_segment as grid_point_near_edge;
+use dualex_segment::grid::{
     box_bounds, box_spans, dist2d_below_eps as below_eps, near_int, segment_clear_of_grid,
 };
 
-/// [`dualex_map::bad_scan::BadScan`] with the triangle test.
-struct BadScan(dualex_map::bad_scan::BadScan);
+/// [`dualex_segment::bad_scan::BadScan`] with the triangle test.
+struct BadScan(dualex_segment::bad_scan::BadScan);
 
 /// Triangles per parallel task: below this, splitting costs more than it
 /// saves.
@@ -173,7 +173,7 @@ const MIN_TASK: usize = 1024;
 
 impl BadScan {
     fn new(map: &TriMap, stars: &Stars<2>, local: &LocalMap) -> Self {
-        BadScan(dualex_map::bad_scan::BadScan::new(
+        BadScan(dualex_segment::bad_scan::BadScan::new(
             map,
             stars,
             &local.coords,
@@ -264,7 +264,7 @@ mod tests {
                     let l = (k + 1) % 3;
                     bad[tri[k] as usize] |= near_int(c[k][0]) || near_int(c[k][1]);
                     if let Some(g) = grid_point_near_edge(&c[k], &c[l]) {
-                        let dist = dualex_map::grid::dist2d;
+                        let dist = dualex_segment::grid::dist2d;
                         let (at_k, at_l) = (dist(&g, &c[k]) < EPS, dist(&g, &c[l]) < EPS);
                         bad[tri[k] as usize] |= at_k || !at_l;
                         bad[tri[l] as usize] |= at_l || !at_k;
@@ -345,8 +345,8 @@ mod tests {
     /// its members one by one, and nothing non-singular is left on the grid.
     #[test]
     fn extra_rounds_move_a_stuck_cluster_apart() {
-        use dualex_map::grid_offset::GridOffset;
         use dualex_map::Transitions;
+        use dualex_segment::grid_offset::GridOffset;
         let (map, _) = dualex_gen::singular_disk(1, false, 3, 8, 3.0).expect("disk");
         let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
         let (trans, _) =

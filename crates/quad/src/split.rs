@@ -48,7 +48,7 @@ pub fn edges_to_split(
 }
 
 /// Splits the given edges (see the module docs) with the generic face
-/// split of `dualex_map::split`; returns the new map and the number of
+/// split of `dualex_segment::split`; returns the new map and the number of
 /// edges split (an edge sharing a triangle with an earlier one waits for
 /// the next pass).
 pub fn split_edges(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, usize) {
@@ -57,7 +57,7 @@ pub fn split_edges(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, usize) {
 }
 
 /// [`split_edges`], also returning the triangle of `map` each triangle of
-/// the new map comes from (`dualex_map::split::split_faces_traced`).
+/// the new map comes from (`dualex_segment::split::split_faces_traced`).
 pub fn split_edges_traced(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, usize, Vec<u32>) {
     let faces: Vec<Vec<u32>> = edges
         .iter()
@@ -66,5 +66,5 @@ pub fn split_edges_traced(map: &TriMap, edges: &[(usize, usize)]) -> (TriMap, us
             vec![tri[(f + 1) % 3], tri[(f + 2) % 3]]
         })
         .collect();
-    dualex_map::split::split_faces_traced(map, &faces)
+    dualex_segment::split::split_faces_traced(map, &faces)
 }

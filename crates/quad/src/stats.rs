@@ -3,8 +3,8 @@
 
 use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
-use dualex_map::sanitize_report::{histogram_json, offset_json, times_json};
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
+use dualex_segment::sanitize_report::{histogram_json, offset_json, times_json};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
@@ -29,7 +29,7 @@ pub struct QuadStats {
     pub split_edges: usize,
     /// The grid offset used, and the singular vertices on the grid under
     /// each choice (`Auto`).
-    pub grid_offset: dualex_map::grid_offset::OffsetChoice,
+    pub grid_offset: dualex_segment::grid_offset::OffsetChoice,
     /// Sanitization report.
     pub sanitize: SanitizeReport,
     /// Nodes found.

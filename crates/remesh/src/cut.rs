@@ -25,7 +25,7 @@
 use crate::error::RemeshError;
 use crate::field::CrossField;
 use crate::surface::{Surface, NO_FACE};
-use crate::union_find::{find, union};
+use dualex_util::union_find::{find, union};
 use std::collections::VecDeque;
 
 /// The edges to cut along.

@@ -34,7 +34,7 @@
 //! `min.edges ≤ 1` it is all of them.
 
 use crate::surface::{dot, norm, sub, Surface, NO_FACE};
-use crate::union_find::find;
+use dualex_util::union_find::find;
 
 /// Largest turn, in degrees, between two sharp edges at a vertex for them
 /// to continue one curve.

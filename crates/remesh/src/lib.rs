@@ -56,7 +56,6 @@ pub mod smooth;
 pub mod sparse;
 mod stats_json;
 pub mod surface;
-mod union_find;
 pub mod weld;
 
 pub use cut::{cut_to_disk, Cut};

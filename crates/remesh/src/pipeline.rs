@@ -56,9 +56,9 @@ use crate::quantize::Rounding;
 use crate::recount::{self, CountQuads, Counted};
 use crate::smooth::{self, FieldOptions, FieldResult};
 use crate::surface::{Surface, NO_FACE};
-use crate::union_find::{find, union};
-use dualex_map::timing::Laps;
 use dualex_map::TriMap;
+use dualex_util::timing::Laps;
+use dualex_util::union_find::{find, union};
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
@@ -231,7 +231,7 @@ fn make(
     smooth::quarters(surface, &mut on, &fopts, &mut solved, &mut laps)?;
     let mut f = solved.result(surface, on, &fopts, laps);
     // 6. the seed turns the field of every free component
-    let mut rng = dualex_map::rng::SplitMix::new(opts.seed);
+    let mut rng = dualex_util::rng::SplitMix::new(opts.seed);
     let angle = rng.unit() * std::f64::consts::FRAC_PI_2;
     turn_free_components(surface, &mut f.field, &f.fixed, angle);
     let t1 = Instant::now();

@@ -131,7 +131,7 @@ mod tests {
 
     /// Boundary loops of a surface (its boundary edges joined at vertices).
     fn boundary_loops(s: &Surface) -> usize {
-        let mut uf = crate::union_find::UnionFind::new(s.positions.len());
+        let mut uf = dualex_util::union_find::UnionFind::new(s.positions.len());
         let mut on = vec![false; s.positions.len()];
         for (e, &[a, b]) in s.edges.iter().enumerate() {
             if s.is_boundary_edge(e as u32) {

@@ -63,7 +63,7 @@ use crate::features::{feature_edges, MinCurve};
 use crate::field::CrossField;
 use crate::singularity::{boundary_indices, vertex_indices};
 use crate::surface::{norm, sub, Surface, NO_FACE};
-use dualex_map::timing::Laps;
+use dualex_util::timing::Laps;
 use faer::c64;
 pub use solve::field_energy;
 use solve::solve_field;

@@ -4,7 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
-use dualex_map::{QuadMesh, TriMap};
+use dualex_cells::QuadMesh;
+use dualex_map::TriMap;
 
 use crate::valence::cube_quads;
 use crate::{map_png, quad_png, view_html};

@@ -1,7 +1,7 @@
 //! # dualex-render — results a person can look at
 //!
-//! Input: an output [`QuadMesh`](dualex_map::QuadMesh) /
-//! [`HexMesh`](dualex_map::HexMesh), or an input
+//! Input: an output [`QuadMesh`](dualex_cells::QuadMesh) /
+//! [`HexMesh`](dualex_cells::HexMesh), or an input
 //! [`TriMap`](dualex_map::TriMap). Output: a PNG file or an HTML page.
 //!
 //! - [`quad_png`]: the quad mesh, vertices coloured by valence

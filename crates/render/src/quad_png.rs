@@ -13,7 +13,7 @@
 
 use std::path::Path;
 
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 use tiny_skia::{FillRule, PathBuilder, Pixmap, Stroke, Transform};
 
 use crate::canvas::{bbox, paint, white, write_png, Fit};

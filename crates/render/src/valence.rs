@@ -13,7 +13,7 @@
 use std::collections::HashMap;
 
 use crate::error::RenderError;
-use dualex_map::QuadMesh;
+use dualex_cells::QuadMesh;
 
 /// What a vertex is coloured as.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

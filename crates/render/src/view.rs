@@ -24,14 +24,14 @@
 use std::collections::HashMap;
 use std::fmt::Write;
 
-use dualex_map::{HexMesh, QuadMesh};
+use dualex_cells::{HexMesh, QuadMesh};
 
 use crate::error::RenderError;
 use crate::valence::{check_quads, valence_classes};
 
 const VIEWER_JS: &str = include_str!("viewer.js");
 
-use dualex_map::cells::HEX_FACES;
+use dualex_cells::cells::HEX_FACES;
 
 /// Per-element quality to colour the elements by (see the module docs).
 #[derive(Clone, Copy, Debug)]

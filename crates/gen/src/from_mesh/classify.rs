@@ -15,8 +15,9 @@
 //! cone of a whole number of turns (valence 8: trivial holonomy), hence
 //! the combinatorial test.
 
-use dualex_map::cells::{HEX_EDGES, HEX_FACES};
-use dualex_map::{HexMesh, QuadMesh, Rot, SimplexMap};
+use dualex_cells::cells::{HEX_EDGES, HEX_FACES};
+use dualex_cells::{HexMesh, QuadMesh};
+use dualex_map::{Rot, SimplexMap};
 use std::collections::HashMap;
 
 /// What kind of vertex a map vertex is (module docs).

@@ -9,25 +9,9 @@
 
 use crate::block::ExpectedHex;
 use crate::expected::Expected;
-use dualex_map::{HexMesh, QuadMesh};
+use dualex_cells::{HexMesh, QuadMesh};
+use dualex_util::union_find::UnionFind;
 use std::collections::{BTreeMap, HashMap};
-
-/// Smallest union–find (path halving).
-struct Sets(Vec<usize>);
-
-impl Sets {
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.0[x] != x {
-            self.0[x] = self.0[self.0[x]];
-            x = self.0[x];
-        }
-        x
-    }
-    fn union(&mut self, a: usize, b: usize) {
-        let (a, b) = (self.find(a), self.find(b));
-        self.0[a] = b;
-    }
-}
 
 /// Counts of a quad (or any polygon) surface given as cycles of vertices.
 struct Surface {
@@ -52,7 +36,7 @@ fn surface(n: usize, faces: &[Vec<u32>]) -> Surface {
             *valence.entry(a).or_insert(0) += 1;
         }
     }
-    let mut sets = Sets((0..n).collect());
+    let mut sets = UnionFind::new(n);
     let mut on_boundary = vec![false; n];
     for (&(a, b), &c) in &edge_faces {
         if c == 1 {
@@ -107,7 +91,7 @@ pub fn expected_quad(mesh: &QuadMesh) -> Expected {
 pub fn expected_hex(mesh: &HexMesh) -> ExpectedHex {
     let mut count: HashMap<[u32; 4], (usize, Vec<u32>)> = HashMap::new();
     for h in &mesh.cells {
-        for f in dualex_map::cells::HEX_FACES {
+        for f in dualex_cells::cells::HEX_FACES {
             let cyc: Vec<u32> = f.iter().map(|&i| h[i]).collect();
             let mut key = [cyc[0], cyc[1], cyc[2], cyc[3]];
             key.sort_unstable();
@@ -120,7 +104,7 @@ pub fn expected_hex(mesh: &HexMesh) -> ExpectedHex {
         .map(|(_, cyc)| cyc)
         .collect();
     let s = surface(mesh.positions.len(), &boundary);
-    let mut sets = Sets((0..mesh.positions.len()).collect());
+    let mut sets = UnionFind::new(mesh.positions.len());
     for f in &boundary {
         for w in f.windows(2) {
             sets.union(w[0] as usize, w[1] as usize);

@@ -33,10 +33,10 @@
 //! ```
 
 use super::refine::Refined;
-use dualex_map::HexMesh;
+use dualex_cells::HexMesh;
 use std::collections::{BTreeMap, HashMap};
 
-pub use dualex_map::cells::{HEX_EDGES, HEX_FACES};
+pub use dualex_cells::cells::{HEX_EDGES, HEX_FACES};
 
 /// The unit cells `(i, j, l)`, `0 <= i, j, l < n`, for which `keep` holds,
 /// as hexes with corners at integer points shifted by `-n/2` (the box is

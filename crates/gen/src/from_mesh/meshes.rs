@@ -15,7 +15,7 @@
 //!   (`cylinder6`: 6 hexes around the axis);
 //! - [`polycube_l`]: 3 cubes in an L: a concave boundary edge of valence 3.
 
-use dualex_map::{HexMesh, QuadMesh};
+use dualex_cells::{HexMesh, QuadMesh};
 use std::collections::HashMap;
 use std::f64::consts::TAU;
 

@@ -2,7 +2,7 @@
 //!
 //! Input: a quad mesh ([`QuadMesh`], consistently oriented, boundary
 //! allowed) or a hex mesh ([`HexMesh`], VTK/MEDIT corner order of
-//! [`dualex_map::cells`], positive hexes), and [`FromMeshOptions`].
+//! [`dualex_cells::cells`], positive hexes), and [`FromMeshOptions`].
 //!
 //! Output ([`FromQuads`] / [`FromHexes`]): a [`TriMap`] / [`TetMap`] in
 //! which every element is its own chart `[0,k]^D` (element corner `c` at
@@ -54,7 +54,8 @@ pub use count::{expected_hex, expected_quad};
 use crate::block::ExpectedHex;
 use crate::expected::Expected;
 use crate::Diagonal;
-use dualex_map::{HexMesh, QuadMesh, TetMap, TriMap};
+use dualex_cells::{HexMesh, QuadMesh};
+use dualex_map::{TetMap, TriMap};
 
 /// How each sub-cube is split into tets (both conformal across hexes
 /// whatever their frames: they only depend on global vertex ids).
@@ -248,7 +249,7 @@ fn magnified<const D: usize, const K: usize, M>(
     base: M,
     opts: &FromMeshOptions,
     mesh_of: impl Fn(&refine::Refined<D>) -> M,
-    input: &dualex_map::cells::CellMesh<K>,
+    input: &dualex_cells::cells::CellMesh<K>,
 ) -> Result<M, FromMeshError> {
     if opts.magnify == 1 {
         return Ok(base);

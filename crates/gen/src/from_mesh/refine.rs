@@ -142,8 +142,8 @@ impl<const D: usize> Refined<D> {
 
 impl Refined<2> {
     /// `M_k` as a quad mesh.
-    pub(crate) fn quad_mesh(&self) -> dualex_map::QuadMesh {
-        dualex_map::QuadMesh {
+    pub(crate) fn quad_mesh(&self) -> dualex_cells::QuadMesh {
+        dualex_cells::QuadMesh {
             positions: self.positions.clone(),
             cells: self.cells::<4>(),
         }
@@ -152,8 +152,8 @@ impl Refined<2> {
 
 impl Refined<3> {
     /// `M_k` as a hex mesh.
-    pub(crate) fn hex_mesh(&self) -> dualex_map::HexMesh {
-        dualex_map::HexMesh {
+    pub(crate) fn hex_mesh(&self) -> dualex_cells::HexMesh {
+        dualex_cells::HexMesh {
             positions: self.positions.clone(),
             cells: self.cells::<8>(),
         }

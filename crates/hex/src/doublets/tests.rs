@@ -1,6 +1,6 @@
 use super::*;
+use dualex_cells::QuadMesh;
 use dualex_gen::from_mesh::meshes::{extrude, grid_with_doublet};
-use dualex_map::QuadMesh;
 
 /// The check's report: valid but for doublets (interior edges in 2
 /// hexes, which it reports as errors exactly when there are some).

@@ -19,7 +19,7 @@
 use crate::error::RemeshError;
 use crate::field::CrossField;
 use crate::surface::{Surface, NO_FACE};
-use crate::union_find::UnionFind;
+use dualex_util::union_find::UnionFind;
 use std::collections::VecDeque;
 use std::f64::consts::FRAC_PI_2;
 

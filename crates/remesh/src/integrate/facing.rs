@@ -22,7 +22,7 @@
 use super::charts::Charts;
 use super::constraints::Constraints;
 use crate::surface::Surface;
-use crate::union_find::UnionFind;
+use dualex_util::union_find::UnionFind;
 use std::collections::HashMap;
 
 /// Walls and facing pairs (module docs).
@@ -98,7 +98,9 @@ fn walls(cons: &Constraints) -> Vec<u32> {
         // the row `A_c − B_c` of this edge names both of its unknowns
         for &(var, _) in &q.terms {
             match key.get(&var) {
-                Some(&j) => uf.union(j, k),
+                Some(&j) => {
+                    uf.union(j, k);
+                }
                 None => {
                     key.insert(var, k);
                 }

@@ -11,7 +11,7 @@ use super::{face_components, FieldOptions};
 use crate::error::RemeshError;
 use crate::sparse::HpdSolver;
 use crate::surface::{dot, sub, Surface, NO_FACE};
-use dualex_map::timing::Laps;
+use dualex_util::timing::Laps;
 use faer::c64;
 
 /// The energy on the free faces: `L`, `b` (from the fixed faces), the

@@ -20,7 +20,7 @@
 //! earlier applied face of the list waits for the next call (the caller
 //! repeats until nothing is left).
 
-use crate::SimplexMap;
+use dualex_map::SimplexMap;
 use std::collections::HashMap;
 
 /// Splits `faces` of `map` (see the module docs); returns the new map and
@@ -127,7 +127,7 @@ pub fn split_faces_traced<const N: usize, const D: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_maps::{grid, tet_cube};
+    use dualex_map::test_maps::{grid, tet_cube};
 
     fn volume<const N: usize, const D: usize>(m: &SimplexMap<N, D>) -> f64 {
         (0..m.len()).map(|s| m.map_det(s)).sum()

@@ -16,7 +16,7 @@
 //! every grid rotation), up to the map's own GP residual.
 
 use crate::grid_offset::GridOffset;
-use crate::{Rot, SimplexMap, Stars, Topology, Transitions};
+use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
 /// A map in local shifted coordinates.
@@ -72,7 +72,7 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
         let offset: Vec<[i64; D]> = map
             .coords
             .par_iter()
-            .map(|c| c[0].map(|x| crate::grid::floor(x) as i64))
+            .map(|c| c[0].map(|x| dualex_util::round::floor(x) as i64))
             .collect();
         let coords = map
             .coords
@@ -192,7 +192,7 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
     /// Signed determinant of simplex `s`'s image (< 0: reverted).
     #[inline]
     pub fn det(&self, s: usize) -> f64 {
-        crate::mesh::det_of::<N, D>(&self.coords[s])
+        dualex_map::mesh::det_of::<N, D>(&self.coords[s])
     }
 }
 
@@ -232,7 +232,7 @@ fn snap_block<const N: usize, const D: usize>(
             let y = e.rot.apply(&x_ref);
             let mut x = coords[e.simplex as usize][e.corner as usize];
             for (xk, yk) in x.iter_mut().zip(y) {
-                let snapped = yk + crate::grid::round(*xk - yk);
+                let snapped = yk + dualex_util::round::round(*xk - yk);
                 // not NaN (validated input): as `f64::max`
                 let m = (snapped - *xk).abs();
                 if m > out.max_move {
@@ -245,6 +245,23 @@ fn snap_block<const N: usize, const D: usize>(
         out.count += 1;
     }
     out
+}
+
+/// The input-chart coordinates of corner `code` (bit `a` set: the + side
+/// of axis `a`) of the dual cell of the integer point `node` of simplex
+/// `s`'s local chart (`dualex_cells::corners`). `s` must be a simplex of `local`.
+pub fn node_corner<const N: usize, const D: usize>(
+    local: &LocalMap<N, D>,
+    s: usize,
+    node: &[i64; D],
+    code: usize,
+) -> [f64; D] {
+    let h = local.grid.shift();
+    let o = local.offset[s];
+    std::array::from_fn(|a| {
+        let half = if code >> a & 1 == 1 { 0.5 } else { -0.5 };
+        (node[a] + o[a]) as f64 + (half - h)
+    })
 }
 
 #[cfg(test)]
@@ -294,8 +311,8 @@ mod tests {
     /// with random charts and per-corner noise spanning several waves.
     #[test]
     fn snap_equals_sequential_reference() {
-        use crate::test_maps::{grid, rechart, Lcg};
-        use crate::{Topology, Transitions};
+        use dualex_map::test_maps::{grid, rechart, Lcg};
+        use dualex_map::{Topology, Transitions};
         let mut map = grid(130);
         rechart(&mut map, 5);
         let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));

@@ -29,7 +29,7 @@
 //! that maps that do not care extract exactly as before. A vertex is read
 //! at its reference corner (first star entry) in that simplex's chart.
 
-use crate::{SimplexMap, Stars, Topology};
+use dualex_map::{SimplexMap, Stars, Topology};
 
 /// Distance to an integer below which a singular vertex's coordinate counts
 /// as on the grid, in map units. Looser than [`crate::grid::EPS`] (which
@@ -105,8 +105,8 @@ pub struct OffsetChoice {
 /// Whether `x + shift` is within [`ON_GRID`] of an integer (`x − floor(x)`
 /// is exact, so large coordinates are judged like small ones).
 fn on_iso(x: f64, shift: f64) -> bool {
-    let f = x - crate::grid::floor(x) + shift;
-    (f - crate::grid::round(f)).abs() < ON_GRID
+    let f = x - dualex_util::round::floor(x) + shift;
+    (f - dualex_util::round::round(f)).abs() < ON_GRID
 }
 
 /// Counts the singular vertices on the grid under both offsets.

@@ -2,11 +2,13 @@
 //! cell's corners in the input chart of the simplex that holds its node.
 //!
 //! A node is an integer point `n` of the local chart of simplex `s`
-//! ([`LocalMap`]: `input = local + offset − h`, `h` the grid offset's
+//! (`dualex_segment::local::LocalMap`: `input = local + offset − h`, `h`
+//! the grid offset's
 //! shift: ½ for `Half`, 0 for `Zero`). Its dual cell's corners are
 //! `n ± ½` on each axis, so in `s`'s input chart they are
 //! `n + offset − h ± ½`: integers with the offset `Half`, half-integers
-//! with `Zero`. They are computed in integers plus one exact float
+//! with `Zero`. They are computed (`dualex_segment::local::node_corner`)
+//! in integers plus one exact float
 //! addition, so they are exact grid points of the input map — not values
 //! interpolated from the sanitized (perturbed) map, and not the map's value
 //! at the output vertex's position (which differs by the map's distortion
@@ -20,28 +22,10 @@
 //! corners with different coordinates could be, has none.
 
 use crate::cells::CellMesh;
-use crate::local::LocalMap;
 
 /// The map coordinates of a cell's `K` corners in one chart, in the cell's
 /// corner order; `None` when the cell has none (module docs).
 pub type Corners<const D: usize, const K: usize> = Option<[[f64; D]; K]>;
-
-/// The input-chart coordinates of corner `code` (bit `a` set: the + side
-/// of axis `a`) of the dual cell of the integer point `node` of simplex
-/// `s`'s local chart (module docs). `s` must be a simplex of `local`.
-pub fn node_corner<const N: usize, const D: usize>(
-    local: &LocalMap<N, D>,
-    s: usize,
-    node: &[i64; D],
-    code: usize,
-) -> [f64; D] {
-    let h = local.grid.shift();
-    let o = local.offset[s];
-    std::array::from_fn(|a| {
-        let half = if code >> a & 1 == 1 { 0.5 } else { -0.5 };
-        (node[a] + o[a]) as f64 + (half - h)
-    })
-}
 
 /// The corners of the cells of `new`, each made from cell `origin[c]` of
 /// `old` (whose corners are `corners`); an origin past `old`'s cells (a

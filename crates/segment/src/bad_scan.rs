@@ -13,7 +13,7 @@
 //! corners). The tests run in parallel (order-preserving collect; the
 //! masks do not depend on the thread count).
 
-use crate::{SimplexMap, Stars};
+use dualex_map::{SimplexMap, Stars};
 use rayon::prelude::*;
 
 /// Bad-vertex flags with the per-simplex masks behind them.

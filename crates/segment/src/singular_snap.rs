@@ -26,7 +26,7 @@
 //! is and counted in [`SingularSnap::left`].
 
 use crate::local::LocalMap;
-use crate::{Rot, Stars, Topology};
+use dualex_map::{Rot, Stars, Topology};
 
 /// Largest corner move accepted (map units): beyond it the translations
 /// recovered by rounding are not trustworthy.
@@ -89,7 +89,7 @@ fn fixed_corners<const N: usize, const D: usize>(
         .map(|e| {
             let x = corner(e.simplex, e.corner);
             let y = e.rot.apply(&x_ref);
-            std::array::from_fn(|k| crate::grid::round(x[k] - y[k]) as i64)
+            std::array::from_fn(|k| dualex_util::round::round(x[k] - y[k]) as i64)
         })
         .collect();
     let mut sys = Echelon::<D>::default();

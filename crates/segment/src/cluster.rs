@@ -11,12 +11,15 @@
 //! away from it. Generic over
 //! the dimension: used by both extractions.
 
-use crate::{Rot, SimplexMap, Stars};
+use dualex_map::{Rot, SimplexMap, Stars};
+use dualex_util::union_find::UnionFind;
 use std::collections::HashMap;
 
 /// The collapsed clusters of a map.
 pub struct Clusters<const D: usize> {
-    parent: Vec<u32>,
+    /// The clusters as sets (each joined into its second vertex's set:
+    /// [`UnionFind::union_into`], whose root gives the reference chart).
+    sets: UnionFind,
     /// Per vertex: rotation from its cluster root's reference chart to its
     /// own reference chart; `None` when the cluster cannot move.
     rot_from_root: Vec<Option<Rot<D>>>,
@@ -31,7 +34,7 @@ impl<const D: usize> Clusters<D> {
         coords: &[[[f64; D]; N]],
     ) -> Self {
         let nv = map.positions.len();
-        let mut parent: Vec<u32> = (0..nv as u32).collect();
+        let mut sets = UnionFind::new(nv);
         let mut edges = Vec::new();
         for (s, tet) in map.simplices.iter().enumerate() {
             for k in 0..N {
@@ -41,7 +44,7 @@ impl<const D: usize> Clusters<D> {
                     let singular = |v: u32| stars.singular[v as usize];
                     if coords[s][k] == coords[s][l] && !singular(tet[k]) && !singular(tet[l]) {
                         edges.push((tet[k], tet[l], s));
-                        union(&mut parent, tet[k], tet[l]);
+                        sets.union_into(tet[k] as usize, tet[l] as usize);
                     }
                 }
             }
@@ -52,7 +55,7 @@ impl<const D: usize> Clusters<D> {
         on_edge.dedup();
         let mut members: HashMap<u32, Vec<u32>> = HashMap::new();
         for v in on_edge {
-            let r = find(&mut parent, v);
+            let r = sets.find(v as usize) as u32;
             members.entry(r).or_default().push(v);
         }
         members.retain(|_, m| m.len() > 1);
@@ -71,7 +74,7 @@ impl<const D: usize> Clusters<D> {
             }
         }
         Clusters {
-            parent,
+            sets,
             rot_from_root,
             members,
         }
@@ -84,11 +87,7 @@ impl<const D: usize> Clusters<D> {
 
     /// The cluster root of `v`.
     pub fn root(&self, v: u32) -> u32 {
-        let mut x = v;
-        while self.parent[x as usize] != x {
-            x = self.parent[x as usize];
-        }
-        x
+        self.sets.root(v as usize) as u32
     }
 
     /// Members of the cluster with their rotation from the root's chart;
@@ -146,19 +145,4 @@ fn spread<const D: usize>(root: u32, adj: &Adjacency<D>) -> Option<HashMap<u32, 
         }
     }
     Some(seen)
-}
-
-fn find(p: &mut [u32], mut x: u32) -> u32 {
-    while p[x as usize] != x {
-        p[x as usize] = p[p[x as usize] as usize];
-        x = p[x as usize];
-    }
-    x
-}
-
-fn union(p: &mut [u32], a: u32, b: u32) {
-    let (ra, rb) = (find(p, a), find(p, b));
-    if ra != rb {
-        p[ra as usize] = rb;
-    }
 }

@@ -1,6 +1,6 @@
 use super::*;
-use crate::test_maps::{cone, cube_surface, edge_fan, rechart, Lcg};
-use crate::{SimplexMap, Transitions};
+use dualex_map::test_maps::{cone, cube_surface, edge_fan, rechart, Lcg};
+use dualex_map::{SimplexMap, Transitions};
 
 /// Global shifted coordinates (local + offset) of every corner of `v`.
 fn global_corners<const N: usize, const D: usize>(

@@ -2,12 +2,17 @@
 //! dimensions: values on an iso, 2D segments through a grid point.
 //! Coordinates are local (see [`crate::local`]), so [`EPS`] is absolute.
 //!
-//! Hot loops of the whole crate (and of the sanitizers) call the rounding
-//! functions here instead of `f64::round`,
-//! `ceil` and `floor` (library calls on the baseline x86-64 target) and
-//! compare distances with [`EPS`] without `hypot` unless the comparison is
-//! too close to call: every function returns bit for bit what the `std` /
-//! `hypot` formulation returns.
+//! Input: local map coordinates. Output: predicates and nearest grid
+//! points; nothing is stored. Invariant: hot loops of the whole crate (and
+//! of the sanitizers) use the libm-free rounding of [`dualex_util::round`]
+//! instead of `f64::round`, `ceil` and `floor`, and compare distances with
+//! [`EPS`] without `hypot` unless the comparison is too close to call:
+//! every function returns bit for bit what the `std` / `hypot` formulation
+//! returns.
+
+#[cfg(test)]
+use dualex_util::round::floor;
+use dualex_util::round::{ceil, nearest_even, round, FAST};
 
 /// Distance below which a value counts as "on" an iso.
 pub const EPS: f64 = 1e-9;
@@ -22,55 +27,6 @@ pub fn near_int(x: f64) -> bool {
     } else {
         (x - x.round()).abs() < EPS
     }
-}
-
-/// 2^51: below it in magnitude, [`nearest_even`] is exact.
-const FAST: f64 = 2_251_799_813_685_248.0;
-/// 1.5·2^52: `(x + MAGIC) − MAGIC` lands in `[2^52, 2^53)`, where the
-/// spacing of doubles is 1, so the addition rounds `x` to an integer.
-const MAGIC: f64 = 6_755_399_441_055_744.0;
-
-/// The integer nearest to `x` (ties to even) for `|x| < 2^51`, as `+0.0`
-/// when zero.
-#[inline]
-fn nearest_even(x: f64) -> f64 {
-    (x + MAGIC) - MAGIC
-}
-
-/// `x.round()`, bit for bit (sign of zero included), without a library call
-/// on the common path.
-#[inline]
-pub fn round(x: f64) -> f64 {
-    if x.abs() < FAST {
-        let r = nearest_even(x);
-        // ties (`x − r = ±½`, exact) go away from zero in `f64::round`
-        if (x - r).abs() != 0.5 {
-            return r.copysign(x);
-        }
-    }
-    x.round()
-}
-
-/// `x.ceil()`, bit for bit (see [`round`]).
-#[inline]
-pub fn ceil(x: f64) -> f64 {
-    if x.abs() < FAST {
-        let r = nearest_even(x);
-        let c = if r < x { r + 1.0 } else { r };
-        return c.copysign(x);
-    }
-    x.ceil()
-}
-
-/// `x.floor()`, bit for bit (see [`round`]).
-#[inline]
-pub fn floor(x: f64) -> f64 {
-    if x.abs() < FAST {
-        let r = nearest_even(x);
-        let f = if r > x { r - 1.0 } else { r };
-        return f.copysign(x);
-    }
-    x.floor()
 }
 
 /// `[ceil(x − 2·EPS), floor(x + 2·EPS)]` up to the sign of zero: the

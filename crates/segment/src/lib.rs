@@ -1,0 +1,43 @@
+//! # dualex-segment — the dual segmentation's shared steps
+//!
+//! Step 2 of the pipeline, the part both extractions share: from the map
+//! model (`dualex-map`) to a map whose vertices are off the dual grid,
+//! ready for the nodes and the traced sides of `dualex-quad` /
+//! `dualex-hex`. Every module is generic over the dimension (`N` corners
+//! per simplex, `D` map dimension); this is the crate where the quad and
+//! hex twins (nodes, trace, sanitize) are to become one code over
+//! `const D` (issue 24).
+//!
+//! Input: a validated map, its topology, transitions and stars. Output:
+//! local charts, the grid offset, snapped singular vertices, split faces,
+//! collapsed clusters, the incremental bad-vertex scan and the
+//! sanitization report. Invariants: local coordinates stay small (exact
+//! integer offsets), transitions between local charts are integral, and
+//! every step is deterministic whatever the number of threads.
+//!
+//! - [`grid_offset`]: the dual grid's offset (½ or 0), chosen from the
+//!   singular vertices;
+//! - [`local`]: local shifted coordinates ([`local::LocalMap`]) and the
+//!   input-chart coordinates of an output cell's corners
+//!   ([`local::node_corner`]);
+//! - [`grid`]: closeness to the integer grid (values on an iso, segments
+//!   through a grid point);
+//! - [`singular_snap`]: exact placement of singular vertices on the fixed
+//!   sets of their holonomies;
+//! - [`split`]: the barycentric split of faces of any dimension;
+//! - [`cluster`]: collapsed clusters (vertices joined by zero-length map
+//!   edges), moved as one by sanitization;
+//! - [`bad_scan`]: the incremental bad-vertex scan of both sanitizers;
+//! - [`sanitize_report`]: what sanitization did, its perturbation
+//!   schedule, and the JSON helpers of the extraction stats.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod bad_scan;
+pub mod cluster;
+pub mod grid;
+pub mod grid_offset;
+pub mod local;
+pub mod sanitize_report;
+pub mod singular_snap;
+pub mod split;
