@@ -22,11 +22,19 @@
 //! - [`cells`]: [`CellMesh`], [`QuadMesh`], [`HexMesh`], the corner order,
 //!   [`cells::HEX_FACES`] and [`cells::HEX_EDGES`];
 //! - [`corners`]: per-cell corner coordinates ([`corners::Corners`]) and
-//!   their carrying through steps that remake cells ([`corners::carry`]).
+//!   their carrying through steps that remake cells ([`corners::carry`]);
+//! - [`polygons`]: cells as polygons (repeated corners dropped) and the
+//!   holes of a glued mesh as polygons;
+//! - [`repair_local`]: the local repair of the faces quads cannot
+//!   represent (odd faces paired by paths of quads), run by quad's step 8
+//!   and replayed by hex's columns on every layer: it lives here, with
+//!   the mesh it edits, so that hex does not depend on quad.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod cells;
 pub mod corners;
+pub mod polygons;
+pub mod repair_local;
 
 pub use cells::{CellMesh, HexMesh, QuadMesh};

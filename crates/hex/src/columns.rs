@@ -1,5 +1,5 @@
 //! Step 6b: the local repair of holes through columns — the extrusion of
-//! the 2D local repair (`dualex_quad::repair_local`), replayed in every
+//! the 2D local repair (`dualex_cells::repair_local`), replayed in every
 //! layer.
 //!
 //! In a map extruded from a 2D map (`dualex extrude`), a 90° singular
@@ -226,7 +226,7 @@ pub fn repair(mesh: &HexMesh, open: &[[u32; 4]]) -> Option<Repaired> {
         .map(|s| bottom(&mesh.cells[s[0]]))
         .collect();
     let edges = cols.hole_edges(&base, open)?;
-    let (fill, left_open) = dualex_quad::repair::hole_polygons(&edges);
+    let (fill, left_open) = dualex_cells::polygons::hole_polygons(&edges);
     if left_open > 0 || fill.is_empty() {
         return None;
     }
@@ -234,7 +234,7 @@ pub fn repair(mesh: &HexMesh, open: &[[u32; 4]]) -> Option<Repaired> {
         positions: mesh.positions.clone(),
         cells: base.clone(),
     };
-    let local = dualex_quad::repair_local::repair(&flat, &fill)?;
+    let local = dualex_cells::repair_local::repair(&flat, &fill)?;
     let n0 = mesh.positions.len();
     let mut positions = local.mesh.positions.clone();
     // the new points at levels 1..=L, replayed from their recipes
@@ -246,7 +246,7 @@ pub fn repair(mesh: &HexMesh, open: &[[u32; 4]]) -> Option<Repaired> {
                 .iter()
                 .map(|&p| lift_any(&cols, &ids, p, k, n0))
                 .collect::<Option<_>>()?;
-            positions.push(dualex_quad::repair_local::mean(&positions, &lifted));
+            positions.push(dualex_cells::repair_local::mean(&positions, &lifted));
             ids.push((positions.len() - 1) as u32);
         }
         new_at.push(ids);

@@ -5,7 +5,7 @@
 //! sides or an unmatched side), but an output file names an edge by its
 //! two vertices. On messy maps (folds, singular vertices off the grid) the
 //! gluing can make two configurations that vertex pairs cannot represent,
-//! and that the repair (`crate::repair_local`, `crate::repair`) would
+//! and that the repair (`dualex_cells::repair_local`, `crate::repair`) would
 //! otherwise mistake for one edge:
 //! - **parallel edges**: two edges (glued pairs or unmatched sides) between
 //!   the same two vertices — a loop of two edges around a handle that
@@ -46,7 +46,7 @@ pub struct Split {
     /// Each new point's two edge ends (its position is their mean).
     pub new_points: Vec<[u32; 2]>,
     /// The cells as polygons (consecutive repeated corners removed, as
-    /// `crate::repair::polygon`); a cut cell gives two.
+    /// `dualex_cells::polygons::polygon`); a cut cell gives two.
     pub polys: Vec<Vec<u32>>,
     /// For each polygon, its cell.
     pub origin: Vec<u32>,
@@ -145,7 +145,7 @@ pub fn split(mesh: &QuadMesh, partner: &[Option<Slot>], holes: &[Slot]) -> Split
         let (a, b) = ends(cells, s);
         let m = out.positions.len() as u32;
         out.positions
-            .push(crate::repair_local::mean(&out.positions, &[a, b]));
+            .push(dualex_cells::repair_local::mean(&out.positions, &[a, b]));
         out.new_points.push([a, b]);
         marked.insert(s, m);
     }
@@ -174,7 +174,7 @@ pub fn split(mesh: &QuadMesh, partner: &[Option<Slot>], holes: &[Slot]) -> Split
                 out.folded_cells += 1;
             }
             None => {
-                out.polys.push(crate::repair::polygon_of(&p));
+                out.polys.push(dualex_cells::polygons::polygon_of(&p));
                 out.origin.push(c as u32);
                 out.intact.push(intact);
             }
@@ -192,7 +192,11 @@ pub fn split(mesh: &QuadMesh, partner: &[Option<Slot>], holes: &[Slot]) -> Split
 
 /// The split that changes nothing.
 fn identity(mesh: &QuadMesh, holes: &[Slot], mut out: Split) -> Split {
-    out.polys = mesh.cells.iter().map(crate::repair::polygon).collect();
+    out.polys = mesh
+        .cells
+        .iter()
+        .map(dualex_cells::polygons::polygon)
+        .collect();
     out.origin = (0..mesh.cells.len() as u32).collect();
     out.intact = vec![true; mesh.cells.len()];
     out.hole_edges = holes

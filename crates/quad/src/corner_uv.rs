@@ -12,8 +12,8 @@
 
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
-use crate::repair::polygon;
 use dualex_cells::corners::Corners;
+use dualex_cells::polygons::polygon;
 use dualex_cells::QuadMesh;
 use dualex_graph::{Glued, NodeGraph, Takeover};
 use dualex_segment::local::node_corner;

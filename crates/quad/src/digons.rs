@@ -159,7 +159,7 @@ pub fn excess_handles(graph: &NodeGraph<2>, glued: &Glued<2>, input_euler: i64) 
         .into_iter()
         .map(|s| crate::ambiguous::ends(&cells, s))
         .collect();
-    let (fills, open) = crate::repair::hole_polygons(&holes);
+    let (fills, open) = dualex_cells::polygons::hole_polygons(&holes);
     let v = glued.n_vertices as i64;
     let f = glued.nodes.len() as i64 + (fills.len() + open) as i64;
     let euler = v - pairs - holes.len() as i64 + f;

@@ -39,7 +39,6 @@ pub mod local;
 pub mod nodes;
 pub mod pinched;
 pub mod repair;
-pub mod repair_local;
 use dualex_util::rng;
 pub mod sanitize;
 mod slots;
@@ -270,7 +269,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     st.parallel_edges_split = amb.parallel_edges;
     st.folded_cells_cut = amb.folded_cells;
     // 8b: holes closed, faces quads cannot represent repaired
-    let (fill, open) = repair::hole_polygons(&amb.hole_edges);
+    let (fill, open) = dualex_cells::polygons::hole_polygons(&amb.hole_edges);
     st.holes_left_open = open;
     if let Some(rep) = repair::repair_polygons(&amb.positions, &amb.polys, &fill, amb.changed()) {
         st.repair_triangles = repair::odd_cells(&mesh);

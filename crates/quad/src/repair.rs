@@ -7,7 +7,7 @@
 //! vertex. No perturbation can move such a vertex (its charts disagree
 //! around it) and no local gluing of quads can close a 3-sided face (the
 //! sides around it are odd in number). Such faces are paired up and made
-//! quads along a path of faces between them (`crate::repair_local`); where
+//! quads along a path of faces between them (`dualex_cells::repair_local`); where
 //! that does not apply, what is left is to make the mesh all-quad by one
 //! step of linear subdivision — each quad into 4, each triangle into 3
 //! quads (face centroid, edge midpoints) — which keeps the surface, the
@@ -17,27 +17,9 @@
 //! four distinct corners in cyclic order (nothing to do), else the
 //! repaired all-quad mesh.
 
+use dualex_cells::polygons::polygon;
 use dualex_cells::QuadMesh;
 use std::collections::HashMap;
-
-/// The cell without consecutive repeated corners (cyclically).
-pub(crate) fn polygon(cell: &[u32; 4]) -> Vec<u32> {
-    polygon_of(cell)
-}
-
-/// [`polygon`] of any polygon.
-pub(crate) fn polygon_of(cell: &[u32]) -> Vec<u32> {
-    let mut p: Vec<u32> = Vec::with_capacity(cell.len());
-    for &v in cell {
-        if p.last() != Some(&v) {
-            p.push(v);
-        }
-    }
-    while p.len() > 1 && p.first() == p.last() {
-        p.pop();
-    }
-    p
-}
 
 /// Number of cells that are not proper quads (see the module docs).
 pub fn odd_cells(mesh: &QuadMesh) -> usize {
@@ -54,7 +36,7 @@ pub struct Repaired {
     /// Whether every cell was subdivided (else the quads of `extra` were
     /// only added, or the local repair did it).
     pub subdivided: bool,
-    /// Paths of the local repair (`crate::repair_local`): pairs of faces
+    /// Paths of the local repair (`dualex_cells::repair_local`): pairs of faces
     /// quads cannot represent, made quads along a path between them.
     pub local_paths: usize,
     /// For each cell of `mesh`, the polygon it comes from: an index into
@@ -123,7 +105,7 @@ pub fn repair_polygons(
         }
         dropped += usize::from(kept.len() == before);
     }
-    if let Some(local) = crate::repair_local::repair_polys(positions, &polys_kept) {
+    if let Some(local) = dualex_cells::repair_local::repair_polys(positions, &polys_kept) {
         let mut mesh = local.mesh;
         let pinched = valid_or_unpinched(&mut mesh);
         if let Some(pinched) = pinched {
@@ -299,76 +281,5 @@ mod tests {
             cells: vec![[0, 1, 2, 3]],
         };
         assert!(subdivide_if_odd(&mesh, &[]).is_none());
-    }
-}
-
-/// The holes of the glued mesh: cycles of unmatched cell edges, as polygons
-/// oriented to close them (opposite to the cells' traversal). `edges` are
-/// the unmatched edges as traversed by their cells. A cycle that passes a
-/// vertex twice is not returned (it is left open and reported).
-pub fn hole_polygons(edges: &[(u32, u32)]) -> (Vec<Vec<u32>>, usize) {
-    let mut next: HashMap<u32, Vec<u32>> = HashMap::new();
-    for &(a, b) in edges {
-        next.entry(b).or_default().push(a); // reversed: b → a
-    }
-    let mut used: HashMap<(u32, u32), bool> = HashMap::new();
-    let (mut out, mut skipped) = (Vec::new(), 0);
-    for &(a, b) in edges {
-        if used.contains_key(&(b, a)) {
-            continue;
-        }
-        let mut poly = vec![b];
-        let mut cur = b;
-        let mut ok = true;
-        loop {
-            let cands = next.get(&cur).map(|v| v.as_slice()).unwrap_or(&[]);
-            let [nx] = cands[..] else {
-                ok = false;
-                break;
-            };
-            used.insert((cur, nx), true);
-            if nx == b {
-                break;
-            }
-            if poly.contains(&nx) || poly.len() > edges.len() {
-                ok = false;
-                break;
-            }
-            poly.push(nx);
-            cur = nx;
-        }
-        if ok {
-            out.push(poly);
-        } else {
-            skipped += 1;
-        }
-    }
-    (out, skipped)
-}
-
-#[cfg(test)]
-mod hole_tests {
-    use super::*;
-
-    #[test]
-    fn a_triangular_hole_is_closed_against_its_cells() {
-        // cells traverse 0→1, 1→2, 2→0: the hole face goes 0→2→1... reversed
-        let (polys, open) = hole_polygons(&[(0, 1), (1, 2), (2, 0)]);
-        assert_eq!(open, 0);
-        assert_eq!(polys.len(), 1);
-        let p = &polys[0];
-        assert_eq!(p.len(), 3);
-        // every cell edge a→b appears as b→a in the polygon
-        for (a, b) in [(0u32, 1u32), (1, 2), (2, 0)] {
-            let i = p.iter().position(|&v| v == b).expect("vertex");
-            assert_eq!(p[(i + 1) % 3], a, "{p:?}");
-        }
-    }
-
-    #[test]
-    fn a_figure_eight_is_left_open() {
-        let (polys, open) = hole_polygons(&[(0, 1), (1, 2), (2, 0), (0, 3), (3, 4), (4, 0)]);
-        assert!(polys.is_empty());
-        assert!(open > 0);
     }
 }

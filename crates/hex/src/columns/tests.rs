@@ -61,7 +61,7 @@ fn a_triangular_hole_through_all_layers_is_repaired_as_in_2d() {
         cells: quads.clone(),
     };
     let hole = [vec![0, 2, 1]];
-    let want = dualex_quad::repair_local::repair(&flat, &hole).expect("2D repair");
+    let want = dualex_cells::repair_local::repair(&flat, &hole).expect("2D repair");
     assert_eq!((want.mesh.cells.len(), want.paths), (5, 1));
     for layers in [1, 3] {
         let (m, open) = stack(&positions, &quads, &[(0, 1), (1, 2), (2, 0)], layers);

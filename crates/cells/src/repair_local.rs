@@ -1,5 +1,6 @@
-//! Step 8, first choice: a local repair of the faces quads cannot
-//! represent, instead of subdividing the whole mesh (issue: clean output).
+//! A local repair of the faces quads cannot represent, instead of
+//! subdividing the whole mesh: quad's step 8, first choice
+//! (`dualex_quad::repair`), and each layer of hex's columns.
 //!
 //! Input: the glued cells (a triangle is a cell with a repeated corner) and
 //! the hole-filling polygons. Output: an all-quad mesh, or `None` when the
@@ -23,7 +24,7 @@
 //! corners; interior edges have two faces. The result is checked by the
 //! caller like any output.
 
-use dualex_cells::QuadMesh;
+use crate::QuadMesh;
 use fast_hash::FastMap as HashMap;
 
 mod fast_hash;
@@ -174,7 +175,7 @@ pub fn repair(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Local> {
     let polys: Vec<Vec<u32>> = mesh
         .cells
         .iter()
-        .map(crate::repair::polygon)
+        .map(crate::polygons::polygon)
         .chain(extra.iter().cloned())
         .collect();
     repair_polys(&mesh.positions, &polys)
