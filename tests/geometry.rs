@@ -360,3 +360,34 @@ fn cli_hex_untangles_and_smooths() {
     }
     assert!(p5[1] > p5[0], "smoothing: p5 {p5:?}");
 }
+
+/// Issue 21, "large folded maps": a torus whose map folds over tens of
+/// cells (`torus_fold` 420: 107 inverted quads, quads stretched across
+/// the fold up to ~20 edge lengths). The untangler's rings could not
+/// carry vertices that far (3 were left by default and with `--smooth`);
+/// the fold is now spread out first (`geom::stage::spread`): none left,
+/// and `--smooth` keeps no more than the default.
+#[test]
+fn wide_fold_on_a_torus_is_untangled() {
+    let dir = Scratch::new("geometry-wide-fold");
+    let map = dir.arg("m.obj");
+    let out = dualex(&["generate", "torus_fold", "--size", "420", "-o", &map]);
+    assert!(out.status.success(), "{}", text(&out));
+    for mode in [None, Some("--smooth")] {
+        let (q, s) = (dir.arg("q.obj"), dir.arg("s.json"));
+        let mut args = vec!["quad", &map, "-o", &q, "--stats", &s, "-q"];
+        args.extend(mode);
+        let out = dualex(&args);
+        assert!(out.status.success(), "{mode:?}: {}", text(&out));
+        let g = &json(&dir.path("s.json"))["geometry"];
+        assert!(
+            g["before"]["inverted"].as_u64().unwrap_or(0) > 50,
+            "{mode:?}: {g}"
+        );
+        assert_eq!(g["after"]["inverted"], 0, "{mode:?}: {g}");
+        assert!(
+            g["moved_vertices"].as_u64().unwrap_or(0) > 0,
+            "{mode:?}: {g}"
+        );
+    }
+}

@@ -85,7 +85,18 @@ impl Bvh {
         let nodes = if boxes.is_empty() {
             Vec::new()
         } else {
-            build(boxes, &mut order, 0)
+            let centres: Vec<[f64; 3]> = boxes
+                .iter()
+                .map(|b| [0, 1, 2].map(|k| 0.5 * (b.min[k] + b.max[k])))
+                .collect();
+            let empty = Node {
+                bbox: boxes[0],
+                first: 0,
+                count: 0,
+            };
+            let mut nodes = vec![empty; node_count(boxes.len())];
+            build(boxes, &centres, &mut order, 0, &mut nodes, 0);
+            nodes
         };
         Bvh { nodes, order }
     }
@@ -166,71 +177,79 @@ impl Bvh {
 /// Ranges at least this long build their two halves in parallel.
 const PARALLEL: usize = 1 << 14;
 
+/// Nodes of the subtree over `n` primitives (a leaf at most [`LEAF`],
+/// else this node and its two halves, the left one `n / 2`).
+fn node_count(n: usize) -> usize {
+    if n <= LEAF {
+        1
+    } else {
+        1 + node_count(n / 2) + node_count(n - n / 2)
+    }
+}
+
 /// The subtree over `order` (the primitives at `offset..` of the whole
-/// order), its nodes numbered from 0: an inner node's `first` is its right
-/// child's number, a leaf's the position of its first primitive.
-fn build(boxes: &[Aabb], order: &mut [u32], offset: usize) -> Vec<Node> {
-    let centre = |i: u32| {
-        let x = &boxes[i as usize];
-        [0, 1, 2].map(|k| 0.5 * (x.min[k] + x.max[k]))
-    };
+/// order) written to `nodes` (`node_count(order.len())` of them, the
+/// first numbered `base`): this node, then the left subtree, then the
+/// right one; an inner node's `first` is its right child's number, a
+/// leaf's the position of its first primitive. `centres`: the boxes'
+/// centres.
+fn build(
+    boxes: &[Aabb],
+    centres: &[[f64; 3]],
+    order: &mut [u32],
+    offset: usize,
+    nodes: &mut [Node],
+    base: usize,
+) {
     let mut bbox = boxes[order[0] as usize];
     for &i in &order[1..] {
         bbox.grow(&boxes[i as usize]);
     }
     let n = order.len();
     if n <= LEAF {
-        return vec![Node {
+        nodes[0] = Node {
             bbox,
             first: offset as u32,
             count: n as u32,
-        }];
+        };
+        return;
     }
     let mut cb = Aabb {
         min: [f64::INFINITY; 3],
         max: [f64::NEG_INFINITY; 3],
     };
     for &i in order.iter() {
-        for (k, c) in centre(i).into_iter().enumerate() {
-            cb.min[k] = cb.min[k].min(c);
-            cb.max[k] = cb.max[k].max(c);
-        }
+        cb.grow(&Aabb {
+            min: centres[i as usize],
+            max: centres[i as usize],
+        });
     }
     let axis = (0..3)
         .max_by(|&a, &b| (cb.max[a] - cb.min[a]).total_cmp(&(cb.max[b] - cb.min[b])))
         .unwrap_or(0);
     let mid = n / 2;
     order.select_nth_unstable_by(mid, |&a, &b| {
-        centre(a)[axis].total_cmp(&centre(b)[axis]).then(a.cmp(&b))
+        centres[a as usize][axis]
+            .total_cmp(&centres[b as usize][axis])
+            .then(a.cmp(&b))
     });
     let (lo, hi) = order.split_at_mut(mid);
-    let (left, right) = if n >= PARALLEL {
-        rayon::join(
-            || build(boxes, lo, offset),
-            || build(boxes, hi, offset + mid),
-        )
-    } else {
-        (build(boxes, lo, offset), build(boxes, hi, offset + mid))
-    };
-    // this node, then the left subtree (from 1), then the right one
-    let right_at = 1 + left.len();
-    let mut nodes = Vec::with_capacity(right_at + right.len());
-    nodes.push(Node {
+    let right_at = 1 + node_count(mid);
+    nodes[0] = Node {
         bbox,
-        first: right_at as u32,
+        first: (base + right_at) as u32,
         count: 0,
-    });
-    let shift = |v: Vec<Node>, by: usize| {
-        v.into_iter().map(move |mut node| {
-            if node.count == 0 {
-                node.first += by as u32;
-            }
-            node
-        })
     };
-    nodes.extend(shift(left, 1));
-    nodes.extend(shift(right, right_at));
-    nodes
+    let (left, right) = nodes[1..].split_at_mut(right_at - 1);
+    if n >= PARALLEL {
+        rayon::join(
+            || build(boxes, centres, lo, offset, left, base + 1),
+            || build(boxes, centres, hi, offset + mid, right, base + right_at),
+        );
+    } else {
+        build(boxes, centres, lo, offset, left, base + 1);
+        build(boxes, centres, hi, offset + mid, right, base + right_at);
+    }
 }
 
 #[cfg(test)]

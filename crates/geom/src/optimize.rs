@@ -344,10 +344,14 @@ pub fn optimize<const D: usize, const K: usize>(
     let fall = if p.stop_when_untangled { EPS_FALL } else { 1.0 };
     let mut best = (usize::MAX, 0);
     let mut bases: Vec<crate::constraint::Basis> = Vec::new();
+    // the work of the last round: a smoothing round starts only when the
+    // budget covers another like it (a whole-mesh round is costly)
+    let mut last_cost = 0usize;
     for round in 0..p.rounds {
-        if *budget == 0 {
+        if *budget == 0 || (!p.stop_when_untangled && *budget < last_cost) {
             break;
         }
+        let budget_at_start = *budget;
         out.rounds = round + 1;
         if let (Some(reframe), true) = (cells.reframe, round > 0) {
             let x: &[[f64; 3]] = x;
@@ -446,6 +450,7 @@ pub fn optimize<const D: usize, const K: usize>(
         let (e, d) = l.evaluate(x, eps, p.theta, &mut grads);
         det_min = d;
         *budget = budget.saturating_sub((evaluations + 3) * l.simplices.len());
+        last_cost = budget_at_start - *budget;
         // ε by the rule of Garanzha et al.
         let sigma = (1.0 - e / e_prev).max(0.1);
         let mu = (1.0 - sigma) * crate::energy::chi(det_min, eps);

@@ -10,97 +10,15 @@ use crate::{Mode, Options};
 use dualex_cells::cells::{HEX_EDGES, HEX_FACES};
 
 mod corners;
+mod frames;
+mod report;
+mod spread;
 mod topology;
-use corners::{
-    bind_to_arcs, mesh_corners_to_input_corners, release_features, release_flat_corners,
-};
+use corners::{onto_boundary, release_features};
+use frames::{all_frames, quad_frame, reframe_moved, Reframe};
+pub use report::Report;
 use std::time::Instant;
 use topology::{boundary_vertices, grow, vertex_cells};
-
-/// What the stage measured and did.
-#[derive(Clone, Debug, Default)]
-pub struct Report {
-    /// The mode's name (`off`, `auto`, `smooth`).
-    pub mode: &'static str,
-    /// Quality of the positions it was given.
-    pub before: Summary,
-    /// Quality of the positions it returned.
-    pub after: Summary,
-    /// Vertices it moved.
-    pub moved_vertices: usize,
-    /// The largest move, in model units.
-    pub max_move: f64,
-    /// The mean edge length of the mesh it was given.
-    pub mean_edge: f64,
-    /// Output boundary vertices.
-    pub boundary_vertices: usize,
-    /// Of them, those farther than [`ON_BOUNDARY`] mean edge lengths from
-    /// the input's boundary before the stage, put onto it.
-    pub boundary_off: usize,
-    /// Boundary vertices released from the input's boundary (left where
-    /// the map puts them, free on the surface or in the volume): corners
-    /// of the mesh (vertices of one cell) without a corner of the input's
-    /// curves within half an edge (for quads: one whose interior angle is
-    /// at most [`MESH_CORNER_ANGLE`]), and their neighbours in that cell;
-    /// on a smooth or concave boundary that cell would be flat or
-    /// inverted.
-    pub boundary_released: usize,
-    /// The largest distance of a boundary vertex to the input's boundary,
-    /// before and after (model units; 0 when not measured).
-    pub boundary_distance: [f64; 2],
-    /// Vertices released from the input's feature curves (left free on
-    /// the surface) because a cell at them stayed inverted after every
-    /// ring of the untangling: the last attempt runs without them bound.
-    pub features_released: usize,
-    /// Optimisation rounds, and the rings of the last region (auto).
-    pub rounds: usize,
-    /// Rings around the inverted elements that were moved (auto).
-    pub rings: usize,
-    /// Time of the stage, ms.
-    pub time_ms: f64,
-}
-
-impl Report {
-    /// The largest move in mean edge lengths.
-    pub fn max_move_edges(&self) -> f64 {
-        if self.mean_edge > 0.0 {
-            self.max_move / self.mean_edge
-        } else {
-            0.0
-        }
-    }
-
-    /// Whether it moved anything.
-    pub fn moved(&self) -> bool {
-        self.moved_vertices > 0
-    }
-
-    /// As JSON (the `geometry` section of the stats; its time goes with
-    /// the other stages' times).
-    pub fn to_json(&self) -> serde_json::Value {
-        serde_json::json!({
-            "mode": self.mode,
-            "measure": "scaled Jacobian",
-            "before": self.before.to_json(),
-            "after": self.after.to_json(),
-            "moved_vertices": self.moved_vertices,
-            "max_move": self.max_move,
-            "max_move_edges": self.max_move_edges(),
-            "mean_edge": self.mean_edge,
-            "boundary": {
-                "vertices": self.boundary_vertices,
-                "off_input_boundary_before": self.boundary_off,
-                "put_on_boundary": self.boundary_off,
-                "released_mesh_corners": self.boundary_released,
-                "max_distance_before": self.boundary_distance[0],
-                "max_distance_after": self.boundary_distance[1],
-            },
-            "features_released": self.features_released,
-            "rounds": self.rounds,
-            "rings": self.rings,
-        })
-    }
-}
 
 /// The stage on a quad mesh lying on the triangle surface
 /// (`surface_positions`, `triangles`); `sources[q]`: the triangle holding
@@ -235,28 +153,6 @@ pub fn hexes(
     rep
 }
 
-/// A quad's frame: two unit tangents, right-handed about the normal `n`.
-fn quad_frame(n: [f64; 3]) -> [[f64; 3]; 2] {
-    let t1 = unit(crate::constraint::perpendicular(n));
-    [t1, cross(n, t1)]
-}
-
-type Reframe<'a, const D: usize> =
-    dyn Fn(&[[f64; 3]], usize, &Reference) -> [[f64; 3]; D] + Sync + 'a;
-
-/// Every cell's frame by `reframe`.
-fn all_frames<const D: usize>(
-    reframe: &Reframe<D>,
-    x: &[[f64; 3]],
-    cells: usize,
-    r: &Reference,
-) -> Vec<[[f64; 3]; D]> {
-    use rayon::prelude::*;
-    (0..cells)
-        .into_par_iter()
-        .map(|ci| reframe(x, ci, r))
-        .collect()
-}
 type Measure<'a, const D: usize> = dyn Fn(&[[f64; 3]], &[[[f64; 3]; D]]) -> Vec<f64> + 'a;
 
 /// What differs between the dimensions.
@@ -312,8 +208,32 @@ const BUDGET_PER_SIMPLEX: usize = 20;
 /// The least work allowed (about 3 s on the machine of BENCHMARKS.md).
 const MIN_BUDGET: usize = 40_000_000;
 
+/// The least work allowed to smoothing: the 10 rounds of `--smooth` on
+/// meshes of up to ~50 000 corner simplices (the 6 912 hexes of the
+/// round trips, 12 000 quads); a mesh of 100 000 quads gets one round.
+const SMOOTH_MIN_BUDGET: usize = 6_000_000;
+
 /// Rings tried around the inverted elements, then the whole mesh.
 const RINGS: [usize; 4] = [1, 2, 4, 8];
+
+/// A wide fold's spread covers its cells and this many rings around them
+/// (its untangling two more).
+const SPREAD_RINGS: usize = 2;
+
+/// Most conjugate-gradient steps of a spread (a fold `w` cells wide needs
+/// about `w` of them).
+const SPREAD_ITERATIONS: usize = 300;
+
+/// One untangling attempt.
+enum Attempt {
+    /// The vertices within this many rings of the inverted cells.
+    Rings(usize),
+    /// A wide fold (these cells) spread out, then untangled.
+    Spread(Vec<bool>),
+    /// The widest rings, with the vertices of inverted cells released from
+    /// the feature curves.
+    Release,
+}
 
 #[allow(clippy::needless_range_loop)] // vertices index several arrays
 fn run<const D: usize, const K: usize>(
@@ -371,58 +291,22 @@ fn run<const D: usize, const K: usize>(
     // stage untangles or smooths anyway; none when all are within `tol` (a
     // valid map's file rounds its numbers) and nothing else is to be done
     if boundary {
-        let exact = 1e-9 * r.diagonal;
         let far = (0..x.len()).any(|v| {
             input.on_boundary[v]
                 && cons.kind[v] != Kind::Fixed
                 && norm(sub(cons.project(&r, v, x[v]), x[v])) > tol
         });
         if far || rep.before.inverted > 0 || opts.mode != Mode::Auto {
-            mesh_corners_to_input_corners(x, &input, &r, &around, &mut cons, rep.mean_edge);
-            bind_to_arcs(x, &input, &r, &mut cons, tol.max(1e-9 * r.diagonal));
-            for v in 0..x.len() {
-                if !input.on_boundary[v] {
-                    continue;
-                }
-                let q = match cons.kind[v] {
-                    // a vertex fixed at a corner of the curves: exactly there
-                    Kind::Fixed => r.nearest_corner(x[v], tol, f64::INFINITY).unwrap_or(x[v]),
-                    _ => cons.project(&r, v, x[v]),
-                };
-                let d = norm(sub(q, x[v]));
-                rep.boundary_distance[0] = rep.boundary_distance[0].max(d);
-                if d > exact {
-                    x[v] = q;
-                }
-            }
-            rep.boundary_released = release_flat_corners(x, &start, &input, &around, &mut cons);
-            // those on the boundary now that were not
-            rep.boundary_off = (0..x.len())
-                .filter(|&v| input.on_boundary[v] && x[v] != start[v])
-                .count();
+            onto_boundary(x, &input, &r, &around, &mut cons, &start, tol, &mut rep);
         }
     }
     if rep.boundary_off == 0 && rep.before.inverted == 0 && opts.mode == Mode::Auto {
         return rep;
     }
     // 4. the optimisation
-    let h: Vec<f64> = cells
-        .iter()
-        .map(|c| {
-            let l = input
-                .edges
-                .iter()
-                .map(|e| norm(sub(start[c[e[1]] as usize], start[c[e[0]] as usize])));
-            let m = l.sum::<f64>() / input.edges.len() as f64;
-            if m > 0.0 {
-                m
-            } else if rep.mean_edge > 0.0 {
-                rep.mean_edge
-            } else {
-                1.0
-            }
-        })
-        .collect();
+    // each cell's target size: its mean edge (the median for the
+    // stretched cells of a wide fold, while it is spread)
+    let (h, stretched, median) = spread::sizes(cells, input.edges, &start, rep.mean_edge);
     let reframe = input.reframe;
     let bound = reframe.map(|f| {
         let r = &r;
@@ -437,10 +321,13 @@ fn run<const D: usize, const K: usize>(
         region: None,
     };
     // the values at `x`, quads measured against the triangles nearest
-    // their centres there (frames updated)
-    let remeasure = |x: &[[f64; 3]], c: &mut Cells<D, K>| {
+    // their centres there: the frames of the cells with a vertex moved
+    // since `framed_at` are taken again (the others' would be the same)
+    let mut framed_at = start.clone();
+    let remeasure = |x: &[[f64; 3]], c: &mut Cells<D, K>, framed_at: &mut Vec<[f64; 3]>| {
         if let Some(reframe) = reframe {
-            c.frames = all_frames(reframe, x, cells.len(), &r);
+            reframe_moved(reframe, x, framed_at, cells, &mut c.frames, &r);
+            framed_at.copy_from_slice(x);
         }
         measure(x, &c.frames)
     };
@@ -470,13 +357,18 @@ fn run<const D: usize, const K: usize>(
     let mut bad = if *x == start[..] {
         values
     } else {
-        remeasure(x, &mut c)
+        remeasure(x, &mut c, &mut framed_at)
     };
     // the positions with the fewest inverted elements are kept, those
     // before smoothing included (smoothing can bend a quad across a
     // sharp edge that the untangling then cannot unbend)
     let mut best = (inverted_of(&bad), x.to_vec());
     if let Mode::Smooth(rounds) = opts.mode {
+        // smoothing has a budget of its own (untangling after it needs
+        // one): 20 evaluations a corner simplex, at least
+        // `SMOOTH_MIN_BUDGET`
+        let mut smooth_budget =
+            (BUDGET_PER_SIMPLEX * cells.len() * input.corners.len()).max(SMOOTH_MIN_BUDGET);
         let p = Params {
             theta: 0.5,
             rounds: rounds.max(1),
@@ -484,19 +376,28 @@ fn run<const D: usize, const K: usize>(
             stop_when_untangled: false,
             shrink_rings: 0,
         };
-        rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p, &mut budget).rounds;
-        bad = remeasure(x, &mut c);
+        rep.rounds = optimize(&c, x, &movable_kind, &cons, Some(&r), p, &mut smooth_budget).rounds;
+        bad = remeasure(x, &mut c, &mut framed_at);
         // the smoothed positions replace the given ones unless worse
         if inverted_of(&bad) <= best.0 {
             best = (inverted_of(&bad), x.to_vec());
         }
     }
-    // untangling near what is still inverted (after smoothing too), in
-    // growing rings (an attempt that makes things worse is undone)
-    // then once more on the widest region with the interior vertices of
-    // the cells still inverted released from the feature curves: a
-    // vertex held on a sharp ridge can pin a quad folded across it
-    for (attempt, &rings) in RINGS.iter().chain(&RINGS[RINGS.len() - 1..]).enumerate() {
+    // untangling near what is still inverted (after smoothing too): a
+    // wide fold's vertices spread out first (undone unless it leaves
+    // fewer inverted cells); then growing rings (an attempt that makes
+    // things worse is undone); then once more on the widest region with
+    // the interior vertices of the cells still inverted released from the
+    // feature curves (a vertex held on a sharp ridge can pin a quad
+    // folded across it)
+    let flagged: Vec<bool> = bad.iter().map(|&v| v <= quality::DEGENERATE).collect();
+    let fold = spread::fold(cells, &around, &flagged, &stretched);
+    let attempts = fold
+        .map(Attempt::Spread)
+        .into_iter()
+        .chain(RINGS.iter().map(|&k| Attempt::Rings(k)))
+        .chain([Attempt::Release]);
+    for attempt in attempts {
         let now = inverted_of(&bad);
         if now < best.0 {
             best = (now, x.to_vec());
@@ -505,14 +406,38 @@ fn run<const D: usize, const K: usize>(
             break;
         }
         let flagged: Vec<bool> = bad.iter().map(|&v| v <= quality::DEGENERATE).collect();
-        if attempt == RINGS.len() {
-            let released = release_features(&mut cons, cells, &flagged, &input.on_boundary);
-            if released == 0 {
-                break;
+        // a spread is undone unless it leaves fewer inverted cells
+        let mut undo = None;
+        let (movable, rings) = match attempt {
+            Attempt::Rings(rings) => (region(&flagged, rings), rings),
+            Attempt::Spread(fold) => {
+                undo = Some((x.to_vec(), c.h.clone(), now));
+                // the fold's stretched cells aim at the median size
+                for (h, (&f, &s)) in c.h.iter_mut().zip(fold.iter().zip(&stretched)) {
+                    if f && s {
+                        *h = median;
+                    }
+                }
+                let mut inside = region(&fold, SPREAD_RINGS);
+                for (v, m) in inside.iter_mut().enumerate() {
+                    *m &= matches!(cons.kind[v], Kind::Surface | Kind::Free);
+                }
+                spread::harmonic(x, cells, input.edges, &inside, SPREAD_ITERATIONS);
+                for v in (0..x.len()).filter(|&v| inside[v]) {
+                    x[v] = cons.project(&r, v, x[v]);
+                }
+                (region(&fold, SPREAD_RINGS + 2), RINGS[RINGS.len() - 1])
             }
-            rep.features_released = released;
-        }
-        let movable = region(&flagged, rings);
+            Attempt::Release => {
+                let released = release_features(&mut cons, cells, &flagged, &input.on_boundary);
+                if released == 0 {
+                    break;
+                }
+                rep.features_released = released;
+                let rings = RINGS[RINGS.len() - 1];
+                (region(&flagged, rings), rings)
+            }
+        };
         let p = Params {
             theta: 0.5,
             rounds: UNTANGLE_ROUNDS,
@@ -522,13 +447,19 @@ fn run<const D: usize, const K: usize>(
         };
         rep.rounds += optimize(&c, x, &movable, &cons, Some(&r), p, &mut budget).rounds;
         rep.rings = rings;
-        bad = remeasure(x, &mut c);
+        bad = remeasure(x, &mut c, &mut framed_at);
+        if let Some((x0, h0, n0)) = undo.filter(|u| inverted_of(&bad) >= u.2) {
+            x.copy_from_slice(&x0);
+            c.h = h0;
+            bad = remeasure(x, &mut c, &mut framed_at);
+            debug_assert_eq!(inverted_of(&bad), n0);
+        }
     }
     // (a feature release is kept only when it removed something)
     let now = inverted_of(&bad);
     if now > best.0 || (rep.features_released > 0 && now == best.0) {
         x.copy_from_slice(&best.1);
-        bad = remeasure(x, &mut c);
+        bad = remeasure(x, &mut c, &mut framed_at);
         rep.features_released = 0;
     }
     rep.after = Summary::of(&bad);

@@ -9,10 +9,51 @@
 //! changed in place; counts.
 
 use super::topology::boundary_edges;
-use super::{Input, FLAT, MESH_CORNER_ANGLE};
+use super::{Input, Report, FLAT, MESH_CORNER_ANGLE};
 use crate::constraint::{Constraints, Kind, Role};
 use crate::quality::{self, norm, sub};
 use crate::reference::Reference;
+
+/// Step 3: every boundary vertex onto the input's boundary (to 1e-9 of
+/// the bounding box; a vertex fixed at a corner of the curves exactly
+/// there), the mesh's corners first onto the input's corners, then the
+/// neighbours of cells that would be flat released; `start`: the
+/// positions before. Records the distances and counts in `rep`.
+#[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // vertices index several arrays
+pub(super) fn onto_boundary<const D: usize, const K: usize>(
+    x: &mut [[f64; 3]],
+    input: &Input<D, K>,
+    r: &Reference,
+    around: &(Vec<usize>, Vec<u32>),
+    cons: &mut Constraints,
+    start: &[[f64; 3]],
+    tol: f64,
+    rep: &mut Report,
+) {
+    let exact = 1e-9 * r.diagonal;
+    mesh_corners_to_input_corners(x, input, r, around, cons, rep.mean_edge);
+    bind_to_arcs(x, input, r, cons, tol.max(1e-9 * r.diagonal));
+    for v in 0..x.len() {
+        if !input.on_boundary[v] {
+            continue;
+        }
+        let q = match cons.kind[v] {
+            // a vertex fixed at a corner of the curves: exactly there
+            Kind::Fixed => r.nearest_corner(x[v], tol, f64::INFINITY).unwrap_or(x[v]),
+            _ => cons.project(r, v, x[v]),
+        };
+        let d = norm(sub(q, x[v]));
+        rep.boundary_distance[0] = rep.boundary_distance[0].max(d);
+        if d > exact {
+            x[v] = q;
+        }
+    }
+    rep.boundary_released = release_flat_corners(x, start, input, around, cons);
+    // those on the boundary now that were not
+    rep.boundary_off = (0..x.len())
+        .filter(|&v| input.on_boundary[v] && x[v] != start[v])
+        .count();
+}
 
 /// The corners of the mesh (boundary vertices of one cell) go onto a
 /// corner of the input's curves within half an edge (on a surface: one
