@@ -27,7 +27,7 @@ pub fn of_glued(
     takeover: &Takeover<3>,
 ) -> Vec<HexCorners> {
     glued.cell_corners(graph, takeover, |n, code| {
-        let (s, ijk) = (nodes.tet[n.idx()] as usize, &nodes.ijk[n.idx()]);
+        let (s, ijk) = (nodes.simplex[n.idx()] as usize, &nodes.point[n.idx()]);
         node_corner(local, s, ijk, code)
     })
 }

@@ -13,10 +13,10 @@
 //!    columns (an extruded map's), index fairing and the collapse of
 //!    folded corners in every layer (`dualex_graph::columns`); 5c. chains
 //!    of valence-2 edges merged in the graph (`dualex_graph::doublet`);
-//! 6. gluing (`dualex_graph`) and [`geometry`]: vertex positions by
-//!    diagonal tracing; 6b. [`columns`]: holes through columns (singular
-//!    edges through dual nodes) repaired as the 2D local repair, replayed
-//!    in every layer;
+//! 6. gluing (`dualex_graph`) and vertex positions by diagonal tracing
+//!    (`dualex_segment::diagonal`); 6b. [`columns`]: holes through
+//!    columns (singular edges through dual nodes) repaired as the 2D local
+//!    repair, replayed in every layer;
 //! 7. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
 //!    edges the graph did not merge dissolved (in rounds);
 //! 8. [`corner_uvw`]: each hex's corners in its node's chart (kept along
@@ -34,7 +34,6 @@ pub mod clusters;
 pub mod columns;
 pub mod corner_uvw;
 pub mod doublets;
-pub mod geometry;
 pub mod local;
 pub mod near;
 pub mod nodes;
@@ -49,6 +48,7 @@ use dualex_cells::HexMesh;
 use dualex_graph::{NodeGraph, Takeover};
 use dualex_map::singularity::{edge_singularities_with_stars, quality};
 use dualex_map::{InputError, Stars, TetMap, Topology, TransitionOptions, Transitions};
+use dualex_segment::diagonal::diagonal;
 pub use dualex_segment::grid_offset::GridOffset;
 use dualex_util::timing::Laps;
 pub use stats::HexStats;
@@ -222,7 +222,7 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued, &takeover);
     let mut source: Vec<u32> = glued
         .cells()
-        .map(|(node, _)| parent[nodes.tet[node.idx()] as usize])
+        .map(|(node, _)| parent[nodes.simplex[node.idx()] as usize])
         .collect();
     let mut corners = corner_uvw::of_glued(&glued, &graph, &local, &nodes, &takeover);
     st.finish_output(&graph, &glued, &mesh);
@@ -317,7 +317,7 @@ fn place_vertices(
         takeover,
         |node, code| {
             let sgn = [0, 1, 2].map(|a| if code >> a & 1 == 1 { 1.0 } else { -1.0 });
-            geometry::diagonal(map, local, topo, nodes, node.idx(), sgn)
+            diagonal(map, local, topo, nodes, node.idx(), sgn)
         },
         |c| c.dist,
     );

@@ -197,3 +197,17 @@ fn a_doublet_chain_is_merged_in_the_graph_with_its_vertices_in_place() {
         assert!(refined, "vertex {p:?} is not a vertex of the refined mesh");
     }
 }
+
+/// `extract` refuses an absurd map (see `dualex_segment::nodes::check_size`)
+/// before any work.
+#[test]
+fn an_absurd_map_is_refused_before_any_work() {
+    const UNIT: [[f64; 3]; 4] = [[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let m = TetMap {
+        positions: UNIT.to_vec(),
+        simplices: vec![[0, 1, 2, 3]; 2],
+        coords: vec![UNIT, UNIT.map(|c| c.map(|x| x * 1e6))],
+    };
+    let e = extract(&m, &Default::default()).err();
+    assert!(e.is_some_and(|e| e.message.starts_with("map too large")));
+}

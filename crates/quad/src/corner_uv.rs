@@ -31,7 +31,7 @@ pub fn of_glued(
     takeover: &Takeover<2>,
 ) -> Vec<QuadCorners> {
     glued.cell_corners(graph, takeover, |n, code| {
-        let (s, ij) = (nodes.tri[n.idx()] as usize, &nodes.ij[n.idx()]);
+        let (s, ij) = (nodes.simplex[n.idx()] as usize, &nodes.point[n.idx()]);
         node_corner(local, s, ij, code)
     })
 }

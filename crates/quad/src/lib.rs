@@ -12,8 +12,8 @@
 //!    pillows and [`bubbles`] (components beyond one per input component)
 //!    deleted; doublets (valence-2 vertices fairing found no partner for)
 //!    merged in the graph (`dualex_graph::doublet`, with fairing);
-//! 7. gluing (`dualex_graph`; [`digons`] pinched off) and [`geometry`]:
-//!    vertex positions by diagonal tracing;
+//! 7. gluing (`dualex_graph`; [`digons`] pinched off) and vertex
+//!    positions by diagonal tracing (`dualex_segment::diagonal`);
 //! 8. [`ambiguous`]: parallel edges and folded cells split; [`repair`]:
 //!    holes closed, faces quads cannot represent repaired (or subdivided);
 //!    [`pinched`] vertices split, bubbles left by it deleted;
@@ -34,7 +34,6 @@ pub mod corner_uv;
 pub mod digons;
 pub mod doublets;
 mod fairing;
-pub mod geometry;
 pub mod local;
 pub mod nodes;
 pub mod pinched;
@@ -49,6 +48,7 @@ pub mod trace;
 use dualex_cells::QuadMesh;
 use dualex_graph::{Node, NodeGraph, Side, Takeover};
 use dualex_map::{InputError, Stars, Topology, TransitionOptions, Transitions, TriMap};
+use dualex_segment::diagonal::diagonal;
 pub use dualex_segment::grid_offset::GridOffset;
 use dualex_util::timing::Laps;
 pub use stats::QuadStats;
@@ -215,7 +215,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     // component of its own) are deleted
     st.pillows_removed = graph.remove_pillows();
     // 6d: bubbles beside the surface of their input component
-    st.bubbles_removed = bubbles::drop_bubbles(&mut graph, &topo, &nodes.tri);
+    st.bubbles_removed = bubbles::drop_bubbles(&mut graph, &topo, &nodes.simplex);
     // 6e: doublets that fairing found no partner for, merged in the graph
     // (a merged node's corner traced from the node it took it over from)
     let mut takeover = Takeover::default();
@@ -251,13 +251,13 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     };
     st.digons_pinched = digons::pinch_digons(&mut graph, &glued, handles);
     if st.digons_pinched > 0 {
-        st.bubbles_removed += bubbles::drop_bubbles(&mut graph, &topo, &nodes.tri);
+        st.bubbles_removed += bubbles::drop_bubbles(&mut graph, &topo, &nodes.simplex);
         glued = graph.glue();
     }
     let mut mesh = place_vertices(map, &local, &topo, &nodes, &glued, &takeover);
     let mut source: Vec<u32> = glued
         .cells()
-        .map(|(node, _)| parent[nodes.tri[node.idx()] as usize])
+        .map(|(node, _)| parent[nodes.simplex[node.idx()] as usize])
         .collect();
     let mut corners = corner_uv::of_glued(&glued, &graph, &local, &nodes, &takeover);
     st.finish_output(&graph, &glued, &mesh);
@@ -420,7 +420,7 @@ fn place_vertices(
         |node, code| {
             let su = if code & 1 == 1 { 1.0 } else { -1.0 };
             let sv = if code & 2 == 2 { 1.0 } else { -1.0 };
-            geometry::diagonal(map, local, topo, nodes, node.idx(), su, sv)
+            diagonal(map, local, topo, nodes, node.idx(), [su, sv])
         },
         |c| c.dist,
     );

@@ -184,3 +184,17 @@ fn a_doublet_is_merged_in_the_graph_with_its_vertices_in_place() {
         }
     }
 }
+
+/// `extract` refuses an absurd map (see `dualex_segment::nodes::check_size`)
+/// before any work.
+#[test]
+fn an_absurd_map_is_refused_before_any_work() {
+    let mut m = TriMap {
+        positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        simplices: vec![[0, 1, 2]; 2],
+        coords: vec![[[0.0, 0.0], [1e9, 0.0], [0.0, 1e9]]],
+    };
+    m.coords.insert(0, [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+    let e = extract(&m, &Default::default()).err();
+    assert!(e.is_some_and(|e| e.message.starts_with("map too large")));
+}

@@ -2,16 +2,18 @@
 //!
 //! Step 2 of the pipeline, the part both extractions share: from the map
 //! model (`dualex-map`) to a map whose vertices are off the dual grid,
-//! ready for the nodes and the traced sides of `dualex-quad` /
-//! `dualex-hex`. Every module is generic over the dimension (`N` corners
-//! per simplex, `D` map dimension); this is the crate where the quad and
-//! hex twins (nodes, trace, sanitize) are to become one code over
-//! `const D` (issue 24).
+//! its nodes, their traced sides and the diagonal walks that place the
+//! vertices, for `dualex-quad` and `dualex-hex`. Every module is generic
+//! over the dimension (`N` corners per simplex, `D` map dimension); the
+//! few predicates that differ sit in one `impl` block per dimension
+//! ([`simplex`]). This is the crate where the quad and hex twins become
+//! one code over `const D` (issue 24).
 //!
 //! Input: a validated map, its topology, transitions and stars. Output:
 //! local charts, the grid offset, snapped singular vertices, split faces,
-//! collapsed clusters, the incremental bad-vertex scan and the
-//! sanitization report. Invariants: local coordinates stay small (exact
+//! collapsed clusters, the incremental bad-vertex scan, the
+//! sanitization report, the nodes, the ends of their traced sides and
+//! the vertices' candidate positions. Invariants: local coordinates stay small (exact
 //! integer offsets), transitions between local charts are integral, and
 //! every step is deterministic whatever the number of threads.
 //!
@@ -29,15 +31,26 @@
 //!   edges), moved as one by sanitization;
 //! - [`bad_scan`]: the incremental bad-vertex scan of both sanitizers;
 //! - [`sanitize_report`]: what sanitization did, its perturbation
-//!   schedule, and the JSON helpers of the extraction stats.
+//!   schedule, and the JSON helpers of the extraction stats;
+//! - [`simplex`]: the per-dimension predicates (barycentric weights,
+//!   facets pierced by an axis line, one step of the diagonal walk);
+//! - [`nodes`]: the integer points strictly inside the simplices;
+//! - [`trace`]: the walk of every node side along its iso-line;
+//! - [`diagonal`]: the walk along a node diagonal that places a vertex.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod bad_scan;
 pub mod cluster;
+pub mod diagonal;
 pub mod grid;
 pub mod grid_offset;
 pub mod local;
+pub mod nodes;
 pub mod sanitize_report;
+pub mod simplex;
 pub mod singular_snap;
 pub mod split;
+#[cfg(test)]
+mod testmap;
+pub mod trace;
