@@ -5,8 +5,9 @@
 //! 1. [`local`]: local shifted coordinates (integer offset per tet);
 //!    then [`split`]: edges and faces spanned by unmovable vertices across
 //!    the dual grid are split (repeated until none is left);
-//! 2. [`sanitize`]: snap to exact GP, move vertices off the dual isos
-//!    ([`near`] says what "on" means, [`clusters`] what moves together);
+//! 2. sanitization (`dualex_segment::sanitize`): snap to exact GP, move
+//!    vertices off the dual isos (`dualex_segment::near` says what "on"
+//!    means at D = 3);
 //! 3. [`nodes`]: integer points inside tets, reverted flags;
 //! 4. [`trace`]: walk every side along its iso-line to the opposite side;
 //! 5. untangling (pleat removal, `dualex_graph`); 5b. on a graph made of
@@ -30,16 +31,12 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod clusters;
 pub mod columns;
 pub mod corner_uvw;
 pub mod doublets;
 pub mod geometry;
 pub mod local;
-pub mod near;
 pub mod nodes;
-use dualex_util::rng;
-pub mod sanitize;
 pub mod simplex;
 pub mod split;
 pub mod stats;
@@ -168,7 +165,7 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
                 .iter()
                 .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
                 .collect();
-            let free = sanitize::free_axes(&topo, &stars, &local);
+            let free = dualex_segment::sanitize::free_axes(&topo, &stars, &local);
             let faces = split::faces_to_split(&map, &stars, &free, &pairs, &local);
             if faces.is_empty() || st.split_faces >= st.input_tets {
                 owned = map;
@@ -182,7 +179,8 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     };
     laps.lap("map");
     // 2
-    st.sanitize = sanitize::sanitize(map, &stars, &free, &mut local, opts.seed);
+    st.sanitize =
+        dualex_segment::sanitize::sanitize(map, &topo, &stars, &free, &mut local, opts.seed);
     st.sanitize.singular_snap = singular_snap;
     drop(stars);
     laps.lap("sanitize");
@@ -329,6 +327,10 @@ fn place_vertices(
 
 #[cfg(test)]
 mod data_tests;
+#[cfg(test)]
+use dualex_util::rng;
+#[cfg(test)]
+mod scan_tests;
 #[cfg(test)]
 mod testblock;
 #[cfg(test)]

@@ -3,7 +3,8 @@
 //! The driver [`extract`] reads as the pipeline's numbered steps, one
 //! module each:
 //! 1. [`local`]: local shifted coordinates (integer offset per triangle);
-//! 2. [`sanitize`]: snap to exact GP, move vertices off the dual isos;
+//! 2. sanitization (`dualex_segment::sanitize`): snap to exact GP, move
+//!    vertices off the dual isos;
 //! 3. [`nodes`]: integer points inside triangles, reverted flags;
 //! 4. [`trace`]: walk every side along its iso to the opposite side;
 //! 5. untangling (pleat removal, `dualex_graph`; other orders tried while
@@ -40,8 +41,6 @@ pub mod nodes;
 pub mod pinched;
 pub mod repair;
 pub mod repair_local;
-use dualex_util::rng;
-pub mod sanitize;
 mod slots;
 pub mod split;
 pub mod stats;
@@ -178,7 +177,8 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     };
     laps.lap("map");
     // 2
-    st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    st.sanitize =
+        dualex_segment::sanitize::sanitize(map, &topo, &stars, &[], &mut local, opts.seed);
     st.sanitize.singular_snap = singular_snap;
     drop(stars);
     laps.lap("sanitize");

@@ -5,7 +5,7 @@
 //! ready for the nodes and the traced sides of `dualex-quad` /
 //! `dualex-hex`. Every module is generic over the dimension (`N` corners
 //! per simplex, `D` map dimension); this is the crate where the quad and
-//! hex twins (nodes, trace, sanitize) are to become one code over
+//! hex twins (nodes, trace) are to become one code over
 //! `const D` (issue 24).
 //!
 //! Input: a validated map, its topology, transitions and stars. Output:
@@ -27,7 +27,12 @@
 //! - [`split`]: the barycentric split of faces of any dimension;
 //! - [`cluster`]: collapsed clusters (vertices joined by zero-length map
 //!   edges), moved as one by sanitization;
-//! - [`bad_scan`]: the incremental bad-vertex scan of both sanitizers;
+//! - [`bad_scan`]: the incremental bad-vertex scan of sanitization;
+//! - [`near`]: closeness of a tet's vertices, edges and faces to the dual
+//!   grid (D = 3; D = 2 in [`grid`]);
+//! - [`sanitize`]: one sanitization for both dimensions (snap, then rounds
+//!   of perturbation), its per-dimension predicates at `Dim<3, 2>` and
+//!   `Dim<4, 3>`;
 //! - [`sanitize_report`]: what sanitization did, its perturbation
 //!   schedule, and the JSON helpers of the extraction stats.
 #![forbid(unsafe_code)]
@@ -38,6 +43,8 @@ pub mod cluster;
 pub mod grid;
 pub mod grid_offset;
 pub mod local;
+pub mod near;
+pub mod sanitize;
 pub mod sanitize_report;
 pub mod singular_snap;
 pub mod split;
