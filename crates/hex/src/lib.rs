@@ -135,31 +135,19 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
                 st.singular_edge_angles = dualex_map::report::singular_edge_histogram(&singular);
                 (st.reverted_tets, st.degenerate_tets) = quality(&map);
             }
-            // 1: the local map takes over the transitions (no second copy),
-            // built with the offset ½ (or the one chosen on the first pass);
-            // singular vertices exactly on their fixed sets before any test;
-            // the offset is chosen on the snapped vertices, once (splits add
-            // no singular vertex)
-            let start = if st.split_faces > 0 {
-                st.grid_offset.offset
-            } else if opts.grid_offset == GridOffset::Zero {
-                GridOffset::Zero
-            } else {
-                GridOffset::Half
-            };
-            let mut local = local::LocalMap::with_grid(&map, &topo, trans, start);
-            let snap = dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
-            if st.split_faces == 0 {
-                st.grid_offset = dualex_segment::grid_offset::choose_snapped(
-                    &local,
-                    &topo,
-                    &stars,
-                    opts.grid_offset,
-                );
-                if st.grid_offset.offset == GridOffset::Zero {
-                    local.unshift(&topo);
-                }
-            }
+            // 1: the grid offset chosen (on the first pass), then the local
+            // map built with it, taking over the transitions (no second
+            // copy), its singular vertices exactly on their fixed sets
+            let chosen = (st.split_faces > 0).then_some(st.grid_offset);
+            let (local, snap, choice) = dualex_segment::grid_offset::local_map(
+                &map,
+                &topo,
+                trans,
+                &stars,
+                opts.grid_offset,
+                chosen,
+            );
+            st.grid_offset = choice;
             // 1b: edges and faces that unmovable vertices span across the grid
             let pairs = singular
                 .iter()
