@@ -2,7 +2,9 @@
 //!
 //! The driver [`extract`] reads as the pipeline's numbered steps, one
 //! module each:
-//! 1. [`local`]: local shifted coordinates (integer offset per tet);
+//! 1. [`local`]: local shifted coordinates (integer offset per tet), built
+//!    once with the grid offset chosen
+//!    (`dualex_segment::grid_offset::local_map`);
 //!    then [`split`]: edges and faces spanned by unmovable vertices across
 //!    the dual grid are split (repeated until none is left);
 //! 2. sanitization (`dualex_segment::sanitize`): snap to exact GP, move

@@ -2,7 +2,9 @@
 //!
 //! The driver [`extract`] reads as the pipeline's numbered steps, one
 //! module each:
-//! 1. [`local`]: local shifted coordinates (integer offset per triangle);
+//! 1. [`local`]: local shifted coordinates (integer offset per triangle),
+//!    built once with the grid offset chosen
+//!    (`dualex_segment::grid_offset::local_map`);
 //! 2. sanitization (`dualex_segment::sanitize`): snap to exact GP, move
 //!    vertices off the dual isos;
 //! 3. [`nodes`]: integer points inside triangles, reverted flags;

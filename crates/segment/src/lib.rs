@@ -16,7 +16,8 @@
 //! every step is deterministic whatever the number of threads.
 //!
 //! - [`grid_offset`]: the dual grid's offset (½ or 0), chosen from the
-//!   singular vertices;
+//!   singular vertices once, and the local map built with it
+//!   ([`grid_offset::local_map`], the step both drivers call);
 //! - [`local`]: local shifted coordinates ([`local::LocalMap`]) and the
 //!   input-chart coordinates of an output cell's corners
 //!   ([`local::node_corner`]);

@@ -70,13 +70,15 @@ pub trait Predicates<const N: usize, const D: usize> {
     /// A random vector of length `amp`.
     fn step(rng: &mut SplitMix, amp: f64) -> [f64; D];
     /// The kinds of the singular vertices `left` on isos (2D: `"90_node"`,
-    /// …; 3D: none).
+    /// …; by default, as in 3D, none).
     fn kinds(
-        topo: &Topology<N>,
-        stars: &Stars<D>,
-        local: &LocalMap<N, D>,
-        left: &[u32],
-    ) -> BTreeMap<String, usize>;
+        _topo: &Topology<N>,
+        _stars: &Stars<D>,
+        _local: &LocalMap<N, D>,
+        _left: &[u32],
+    ) -> BTreeMap<String, usize> {
+        BTreeMap::new()
+    }
 }
 
 /// Sanitizes `local` in place (module docs); `free_axis` as [`free_axes`]

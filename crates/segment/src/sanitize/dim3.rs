@@ -1,15 +1,13 @@
 //! Sanitization at D = 3 ([`Dim<4, 3>`]): the tet test of the scan (with
-//! the predicates of [`crate::near`]) and the random step.
+//! the predicates of [`crate::near`]) and the random step; no kinds of
+//! singular vertices (the 3D report counts them only).
 
 use super::{Dim, Predicates};
-use crate::local::LocalMap;
 use crate::near::{
     corner_bounds, edge_range, edge_spans, face_corners, near_int, segment_near_iso_line_in_box,
     triangle_near_grid_point, EDGES, FACE_EDGES,
 };
-use dualex_map::{Stars, Topology};
 use dualex_util::rng::SplitMix;
-use std::collections::BTreeMap;
 
 impl Predicates<4, 3> for Dim<4, 3> {
     const MIN_TASK: usize = 512;
@@ -51,15 +49,5 @@ impl Predicates<4, 3> for Dim<4, 3> {
 
     fn step(rng: &mut SplitMix, amp: f64) -> [f64; 3] {
         rng.direction().map(|x| x * amp)
-    }
-
-    /// None: the 3D report counts the singular vertices left only.
-    fn kinds(
-        _: &Topology<4>,
-        _: &Stars<3>,
-        _: &LocalMap<4, 3>,
-        _: &[u32],
-    ) -> BTreeMap<String, usize> {
-        BTreeMap::new()
     }
 }
