@@ -14,21 +14,19 @@
 //!
 //! Input: a triangle map. Output: whether its charts are to be shifted,
 //! and the shifted map. The choice is the one of `dualex quad`: on the
-//! local map with its singular vertices snapped onto their fixed points
-//! (`dualex_segment::grid_offset::choose_snapped`).
+//! singular vertices snapped onto their fixed points in the chart ½
+//! (`dualex_segment::grid_offset::choose_snapped`, without building the
+//! local map).
 
 use dualex_map::{InputError, Stars, Topology, TransitionOptions, Transitions, TriMap};
 use dualex_segment::grid_offset::{choose_snapped, GridOffset};
-use dualex_segment::local::LocalMap;
 
 /// Whether `dualex quad --grid-offset auto` takes the offset 0 on `map`.
 pub fn zero_in_2d(map: &TriMap) -> Result<bool, InputError> {
     let topo = Topology::build(map)?;
     let (trans, _) = Transitions::derive(map, &topo, &TransitionOptions::default())?;
     let stars = Stars::build(map, &topo, &trans);
-    let mut local = LocalMap::with_grid(map, &topo, trans, GridOffset::Half);
-    dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
-    let choice = choose_snapped(&local, &topo, &stars, GridOffset::Auto);
+    let choice = choose_snapped(map, &topo, &trans, &stars, GridOffset::Auto);
     Ok(choice.offset == GridOffset::Zero)
 }
 

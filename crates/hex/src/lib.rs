@@ -2,11 +2,14 @@
 //!
 //! The driver [`extract`] reads as the pipeline's numbered steps, one
 //! module each:
-//! 1. [`local`]: local shifted coordinates (integer offset per tet);
+//! 1. [`local`]: local shifted coordinates (integer offset per tet), built
+//!    once with the grid offset chosen
+//!    (`dualex_segment::grid_offset::local_map`);
 //!    then [`split`]: edges and faces spanned by unmovable vertices across
 //!    the dual grid are split (repeated until none is left);
-//! 2. [`sanitize`]: snap to exact GP, move vertices off the dual isos
-//!    ([`near`] says what "on" means, [`clusters`] what moves together);
+//! 2. sanitization (`dualex_segment::sanitize`): snap to exact GP, move
+//!    vertices off the dual isos (`dualex_segment::near` says what "on"
+//!    means at D = 3);
 //! 3. [`nodes`]: integer points inside tets, reverted flags;
 //! 4. [`trace`]: walk every side along its iso-line to the opposite side;
 //! 5. untangling (pleat removal, `dualex_graph`); 5b. on a graph made of
@@ -30,15 +33,11 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod clusters;
 pub mod columns;
 pub mod corner_uvw;
 pub mod doublets;
 pub mod local;
-pub mod near;
 pub mod nodes;
-use dualex_util::rng;
-pub mod sanitize;
 pub mod simplex;
 pub mod split;
 pub mod stats;
@@ -138,37 +137,25 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
                 st.singular_edge_angles = dualex_map::report::singular_edge_histogram(&singular);
                 (st.reverted_tets, st.degenerate_tets) = quality(&map);
             }
-            // 1: the local map takes over the transitions (no second copy),
-            // built with the offset ½ (or the one chosen on the first pass);
-            // singular vertices exactly on their fixed sets before any test;
-            // the offset is chosen on the snapped vertices, once (splits add
-            // no singular vertex)
-            let start = if st.split_faces > 0 {
-                st.grid_offset.offset
-            } else if opts.grid_offset == GridOffset::Zero {
-                GridOffset::Zero
-            } else {
-                GridOffset::Half
-            };
-            let mut local = local::LocalMap::with_grid(&map, &topo, trans, start);
-            let snap = dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
-            if st.split_faces == 0 {
-                st.grid_offset = dualex_segment::grid_offset::choose_snapped(
-                    &local,
-                    &topo,
-                    &stars,
-                    opts.grid_offset,
-                );
-                if st.grid_offset.offset == GridOffset::Zero {
-                    local.unshift(&topo);
-                }
-            }
+            // 1: the grid offset chosen (on the first pass), then the local
+            // map built with it, taking over the transitions (no second
+            // copy), its singular vertices exactly on their fixed sets
+            let chosen = (st.split_faces > 0).then_some(st.grid_offset);
+            let (local, snap, choice) = dualex_segment::grid_offset::local_map(
+                &map,
+                &topo,
+                trans,
+                &stars,
+                opts.grid_offset,
+                chosen,
+            );
+            st.grid_offset = choice;
             // 1b: edges and faces that unmovable vertices span across the grid
             let pairs = singular
                 .iter()
                 .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
                 .collect();
-            let free = sanitize::free_axes(&topo, &stars, &local);
+            let free = dualex_segment::sanitize::free_axes(&topo, &stars, &local);
             let faces = split::faces_to_split(&map, &stars, &free, &pairs, &local);
             if faces.is_empty() || st.split_faces >= st.input_tets {
                 owned = map;
@@ -182,7 +169,8 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     };
     laps.lap("map");
     // 2
-    st.sanitize = sanitize::sanitize(map, &stars, &free, &mut local, opts.seed);
+    st.sanitize =
+        dualex_segment::sanitize::sanitize(map, &topo, &stars, &free, &mut local, opts.seed);
     st.sanitize.singular_snap = singular_snap;
     drop(stars);
     laps.lap("sanitize");
@@ -329,6 +317,10 @@ fn place_vertices(
 
 #[cfg(test)]
 mod data_tests;
+#[cfg(test)]
+use dualex_util::rng;
+#[cfg(test)]
+mod scan_tests;
 #[cfg(test)]
 mod testblock;
 #[cfg(test)]

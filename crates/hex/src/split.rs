@@ -22,9 +22,9 @@
 //! is left (each pass splits at most one face per tet).
 
 use crate::local::LocalMap;
-use crate::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
 use crate::simplex::face_corners;
 use dualex_map::{Stars, TetMap};
+use dualex_segment::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
 use std::collections::HashSet;
 
 /// The free axis of singular vertex `v` in the chart of tet `s` (`None`:
@@ -54,7 +54,7 @@ fn crosses_stuck(a: &[f64; 3], b: &[f64; 3], axes: [Option<usize>; 2]) -> bool {
 
 /// The edges (2 vertex ids, sorted) and faces (3, sorted) to split, edges
 /// first, each once, in the order of their first tet; `free` as
-/// [`crate::sanitize::free_axes`].
+/// [`dualex_segment::sanitize::free_axes`].
 pub fn faces_to_split(
     map: &TetMap,
     stars: &Stars<3>,
@@ -157,7 +157,7 @@ mod tests {
                 .collect();
         let mut local = LocalMap::new(map, &topo, &trans);
         dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
-        let free = crate::sanitize::free_axes(&topo, &stars, &local);
+        let free = dualex_segment::sanitize::free_axes(&topo, &stars, &local);
         faces_to_split(map, &stars, &free, &singular, &local)
     }
 

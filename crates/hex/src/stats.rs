@@ -3,9 +3,9 @@
 //! stats where they apply (`input`, `sanitize`, `nodes`, `reverted_nodes`,
 //! `trace`, `untangle`, `output`, `time_ms`).
 
-use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
 use dualex_cells::HexMesh;
+use dualex_segment::sanitize_report::SanitizeReport;
 use dualex_segment::sanitize_report::{histogram_json, offset_json, times_json};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;

@@ -2,8 +2,11 @@
 //!
 //! The driver [`extract`] reads as the pipeline's numbered steps, one
 //! module each:
-//! 1. [`local`]: local shifted coordinates (integer offset per triangle);
-//! 2. [`sanitize`]: snap to exact GP, move vertices off the dual isos;
+//! 1. [`local`]: local shifted coordinates (integer offset per triangle),
+//!    built once with the grid offset chosen
+//!    (`dualex_segment::grid_offset::local_map`);
+//! 2. sanitization (`dualex_segment::sanitize`): snap to exact GP, move
+//!    vertices off the dual isos;
 //! 3. [`nodes`]: integer points inside triangles, reverted flags;
 //! 4. [`trace`]: walk every side along its iso to the opposite side;
 //! 5. untangling (pleat removal, `dualex_graph`; other orders tried while
@@ -38,8 +41,6 @@ pub mod local;
 pub mod nodes;
 pub mod pinched;
 pub mod repair;
-use dualex_util::rng;
-pub mod sanitize;
 mod slots;
 pub mod split;
 pub mod stats;
@@ -146,24 +147,18 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
             st.singularities
                 .extend(unknown.into_iter().map(|(k, n)| (format!("{k} mod 1"), n)));
         }
-        // 1: the local map takes over the transitions (no second copy),
-        // built with the offset ½; singular vertices exactly on their fixed
-        // points before any test; the offset is chosen on the snapped
-        // vertices, once (splits add no singular vertex)
-        let first = grid.map_or(opts.grid_offset, |c| c.offset);
-        let start = if first == GridOffset::Zero {
-            GridOffset::Zero
-        } else {
-            GridOffset::Half
-        };
-        let mut local = local::LocalMap::with_grid(map, &topo, trans, start);
-        let snap = dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
-        let choice = *grid.get_or_insert_with(|| {
-            dualex_segment::grid_offset::choose_snapped(&local, &topo, &stars, opts.grid_offset)
-        });
-        if choice.offset == GridOffset::Zero {
-            local.unshift(&topo);
-        }
+        // 1: the grid offset chosen (on the first pass), then the local map
+        // built with it, taking over the transitions (no second copy), its
+        // singular vertices exactly on their fixed points before any test
+        let (local, snap, choice) = dualex_segment::grid_offset::local_map(
+            map,
+            &topo,
+            trans,
+            &stars,
+            opts.grid_offset,
+            grid,
+        );
+        grid = Some(choice);
         st.grid_offset = choice;
         let edges = split::edges_to_split(map, &topo, &stars, &local);
         if edges.is_empty() || st.split_edges >= map.len() {
@@ -177,7 +172,8 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     };
     laps.lap("map");
     // 2
-    st.sanitize = sanitize::sanitize(map, &topo, &stars, &mut local, opts.seed);
+    st.sanitize =
+        dualex_segment::sanitize::sanitize(map, &topo, &stars, &[], &mut local, opts.seed);
     st.sanitize.singular_snap = singular_snap;
     drop(stars);
     laps.lap("sanitize");

@@ -13,8 +13,8 @@
 //! transition.
 
 use crate::local::LocalMap;
-use crate::sanitize::grid_point_near_edge;
 use dualex_map::{Stars, Topology, TriMap};
+use dualex_segment::grid::grid_point_near_segment as grid_point_near_edge;
 
 /// Edges `(triangle, facet)` to split (one entry per edge, the smaller
 /// triangle id of the two).

@@ -1,9 +1,9 @@
 //! Counts at each stage of quad extraction and the output summary
 //! (DESIGN §7), serialised as one JSON object.
 
-use crate::sanitize::SanitizeReport;
 use crate::trace::TraceReport;
 use dualex_cells::QuadMesh;
+use dualex_segment::sanitize_report::SanitizeReport;
 use dualex_segment::sanitize_report::{histogram_json, offset_json, times_json};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;

@@ -29,7 +29,10 @@
 //! that maps that do not care extract exactly as before. A vertex is read
 //! at its reference corner (first star entry) in that simplex's chart.
 
-use dualex_map::{SimplexMap, Stars, Topology};
+use crate::local::{local_transition, simplex_offset, LocalMap};
+use crate::singular_snap::{singular_corners, snap_singular, Chart, SingularSnap, Snapped};
+use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
+use std::collections::HashMap;
 
 /// Distance to an integer below which a singular vertex's coordinate counts
 /// as on the grid, in map units. Looser than [`crate::grid::EPS`] (which
@@ -115,20 +118,27 @@ pub fn count_on_grid<const N: usize, const D: usize>(
     topo: &Topology<N>,
     stars: &Stars<D>,
 ) -> (OnGrid, OnGrid) {
-    count_in(&map.coords, 0.0, topo, stars)
+    count_in(|s| map.coords[s], map.coords.len(), 0.0, topo, stars)
 }
 
-/// [`count_on_grid`] on per-corner coordinates that carry the shift
-/// `base` already (`0.5`: a [`crate::local::LocalMap`] built with `Half`).
+/// [`count_on_grid`] on the per-corner coordinates `coords_of(s)` of the
+/// `len` simplices, which carry the shift `base` already (`0.5`: the ½
+/// chart). Reads the simplices with a boundary facet and the reference
+/// corners of the singular vertices only.
 fn count_in<const N: usize, const D: usize>(
-    coords: &[[[f64; D]; N]],
+    coords_of: impl Fn(usize) -> [[f64; D]; N],
+    len: usize,
     base: f64,
     topo: &Topology<N>,
     stars: &Stars<D>,
 ) -> (OnGrid, OnGrid) {
     let (mut half, mut zero) = (OnGrid::default(), OnGrid::default());
     let shifts = [(0.5 - base), (0.0 - base)];
-    for (s, c) in coords.iter().enumerate() {
+    for s in 0..len {
+        if (0..N).all(|f| topo.neighbour(s, f).is_some()) {
+            continue;
+        }
+        let c = coords_of(s);
         for f in (0..N).filter(|&f| topo.neighbour(s, f).is_none()) {
             let mut corners = (0..N).filter(|&k| k != f).map(|k| &c[k]);
             let Some(first) = corners.next() else {
@@ -148,12 +158,10 @@ fn count_in<const N: usize, const D: usize>(
         let Some(e) = stars.of(v).first() else {
             continue;
         };
-        let Some(p) = coords
-            .get(e.simplex as usize)
-            .and_then(|c| c.get(e.corner as usize))
-        else {
+        if e.simplex as usize >= len || e.corner as usize >= N {
             continue;
-        };
+        }
+        let p = coords_of(e.simplex as usize)[e.corner as usize];
         for (count, shift) in [(&mut half, shifts[0]), (&mut zero, shifts[1])] {
             let on = p.iter().filter(|&&x| on_iso(x, shift)).count();
             count.on_node += usize::from(on == D);
@@ -171,31 +179,133 @@ pub fn choose<const N: usize, const D: usize>(
     opt: GridOffset,
 ) -> OffsetChoice {
     if opt != GridOffset::Auto {
-        return OffsetChoice {
-            offset: opt,
-            ..Default::default()
-        };
+        return given(opt);
     }
     decide(count_on_grid(map, topo, stars))
 }
 
-/// [`choose`] on a local map built with `Half` whose singular vertices are
-/// already snapped onto their fixed sets ([`crate::singular_snap`]): a
-/// singular vertex a float's jitter (up to the transition tolerance) away
-/// from a node is then exactly on it, whatever [`ON_GRID`] says.
-pub fn choose_snapped<const N: usize, const D: usize>(
-    local: &crate::local::LocalMap<N, D>,
+/// The choice of an offset given (`Half` or `Zero`): no counts.
+fn given(offset: GridOffset) -> OffsetChoice {
+    OffsetChoice {
+        offset,
+        ..Default::default()
+    }
+}
+
+/// Step 1 of both extractions, the one place the grid offset is decided:
+/// the offset chosen, then the local map built once with it, its singular
+/// vertices snapped ([`crate::singular_snap`]). `chosen`: the choice of an
+/// earlier pass on the same input (the drivers split the map and build
+/// again; splits add no singular vertex), kept as it is.
+///
+/// `Auto` is decided on the singular vertices snapped in the chart `Half`
+/// (a vertex a float's jitter away from a node is exactly on it then), read
+/// on demand around them and on the boundary ([`choose_snapped`]); the
+/// local map is then built with the chosen offset, its coordinates rounded
+/// in that chart ([`LocalMap::with_grid_in`]: for `Zero`, `(x + ½) − ½`,
+/// not `x`, so that every output is as when the choice was made on a map
+/// built with `Half` and shifted back), and the snapped corners written
+/// into it less the offsets' difference (exact).
+pub fn local_map<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
     topo: &Topology<N>,
+    trans: Transitions<N, D>,
+    stars: &Stars<D>,
+    opt: GridOffset,
+    chosen: Option<OffsetChoice>,
+) -> (LocalMap<N, D>, SingularSnap, OffsetChoice) {
+    let (choice, chart, snapped) = match (chosen, opt) {
+        (Some(c), _) => (c, c.offset, None),
+        (None, GridOffset::Auto) => {
+            let (c, snapped) = choose_in_half(map, topo, &trans, stars);
+            (c, GridOffset::Half, Some(snapped))
+        }
+        (None, given_offset) => (given(given_offset), given_offset, None),
+    };
+    let mut local = LocalMap::with_grid_in(map, topo, trans, choice.offset, chart);
+    let snap = match snapped {
+        Some((rep, corners)) => {
+            let back = chart.shift() - choice.offset.shift();
+            for (v, xs) in corners {
+                for (e, x) in stars.of(v as usize).iter().zip(xs) {
+                    let x = if back == 0.0 { x } else { x.map(|y| y - back) };
+                    local.coords[e.simplex as usize][e.corner as usize] = x;
+                }
+            }
+            rep
+        }
+        None => snap_singular(&mut local, topo, stars),
+    };
+    (local, snap, choice)
+}
+
+/// Resolves `opt` as [`local_map`] does, without building the local map
+/// (`dualex-extrude` asks which offset `dualex quad` takes).
+pub fn choose_snapped<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    trans: &Transitions<N, D>,
     stars: &Stars<D>,
     opt: GridOffset,
 ) -> OffsetChoice {
     if opt != GridOffset::Auto {
-        return OffsetChoice {
-            offset: opt,
-            ..Default::default()
-        };
+        return given(opt);
     }
-    decide(count_in(&local.coords, 0.5, topo, stars))
+    choose_in_half(map, topo, trans, stars).0
+}
+
+/// `Auto` decided on the chart `Half` ([`HalfChart`]) with the singular
+/// vertices snapped; also returns the snapped corners.
+fn choose_in_half<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    trans: &Transitions<N, D>,
+    stars: &Stars<D>,
+) -> (OffsetChoice, Snapped<D>) {
+    let chart = HalfChart { map, topo, trans };
+    let (rep, corners) = singular_corners(&chart, topo, stars);
+    // the snapped corners, by (simplex, corner)
+    let mut at: HashMap<(u32, u8), [f64; D]> = HashMap::new();
+    for (v, xs) in &corners {
+        for (e, x) in stars.of(*v as usize).iter().zip(xs) {
+            at.insert((e.simplex, e.corner), *x);
+        }
+    }
+    let coords_of = |s: usize| -> [[f64; D]; N] {
+        std::array::from_fn(|c| match at.get(&(s as u32, c as u8)) {
+            Some(x) => *x,
+            None => chart.corner(s, c),
+        })
+    };
+    let counts = count_in(coords_of, map.coords.len(), 0.5, topo, stars);
+    (decide(counts), (rep, corners))
+}
+
+/// The local coordinates and transitions of the chart `Half`
+/// ([`LocalMap::with_grid`] at `Half`, bit for bit), computed on demand
+/// for the simplices asked for.
+struct HalfChart<'a, const N: usize, const D: usize> {
+    map: &'a SimplexMap<N, D>,
+    topo: &'a Topology<N>,
+    trans: &'a Transitions<N, D>,
+}
+
+impl<const N: usize, const D: usize> Chart<N, D> for HalfChart<'_, N, D> {
+    fn corner(&self, s: usize, c: usize) -> [f64; D] {
+        let o = simplex_offset(&self.map.coords[s]);
+        let p = self.map.coords[s][c];
+        std::array::from_fn(|k| (p[k] - o[k] as f64) + 0.5)
+    }
+
+    fn transition(&self, s: usize, f: usize) -> (Rot<D>, [i64; D]) {
+        let (r, t) = (self.trans.rot[s][f], self.trans.trans[s][f]);
+        let Some((n, _)) = self.topo.neighbour(s, f) else {
+            return (r, t);
+        };
+        let os = simplex_offset(&self.map.coords[s]);
+        let on = simplex_offset(&self.map.coords[n]);
+        (r, local_transition(&r, &t, &os, &on, 0.5))
+    }
 }
 
 /// The offset with fewer singular vertices on nodes, then on isos, then

@@ -8,6 +8,7 @@
 //! few predicates that differ sit in one `impl` block per dimension
 //! ([`simplex`]). This is the crate where the quad and hex twins become
 //! one code over `const D` (issue 24).
+//! The sanitization ([`sanitize`]) is one code too.
 //!
 //! Input: a validated map, its topology, transitions and stars. Output:
 //! local charts, the grid offset, snapped singular vertices, split faces,
@@ -18,7 +19,8 @@
 //! every step is deterministic whatever the number of threads.
 //!
 //! - [`grid_offset`]: the dual grid's offset (½ or 0), chosen from the
-//!   singular vertices;
+//!   singular vertices once, and the local map built with it
+//!   ([`grid_offset::local_map`], the step both drivers call);
 //! - [`local`]: local shifted coordinates ([`local::LocalMap`]) and the
 //!   input-chart coordinates of an output cell's corners
 //!   ([`local::node_corner`]);
@@ -29,7 +31,12 @@
 //! - [`split`]: the barycentric split of faces of any dimension;
 //! - [`cluster`]: collapsed clusters (vertices joined by zero-length map
 //!   edges), moved as one by sanitization;
-//! - [`bad_scan`]: the incremental bad-vertex scan of both sanitizers;
+//! - [`bad_scan`]: the incremental bad-vertex scan of sanitization;
+//! - [`near`]: closeness of a tet's vertices, edges and faces to the dual
+//!   grid (D = 3; D = 2 in [`grid`]);
+//! - [`sanitize`]: one sanitization for both dimensions (snap, then rounds
+//!   of perturbation), its per-dimension predicates at `Dim<3, 2>` and
+//!   `Dim<4, 3>`;
 //! - [`sanitize_report`]: what sanitization did, its perturbation
 //!   schedule, and the JSON helpers of the extraction stats;
 //! - [`simplex`]: the per-dimension predicates (barycentric weights,
@@ -46,7 +53,9 @@ pub mod diagonal;
 pub mod grid;
 pub mod grid_offset;
 pub mod local;
+pub mod near;
 pub mod nodes;
+pub mod sanitize;
 pub mod sanitize_report;
 pub mod simplex;
 pub mod singular_snap;

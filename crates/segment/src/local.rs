@@ -38,6 +38,29 @@ pub fn shift_defect<const D: usize>(r: &Rot<D>) -> [i64; D] {
     std::array::from_fn(|k| (0.5 - rh[k]) as i64)
 }
 
+/// The integer offset of a simplex (its corners `c`): the floor of its
+/// first corner.
+#[inline]
+pub fn simplex_offset<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> [i64; D] {
+    c[0].map(|x| dualex_util::round::floor(x) as i64)
+}
+
+/// The local translation across a facet whose input transition is
+/// `(r, t)`, from a simplex with offset `os` to one with offset `on`,
+/// under the shift `h` (½ or 0).
+#[inline]
+pub fn local_transition<const D: usize>(
+    r: &Rot<D>,
+    t: &[i64; D],
+    os: &[i64; D],
+    on: &[i64; D],
+    h: f64,
+) -> [i64; D] {
+    let ro = r.apply_i(os);
+    let d = if h == 0.0 { [0; D] } else { shift_defect(r) };
+    std::array::from_fn(|k| ro[k] + t[k] - on[k] + d[k])
+}
+
 impl<const N: usize, const D: usize> LocalMap<N, D> {
     /// Builds local shifted coordinates and the matching transitions (per
     /// simplex, in parallel: each writes only its own entries).
@@ -57,28 +80,41 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
     }
 
     /// [`Self::from_transitions`] with the shift of `grid` (`Auto` counts
-    /// as `Half`: resolve it first with [`crate::grid_offset::choose`]).
+    /// as `Half`: resolve it first, [`crate::grid_offset::local_map`]).
     pub fn with_grid(
         map: &SimplexMap<N, D>,
         topo: &Topology<N>,
         trans: Transitions<N, D>,
         grid: GridOffset,
     ) -> Self {
+        Self::with_grid_in(map, topo, trans, grid, grid)
+    }
+
+    /// [`Self::with_grid`] whose coordinates are rounded in the chart of
+    /// `chart`: `((x − offset) + c) − (c − h)` with `c` the shift of
+    /// `chart` and `h` that of `grid` (the same as `(x − offset) + h` when
+    /// `chart == grid`). [`crate::grid_offset::local_map`] builds the
+    /// `Zero` an `Auto` choice gives in the chart `Half` the choice was
+    /// made in.
+    pub fn with_grid_in(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        trans: Transitions<N, D>,
+        grid: GridOffset,
+        chart: GridOffset,
+    ) -> Self {
         let h = grid.shift();
+        let (c, back) = (chart.shift(), chart.shift() - h);
         let grid = match grid {
             GridOffset::Zero => GridOffset::Zero,
             GridOffset::Auto | GridOffset::Half => GridOffset::Half,
         };
-        let offset: Vec<[i64; D]> = map
-            .coords
-            .par_iter()
-            .map(|c| c[0].map(|x| dualex_util::round::floor(x) as i64))
-            .collect();
+        let offset: Vec<[i64; D]> = map.coords.par_iter().map(simplex_offset).collect();
         let coords = map
             .coords
             .par_iter()
             .zip(&offset)
-            .map(|(c, o)| c.map(|p| std::array::from_fn(|k| (p[k] - o[k] as f64) + h)))
+            .map(|(cs, o)| cs.map(|p| std::array::from_fn(|k| ((p[k] - o[k] as f64) + c) - back)))
             .collect();
         let mut t = trans;
         let rot = &t.rot;
@@ -87,11 +123,7 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
                 let Some((n, _)) = topo.neighbour(s, f) else {
                     continue;
                 };
-                let r = rot[s][f];
-                let ro = r.apply_i(&offset[s]);
-                let d = if h == 0.0 { [0; D] } else { shift_defect(&r) };
-                let tt = *tf;
-                *tf = std::array::from_fn(|k| ro[k] + tt[k] - offset[n][k] + d[k]);
+                *tf = local_transition(&rot[s][f], tf, &offset[s], &offset[n], h);
             }
         });
         LocalMap {
@@ -100,31 +132,6 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
             grid,
             trans: t,
         }
-    }
-
-    /// Turns a map built with the offset `Half` into the one `Zero` gives:
-    /// every coordinate less ½ (exact for local values) and every local
-    /// translation less `h − R·h`. Relations between corners (snapped
-    /// singular vertices included) are kept exactly. No-op on `Zero`.
-    pub fn unshift(&mut self, topo: &Topology<N>) {
-        if self.grid == GridOffset::Zero {
-            return;
-        }
-        for c in self.coords.iter_mut().flatten().flatten() {
-            *c -= 0.5;
-        }
-        let rot = &self.trans.rot;
-        for (s, ts) in self.trans.trans.iter_mut().enumerate() {
-            for (f, tf) in ts.iter_mut().enumerate() {
-                if topo.neighbour(s, f).is_some() {
-                    let d = shift_defect(&rot[s][f]);
-                    for k in 0..D {
-                        tf[k] -= d[k];
-                    }
-                }
-            }
-        }
-        self.grid = GridOffset::Zero;
     }
 
     /// Maps a local point of simplex `s` into the local chart of its

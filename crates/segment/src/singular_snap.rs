@@ -43,6 +43,29 @@ pub struct SingularSnap {
     pub left: usize,
 }
 
+/// Local coordinates and transitions, as [`fixed_corners`] reads them: a
+/// built [`LocalMap`], or a chart computed on demand for the few simplices
+/// around singular vertices (`crate::grid_offset`, which chooses the
+/// offset before the local map is built).
+pub trait Chart<const N: usize, const D: usize> {
+    /// Corner `c` of simplex `s`.
+    fn corner(&self, s: usize, c: usize) -> [f64; D];
+    /// The local transition across facet `f` of `s` (an interior facet).
+    fn transition(&self, s: usize, f: usize) -> (Rot<D>, [i64; D]);
+}
+
+impl<const N: usize, const D: usize> Chart<N, D> for LocalMap<N, D> {
+    #[inline]
+    fn corner(&self, s: usize, c: usize) -> [f64; D] {
+        self.coords[s][c]
+    }
+
+    #[inline]
+    fn transition(&self, s: usize, f: usize) -> (Rot<D>, [i64; D]) {
+        (self.trans.rot[s][f], self.trans.trans[s][f])
+    }
+}
+
 /// Puts every singular vertex of `local` on the fixed set of its
 /// holonomies (see the module docs).
 pub fn snap_singular<const N: usize, const D: usize>(
@@ -50,16 +73,35 @@ pub fn snap_singular<const N: usize, const D: usize>(
     topo: &Topology<N>,
     stars: &Stars<D>,
 ) -> SingularSnap {
+    let (rep, snapped) = singular_corners(&*local, topo, stars);
+    for (v, corners) in snapped {
+        for (e, x) in stars.of(v as usize).iter().zip(corners) {
+            local.coords[e.simplex as usize][e.corner as usize] = x;
+        }
+    }
+    rep
+}
+
+/// The report of [`snap_singular`] and, per singular vertex snapped, its
+/// corners in star order.
+pub type Snapped<const D: usize> = (SingularSnap, Vec<(u32, Vec<[f64; D]>)>);
+
+/// The snapped corners (in star order) of every singular vertex that can
+/// be snapped, read from `chart`, with the report of [`snap_singular`].
+pub fn singular_corners<const N: usize, const D: usize>(
+    chart: &impl Chart<N, D>,
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+) -> Snapped<D> {
     let mut rep = SingularSnap::default();
+    let mut out = Vec::new();
     for v in 0..stars.singular.len() {
         if !stars.singular[v] {
             continue;
         }
-        match fixed_corners(local, topo, stars, v) {
+        match fixed_corners(chart, topo, stars, v) {
             Some((corners, m)) => {
-                for (e, x) in stars.of(v).iter().zip(corners) {
-                    local.coords[e.simplex as usize][e.corner as usize] = x;
-                }
+                out.push((v as u32, corners));
                 rep.snapped += 1;
                 if m > rep.max_move {
                     rep.max_move = m;
@@ -68,20 +110,20 @@ pub fn snap_singular<const N: usize, const D: usize>(
             None => rep.left += 1,
         }
     }
-    rep
+    (rep, out)
 }
 
 /// The snapped corners of singular vertex `v`, in star order, with the
 /// largest move; `None` when the vertex must be left as it is.
 fn fixed_corners<const N: usize, const D: usize>(
-    local: &LocalMap<N, D>,
+    chart: &impl Chart<N, D>,
     topo: &Topology<N>,
     stars: &Stars<D>,
     v: usize,
 ) -> Option<(Vec<[f64; D]>, f64)> {
     let star = stars.of(v);
     let first = star.first()?;
-    let corner = |s: u32, c: u8| local.coords[s as usize][c as usize];
+    let corner = |s: u32, c: u8| chart.corner(s as usize, c as usize);
     let x_ref = corner(first.simplex, first.corner);
     // integer translation of each corner relative to the reference chart
     let tau: Vec<[i64; D]> = star
@@ -100,8 +142,7 @@ fn fixed_corners<const N: usize, const D: usize>(
                 continue;
             };
             let j = star.iter().position(|x| x.simplex as usize == n)?;
-            let r = local.trans.rot[s][f];
-            let t = local.trans.trans[s][f];
+            let (r, t) = chart.transition(s, f);
             let lhs = matrix(&star[j].rot);
             let rhs_rot = matrix(&e.rot.then(&r));
             let rt = r.apply_i(&tau[i]);

@@ -1,5 +1,6 @@
-//! Closeness predicates of sanitization: what counts as a vertex, an edge
-//! or a face lying "on" the dual grid of the local shifted map.
+//! Closeness predicates of sanitization at D = 3: what counts as a vertex,
+//! an edge or a face of a tet lying "on" the dual grid of the local
+//! shifted map (D = 2: [`crate::grid`], whose 2D tests these build on).
 //!
 //! - a **vertex** is on an iso-surface when one coordinate is within
 //!   [`EPS`] of an integer;
@@ -15,13 +16,15 @@
 //! that cannot move (singular) does not keep its neighbours moving.
 //! [`corner_bounds`], [`edge_spans`], [`edge_range`] and
 //! [`segment_near_iso_line_in_box`] are the exact box prefilters of the
-//! incremental scan (`crate::sanitize`): same answers, fewer tests.
+//! incremental scan ([`crate::sanitize`]): same answers, fewer tests.
+//!
+//! Numbering (as in `dualex_map::mesh`): face `f` of a tet is opposite
+//! corner `f`; its corners are `(f+1, f+2, f+3) mod 4` ([`face_corners`]).
 
-use crate::simplex::face_corners;
 use dualex_map::TetMap;
 
-use dualex_segment::grid::{box_bounds, box_spans, dist2d_below_eps, segment_clear_of_grid};
-pub use dualex_segment::grid::{dist2d, grid_point_near_segment, near_int, EPS};
+use crate::grid::{box_bounds, box_spans, dist2d_below_eps, segment_clear_of_grid};
+pub use crate::grid::{dist2d, grid_point_near_segment, near_int, EPS};
 use dualex_util::round::{ceil, floor, round};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
@@ -60,6 +63,12 @@ pub fn segment_near_iso_line_in_box(
         }
     }
     None
+}
+
+/// Corners of face `f` of a tet (the face opposite corner `f`).
+#[inline]
+pub fn face_corners(f: usize) -> [usize; 3] {
+    [(f + 1) % 4, (f + 2) % 4, (f + 3) % 4]
 }
 
 /// The edges of a tet as corner pairs, in the order of the reference scan.

@@ -1,0 +1,343 @@
+//! Sanitization of the local shifted map, both dimensions (paper appendix,
+//! "Sanitization"; DESIGN §3.1): the last step of the segmentation before
+//! the nodes.
+//!
+//! Input: a [`LocalMap`], its [`Topology`] and vertex [`Stars`], the free
+//! axes of the singular vertices ([`free_axes`]). Output: the same map
+//! with
+//! - every non-singular vertex's corners **snapped** to one exactly-GP value
+//!   ([`LocalMap::snap`]), so sign tests agree between charts;
+//! - no vertex, edge or (in 3D) face on the dual grid: no corner coordinate
+//!   within `EPS` of an integer, no edge within `EPS` of an integer point
+//!   (2D, [`crate::grid`]) or of an iso-line (3D, [`crate::near`]), no tet
+//!   face within `EPS` of a grid point. Offending vertices are moved by one
+//!   small random vector in their reference chart, carried to every corner
+//!   through the star's rotations (translations untouched: no transition
+//!   changes). Collapsed clusters ([`Clusters`]) move as one;
+//!
+//! and a [`SanitizeReport`].
+//!
+//! The rounds follow [`amplitude`]: 40 ordinary rounds, then extra rounds
+//! of growing amplitude (up to 0.1) while a non-singular vertex is still on
+//! the grid. A stuck cluster (its rotations disagree: it surrounds a
+//! singularity) waits for the extra rounds, where its members move one by
+//! one (the last resort: each is non-singular, so consistent in its own
+//! charts; the collapsed region opens into slivers).
+//!
+//! Singular vertices cannot move freely (their charts disagree around
+//! them). In 3D, when all the holonomies around one fix one axis (a vertex
+//! inside one singular edge, whose direction is that axis), it moves along
+//! that axis only, in the ordinary rounds; in 2D no rotation fixes an axis.
+//! What remains is in [`SanitizeReport::singular_on_iso`] (2D: by kind,
+//! [`SanitizeReport::singular_kinds`]); the walks that meet them end
+//! unmatched and the repairs close what they leave.
+//!
+//! The per-dimension parts, [`Predicates`] at [`Dim<3, 2>`] and
+//! [`Dim<4, 3>`] (`dim2.rs`, `dim3.rs`): which corners a simplex makes bad,
+//! the random step, the kinds of the singular vertices left. Coordinates
+//! are local (see [`crate::local`]), so `EPS` is absolute.
+
+use crate::bad_scan::BadScan;
+use crate::cluster::Clusters;
+use crate::local::LocalMap;
+use crate::sanitize_report::{amplitude, ROUNDS};
+pub use crate::sanitize_report::{SanitizeReport, AMPLITUDE};
+use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
+use dualex_util::rng::SplitMix;
+use std::collections::{BTreeMap, BTreeSet, HashSet};
+
+mod dim2;
+mod dim3;
+
+/// The dimension of a sanitization: `N` corners per simplex, map dimension
+/// `D` ([`Predicates`] is implemented at `Dim<3, 2>` and `Dim<4, 3>`).
+pub struct Dim<const N: usize, const D: usize>;
+
+/// What sanitization does differently per dimension.
+pub trait Predicates<const N: usize, const D: usize> {
+    /// Simplices per parallel task of the scan (below it, splitting costs
+    /// more than it saves).
+    const MIN_TASK: usize;
+    /// Whether a round that finds nothing left to move is counted in
+    /// [`SanitizeReport::rounds`] also once the schedule is spent (2D: yes,
+    /// 3D: no; as the two sanitizers always counted, so reports stay).
+    const COUNT_ROUND_PAST_SCHEDULE: bool;
+    /// The corners that a simplex (corners `c`) makes bad, as a mask: bit
+    /// `k` set when corner `k` is on an iso, is an endpoint of an edge
+    /// through the grid (a grid point at an endpoint is that endpoint's
+    /// problem only), or (3D) a corner of a face through a grid point.
+    fn mask(c: &[[f64; D]; N]) -> u8;
+    /// A random vector of length `amp`.
+    fn step(rng: &mut SplitMix, amp: f64) -> [f64; D];
+    /// The kinds of the singular vertices `left` on isos (2D: `"90_node"`,
+    /// …; by default, as in 3D, none).
+    fn kinds(
+        _topo: &Topology<N>,
+        _stars: &Stars<D>,
+        _local: &LocalMap<N, D>,
+        _left: &[u32],
+    ) -> BTreeMap<String, usize> {
+        BTreeMap::new()
+    }
+}
+
+/// Sanitizes `local` in place (module docs); `free_axis` as [`free_axes`]
+/// (empty: no singular vertex moves, as in 2D).
+pub fn sanitize<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+    free_axis: &[Option<usize>],
+    local: &mut LocalMap<N, D>,
+    seed: u64,
+) -> SanitizeReport
+where
+    Dim<N, D>: Predicates<N, D>,
+{
+    let mut rep = SanitizeReport::default();
+    (rep.snapped_vertices, rep.max_snap) = local.snap(stars);
+    let clusters = Clusters::build(map, stars, &local.coords);
+    rep.clusters = clusters.count_nontrivial();
+    let mut mv = Mover {
+        stars,
+        clusters: &clusters,
+        free_axis,
+        rng: SplitMix::new(seed),
+        moved: vec![false; map.positions.len()],
+        moved_singular: HashSet::new(),
+        touched: Vec::new(),
+        done_epoch: vec![0; map.positions.len()],
+        epoch: 0,
+        stuck: BTreeSet::new(),
+        apart: BTreeSet::new(),
+    };
+    let mut scan = Scan::new(map, stars, &local.coords);
+    let mut bad = scan.list();
+    let mut executed: usize = 0;
+    for round in 0.. {
+        let last_resort = round >= ROUNDS;
+        let todo = mv.movable(&bad, last_resort);
+        let amp = amplitude(round);
+        if todo.is_empty() {
+            if amp.is_some() || <Dim<N, D>>::COUNT_ROUND_PAST_SCHEDULE {
+                rep.rounds = round;
+            }
+            break;
+        }
+        let Some(amp) = amp else {
+            break;
+        };
+        rep.rounds = round;
+        executed += 1;
+        mv.touched.clear();
+        mv.round::<N>(local, &todo, amp, last_resort);
+        scan.update(map, stars, &local.coords, &mv.touched);
+        bad = scan.list();
+    }
+    rep.extra_rounds = executed.saturating_sub(ROUNDS);
+    rep.stuck_clusters = mv.stuck.len();
+    rep.clusters_moved_apart = mv.apart.len();
+    rep.unresolved = bad.iter().filter(|&&v| !stars.singular[v as usize]).count();
+    rep.singular_on_iso = bad
+        .into_iter()
+        .filter(|&v| stars.singular[v as usize])
+        .collect();
+    rep.singular_kinds = <Dim<N, D>>::kinds(topo, stars, local, &rep.singular_on_iso);
+    rep.singular_moved = mv.moved_singular.len();
+    rep.perturbed_vertices = mv.moved.iter().filter(|&&m| m).count();
+    rep
+}
+
+/// The state of the perturbation rounds.
+struct Mover<'a, const D: usize> {
+    stars: &'a Stars<D>,
+    clusters: &'a Clusters<D>,
+    /// Per vertex: the only axis a singular vertex may move along.
+    free_axis: &'a [Option<usize>],
+    rng: SplitMix,
+    moved: Vec<bool>,
+    moved_singular: HashSet<u32>,
+    /// Vertices moved in the current round.
+    touched: Vec<u32>,
+    /// Per cluster root: the last round (epoch) in which it moved.
+    done_epoch: Vec<u32>,
+    epoch: u32,
+    /// Roots of the clusters that could not move as one.
+    stuck: BTreeSet<u32>,
+    /// Roots of the stuck clusters whose members moved one by one.
+    apart: BTreeSet<u32>,
+}
+
+impl<const D: usize> Mover<'_, D> {
+    fn free(&self, v: u32) -> Option<usize> {
+        self.free_axis.get(v as usize).copied().flatten()
+    }
+
+    /// The vertices of `bad` that may move: the non-singular ones, and in
+    /// the ordinary rounds the singular ones with a free axis (the extra
+    /// rounds are for non-singular vertices only: a singular vertex still
+    /// on the grid after the ordinary rounds is on an iso its free axis
+    /// does not cross).
+    fn movable(&self, bad: &[u32], last_resort: bool) -> Vec<u32> {
+        let movable = |v: &&u32| {
+            !self.stars.singular[**v as usize] || (!last_resort && self.free(**v).is_some())
+        };
+        bad.iter().filter(movable).copied().collect()
+    }
+
+    /// Moves every vertex of `todo` (its whole cluster, once) by a random
+    /// vector of length `amp`. With `last_resort` (the extra rounds), the
+    /// members of a stuck cluster move one by one (each is non-singular:
+    /// consistent in its own charts).
+    fn round<const N: usize>(
+        &mut self,
+        local: &mut LocalMap<N, D>,
+        todo: &[u32],
+        amp: f64,
+        last_resort: bool,
+    ) where
+        Dim<N, D>: Predicates<N, D>,
+    {
+        let step = <Dim<N, D>>::step;
+        self.epoch += 1;
+        for &v in todo {
+            if let Some(axis) = self.free(v) {
+                let mut d = [0.0; D];
+                d[axis] = if self.rng.unit() < 0.5 { amp } else { -amp };
+                local.move_vertex(self.stars, v as usize, &d);
+                self.touched.push(v);
+                self.moved_singular.insert(v);
+                continue;
+            }
+            let root = self.clusters.root(v);
+            let members = self.clusters.members_rot(root);
+            if members.is_none() && last_resort {
+                self.apart.insert(root);
+                let d = step(&mut self.rng, amp);
+                self.moved[v as usize] = true;
+                self.touched.push(v);
+                local.move_vertex(self.stars, v as usize, &d);
+                continue;
+            }
+            if self.done_epoch[root as usize] == self.epoch {
+                continue;
+            }
+            self.done_epoch[root as usize] = self.epoch;
+            let delta = step(&mut self.rng, amp);
+            let Some(members) = members else {
+                self.stuck.insert(root);
+                continue;
+            };
+            for (w, r) in members {
+                self.moved[w as usize] = true;
+                self.touched.push(w);
+                local.move_vertex(self.stars, w as usize, &r.apply(&delta));
+            }
+        }
+    }
+}
+
+/// The free axis (reference chart) of every singular vertex that has one
+/// ([`singular_free_axis`]; `None` for the others). The hex driver
+/// computes it once for its split and for [`sanitize`].
+pub fn free_axes<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+    local: &LocalMap<N, D>,
+) -> Vec<Option<usize>> {
+    (0..stars.singular.len())
+        .map(|v| {
+            stars.singular[v]
+                .then(|| singular_free_axis(topo, stars, &local.trans, v))
+                .flatten()
+        })
+        .collect()
+}
+
+/// Holonomies around vertex `v`, as rotations of its reference chart: one
+/// per facet of its star where the star's rotations disagree.
+fn holonomies<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+    trans: &Transitions<N, D>,
+    v: usize,
+) -> Vec<Rot<D>> {
+    let star = stars.of(v);
+    let mut out = Vec::new();
+    for e in star {
+        let s = e.simplex as usize;
+        for f in (0..N).filter(|&f| f != e.corner as usize) {
+            let Some((n, _)) = topo.neighbour(s, f) else {
+                continue;
+            };
+            let expected = e.rot.then(&trans.rot[s][f]);
+            if let Some(o) = star.iter().find(|o| o.simplex as usize == n) {
+                if o.rot != expected {
+                    out.push(expected.then(&o.rot.inverse()));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The axis (of `v`'s reference chart) that every holonomy around `v`
+/// fixes with its sign, if exactly one does: moving along it is consistent
+/// in every chart.
+pub fn singular_free_axis<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    stars: &Stars<D>,
+    trans: &Transitions<N, D>,
+    v: usize,
+) -> Option<usize> {
+    let h = holonomies(topo, stars, trans, v);
+    if h.is_empty() {
+        return None;
+    }
+    let fixed: Vec<usize> = (0..D)
+        .filter(|&a| h.iter().all(|r| r.apply_dir(2 * a) == 2 * a))
+        .collect();
+    match fixed[..] {
+        [a] => Some(a),
+        _ => None,
+    }
+}
+
+/// [`BadScan`] with the dimension's test ([`Predicates::mask`]).
+pub struct Scan(BadScan);
+
+impl Scan {
+    /// Tests every simplex.
+    pub fn new<const N: usize, const D: usize>(
+        map: &SimplexMap<N, D>,
+        stars: &Stars<D>,
+        coords: &[[[f64; D]; N]],
+    ) -> Self
+    where
+        Dim<N, D>: Predicates<N, D>,
+    {
+        let (mask, min_task) = (<Dim<N, D>>::mask, <Dim<N, D>>::MIN_TASK);
+        Scan(BadScan::new(map, stars, coords, mask, min_task))
+    }
+
+    /// The bad vertices, in increasing order.
+    pub fn list(&self) -> Vec<u32> {
+        self.0.list()
+    }
+
+    /// Re-tests after the vertices `moved` (corners in their stars) moved.
+    pub fn update<const N: usize, const D: usize>(
+        &mut self,
+        map: &SimplexMap<N, D>,
+        stars: &Stars<D>,
+        coords: &[[[f64; D]; N]],
+        moved: &[u32],
+    ) where
+        Dim<N, D>: Predicates<N, D>,
+    {
+        self.0.update(map, stars, coords, <Dim<N, D>>::mask, moved);
+    }
+}
+
+#[cfg(test)]
+mod tests;

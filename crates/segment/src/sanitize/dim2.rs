@@ -1,0 +1,90 @@
+//! Sanitization at D = 2 ([`Dim<3, 2>`]): the triangle test of the scan,
+//! the random step, the kinds of the singular vertices left on isos.
+
+use super::{Dim, Predicates};
+use crate::grid::{
+    box_bounds, box_spans, dist2d_below_eps as below_eps, grid_point_near_segment, near_int,
+    segment_clear_of_grid,
+};
+use crate::local::LocalMap;
+use dualex_map::{Stars, Topology};
+use dualex_util::rng::SplitMix;
+use std::collections::BTreeMap;
+
+impl Predicates<3, 2> for Dim<3, 2> {
+    const MIN_TASK: usize = 1024;
+    const COUNT_ROUND_PAST_SCHEDULE: bool = true;
+
+    /// An edge is skipped unless its box, grown by `2·EPS`, holds an
+    /// integer on both axes ([`box_spans`]) and one of those integer points
+    /// is near its line ([`segment_clear_of_grid`]).
+    fn mask(c: &[[f64; 2]; 3]) -> u8 {
+        let mut b = [[[0.0; 2]; 2]; 3];
+        for k in 0..3 {
+            for a in 0..2 {
+                b[k][a] = box_bounds(c[k][a]);
+            }
+        }
+        let mut mask = 0u8;
+        for k in 0..3 {
+            if near_int(c[k][0]) || near_int(c[k][1]) {
+                mask |= 1 << k;
+            }
+            let l = (k + 1) % 3;
+            if !(box_spans(b[k][0], b[l][0]) && box_spans(b[k][1], b[l][1])) {
+                continue;
+            }
+            // the integer range of the edge's grown box per axis
+            let (mut lo, mut hi) = ([0.0; 2], [0.0; 2]);
+            for a in 0..2 {
+                let (bk, bl) = (b[k][a], b[l][a]);
+                lo[a] = if bl[0] < bk[0] { bl[0] } else { bk[0] };
+                hi[a] = if bl[1] > bk[1] { bl[1] } else { bk[1] };
+            }
+            if segment_clear_of_grid(&c[k], &c[l], lo, hi) {
+                continue;
+            }
+            if let Some(g) = grid_point_near_segment(&c[k], &c[l]) {
+                let (at_k, at_l) = (below_eps(&g, &c[k]), below_eps(&g, &c[l]));
+                mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
+            }
+        }
+        mask
+    }
+
+    fn step(rng: &mut SplitMix, amp: f64) -> [f64; 2] {
+        let a = rng.angle();
+        [amp * a.cos(), amp * a.sin()]
+    }
+
+    /// `"{angle}_{place}"`: the holonomy's angle (90, 180) and where the
+    /// vertex is (`node`: both coordinates on isos, `iso`: one, `edge`:
+    /// none, only an edge through a grid point).
+    fn kinds(
+        topo: &Topology<3>,
+        stars: &Stars<2>,
+        local: &LocalMap<3, 2>,
+        left: &[u32],
+    ) -> BTreeMap<String, usize> {
+        let mut out = BTreeMap::new();
+        for &v in left {
+            let v = v as usize;
+            let Some(first) = stars.of(v).first() else {
+                continue;
+            };
+            let x = local.coords[first.simplex as usize][first.corner as usize];
+            let on = (0..2).filter(|&k| near_int(x[k])).count();
+            let turns = dualex_map::holonomy::ridge_rotation(
+                topo,
+                &local.trans,
+                first.simplex as usize,
+                &[first.corner as usize],
+            )
+            .map_or(0, |h| h.turns());
+            let angle = [0, 90, 180, 90][turns as usize];
+            let place = ["edge", "iso", "node"][on];
+            *out.entry(format!("{angle}_{place}")).or_insert(0) += 1;
+        }
+        out
+    }
+}

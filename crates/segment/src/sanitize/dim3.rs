@@ -1,0 +1,53 @@
+//! Sanitization at D = 3 ([`Dim<4, 3>`]): the tet test of the scan (with
+//! the predicates of [`crate::near`]) and the random step; no kinds of
+//! singular vertices (the 3D report counts them only).
+
+use super::{Dim, Predicates};
+use crate::near::{
+    corner_bounds, edge_range, edge_spans, face_corners, near_int, segment_near_iso_line_in_box,
+    triangle_near_grid_point, EDGES, FACE_EDGES,
+};
+use dualex_util::rng::SplitMix;
+
+impl Predicates<4, 3> for Dim<4, 3> {
+    const MIN_TASK: usize = 512;
+    const COUNT_ROUND_PAST_SCHEDULE: bool = false;
+
+    /// The tests of [`crate::near::bad_vertices`]; edges whose box holds
+    /// an integer on fewer than two axes, and faces whose box misses one,
+    /// are skipped: they cannot be near an iso-line or a grid point.
+    fn mask(c: &[[f64; 3]; 4]) -> u8 {
+        let mut mask = 0u8;
+        for (k, p) in c.iter().enumerate() {
+            if p.iter().any(|&x| near_int(x)) {
+                mask |= 1 << k;
+            }
+        }
+        let bounds = corner_bounds(c);
+        let span = edge_spans(&bounds);
+        for (&[k, l], &bits) in EDGES.iter().zip(&span) {
+            // fewer than two axes
+            if bits & bits.wrapping_sub(1) == 0 {
+                continue;
+            }
+            let range = edge_range(&bounds, k, l);
+            if let Some((at_k, at_l)) = segment_near_iso_line_in_box(&c[k], &c[l], &range) {
+                mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
+            }
+        }
+        for (f, [e0, e1, e2]) in FACE_EDGES.into_iter().enumerate() {
+            if span[e0] | span[e1] | span[e2] != 0b111 {
+                continue;
+            }
+            let [i, j, k] = face_corners(f);
+            if triangle_near_grid_point(&[c[i], c[j], c[k]]) {
+                mask |= 1 << i | 1 << j | 1 << k;
+            }
+        }
+        mask
+    }
+
+    fn step(rng: &mut SplitMix, amp: f64) -> [f64; 3] {
+        rng.direction().map(|x| x * amp)
+    }
+}
