@@ -38,7 +38,6 @@ pub mod corner_uvw;
 pub mod doublets;
 pub mod local;
 pub mod nodes;
-pub mod simplex;
 pub mod split;
 pub mod stats;
 pub mod trace;

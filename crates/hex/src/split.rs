@@ -22,7 +22,7 @@
 //! is left (each pass splits at most one face per tet).
 
 use crate::local::LocalMap;
-use crate::simplex::face_corners;
+use dualex_segment::simplex::face_corners;
 use dualex_map::{Stars, TetMap};
 use dualex_segment::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
 use std::collections::HashSet;

@@ -65,11 +65,7 @@ pub fn segment_near_iso_line_in_box(
     None
 }
 
-/// Corners of face `f` of a tet (the face opposite corner `f`).
-#[inline]
-pub fn face_corners(f: usize) -> [usize; 3] {
-    [(f + 1) % 4, (f + 2) % 4, (f + 3) % 4]
-}
+pub use crate::simplex::face_corners;
 
 /// The edges of a tet as corner pairs, in the order of the reference scan.
 pub const EDGES: [[usize; 2]; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
