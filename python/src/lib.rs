@@ -66,6 +66,55 @@ fn is_tet_file(path: &std::path::Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("hexex") || e.eq_ignore_ascii_case("ovm"))
 }
 
+/// `quad` and `hex`, one template for both: `$name(V, $s, $c,
+/// **options)` with the simplices' and coordinates' names of the
+/// dimension (`$n` corners, `$d` map coordinates, `$word` in messages),
+/// the library's `$run`.
+macro_rules! extraction_function {
+    ($(#[doc = $doc:literal])* $name:ident($s:ident: $n:literal, $c:ident: $d:literal, $word:literal) => $run:path, $text:literal) => {
+        $(#[doc = $doc])*
+        #[pyfunction]
+        // untangle=None is "auto": the Python signature shows that
+        #[pyo3(signature = (V, $s, $c, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
+        #[pyo3(text_signature = $text)]
+        #[allow(non_snake_case, clippy::too_many_arguments)]
+        fn $name<'py>(
+            py: Python<'py>,
+            V: &Bound<'py, PyAny>,
+            $s: &Bound<'py, PyAny>,
+            $c: &Bound<'py, PyAny>,
+            weld: bool,
+            fairing: bool,
+            round_transitions: bool,
+            grid_offset: &str,
+            seed: u64,
+            strict: bool,
+            untangle: Option<&Bound<'py, PyAny>>,
+            smooth: Option<&Bound<'py, PyAny>>,
+            return_sources: bool,
+            return_uv: bool,
+        ) -> PyResult<Bound<'py, PyTuple>> {
+            let opts = Kwargs {
+                weld,
+                fairing,
+                round_transitions,
+                grid_offset,
+                seed,
+                strict,
+            }
+            .options(untangle, smooth)?;
+            let (p, t, c) = (
+                rows::<3>("V", V)?,
+                indices::<$n>(stringify!($s), $word, $s)?,
+                corners::<$n, $d>(stringify!($c), $c)?,
+            );
+            let asked = (return_sources, return_uv);
+            extraction(py, (&p, &t, &c), &opts, $run, asked)
+        }
+    };
+}
+
+extraction_function! {
 /// Extracts the all-quad mesh of a triangle mesh with a 2D map.
 ///
 /// V: (n, 3) vertex positions; F: (m, 3) vertex indices of the triangles;
@@ -85,47 +134,11 @@ fn is_tet_file(path: &std::path::Path) -> bool {
 /// Raises ValueError on bad arrays, a map the extraction refuses or a bad
 /// option (strict=True: also when the topology changed or inverted quads
 /// remain).
-#[pyfunction]
-// untangle=None is "auto": the Python signature shows that
-#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
-#[pyo3(
-    text_signature = "(V, F, UV, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
-)]
-#[allow(non_snake_case, clippy::too_many_arguments)]
-fn quad<'py>(
-    py: Python<'py>,
-    V: &Bound<'py, PyAny>,
-    F: &Bound<'py, PyAny>,
-    UV: &Bound<'py, PyAny>,
-    weld: bool,
-    fairing: bool,
-    round_transitions: bool,
-    grid_offset: &str,
-    seed: u64,
-    strict: bool,
-    untangle: Option<&Bound<'py, PyAny>>,
-    smooth: Option<&Bound<'py, PyAny>>,
-    return_sources: bool,
-    return_uv: bool,
-) -> PyResult<Bound<'py, PyTuple>> {
-    let opts = Kwargs {
-        weld,
-        fairing,
-        round_transitions,
-        grid_offset,
-        seed,
-        strict,
-    }
-    .options(untangle, smooth)?;
-    let (p, t, c) = (
-        rows::<3>("V", V)?,
-        indices::<3>("F", "triangle", F)?,
-        corners::<3, 2>("UV", UV)?,
-    );
-    let asked = (return_sources, return_uv);
-    extraction(py, (&p, &t, &c), &opts, dualex::quad, asked)
+    quad(F: 3, UV: 2, "triangle") => dualex::quad,
+    "(V, F, UV, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
 }
 
+extraction_function! {
 /// Extracts the all-hex mesh of a tet mesh with a 3D map.
 ///
 /// V: (n, 3) vertex positions; T: (m, 4) vertex indices of the tets
@@ -139,45 +152,8 @@ fn quad<'py>(
 /// node's chart, NaN for a hex merged by a repair. Raises ValueError on
 /// bad arrays, a refused map or a bad option (strict=True: also when the
 /// topology changed or inverted hexes remain).
-#[pyfunction]
-// untangle=None is "auto": the Python signature shows that
-#[pyo3(signature = (V, T, UVW, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
-#[pyo3(
-    text_signature = "(V, T, UVW, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
-)]
-#[allow(non_snake_case, clippy::too_many_arguments)]
-fn hex<'py>(
-    py: Python<'py>,
-    V: &Bound<'py, PyAny>,
-    T: &Bound<'py, PyAny>,
-    UVW: &Bound<'py, PyAny>,
-    weld: bool,
-    fairing: bool,
-    round_transitions: bool,
-    grid_offset: &str,
-    seed: u64,
-    strict: bool,
-    untangle: Option<&Bound<'py, PyAny>>,
-    smooth: Option<&Bound<'py, PyAny>>,
-    return_sources: bool,
-    return_uv: bool,
-) -> PyResult<Bound<'py, PyTuple>> {
-    let opts = Kwargs {
-        weld,
-        fairing,
-        round_transitions,
-        grid_offset,
-        seed,
-        strict,
-    }
-    .options(untangle, smooth)?;
-    let (p, t, c) = (
-        rows::<3>("V", V)?,
-        indices::<4>("T", "tet", T)?,
-        corners::<4, 3>("UVW", UVW)?,
-    );
-    let asked = (return_sources, return_uv);
-    extraction(py, (&p, &t, &c), &opts, dualex::hex, asked)
+    hex(T: 4, UVW: 3, "tet") => dualex::hex,
+    "(V, T, UVW, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
 }
 
 /// The keyword arguments `quad` and `hex` share, but for the geometric

@@ -37,24 +37,24 @@ unsafe fn options(opts: *const DualexOptions) -> Result<dualex::Options, Failure
     })
 }
 
-/// The caller's arrays of one extraction: `n` simplices of `N` corners
-/// with `D` map coordinates each, and the names they have in messages.
-struct Input {
-    n_vertices: usize,
-    vpos: *const f64,
-    n: usize,
-    vertices: (*const u32, &'static str),
-    param: (*const f64, &'static str),
-    opts: *const DualexOptions,
-}
+/// The caller's arrays of one extraction: positions (`3·n_vertices`
+/// doubles), then `n` simplices of `N` corners (indices, and `D` map
+/// coordinates a corner), with their names in messages.
+type Arrays = (
+    (usize, *const f64),
+    (usize, *const u32, *const f64),
+    [&'static str; 2],
+);
 
-/// The extraction `run` of the map in `input` into `*out` (one code for
+/// The extraction `run` of the map in the caller's arrays into `*out` (one code for
 /// both dimensions); 0 on success.
 ///
 /// # Safety
-/// The pointers of `input` and `out` as the callers' contracts say.
+/// The pointers of the arrays, `opts` and `out` as the callers'
+/// contracts say.
 unsafe fn extract<const N: usize, const D: usize, const K: usize>(
-    input: Input,
+    ((n_vertices, vpos), (n, vertices, param), names): Arrays,
+    opts: *const DualexOptions,
     out: *mut DualexMesh<K>,
     run: fn(
         &dualex::map::SimplexMap<N, D>,
@@ -65,14 +65,13 @@ unsafe fn extract<const N: usize, const D: usize, const K: usize>(
     guard(|| {
         // SAFETY: the caller's contract; `view` checks the rest
         let out = unsafe { init(out, DualexMesh::zeroed()) }?;
-        let Input { n, .. } = input;
         // SAFETY: as above
         let (positions, simplices, coords, o) = unsafe {
             (
-                view(input.vpos, input.n_vertices, "vpos")?,
-                view(input.vertices.0, n, input.vertices.1)?,
-                view(input.param.0, n, input.param.1)?,
-                options(input.opts)?,
+                view(vpos, n_vertices, "vpos")?,
+                view(vertices, n, names[0])?,
+                view(param, n, names[1])?,
+                options(opts)?,
             )
         };
         let map = dualex::map_from_slices(positions, simplices, coords)?;
@@ -99,16 +98,10 @@ pub unsafe extern "C" fn dualex_quad_extract(
     opts: *const DualexOptions,
     out: *mut DualexQuadMesh,
 ) -> c_int {
-    let input = Input {
-        n_vertices,
-        vpos,
-        n: n_triangles,
-        vertices: (tri_vertices, "tri_vertices"),
-        param: (tri_param, "tri_param"),
-        opts,
-    };
+    let tris = (n_triangles, tri_vertices, tri_param);
+    let arrays = ((n_vertices, vpos), tris, ["tri_vertices", "tri_param"]);
     // SAFETY: the caller's contract above
-    unsafe { extract(input, out, dualex::quad, |s| s.singular_vertices) }
+    unsafe { extract(arrays, opts, out, dualex::quad, |s| s.singular_vertices) }
 }
 
 /// Extracts the hex mesh of a tet map into `*out`; 0 on success.
@@ -127,16 +120,10 @@ pub unsafe extern "C" fn dualex_hex_extract(
     opts: *const DualexOptions,
     out: *mut DualexHexMesh,
 ) -> c_int {
-    let input = Input {
-        n_vertices,
-        vpos,
-        n: n_tets,
-        vertices: (tet_vertices, "tet_vertices"),
-        param: (tet_param, "tet_param"),
-        opts,
-    };
+    let tets = (n_tets, tet_vertices, tet_param);
+    let arrays = ((n_vertices, vpos), tets, ["tet_vertices", "tet_param"]);
     // SAFETY: the caller's contract above
-    unsafe { extract(input, out, dualex::hex, |s| s.singular_edges) }
+    unsafe { extract(arrays, opts, out, dualex::hex, |s| s.singular_edges) }
 }
 
 /// The output struct at `out`, first overwritten with `empty` (so that
