@@ -1,26 +1,21 @@
 //! Typed stats and reports as Python dicts.
 //!
-//! Keys are the facade's field names ([`dualex::QuadStats`],
-//! [`dualex::HexStats`]); nested structs (`repairs`, `topology`) are nested
+//! One [`dualex::Stats`] for both dimensions, its dict keys those Python
+//! has always had: the dimension's own words (`input_triangles` /
+//! `input_tets`, `quads` / `hexes`, `boundary_loops` / `boundary_faces`
+//! and `boundary_surfaces`, `valence_interior` / `edge_valence_interior`,
+//! the repairs of each), the facade's field names elsewhere; nested structs (`repairs`, `topology`) are nested
 //! dicts, valence histograms are `{valence: count}` with int keys,
 //! `grid_offset` is `"half"` or `"zero"`, `time_ms` is `{stage: ms}` in
 //! stage order (the geometric stage last, as `"geometry"`), `geometry` is the CLI's `geometry` section of the stats
 //! (the geometric stage's report, [`crate::geometry::report`]). The map report is the CLI's `inspect --json` object.
 
-use dualex::{GridOffset, HexStats, QuadStats};
+use dualex::{Repairs, Stats};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::collections::BTreeMap;
 
 use dualex::stats::TopologyComparison;
-
-fn offset(g: GridOffset) -> &'static str {
-    match g {
-        GridOffset::Zero => "zero",
-        GridOffset::Half => "half",
-        GridOffset::Auto => "auto",
-    }
-}
 
 fn histogram<'py>(py: Python<'py>, h: &BTreeMap<usize, usize>) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -53,37 +48,47 @@ fn topology<'py>(py: Python<'py>, t: &TopologyComparison) -> PyResult<Bound<'py,
     Ok(d)
 }
 
-/// The stats of [`dualex::quad`] as a dict.
-pub fn quad_stats<'py>(py: Python<'py>, s: &QuadStats) -> PyResult<Bound<'py, PyDict>> {
+/// The stats of [`dualex::quad`] (`dim` 2) or [`dualex::hex`] (`dim` 3)
+/// as a dict, in the keys and order Python has always had.
+pub fn stats<'py>(py: Python<'py>, s: &Stats, dim: usize) -> PyResult<Bound<'py, PyDict>> {
+    let hexes = dim == 3;
+    let (simplices, cells) = if hexes {
+        ("tets", "hexes")
+    } else {
+        ("triangles", "quads")
+    };
     let d = PyDict::new(py);
-    d.set_item("input_triangles", s.input_triangles)?;
-    d.set_item("reverted_triangles", s.reverted_triangles)?;
+    d.set_item(format!("input_{simplices}"), s.input_simplices)?;
+    d.set_item(format!("reverted_{simplices}"), s.reverted_simplices)?;
+    if hexes {
+        d.set_item("degenerate_tets", s.degenerate_simplices)?;
+    }
     d.set_item("singular_vertices", s.singular_vertices)?;
+    if hexes {
+        d.set_item("singular_edges", s.singular_edges)?;
+    }
     d.set_item("max_transition_residual", s.max_transition_residual)?;
     d.set_item("transitions_rounded", s.transitions_rounded)?;
     d.set_item("welded_vertices", s.welded_vertices)?;
-    d.set_item("grid_offset", offset(s.grid_offset))?;
+    d.set_item("grid_offset", s.grid_offset.name())?;
     d.set_item("nodes", s.nodes)?;
-    d.set_item("quads", s.quads)?;
+    d.set_item(cells, s.cells)?;
     d.set_item("vertices", s.vertices)?;
-    d.set_item("boundary_loops", s.boundary_loops)?;
+    if hexes {
+        d.set_item("boundary_faces", s.boundary_facets)?;
+        d.set_item("boundary_surfaces", s.boundary_components)?;
+    } else {
+        d.set_item("boundary_loops", s.boundary_components)?;
+    }
     d.set_item("components", s.components)?;
     d.set_item("euler", s.euler)?;
-    d.set_item("valence_interior", histogram(py, &s.valence_interior)?)?;
-    d.set_item("valence_boundary", histogram(py, &s.valence_boundary)?)?;
-    let r = &s.repairs;
-    let rd = PyDict::new(py);
-    rd.set_item("split_edges", r.split_edges)?;
-    rd.set_item("snapped_vertices", r.snapped_vertices)?;
-    rd.set_item("perturbed_vertices", r.perturbed_vertices)?;
-    rd.set_item("pleats_removed", r.pleats_removed)?;
-    rd.set_item("folded_corners_collapsed", r.folded_corners_collapsed)?;
-    rd.set_item("holes_filled", r.holes_filled)?;
-    rd.set_item("holes_left_open", r.holes_left_open)?;
-    rd.set_item("triangles", r.triangles)?;
-    rd.set_item("subdivided", r.subdivided)?;
-    rd.set_item("doublets_dissolved", r.doublets_dissolved)?;
-    d.set_item("repairs", rd)?;
+    if hexes {
+        d.set_item("edge_valence_interior", histogram(py, &s.valence_interior)?)?;
+    } else {
+        d.set_item("valence_interior", histogram(py, &s.valence_interior)?)?;
+        d.set_item("valence_boundary", histogram(py, &s.valence_boundary)?)?;
+    }
+    d.set_item("repairs", repairs(py, &s.repairs, hexes)?)?;
     d.set_item("topology", topology(py, &s.topology)?)?;
     d.set_item("geometry", crate::geometry::report(py, &s.geometry)?)?;
     let t = times(py, &s.time_ms)?;
@@ -92,50 +97,31 @@ pub fn quad_stats<'py>(py: Python<'py>, s: &QuadStats) -> PyResult<Bound<'py, Py
     Ok(d)
 }
 
-/// The stats of [`dualex::hex`] as a dict.
-pub fn hex_stats<'py>(py: Python<'py>, s: &HexStats) -> PyResult<Bound<'py, PyDict>> {
+/// The repairs of one dimension, in the keys Python has always had.
+fn repairs<'py>(py: Python<'py>, r: &Repairs, hexes: bool) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    d.set_item("input_tets", s.input_tets)?;
-    d.set_item("reverted_tets", s.reverted_tets)?;
-    d.set_item("degenerate_tets", s.degenerate_tets)?;
-    d.set_item("singular_vertices", s.singular_vertices)?;
-    d.set_item("singular_edges", s.singular_edges)?;
-    d.set_item("max_transition_residual", s.max_transition_residual)?;
-    d.set_item("transitions_rounded", s.transitions_rounded)?;
-    d.set_item("welded_vertices", s.welded_vertices)?;
-    d.set_item("grid_offset", offset(s.grid_offset))?;
-    d.set_item("nodes", s.nodes)?;
-    d.set_item("hexes", s.hexes)?;
-    d.set_item("vertices", s.vertices)?;
-    d.set_item("boundary_faces", s.boundary_faces)?;
-    d.set_item("boundary_surfaces", s.boundary_surfaces)?;
-    d.set_item("components", s.components)?;
-    d.set_item("euler", s.euler)?;
-    d.set_item(
-        "edge_valence_interior",
-        histogram(py, &s.edge_valence_interior)?,
-    )?;
-    let r = &s.repairs;
-    let rd = PyDict::new(py);
-    rd.set_item("split_faces", r.split_faces)?;
-    rd.set_item("snapped_vertices", r.snapped_vertices)?;
-    rd.set_item("perturbed_vertices", r.perturbed_vertices)?;
-    rd.set_item("pleats_removed", r.pleats_removed)?;
-    rd.set_item("open_interior_faces", r.open_interior_faces)?;
-    rd.set_item("doublet_chains_dissolved", r.doublet_chains_dissolved)?;
-    d.set_item("repairs", rd)?;
-    d.set_item("topology", topology(py, &s.topology)?)?;
-    d.set_item("geometry", crate::geometry::report(py, &s.geometry)?)?;
-    let t = times(py, &s.time_ms)?;
-    t.set_item("geometry", s.geometry.time_ms)?;
-    d.set_item("time_ms", t)?;
+    d.set_item(if hexes { "split_faces" } else { "split_edges" }, r.split)?;
+    d.set_item("snapped_vertices", r.snapped_vertices)?;
+    d.set_item("perturbed_vertices", r.perturbed_vertices)?;
+    d.set_item("pleats_removed", r.pleats_removed)?;
+    if hexes {
+        d.set_item("open_interior_faces", r.holes_left_open)?;
+        d.set_item("doublet_chains_dissolved", r.doublets_dissolved)?;
+        return Ok(d);
+    }
+    d.set_item("folded_corners_collapsed", r.folded_corners_collapsed)?;
+    d.set_item("holes_filled", r.holes_filled)?;
+    d.set_item("holes_left_open", r.holes_left_open)?;
+    d.set_item("triangles", r.triangles)?;
+    d.set_item("subdivided", r.subdivided)?;
+    d.set_item("doublets_dissolved", r.doublets_dissolved)?;
     Ok(d)
 }
 
 /// The map report (the CLI's `inspect --json`) as a dict.
 pub fn map_report<'py>(
     py: Python<'py>,
-    r: &dualex_map::report::MapReport,
+    r: &dualex::map::report::MapReport,
 ) -> PyResult<Bound<'py, PyAny>> {
     py.import("json")?
         .call_method1("loads", (dualex::map_report_json(r).to_string(),))

@@ -10,7 +10,7 @@
 //! | `remesh(V, F, quads=N, **options)` (`return_map=True`: the map too) | [`dualex::remesh()`] (`remesh.rs`) |
 //! | `read(path)` (a plain surface: `(V, F, None)`) | [`dualex::read_tri_map`] / [`dualex::read_tet_map`] / [`dualex::read_surface`] |
 //! | `write(path, V, cells)` | [`dualex::write_quad_mesh`] / [`dualex::write_hex_mesh`] |
-//! | `inspect(path)` / `inspect(V, S, C)` | `dualex_map::report::inspect` |
+//! | `inspect(path)` / `inspect(V, S, C)` | `dualex::map::report::inspect` |
 //!
 //! `quad` and `hex` run the geometric stage after the extraction
 //! (`untangle="auto"|"off"`, `smooth=None|True|rounds`; `geometry.rs`), its
@@ -32,8 +32,8 @@ use arrays::{
     cells_array, corners, corners_array, indices, optional_corners_array, positions_array, rows,
     sources_array,
 };
-use dualex::{GridOffset, HexOptions, QuadOptions};
-use dualex_map::report::{inspect as inspect_map, InspectOptions};
+use dualex::map::report::{inspect as inspect_map, InspectOptions};
+use dualex::GridOffset;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -51,15 +51,13 @@ fn python_hint(message: &str) -> String {
     message.replace("--round-transitions", "round_transitions=True")
 }
 
+/// `grid_offset=`: the library's one parser ([`GridOffset::parse`]).
 fn grid_offset(s: &str) -> PyResult<GridOffset> {
-    match s {
-        "auto" => Ok(GridOffset::Auto),
-        "half" => Ok(GridOffset::Half),
-        "zero" => Ok(GridOffset::Zero),
-        _ => Err(PyValueError::new_err(format!(
+    GridOffset::parse(s).ok_or_else(|| {
+        PyValueError::new_err(format!(
             "grid_offset: expected \"auto\", \"half\" or \"zero\", got {s:?}"
-        ))),
-    }
+        ))
+    })
 }
 
 fn is_tet_file(path: &std::path::Path) -> bool {
@@ -68,6 +66,55 @@ fn is_tet_file(path: &std::path::Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("hexex") || e.eq_ignore_ascii_case("ovm"))
 }
 
+/// `quad` and `hex`, one template for both: `$name(V, $s, $c,
+/// **options)` with the simplices' and coordinates' names of the
+/// dimension (`$n` corners, `$d` map coordinates, `$word` in messages),
+/// the library's `$run`.
+macro_rules! extraction_function {
+    ($(#[doc = $doc:literal])* $name:ident($s:ident: $n:literal, $c:ident: $d:literal, $word:literal) => $run:path, $text:literal) => {
+        $(#[doc = $doc])*
+        #[pyfunction]
+        // untangle=None is "auto": the Python signature shows that
+        #[pyo3(signature = (V, $s, $c, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
+        #[pyo3(text_signature = $text)]
+        #[allow(non_snake_case, clippy::too_many_arguments)]
+        fn $name<'py>(
+            py: Python<'py>,
+            V: &Bound<'py, PyAny>,
+            $s: &Bound<'py, PyAny>,
+            $c: &Bound<'py, PyAny>,
+            weld: bool,
+            fairing: bool,
+            round_transitions: bool,
+            grid_offset: &str,
+            seed: u64,
+            strict: bool,
+            untangle: Option<&Bound<'py, PyAny>>,
+            smooth: Option<&Bound<'py, PyAny>>,
+            return_sources: bool,
+            return_uv: bool,
+        ) -> PyResult<Bound<'py, PyTuple>> {
+            let opts = Kwargs {
+                weld,
+                fairing,
+                round_transitions,
+                grid_offset,
+                seed,
+                strict,
+            }
+            .options(untangle, smooth)?;
+            let (p, t, c) = (
+                rows::<3>("V", V)?,
+                indices::<$n>(stringify!($s), $word, $s)?,
+                corners::<$n, $d>(stringify!($c), $c)?,
+            );
+            let asked = (return_sources, return_uv);
+            extraction(py, (&p, &t, &c), &opts, $run, asked)
+        }
+    };
+}
+
+extraction_function! {
 /// Extracts the all-quad mesh of a triangle mesh with a 2D map.
 ///
 /// V: (n, 3) vertex positions; F: (m, 3) vertex indices of the triangles;
@@ -87,60 +134,17 @@ fn is_tet_file(path: &std::path::Path) -> bool {
 /// Raises ValueError on bad arrays, a map the extraction refuses or a bad
 /// option (strict=True: also when the topology changed or inverted quads
 /// remain).
-#[pyfunction]
-// untangle=None is "auto": the Python signature shows that
-#[pyo3(signature = (V, F, UV, *, weld=true, fairing=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
-#[pyo3(
-    text_signature = "(V, F, UV, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
-)]
-#[allow(non_snake_case, clippy::too_many_arguments)]
-fn quad<'py>(
-    py: Python<'py>,
-    V: &Bound<'py, PyAny>,
-    F: &Bound<'py, PyAny>,
-    UV: &Bound<'py, PyAny>,
-    weld: bool,
-    fairing: bool,
-    round_transitions: bool,
-    grid_offset: &str,
-    seed: u64,
-    strict: bool,
-    untangle: Option<&Bound<'py, PyAny>>,
-    smooth: Option<&Bound<'py, PyAny>>,
-    return_sources: bool,
-    return_uv: bool,
-) -> PyResult<Bound<'py, PyTuple>> {
-    let opts = QuadOptions {
-        weld,
-        fairing,
-        round_transitions,
-        grid_offset: self::grid_offset(grid_offset)?,
-        seed,
-        strict,
-        geometry: geometry::options(untangle, smooth)?,
-    };
-    let (p, t, c) = (
-        rows::<3>("V", V)?,
-        indices::<3>("F", "triangle", F)?,
-        corners::<3, 2>("UV", UV)?,
-    );
-    let out = py
-        .allow_threads(|| {
-            let map = dualex::tri_map_from_slices(&p, &t, &c)?;
-            dualex::quad(&map, &opts)
-        })
-        .map_err(value_error)?;
-    let stats = dicts::quad_stats(py, &out.stats)?;
-    let sources = return_sources.then(|| out.sources.iter().copied());
-    let uv = return_uv.then_some(out.corner_uv.as_slice());
-    extraction_tuple(py, &out.mesh.positions, &out.mesh.cells, stats, sources, uv)
+    quad(F: 3, UV: 2, "triangle") => dualex::quad,
+    "(V, F, UV, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
 }
 
+extraction_function! {
 /// Extracts the all-hex mesh of a tet mesh with a 3D map.
 ///
 /// V: (n, 3) vertex positions; T: (m, 4) vertex indices of the tets
 /// (positively oriented); UVW: (m, 4, 3) map coordinates of each tet
-/// corner. untangle and smooth as for `quad` (boundary vertices onto the
+/// corner. fairing: on columns (extruded maps), the 2D fairing in every
+/// layer. untangle and smooth as for `quad` (boundary vertices onto the
 /// boundary surface of the tets). Returns (positions (k, 3) float64,
 /// hexes (h, 8) int64 in VTK order, stats dict); with return_sources=True
 /// also sources (h,) int64: the tet (row of T) holding each hex's node;
@@ -148,50 +152,63 @@ fn quad<'py>(
 /// node's chart, NaN for a hex merged by a repair. Raises ValueError on
 /// bad arrays, a refused map or a bad option (strict=True: also when the
 /// topology changed or inverted hexes remain).
-#[pyfunction]
-// untangle=None is "auto": the Python signature shows that
-#[pyo3(signature = (V, T, UVW, *, weld=true, round_transitions=false, grid_offset="auto", seed=1, strict=false, untangle=None, smooth=None, return_sources=false, return_uv=false))]
-#[pyo3(
-    text_signature = "(V, T, UVW, *, weld=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
-)]
-#[allow(non_snake_case, clippy::too_many_arguments)]
-fn hex<'py>(
-    py: Python<'py>,
-    V: &Bound<'py, PyAny>,
-    T: &Bound<'py, PyAny>,
-    UVW: &Bound<'py, PyAny>,
+    hex(T: 4, UVW: 3, "tet") => dualex::hex,
+    "(V, T, UVW, *, weld=True, fairing=True, round_transitions=False, grid_offset=\"auto\", seed=1, strict=False, untangle=\"auto\", smooth=None, return_sources=False, return_uv=False)"
+}
+
+/// The keyword arguments `quad` and `hex` share, but for the geometric
+/// stage's (`untangle`, `smooth`).
+struct Kwargs<'a> {
     weld: bool,
+    fairing: bool,
     round_transitions: bool,
-    grid_offset: &str,
+    grid_offset: &'a str,
     seed: u64,
     strict: bool,
-    untangle: Option<&Bound<'py, PyAny>>,
-    smooth: Option<&Bound<'py, PyAny>>,
-    return_sources: bool,
-    return_uv: bool,
-) -> PyResult<Bound<'py, PyTuple>> {
-    let opts = HexOptions {
-        weld,
-        round_transitions,
-        grid_offset: self::grid_offset(grid_offset)?,
-        seed,
-        strict,
-        geometry: geometry::options(untangle, smooth)?,
-    };
-    let (p, t, c) = (
-        rows::<3>("V", V)?,
-        indices::<4>("T", "tet", T)?,
-        corners::<4, 3>("UVW", UVW)?,
-    );
-    let out = py
-        .allow_threads(|| {
-            let map = dualex::tet_map_from_slices(&p, &t, &c)?;
-            dualex::hex(&map, &opts)
+}
+
+impl Kwargs<'_> {
+    /// The library's one options type for both dimensions.
+    fn options(
+        &self,
+        untangle: Option<&Bound<'_, PyAny>>,
+        smooth: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<dualex::Options> {
+        Ok(dualex::Options {
+            weld: self.weld,
+            fairing: self.fairing,
+            round_transitions: self.round_transitions,
+            grid_offset: self::grid_offset(self.grid_offset)?,
+            seed: self.seed,
+            strict: self.strict,
+            geometry: geometry::options(untangle, smooth)?,
         })
+    }
+}
+
+/// A map's arrays as read: positions, simplices, per-corner coordinates.
+type MapArrays<'a, const N: usize, const D: usize> =
+    (&'a [[f64; 3]], &'a [[u32; N]], &'a [[[f64; D]; N]]);
+
+/// `quad` and `hex` after their arguments: the map built, `run` (the
+/// library's extraction) without the GIL, the result as a tuple
+/// ([`extraction_tuple`]) with the sources and corners `asked`.
+fn extraction<'py, const N: usize, const D: usize, const K: usize>(
+    py: Python<'py>,
+    (p, t, c): MapArrays<N, D>,
+    opts: &dualex::Options,
+    run: fn(
+        &dualex::map::SimplexMap<N, D>,
+        &dualex::Options,
+    ) -> Result<dualex::Output<K, D>, dualex::Error>,
+    (return_sources, return_uv): (bool, bool),
+) -> PyResult<Bound<'py, PyTuple>> {
+    let out = py
+        .allow_threads(|| run(&dualex::map_from_slices(p, t, c)?, opts))
         .map_err(value_error)?;
-    let stats = dicts::hex_stats(py, &out.stats)?;
-    let sources = return_sources.then(|| out.sources.iter().map(|&s| Some(s)));
-    let uv = return_uv.then_some(out.corner_uvw.as_slice());
+    let stats = dicts::stats(py, &out.stats, D)?;
+    let sources = return_sources.then(|| out.sources.iter().copied());
+    let uv = return_uv.then_some(out.corners.as_slice());
     extraction_tuple(py, &out.mesh.positions, &out.mesh.cells, stats, sources, uv)
 }
 

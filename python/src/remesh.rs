@@ -72,7 +72,7 @@ pub fn remesh<'py>(
             quantization: self::rounding(rounding)?,
             seed,
         },
-        extract: dualex::QuadOptions {
+        extract: dualex::Options {
             round_transitions,
             strict,
             ..defaults.extract
@@ -82,7 +82,7 @@ pub fn remesh<'py>(
     let out = py
         .allow_threads(|| dualex::remesh(&p, &t, &opts))
         .map_err(value_error)?;
-    let stats = dicts::quad_stats(py, &out.quads.stats)?;
+    let stats = dicts::stats(py, &out.quads.stats, 2)?;
     let section = py
         .import("json")?
         .call_method1("loads", (out.remesh.to_json().to_string(),))?;

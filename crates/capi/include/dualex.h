@@ -50,7 +50,7 @@ extern "C" {
 /** Extraction options; fill with dualex_options_default() first. Flags are 0 or 1. */
 typedef struct DualexOptions {
     int weld;              /**< merge coincident boundary vertices (cut meshes) first; default 1 */
-    int fairing;           /**< index fairing after untangling (quads only); default 1 */
+    int fairing;           /**< index fairing after untangling (hexes: on columns); default 1 */
     int round_transitions; /**< round transition translations of any residual; default 0 */
     int grid_offset;       /**< DUALEX_GRID_AUTO (default), _HALF or _ZERO */
     int strict;            /**< an output whose topology differs from the input's, or with inverted

@@ -12,22 +12,74 @@
 //! hand over.
 
 use crate::error::{guard, Failure};
-use crate::mesh::{leak, DualexHexMesh, DualexOptions, DualexQuadMesh, DUALEX_NO_SOURCE};
+use crate::mesh::{DualexHexMesh, DualexMesh, DualexOptions, DualexQuadMesh};
 use crate::slices::view;
 use std::ffi::c_int;
 
-/// The options at `opts`, or the defaults when it is null.
+/// The options at `opts`, or the defaults when it is null, as the
+/// facade's.
 ///
 /// # Safety
 /// `opts` is null or points to a readable `DualexOptions`.
-unsafe fn options(opts: *const DualexOptions) -> Result<DualexOptions, Failure> {
+unsafe fn options(opts: *const DualexOptions) -> Result<dualex::Options, Failure> {
     // SAFETY: one item at a nullable pointer, as the caller vouches
     let o: &[DualexOptions] = unsafe { view(opts, usize::from(!opts.is_null()), "opts") }?;
-    Ok(o.first().copied().unwrap_or_default())
+    let o = o.first().copied().unwrap_or_default();
+    let flag = |x: c_int| x != 0;
+    Ok(dualex::Options {
+        weld: flag(o.weld),
+        fairing: flag(o.fairing),
+        round_transitions: flag(o.round_transitions),
+        grid_offset: o.grid_offset().map_err(Failure::argument)?,
+        seed: o.seed,
+        strict: flag(o.strict),
+        geometry: o.geometry().map_err(Failure::argument)?,
+    })
 }
 
-fn flag(x: c_int) -> bool {
-    x != 0
+/// The caller's arrays of one extraction: positions (`3·n_vertices`
+/// doubles), then `n` simplices of `N` corners (indices, and `D` map
+/// coordinates a corner), with their names in messages.
+type Arrays = (
+    (usize, *const f64),
+    (usize, *const u32, *const f64),
+    [&'static str; 2],
+);
+
+/// The extraction `run` of the map in the caller's arrays into `*out` (one code for
+/// both dimensions); 0 on success.
+///
+/// # Safety
+/// The pointers of the arrays, `opts` and `out` as the callers'
+/// contracts say.
+unsafe fn extract<const N: usize, const D: usize, const K: usize>(
+    ((n_vertices, vpos), (n, vertices, param), names): Arrays,
+    opts: *const DualexOptions,
+    out: *mut DualexMesh<K>,
+    run: fn(
+        &dualex::map::SimplexMap<N, D>,
+        &dualex::Options,
+    ) -> Result<dualex::Output<K, D>, dualex::Error>,
+    singular: fn(&dualex::Stats) -> usize,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract; `view` checks the rest
+        let out = unsafe { init(out, DualexMesh::zeroed()) }?;
+        // SAFETY: as above
+        let (positions, simplices, coords, o) = unsafe {
+            (
+                view(vpos, n_vertices, "vpos")?,
+                view(vertices, n, names[0])?,
+                view(param, n, names[1])?,
+                options(opts)?,
+            )
+        };
+        let map = dualex::map_from_slices(positions, simplices, coords)?;
+        let r = run(&map, &o)?;
+        let n_singular = singular(&r.stats);
+        *out = DualexMesh::from_output(r, n_singular);
+        Ok(())
+    })
 }
 
 /// Extracts the quad mesh of a triangle map into `*out`; 0 on success.
@@ -46,57 +98,10 @@ pub unsafe extern "C" fn dualex_quad_extract(
     opts: *const DualexOptions,
     out: *mut DualexQuadMesh,
 ) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract above; `view` checks the rest
-        let out = unsafe { init(out, DualexQuadMesh::zeroed()) }?;
-        // SAFETY: as above
-        let (positions, triangles, uv, o) = unsafe {
-            (
-                view(vpos, n_vertices, "vpos")?,
-                view(tri_vertices, n_triangles, "tri_vertices")?,
-                view(tri_param, n_triangles, "tri_param")?,
-                options(opts)?,
-            )
-        };
-        let map = dualex::tri_map_from_slices(positions, triangles, uv)?;
-        let q = dualex::QuadOptions {
-            weld: flag(o.weld),
-            fairing: flag(o.fairing),
-            round_transitions: flag(o.round_transitions),
-            grid_offset: o.grid_offset().map_err(Failure::argument)?,
-            seed: o.seed,
-            strict: flag(o.strict),
-            geometry: o.geometry().map_err(Failure::argument)?,
-        };
-        let r = dualex::quad(&map, &q)?;
-        let s = &r.stats;
-        *out = DualexQuadMesh {
-            n_vertices: r.mesh.positions.len(),
-            positions: leak(r.mesh.positions.concat()),
-            n_cells: r.mesh.cells.len(),
-            cells: leak(r.mesh.cells.concat()),
-            sources: leak(
-                r.sources
-                    .iter()
-                    .map(|t| t.unwrap_or(DUALEX_NO_SOURCE))
-                    .collect(),
-            ),
-            n_components: s.components,
-            n_boundary_loops: s.boundary_loops,
-            euler: s.euler,
-            n_singular_vertices: s.singular_vertices,
-            n_welded_vertices: s.welded_vertices,
-            topology_matches: s.topology.matches().into(),
-            sj_min_before: s.geometry.before.min,
-            sj_min_after: s.geometry.after.min,
-            sj_p5_before: s.geometry.before.p5,
-            sj_p5_after: s.geometry.after.p5,
-            inverted_before: s.geometry.before.inverted,
-            inverted_after: s.geometry.after.inverted,
-            moved_vertices: s.geometry.moved_vertices,
-        };
-        Ok(())
-    })
+    let tris = (n_triangles, tri_vertices, tri_param);
+    let arrays = ((n_vertices, vpos), tris, ["tri_vertices", "tri_param"]);
+    // SAFETY: the caller's contract above
+    unsafe { extract(arrays, opts, out, dualex::quad, |s| s.singular_vertices) }
 }
 
 /// Extracts the hex mesh of a tet map into `*out`; 0 on success.
@@ -115,51 +120,10 @@ pub unsafe extern "C" fn dualex_hex_extract(
     opts: *const DualexOptions,
     out: *mut DualexHexMesh,
 ) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract above; `view` checks the rest
-        let out = unsafe { init(out, DualexHexMesh::zeroed()) }?;
-        // SAFETY: as above
-        let (positions, tets, uvw, o) = unsafe {
-            (
-                view(vpos, n_vertices, "vpos")?,
-                view(tet_vertices, n_tets, "tet_vertices")?,
-                view(tet_param, n_tets, "tet_param")?,
-                options(opts)?,
-            )
-        };
-        let map = dualex::tet_map_from_slices(positions, tets, uvw)?;
-        let h = dualex::HexOptions {
-            weld: flag(o.weld),
-            round_transitions: flag(o.round_transitions),
-            grid_offset: o.grid_offset().map_err(Failure::argument)?,
-            seed: o.seed,
-            strict: flag(o.strict),
-            geometry: o.geometry().map_err(Failure::argument)?,
-        };
-        let r = dualex::hex(&map, &h)?;
-        let s = &r.stats;
-        *out = DualexHexMesh {
-            n_vertices: r.mesh.positions.len(),
-            positions: leak(r.mesh.positions.concat()),
-            n_cells: r.mesh.cells.len(),
-            cells: leak(r.mesh.cells.concat()),
-            sources: leak(r.sources),
-            n_components: s.components,
-            n_boundary_surfaces: s.boundary_surfaces,
-            euler: s.euler,
-            n_singular_edges: s.singular_edges,
-            n_welded_vertices: s.welded_vertices,
-            topology_matches: s.topology.matches().into(),
-            sj_min_before: s.geometry.before.min,
-            sj_min_after: s.geometry.after.min,
-            sj_p5_before: s.geometry.before.p5,
-            sj_p5_after: s.geometry.after.p5,
-            inverted_before: s.geometry.before.inverted,
-            inverted_after: s.geometry.after.inverted,
-            moved_vertices: s.geometry.moved_vertices,
-        };
-        Ok(())
-    })
+    let tets = (n_tets, tet_vertices, tet_param);
+    let arrays = ((n_vertices, vpos), tets, ["tet_vertices", "tet_param"]);
+    // SAFETY: the caller's contract above
+    unsafe { extract(arrays, opts, out, dualex::hex, |s| s.singular_edges) }
 }
 
 /// The output struct at `out`, first overwritten with `empty` (so that

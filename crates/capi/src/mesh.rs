@@ -28,7 +28,8 @@ pub const DUALEX_NO_SOURCE: u32 = u32::MAX;
 pub struct DualexOptions {
     /// Merge coincident boundary vertices (cut meshes) first. Default 1.
     pub weld: c_int,
-    /// Index fairing after untangling (quads only). Default 1.
+    /// Index fairing after untangling (hexes: on columns, extruded maps).
+    /// Default 1.
     pub fairing: c_int,
     /// Round transition translations of any residual. Default 0.
     pub round_transitions: c_int,
@@ -51,7 +52,7 @@ pub struct DualexOptions {
 
 impl Default for DualexOptions {
     fn default() -> Self {
-        let q = dualex::QuadOptions::default();
+        let q = dualex::Options::default();
         DualexOptions {
             weld: q.weld.into(),
             fairing: q.fairing.into(),
@@ -118,29 +119,36 @@ pub unsafe extern "C" fn dualex_options_default(opts: *mut DualexOptions) {
     }
 }
 
-/// A quad mesh and its main counts (`DualexQuadMesh` in C).
+/// A mesh and its main counts: `DualexQuadMesh` (`K` = 4) and
+/// `DualexHexMesh` (`K` = 8) in C, one struct for both dimensions (two
+/// fields have their own names in each C struct: `n_boundary_loops` /
+/// `n_boundary_surfaces`, `n_singular_vertices` / `n_singular_edges`; the
+/// layouts are the same).
 #[repr(C)]
 #[derive(Debug)]
-pub struct DualexQuadMesh {
+pub struct DualexMesh<const K: usize> {
     /// Output vertices.
     pub n_vertices: usize,
     /// `3·n_vertices` coordinates, x y z per vertex.
     pub positions: *mut f64,
-    /// Output quads.
+    /// Output cells (quads, hexes).
     pub n_cells: usize,
-    /// `4·n_cells` vertex indices, counter-clockwise.
+    /// `K·n_cells` vertex indices: quads counter-clockwise, hexes in VTK
+    /// order.
     pub cells: *mut u32,
-    /// `n_cells` input triangle indices (`DUALEX_NO_SOURCE` for a quad
-    /// that closes a hole).
+    /// `n_cells` input simplex indices: the triangle or tet holding each
+    /// cell's node (`DUALEX_NO_SOURCE` for a quad that closes a hole).
     pub sources: *mut u32,
     /// Connected components of the output.
     pub n_components: usize,
-    /// Boundary loops of the output.
-    pub n_boundary_loops: usize,
-    /// Euler characteristic V − E + F of the output.
+    /// Boundary loops (quads) or surfaces (hexes) of the output.
+    pub n_boundary_components: usize,
+    /// Euler characteristic of the output: V − E + F (quads), V − E + F −
+    /// C (hexes).
     pub euler: i64,
-    /// Singular vertices of the input map.
-    pub n_singular_vertices: usize,
+    /// Singular vertices (quads) or singular interior edges (hexes) of the
+    /// input map.
+    pub n_singular: usize,
     /// Boundary vertices welded before extraction.
     pub n_welded_vertices: usize,
     /// 1 when the output's topology equals the input's.
@@ -162,48 +170,10 @@ pub struct DualexQuadMesh {
     pub moved_vertices: usize,
 }
 
+/// A quad mesh and its main counts (`DualexQuadMesh` in C).
+pub type DualexQuadMesh = DualexMesh<4>;
 /// A hex mesh and its main counts (`DualexHexMesh` in C).
-#[repr(C)]
-#[derive(Debug)]
-pub struct DualexHexMesh {
-    /// Output vertices.
-    pub n_vertices: usize,
-    /// `3·n_vertices` coordinates, x y z per vertex.
-    pub positions: *mut f64,
-    /// Output hexes.
-    pub n_cells: usize,
-    /// `8·n_cells` vertex indices, VTK order.
-    pub cells: *mut u32,
-    /// `n_cells` input tet indices (the tet holding each hex's centre).
-    pub sources: *mut u32,
-    /// Connected components of the output.
-    pub n_components: usize,
-    /// Boundary surfaces of the output.
-    pub n_boundary_surfaces: usize,
-    /// Euler characteristic V − E + F − C of the output.
-    pub euler: i64,
-    /// Singular interior edges of the input map.
-    pub n_singular_edges: usize,
-    /// Boundary vertices welded before extraction.
-    pub n_welded_vertices: usize,
-    /// 1 when the output's topology equals the input's.
-    pub topology_matches: c_int,
-    /// Least scaled Jacobian of the elements as the map placed them
-    /// (1 for an empty mesh).
-    pub sj_min_before: f64,
-    /// Least scaled Jacobian after the geometric stage (of `positions`).
-    pub sj_min_after: f64,
-    /// 5th percentile of the scaled Jacobian, before the stage.
-    pub sj_p5_before: f64,
-    /// 5th percentile of the scaled Jacobian, after the stage.
-    pub sj_p5_after: f64,
-    /// Elements with a scaled Jacobian ≤ 0 before the stage.
-    pub inverted_before: usize,
-    /// Elements with a scaled Jacobian ≤ 0 after the stage.
-    pub inverted_after: usize,
-    /// Vertices the stage moved.
-    pub moved_vertices: usize,
-}
+pub type DualexHexMesh = DualexMesh<8>;
 
 /// Hands a vector to C: a pointer to its boxed slice (freed by [`release`]).
 pub(crate) fn leak<T>(v: Vec<T>) -> *mut T {
@@ -221,19 +191,19 @@ unsafe fn release<T>(p: *mut T, len: usize) {
     }
 }
 
-impl DualexQuadMesh {
+impl<const K: usize> DualexMesh<K> {
     /// A struct holding nothing.
     pub(crate) fn zeroed() -> Self {
-        DualexQuadMesh {
+        DualexMesh {
             n_vertices: 0,
             positions: ptr::null_mut(),
             n_cells: 0,
             cells: ptr::null_mut(),
             sources: ptr::null_mut(),
             n_components: 0,
-            n_boundary_loops: 0,
+            n_boundary_components: 0,
             euler: 0,
-            n_singular_vertices: 0,
+            n_singular: 0,
             n_welded_vertices: 0,
             topology_matches: 0,
             sj_min_before: 0.0,
@@ -245,31 +215,56 @@ impl DualexQuadMesh {
             moved_vertices: 0,
         }
     }
-}
 
-impl DualexHexMesh {
-    /// A struct holding nothing.
-    pub(crate) fn zeroed() -> Self {
-        DualexHexMesh {
-            n_vertices: 0,
-            positions: ptr::null_mut(),
-            n_cells: 0,
-            cells: ptr::null_mut(),
-            sources: ptr::null_mut(),
-            n_components: 0,
-            n_boundary_surfaces: 0,
-            euler: 0,
-            n_singular_edges: 0,
-            n_welded_vertices: 0,
-            topology_matches: 0,
-            sj_min_before: 0.0,
-            sj_min_after: 0.0,
-            sj_p5_before: 0.0,
-            sj_p5_after: 0.0,
-            inverted_before: 0,
-            inverted_after: 0,
-            moved_vertices: 0,
+    /// The facade's output handed to C (its arrays leaked, see [`leak`]).
+    pub(crate) fn from_output<const D: usize>(r: dualex::Output<K, D>, singular: usize) -> Self {
+        let s = &r.stats;
+        let g = &s.geometry;
+        DualexMesh {
+            n_vertices: r.mesh.positions.len(),
+            positions: leak(r.mesh.positions.concat()),
+            n_cells: r.mesh.cells.len(),
+            cells: leak(r.mesh.cells.concat()),
+            sources: leak(
+                r.sources
+                    .iter()
+                    .map(|t| t.unwrap_or(DUALEX_NO_SOURCE))
+                    .collect(),
+            ),
+            n_components: s.components,
+            n_boundary_components: s.boundary_components,
+            euler: s.euler,
+            n_singular: singular,
+            n_welded_vertices: s.welded_vertices,
+            topology_matches: s.topology.matches().into(),
+            sj_min_before: g.before.min,
+            sj_min_after: g.after.min,
+            sj_p5_before: g.before.p5,
+            sj_p5_after: g.after.p5,
+            inverted_before: g.before.inverted,
+            inverted_after: g.after.inverted,
+            moved_vertices: g.moved_vertices,
         }
+    }
+
+    /// Frees the arrays and zeroes the struct at `mesh`; null and zeroed
+    /// structs are ignored.
+    ///
+    /// # Safety
+    /// As [`dualex_quad_mesh_free`].
+    unsafe fn free(mesh: *mut Self) {
+        if mesh.is_null() || !mesh.is_aligned() {
+            return;
+        }
+        // SAFETY: non-null, aligned, and by the contract filled by this library
+        let m = unsafe { &mut *mesh };
+        // SAFETY: the arrays were leaked with these lengths (see `leak`)
+        unsafe {
+            release(m.positions, 3 * m.n_vertices);
+            release(m.cells, K * m.n_cells);
+            release(m.sources, m.n_cells);
+        }
+        *m = Self::zeroed();
     }
 }
 
@@ -281,18 +276,8 @@ impl DualexHexMesh {
 /// whose counts and pointers the caller has not changed.
 #[no_mangle]
 pub unsafe extern "C" fn dualex_quad_mesh_free(mesh: *mut DualexQuadMesh) {
-    if mesh.is_null() || !mesh.is_aligned() {
-        return;
-    }
-    // SAFETY: non-null, aligned, and by the contract filled by this library
-    let m = unsafe { &mut *mesh };
-    // SAFETY: the arrays were leaked with these lengths (see `leak`)
-    unsafe {
-        release(m.positions, 3 * m.n_vertices);
-        release(m.cells, 4 * m.n_cells);
-        release(m.sources, m.n_cells);
-    }
-    *m = DualexQuadMesh::zeroed();
+    // SAFETY: the caller's contract above
+    unsafe { DualexMesh::free(mesh) }
 }
 
 /// Frees the arrays of a hex mesh filled by `dualex_hex_extract` and
@@ -302,16 +287,6 @@ pub unsafe extern "C" fn dualex_quad_mesh_free(mesh: *mut DualexQuadMesh) {
 /// As [`dualex_quad_mesh_free`].
 #[no_mangle]
 pub unsafe extern "C" fn dualex_hex_mesh_free(mesh: *mut DualexHexMesh) {
-    if mesh.is_null() || !mesh.is_aligned() {
-        return;
-    }
-    // SAFETY: non-null, aligned, and by the contract filled by this library
-    let m = unsafe { &mut *mesh };
-    // SAFETY: the arrays were leaked with these lengths (see `leak`)
-    unsafe {
-        release(m.positions, 3 * m.n_vertices);
-        release(m.cells, 8 * m.n_cells);
-        release(m.sources, m.n_cells);
-    }
-    *m = DualexHexMesh::zeroed();
+    // SAFETY: the caller's contract above
+    unsafe { DualexMesh::free(mesh) }
 }

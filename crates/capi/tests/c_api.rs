@@ -141,27 +141,31 @@ fn header_compiles_as_cpp() {
 fn header_layout_matches_the_rust_structs() {
     let dir = Scratch::new("layout");
     let out = run(&c_program(&dir, false), &["--layout"]);
+    // `rust_field as c_field` where the one Rust struct of both
+    // dimensions names a field for both (`n_singular`)
     macro_rules! rust_layout {
-        ($t:ident: $($f:ident),*) => {{
+        ($t:ident: $($f:ident $(as $c:ident)?),*) => {{
             let mut s = format!("{} {}\n", stringify!($t), size_of::<$t>());
             $(s += &format!(
                 "{}.{} {} {}\n",
                 stringify!($t),
-                stringify!($f),
+                rust_layout!(@name $f $($c)?),
                 offset_of!($t, $f),
                 size_of_field(|x: &$t| &x.$f)
             );)*
             s
         }};
+        (@name $f:ident) => { stringify!($f) };
+        (@name $f:ident $c:ident) => { stringify!($c) };
     }
     let expected = rust_layout!(DualexOptions: weld, fairing, round_transitions, grid_offset, strict, seed,
             untangle, smooth_rounds)
         + &rust_layout!(DualexQuadMesh: n_vertices, positions, n_cells, cells, sources, n_components,
-            n_boundary_loops, euler, n_singular_vertices, n_welded_vertices, topology_matches,
+            n_boundary_components as n_boundary_loops, euler, n_singular as n_singular_vertices, n_welded_vertices, topology_matches,
             sj_min_before, sj_min_after, sj_p5_before, sj_p5_after, inverted_before, inverted_after,
             moved_vertices)
         + &rust_layout!(DualexHexMesh: n_vertices, positions, n_cells, cells, sources, n_components,
-            n_boundary_surfaces, euler, n_singular_edges, n_welded_vertices, topology_matches,
+            n_boundary_components as n_boundary_surfaces, euler, n_singular as n_singular_edges, n_welded_vertices, topology_matches,
             sj_min_before, sj_min_after, sj_p5_before, sj_p5_after, inverted_before, inverted_after,
             moved_vertices);
     assert_eq!(out, expected);

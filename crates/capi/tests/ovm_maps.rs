@@ -38,12 +38,19 @@ fn hexex_to_ovm_keeps_the_map_and_the_hexes() {
     for (t, (a, b)) in normalized(&hexex).zip(normalized(&back)).enumerate() {
         assert_eq!(a, b, "tet {t}");
     }
-    let opts = dualex::HexOptions::default();
+    let opts = dualex::Options::default();
     let a = dualex::hex(&hexex, &opts).expect("extract from .hexex");
     let b = dualex::hex(&back, &opts).expect("extract from .ovm");
-    assert_eq!(b.stats.hexes, 956);
-    let shape =
-        |s: &dualex::HexStats| (s.hexes, s.vertices, s.components, s.euler, s.boundary_faces);
+    assert_eq!(b.stats.cells, 956);
+    let shape = |s: &dualex::Stats| {
+        (
+            s.cells,
+            s.vertices,
+            s.components,
+            s.euler,
+            s.boundary_facets,
+        )
+    };
     assert_eq!(shape(&a.stats), shape(&b.stats));
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -79,7 +86,7 @@ fn hex_meshes_are_written_with_shared_faces() {
         .map(|t| t.map(|v: u32| positions[v as usize].map(|x| 2.0 * x)))
         .collect();
     let map = dualex::tet_map_from_slices(&positions, &tets, &uvw).expect("the map");
-    let out = dualex::hex(&map, &dualex::HexOptions::default()).expect("extract");
+    let out = dualex::hex(&map, &dualex::Options::default()).expect("extract");
     let dir = scratch("cube");
     let path = dir.join("cube.ovm");
     dualex::write_hex_mesh(&path, &out.mesh).expect("write cube.ovm");

@@ -20,29 +20,29 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), CliError> {
     let page = match &mesh {
         Mesh::Quads(m) => {
             let (values, normals) = quality::quad_quality(m, a.surface.as_deref())?;
-            let q = dualex_render::Quality {
+            let q = dualex::render::Quality {
                 values: &values,
                 note: normals.short(),
             };
-            dualex_render::view_html_quality(m, &title, &q)
+            dualex::render::view_html_quality(m, &title, &q)
         }
         Mesh::Hexes(m) => {
             if a.surface.is_some() {
                 crate::args::usage_error("view --surface applies to quad meshes only");
             }
             let values = quality::hex_quality(m);
-            let q = dualex_render::Quality {
+            let q = dualex::render::Quality {
                 values: &values,
                 note: "",
             };
-            dualex_render::view_html_hex_quality(m, &title, &q)
+            dualex::render::view_html_hex_quality(m, &title, &q)
         }
     }
     .map_err(|error| CliError::Render {
         file: name.clone(),
         error,
     })?;
-    dualex_io::write_text(&a.output, &page)?;
+    dualex::io::write_text(&a.output, &page)?;
     if !g.quiet {
         eprintln!("dualex: view: {} -> {}", name, a.output.display());
     }
@@ -54,7 +54,7 @@ pub fn view(a: &ViewArgs, g: &Global) -> Result<(), CliError> {
 pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), CliError> {
     let path = &a.input;
     let name = path.display().to_string();
-    let ext = dualex_io::lower_extension(path);
+    let ext = dualex::io::lower_extension(path);
     let map_3d = ext == "hexex" || ext == "ovm";
     if a.png.is_some() && map_3d {
         crate::args::usage_error(
@@ -78,25 +78,25 @@ pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), CliError> {
     if a.surface.is_some() {
         crate::args::usage_error("inspect --surface applies to quad meshes, not to maps");
     }
-    let opts = dualex_map::report::InspectOptions {
+    let opts = dualex::map::report::InspectOptions {
         weld: !a.weld.no_weld,
         round: a.round.round,
         ..Default::default()
     };
     let report = if map_3d {
-        let m = dualex_io::read_tet_map(path)?;
-        dualex_map::report::inspect(&m, &opts)
+        let m = dualex::io::read_tet_map(path)?;
+        dualex::map::report::inspect(&m, &opts)
     } else {
-        let m = dualex_io::read_tri_map(path)?;
+        let m = dualex::io::read_tri_map(path)?;
         if let Some(png) = &a.png {
             let bytes =
-                dualex_render::map_png_bytes(&m, PNG_SIZE).map_err(|error| CliError::Render {
+                dualex::render::map_png_bytes(&m, PNG_SIZE).map_err(|error| CliError::Render {
                     file: name.clone(),
                     error,
                 })?;
             outputs::write_png(png, &bytes)?;
         }
-        dualex_map::report::inspect(&m, &opts)
+        dualex::map::report::inspect(&m, &opts)
     }
     .map_err(|e| e.in_file(name))?;
     if a.json {
@@ -110,21 +110,21 @@ pub fn inspect(a: &InspectArgs, _g: &Global) -> Result<(), CliError> {
 /// `dualex extrude`: a 2D map into a 3D one (prisms tetrahedralized by
 /// TetGen, run as an external program; see dualex-extrude).
 pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), CliError> {
-    outputs::check(&a.output, Some(dualex_io::TET_MAP_EXTENSIONS))?;
+    outputs::check(&a.output, Some(dualex::io::TET_MAP_EXTENSIONS))?;
     let name = a.input.display().to_string();
     let map = crate::read_2d(&a.input, &a.weld, g, &mut timing::Laps::start())?;
-    let opts = dualex_extrude::ExtrudeOptions {
+    let opts = dualex::extrude::ExtrudeOptions {
         layers: a.layers,
         thickness: a.thickness,
         quality: a.quality,
         program: std::env::var_os("DUALEX_TETGEN").map_or("tetgen".into(), Into::into),
         fallback: a.fallback,
     };
-    let (tets, rep) = dualex_extrude::extrude(&map, &opts).map_err(|error| CliError::Extrude {
+    let (tets, rep) = dualex::extrude::extrude(&map, &opts).map_err(|error| CliError::Extrude {
         file: name.clone(),
         error,
     })?;
-    dualex_io::write_tet_map(&a.output, &tets)?;
+    dualex::io::write_tet_map(&a.output, &tets)?;
     if let Some(note) = rep.note.as_deref().filter(|_| !g.quiet) {
         eprintln!("dualex: {name}: {note}");
     }
@@ -133,11 +133,11 @@ pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), CliError> {
             "dualex: {name}: charts shifted by (½, ½): `dualex quad` takes the grid offset 0 on this map, and `dualex hex` the offset ½, so the 3D grid is the 2D one"
         );
     }
-    let cap = dualex_extrude::tetgen::steiner_cap(rep.prisms);
+    let cap = dualex::extrude::tetgen::steiner_cap(rep.prisms);
     if a.quality && rep.steiner_points >= cap {
         eprintln!(
             "dualex: warning: {name}: --quality stopped at its cap of {cap} Steiner points ({} per prism): the tets are valid but not all of TetGen's quality",
-            dualex_extrude::tetgen::STEINER_PER_PRISM
+            dualex::extrude::tetgen::STEINER_PER_PRISM
         );
     }
     if !g.quiet {
@@ -146,9 +146,9 @@ pub fn extrude(a: &ExtrudeArgs, g: &Global) -> Result<(), CliError> {
             count(rep.prisms, "prism", "prisms"),
             count(rep.tets, "tet", "tets"),
             match rep.method {
-                dualex_extrude::Method::TetGen => "TetGen",
-                dualex_extrude::Method::Thinner { .. } => "TetGen, thinner slab",
-                dualex_extrude::Method::Split => "prism split",
+                dualex::extrude::Method::TetGen => "TetGen",
+                dualex::extrude::Method::Thinner { .. } => "TetGen, thinner slab",
+                dualex::extrude::Method::Split => "prism split",
             },
             count(rep.steiner_points, "Steiner point", "Steiner points"),
             rep.flat_tets,

@@ -4,7 +4,7 @@
 //! Every message names the file (the input read, the output refused)
 //! and, where there is one, the element (a face, a vertex, a cell): the
 //! readers' and writers' own errors already do
-//! ([`dualex_map::InputError`], [`dualex_io::OutputError`]); the stages'
+//! ([`dualex::map::InputError`], [`dualex::io::OutputError`]); the stages'
 //! errors are wrapped with the file they ran on.
 
 use std::fmt;
@@ -15,14 +15,14 @@ use std::path::PathBuf;
 pub enum CliError {
     /// A file could not be read or a map was refused (the error names the
     /// file and the line or element).
-    Input(dualex_map::InputError),
+    Input(dualex::map::InputError),
     /// A plain surface could not be read (`remesh`; the error names the
     /// file and the line or element).
     ReadSurface(dualex::Error),
     /// The embedded map could not be read (a bug of the build).
-    EmbeddedMap(dualex_map::InputError),
+    EmbeddedMap(dualex::map::InputError),
     /// An output could not be written or is refused up front.
-    Output(dualex_io::OutputError),
+    Output(dualex::io::OutputError),
     /// stdout could not be written (`--stats -`).
     Stdout(std::io::Error),
     /// One file named for two outputs.
@@ -39,21 +39,21 @@ pub enum CliError {
         /// The input pictured.
         file: String,
         /// Its error.
-        error: dualex_render::RenderError,
+        error: dualex::render::RenderError,
     },
     /// The extrusion refused the map.
     Extrude {
         /// The input.
         file: String,
         /// Its error.
-        error: dualex_extrude::ExtrudeError,
+        error: dualex::extrude::ExtrudeError,
     },
     /// A map could not be made from a mesh (`generate --from-mesh`).
     FromMesh {
         /// The mesh.
         file: String,
         /// Its error.
-        error: dualex_gen::from_mesh::FromMeshError,
+        error: dualex::gen::from_mesh::FromMeshError,
     },
     /// The output was refused by the checks before writing; nothing
     /// written.
@@ -84,21 +84,21 @@ pub enum CliError {
         need: Need,
     },
     /// A mesh read with a bad vertex or cell (its check is the
-    /// pictures': [`dualex_render::valence::check_cells`]).
+    /// pictures': [`dualex::render::valence::check_cells`]).
     Mesh {
         /// The file.
         file: String,
         /// The offender.
-        error: dualex_render::RenderError,
+        error: dualex::render::RenderError,
     },
     /// The `--surface` file could not be read.
-    SurfaceRead(dualex_map::InputError),
+    SurfaceRead(dualex::map::InputError),
     /// The `--surface` file has a bad vertex.
     Surface {
         /// The file.
         file: String,
         /// The offender.
-        error: dualex_render::RenderError,
+        error: dualex::render::RenderError,
     },
     /// `generate NAME` with a name it does not know.
     UnknownMap(String),
@@ -269,14 +269,14 @@ impl fmt::Display for CliError {
 
 impl std::error::Error for CliError {}
 
-impl From<dualex_map::InputError> for CliError {
-    fn from(e: dualex_map::InputError) -> Self {
+impl From<dualex::map::InputError> for CliError {
+    fn from(e: dualex::map::InputError) -> Self {
         CliError::Input(e)
     }
 }
 
-impl From<dualex_io::OutputError> for CliError {
-    fn from(e: dualex_io::OutputError) -> Self {
+impl From<dualex::io::OutputError> for CliError {
+    fn from(e: dualex::io::OutputError) -> Self {
         CliError::Output(e)
     }
 }

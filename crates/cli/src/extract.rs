@@ -10,7 +10,7 @@ use crate::args::{ExtractArgs, Global, HexArgs, QuadArgs};
 use crate::error::CliError;
 use crate::summary::{count, problems_suffix};
 use crate::{geometry, outputs, progress, summary, timing, verify, warnings, EMBEDDED, PNG_SIZE};
-use dualex_check::topology as topo;
+use dualex::check::topology as topo;
 use std::path::Path;
 
 /// Checks the outputs of an extraction (mesh, stats, picture).
@@ -37,7 +37,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), CliError> {
     }
     check_outputs(
         &a.output,
-        dualex_io::QUAD_MESH_EXTENSIONS,
+        dualex::io::QUAD_MESH_EXTENSIONS,
         &a.extract,
         a.png.as_deref(),
     )?;
@@ -51,7 +51,7 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), CliError> {
             if !g.quiet {
                 eprintln!("dualex: no INPUT given: running on the embedded map (a folded, noisy cube surface)");
             }
-            let m = dualex_io::parse_obj(EMBEDDED).map_err(CliError::EmbeddedMap)?;
+            let m = dualex::io::parse_obj(EMBEDDED).map_err(CliError::EmbeddedMap)?;
             let name = "embedded map".to_string();
             (crate::weld_if(m, &a.weld, g, &name), name)
         }
@@ -64,39 +64,31 @@ pub fn quad(a: &QuadArgs, g: &Global) -> Result<(), CliError> {
     quad_map(&map, &name, done, a, g, laps, None)
 }
 
-/// The extraction options of `quad` (and `remesh`) from the arguments.
-pub fn quad_options(a: &QuadArgs, g: &Global) -> dualex_quad::QuadOptions {
+/// The library's options of `quad` from the arguments; with `--stats`
+/// or `-v` the report counts the input's singularities too.
+fn quad_options(a: &QuadArgs, g: &Global) -> (dualex::Options, bool) {
     let x = &a.extract;
-    dualex_quad::QuadOptions {
-        fairing: !a.no_fairing,
-        transitions: dualex_map::TransitionOptions {
-            round: x.round.round,
-            ..Default::default()
-        },
-        seed: x.seed,
-        grid_offset: x.grid_offset,
-        singularity_stats: x.stats.is_some() || g.verbose,
-    }
+    (x.options(!a.no_fairing), x.stats.is_some() || g.verbose)
 }
 
 /// What the caller of [`quad_map`] made before: one more section of the
-/// stats, and the map's extraction with [`quad_options`] if it has it
+/// stats, and the map's extraction with `quad`'s options if it has it
 /// (`remesh` extracts its maps to count their quads).
 pub struct Before<'a> {
     /// The stats section (key, value).
     pub section: (&'a str, serde_json::Value),
     /// The extraction of this very map.
-    pub extracted: Option<dualex_quad::Extracted>,
+    pub extracted: Option<dualex::steps::QuadExtraction>,
     /// The geometric stage's report when it has run on `extracted`
     /// already (its quads moved): not run again.
-    pub geometry: Option<dualex_geom::Report>,
+    pub geometry: Option<dualex::geom::Report>,
 }
 
 /// The quad extraction of a map read or made (`quad`, `remesh`): extract
 /// (unless `before` has it), check, write; `done` starts the summary
 /// line.
 pub fn quad_map(
-    map: &dualex_map::TriMap,
+    map: &dualex::map::TriMap,
     name: &str,
     done: &str,
     a: &QuadArgs,
@@ -119,13 +111,13 @@ pub fn quad_map(
     progress.stage("geometry");
     let geo = match staged {
         Some(geo) => geo,
-        None => geometry::quads(&mut ex.mesh, map, &ex.sources, &x.geometry),
+        None => dualex::steps::quad_geometry(map, &mut ex, &x.geometry.options()),
     };
     laps.lap("geometry");
     geometry::check(name, &geo, ("quad", "quads"), x.strict)?;
     // 3. the picture, in memory
     let png = match (&a.png, ex.mesh.cells.is_empty()) {
-        (Some(_), false) => Some(dualex_render::quad_png_bytes(&ex.mesh, PNG_SIZE).map_err(
+        (Some(_), false) => Some(dualex::render::quad_png_bytes(&ex.mesh, PNG_SIZE).map_err(
             |error| CliError::Render {
                 file: name.to_string(),
                 error,
@@ -136,9 +128,9 @@ pub fn quad_map(
     // 4. the mesh written, then the stats and the picture
     progress.stage("writing");
     if a.uv {
-        dualex_io::write_quad_mesh_uv(&a.output, &ex.mesh, &ex.corner_uv)
+        dualex::io::write_quad_mesh_uv(&a.output, &ex.mesh, &ex.corner_uv)
     } else {
-        dualex_io::write_quad_mesh(&a.output, &ex.mesh)
+        dualex::io::write_quad_mesh(&a.output, &ex.mesh)
     }?;
     laps.lap("write");
     drop(progress);
@@ -173,21 +165,24 @@ pub fn quad_map(
 /// here), its validity and the last checks ([`crate::verify`]), with the
 /// topology compared.
 fn extract_quads(
-    map: &dualex_map::TriMap,
+    map: &dualex::map::TriMap,
     name: &str,
     a: &QuadArgs,
     g: &Global,
-    done_before: Option<dualex_quad::Extracted>,
+    done_before: Option<dualex::steps::QuadExtraction>,
     laps: &mut timing::Laps,
-) -> Result<(dualex_quad::Extracted, topo::Comparison), CliError> {
+) -> Result<(dualex::steps::QuadExtraction, topo::Comparison), CliError> {
     let ex = match done_before {
         // the same map, extracted with the same options already
         Some(x) => x,
-        None => dualex_quad::extract_full(map, &quad_options(a, g))
-            .map_err(|e| e.in_file(name.to_string()))?,
+        None => {
+            let (opts, singularities) = quad_options(a, g);
+            dualex::steps::extract_quads(map, &opts, singularities)
+                .map_err(|e| e.in_file(name.to_string()))?
+        }
     };
     laps.lap("extract");
-    let rep = dualex_check::check_quad_mesh(ex.mesh.positions.len(), &ex.mesh.cells);
+    let rep = dualex::check::check_quad_mesh(ex.mesh.positions.len(), &ex.mesh.cells);
     laps.lap("check");
     let topology = topo::Comparison {
         input: topo::surface_shape(map.positions.len(), &map.simplices),
@@ -229,7 +224,7 @@ fn write_picture(a: &QuadArgs, png: Option<&[u8]>) -> Result<(), CliError> {
 fn stats_json(
     mut json: serde_json::Value,
     topology: &topo::Comparison,
-    geo: &dualex_geom::Report,
+    geo: &dualex::geom::Report,
     extra: Option<(&str, serde_json::Value)>,
 ) -> serde_json::Value {
     verify::add_to_stats(&mut json, topology);
@@ -249,9 +244,9 @@ fn stats_json(
 /// coordinates (`.vtk`) is a usage error (exit 2); an unknown extension is
 /// left to the output check.
 pub(crate) fn refuse_uv(output: &Path) {
-    let ext = dualex_io::lower_extension(output);
-    if dualex_io::QUAD_MESH_EXTENSIONS.contains(&ext.as_str())
-        && !dualex_io::write_uv::UV_EXTENSIONS.contains(&ext.as_str())
+    let ext = dualex::io::lower_extension(output);
+    if dualex::io::QUAD_MESH_EXTENSIONS.contains(&ext.as_str())
+        && !dualex::io::write_uv::UV_EXTENSIONS.contains(&ext.as_str())
     {
         crate::args::usage_error(&format!(
             "--uv does not apply to .{ext} output (no per-corner attribute): use .obj or .ply"
@@ -262,10 +257,10 @@ pub(crate) fn refuse_uv(output: &Path) {
 /// `dualex hex`.
 pub fn hex(a: &HexArgs, g: &Global) -> Result<(), CliError> {
     let x = &a.extract;
-    check_outputs(&a.output, dualex_io::HEX_MESH_EXTENSIONS, x, None)?;
+    check_outputs(&a.output, dualex::io::HEX_MESH_EXTENSIONS, x, None)?;
     let name = a.input.display().to_string();
     let mut laps = timing::Laps::start();
-    let map = dualex_io::read_tet_map(&a.input)?;
+    let map = dualex::io::read_tet_map(&a.input)?;
     laps.lap("read");
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage("extracting hexes");
@@ -273,12 +268,12 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), CliError> {
     let (mut mesh, stats, topology) = extract_hexes(&map, &name, x, &mut laps)?;
     // 2. the geometric stage
     progress.stage("geometry");
-    let geo = geometry::hexes(&mut mesh, &map, &x.geometry);
+    let geo = dualex::steps::hex_geometry(&map, &mut mesh, &x.geometry.options());
     laps.lap("geometry");
     geometry::check(&name, &geo, ("hex", "hexes"), x.strict)?;
     // 3. the mesh written, then the stats
     progress.stage("writing");
-    dualex_io::write_hex_mesh(&a.output, &mesh)?;
+    dualex::io::write_hex_mesh(&a.output, &mesh)?;
     laps.lap("write");
     drop(progress);
     let json = stats_json(stats.to_json(), &topology, &geo, None);
@@ -305,30 +300,17 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), CliError> {
 /// preimages) and the last checks ([`crate::verify`]), with the topology
 /// compared.
 fn extract_hexes(
-    map: &dualex_map::TetMap,
+    map: &dualex::map::TetMap,
     name: &str,
     x: &ExtractArgs,
     laps: &mut timing::Laps,
-) -> Result<
-    (
-        dualex_cells::HexMesh,
-        dualex_hex::HexStats,
-        topo::Comparison,
-    ),
-    CliError,
-> {
-    let opts = dualex_hex::HexOptions {
-        transitions: dualex_map::TransitionOptions {
-            round: x.round.round,
-            ..Default::default()
-        },
-        seed: x.seed,
-        grid_offset: x.grid_offset,
-        ..dualex_hex::HexOptions::default()
-    };
-    let (mesh, stats) = dualex_hex::extract(map, &opts).map_err(|e| e.in_file(name.to_string()))?;
+) -> Result<(dualex::HexMesh, dualex::steps::HexReport, topo::Comparison), CliError> {
+    // (index fairing on columns always on, as the library's default)
+    let x_all = dualex::steps::extract_hexes(map, &x.options(true))
+        .map_err(|e| e.in_file(name.to_string()))?;
+    let (mesh, stats) = (x_all.mesh, x_all.stats);
     laps.lap("extract");
-    let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    let rep = dualex::check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
     laps.lap("check");
     let topology = topo::Comparison {
         input: topo::tet_shape(map.positions.len(), &map.simplices),

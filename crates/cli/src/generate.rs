@@ -11,9 +11,9 @@ use crate::args::{usage_error, GenerateArgs, Global};
 use crate::error::CliError;
 use crate::generate_from_mesh::{self, Input};
 use crate::summary::count;
-use dualex_gen::from_mesh::meshes;
-use dualex_gen::{Diagonal, Perturb};
-use dualex_map::{TetMap, TriMap};
+use dualex::gen::from_mesh::meshes;
+use dualex::gen::{Diagonal, Perturb};
+use dualex::map::{TetMap, TriMap};
 
 /// The maps `--size` applies to.
 const SIZEABLE: &[&str] = &[
@@ -78,7 +78,7 @@ pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), CliError> {
         refuse_size(a, name);
         return generate_from_mesh::run(a, g, Input::Hexes(m, name.clone()), out);
     }
-    if let Some(surface) = dualex_remesh::shapes::by_name(name) {
+    if let Some(surface) = dualex::remesh::shapes::by_name(name) {
         refuse_size(a, name);
         return write_surface(name, &surface, out, g);
     }
@@ -88,8 +88,8 @@ pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), CliError> {
         ));
     }
     if let Some(map) = tri_map(name, a)? {
-        crate::outputs::check(out, Some(dualex_io::TRI_MAP_EXTENSIONS))?;
-        dualex_io::write_tri_map(out, &map)?;
+        crate::outputs::check(out, Some(dualex::io::TRI_MAP_EXTENSIONS))?;
+        dualex::io::write_tri_map(out, &map)?;
         if !g.quiet {
             let n = map.len();
             eprintln!(
@@ -101,8 +101,8 @@ pub fn generate(a: &GenerateArgs, g: &Global) -> Result<(), CliError> {
         return Ok(());
     }
     let map = tet_map(name, a)?.ok_or_else(|| CliError::UnknownMap(name.clone()))?;
-    crate::outputs::check(out, Some(dualex_io::TET_MAP_EXTENSIONS))?;
-    dualex_io::write_tet_map(out, &map)?;
+    crate::outputs::check(out, Some(dualex::io::TET_MAP_EXTENSIONS))?;
+    dualex::io::write_tet_map(out, &map)?;
     if !g.quiet {
         eprintln!(
             "dualex: {name}: {} -> {}",
@@ -122,8 +122,8 @@ fn refuse_size(a: &GenerateArgs, what: &str) {
 fn sized(name: &str, a: &GenerateArgs) -> Result<Option<usize>, CliError> {
     match a.size {
         Some(_) if !SIZEABLE.contains(&name) => {
-            if dualex_gen::by_name(name, a.seed).is_some()
-                || dualex_gen::by_name_3d(name, a.seed).is_some()
+            if dualex::gen::by_name(name, a.seed).is_some()
+                || dualex::gen::by_name_3d(name, a.seed).is_some()
             {
                 usage_error(&format!(
                     "--size applies to {}, not to {name:?}",
@@ -144,19 +144,19 @@ fn span(r: usize) -> (f64, f64) {
 
 fn tri_map(name: &str, a: &GenerateArgs) -> Result<Option<TriMap>, CliError> {
     let Some(r) = sized(name, a)? else {
-        return Ok(dualex_gen::by_name(name, a.seed).map(|(m, _)| m));
+        return Ok(dualex::gen::by_name(name, a.seed).map(|(m, _)| m));
     };
     let alt = Diagonal::Alternating;
     let (lo, hi) = span(r);
     let (ru, rv) = (r, (r / 2).max(3));
     let (n, m) = ((ru / 2).max(1) as u32, (rv / 2).max(1) as u32);
     Ok(match name {
-        "square_identity" => Some(dualex_gen::square_identity(r, lo, hi, alt).0),
-        "square_noise" => Some(dualex_gen::square_noise(r, lo, hi, 0.3, a.seed, alt).0),
-        "torus" => Some(dualex_gen::torus(n, m, ru, rv, Perturb::None, alt).0),
+        "square_identity" => Some(dualex::gen::square_identity(r, lo, hi, alt).0),
+        "square_noise" => Some(dualex::gen::square_noise(r, lo, hi, 0.3, a.seed, alt).0),
+        "torus" => Some(dualex::gen::torus(n, m, ru, rv, Perturb::None, alt).0),
         "torus_fold" => {
             let fold = Perturb::Fold { strength: 1.5 };
-            Some(dualex_gen::torus(n, m, ru, rv, fold, alt).0)
+            Some(dualex::gen::torus(n, m, ru, rv, fold, alt).0)
         }
         _ => None,
     })
@@ -164,12 +164,12 @@ fn tri_map(name: &str, a: &GenerateArgs) -> Result<Option<TriMap>, CliError> {
 
 fn tet_map(name: &str, a: &GenerateArgs) -> Result<Option<TetMap>, CliError> {
     let Some(r) = sized(name, a)? else {
-        return Ok(dualex_gen::by_name_3d(name, a.seed).map(|(m, _)| m));
+        return Ok(dualex::gen::by_name_3d(name, a.seed).map(|(m, _)| m));
     };
     let (lo, hi) = span(r);
     Ok(match name {
-        "block" => Some(dualex_gen::block::block(r, r, r, lo, hi).0),
-        "block_noise" => Some(dualex_gen::block::block_noise(r, lo, hi, 0.3, a.seed).0),
+        "block" => Some(dualex::gen::block::block(r, r, r, lo, hi).0),
+        "block_noise" => Some(dualex::gen::block::block_noise(r, lo, hi, 0.3, a.seed).0),
         _ => None,
     })
 }
@@ -177,12 +177,12 @@ fn tet_map(name: &str, a: &GenerateArgs) -> Result<Option<TetMap>, CliError> {
 /// `--list` (module docs).
 fn list(seed: u64) {
     let line = |name: &str, size: String, what: &str| println!("{name:<24}{size:<18}{what}");
-    for n in dualex_gen::names() {
-        let len = dualex_gen::by_name(&n, seed).map_or(0, |(m, _)| m.len());
+    for n in dualex::gen::names() {
+        let len = dualex::gen::by_name(&n, seed).map_or(0, |(m, _)| m.len());
         line(&n, count(len, "triangle", "triangles"), describe(&n));
     }
-    for n in dualex_gen::names_3d() {
-        let len = dualex_gen::by_name_3d(&n, seed).map_or(0, |(m, _)| m.len());
+    for n in dualex::gen::names_3d() {
+        let len = dualex::gen::by_name_3d(&n, seed).map_or(0, |(m, _)| m.len());
         line(&n, count(len, "tet", "tets"), describe(&n));
     }
     for n in meshes::quad_mesh_names() {
@@ -197,8 +197,8 @@ fn list(seed: u64) {
             "hex mesh: a map with its expected extraction (--scale, --noise, --folds, --folds-at-singular, --magnify)",
         );
     }
-    for (n, what) in dualex_remesh::shapes::NAMED {
-        let len = dualex_remesh::shapes::by_name(n).map_or(0, |s| s.triangles.len());
+    for (n, what) in dualex::remesh::shapes::NAMED {
+        let len = dualex::remesh::shapes::by_name(n).map_or(0, |s| s.triangles.len());
         line(
             n,
             count(len, "triangle", "triangles"),
@@ -214,7 +214,7 @@ fn list(seed: u64) {
 /// Writes a generated plain surface (no map) as OBJ `v` / `f` lines.
 fn write_surface(
     name: &str,
-    s: &dualex_remesh::Surface,
+    s: &dualex::remesh::Surface,
     out: &std::path::Path,
     g: &Global,
 ) -> Result<(), CliError> {
@@ -227,7 +227,7 @@ fn write_surface(
     for t in &s.triangles {
         let _ = writeln!(text, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
     }
-    dualex_io::write_text(out, &text)?;
+    dualex::io::write_text(out, &text)?;
     if !g.quiet {
         eprintln!(
             "dualex: {name}: {} -> {}",

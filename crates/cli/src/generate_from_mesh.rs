@@ -1,5 +1,5 @@
 //! `dualex generate --from-mesh MESH -o MAP`: a quad or hex mesh as a map
-//! (one chart per element, see `dualex_gen::from_mesh`), written with its
+//! (one chart per element, see `dualex::gen::from_mesh`), written with its
 //! expected extraction beside it: `MAP.expected.json` (counts) and the
 //! refined mesh `MAP.expected.obj` (quads) / `MAP.expected.mesh` (hexes).
 //! Every file is written atomically; errors are one line naming the file.
@@ -7,8 +7,8 @@
 use crate::args::{GenerateArgs, Global};
 use crate::error::{CliError, Need};
 use crate::summary::plural;
-use dualex_cells::{HexMesh, QuadMesh};
-use dualex_gen::from_mesh::{from_hexes, from_quads, FromMeshError, FromMeshOptions};
+use dualex::gen::from_mesh::{from_hexes, from_quads, FromMeshError, FromMeshOptions};
+use dualex::{HexMesh, QuadMesh};
 use std::path::Path;
 
 /// The mesh to turn into a map, with its name for messages.
@@ -22,12 +22,12 @@ pub enum Input {
 /// Reads MESH: `.mesh` hexes, `.obj` / `.ply` quads (other faces refused).
 pub fn read(path: &Path) -> Result<Input, CliError> {
     let name = path.display().to_string();
-    let ext = dualex_io::lower_extension(path);
+    let ext = dualex::io::lower_extension(path);
     if ext == "mesh" {
-        let m = dualex_io::read_hex_mesh(path)?;
+        let m = dualex::io::read_hex_mesh(path)?;
         return Ok(Input::Hexes(m, name));
     }
-    let poly = dualex_io::read_polygon_mesh(path)?;
+    let poly = dualex::io::read_polygon_mesh(path)?;
     let mut cells = Vec::with_capacity(poly.faces.len());
     for (i, f) in poly.faces.iter().enumerate() {
         let [a, b, c, d] = f[..] else {
@@ -76,11 +76,11 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
     let json_path = out.with_extension("expected.json");
     let (map_exts, refined): (&'static [&'static str], _) = match &input {
         Input::Quads(..) => (
-            dualex_io::TRI_MAP_EXTENSIONS,
+            dualex::io::TRI_MAP_EXTENSIONS,
             out.with_extension("expected.obj"),
         ),
         Input::Hexes(..) => (
-            dualex_io::TET_MAP_EXTENSIONS,
+            dualex::io::TET_MAP_EXTENSIONS,
             out.with_extension("expected.mesh"),
         ),
     };
@@ -99,8 +99,8 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
                 "euler": e.euler,
                 "boundary_loops": e.boundary_loops,
             });
-            dualex_io::write_tri_map(out, &gen.map)?;
-            dualex_io::write_quad_mesh(&refined, &gen.refined)?;
+            dualex::io::write_tri_map(out, &gen.map)?;
+            dualex::io::write_quad_mesh(&refined, &gen.refined)?;
             (
                 plural(gen.map.len(), "triangle", "triangles"),
                 gen.map.len(),
@@ -117,8 +117,8 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
                 "boundary_components": e.boundary_components,
                 "boundary_euler": e.boundary_euler,
             });
-            dualex_io::write_tet_map(out, &gen.map)?;
-            dualex_io::write_hex_mesh(&refined, &gen.refined)?;
+            dualex::io::write_tet_map(out, &gen.map)?;
+            dualex::io::write_hex_mesh(&refined, &gen.refined)?;
             (plural(gen.map.len(), "tet", "tets"), gen.map.len(), json)
         }
     };
@@ -126,7 +126,7 @@ pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<
         what: "",
         reason: e.to_string(),
     })?;
-    dualex_io::write_text(&json_path, &text)?;
+    dualex::io::write_text(&json_path, &text)?;
     if !g.quiet {
         eprintln!(
             "dualex: {count} {what} -> {} (expected: {})",

@@ -1,44 +1,12 @@
-//! The geometric stage as `quad`, `hex` and `remesh` run it: options from
-//! the command line, the stage ([`dualex_geom`]), and what is said about
-//! its result (the done line's quality, the warning or `--strict` error
+//! What `quad`, `hex` and `remesh` say of the geometric stage (the
+//! library's [`dualex::steps::quad_geometry`] and
+//! [`dualex::steps::hex_geometry`], with the options of
+//! [`crate::args::GeometryArgs::options`]): its result (the done line's quality, the warning or `--strict` error
 //! for inverted elements left).
 
-use crate::args::GeometryArgs;
 use crate::error::{CliError, Refusal};
 use crate::summary::{count, plural};
-use dualex_geom::Report;
-
-/// The stage on a quad mesh lying on `map`'s surface.
-pub fn quads(
-    mesh: &mut dualex_cells::QuadMesh,
-    map: &dualex_map::TriMap,
-    sources: &[u32],
-    a: &GeometryArgs,
-) -> Report {
-    dualex_geom::quads(
-        &mut mesh.positions,
-        &mesh.cells,
-        &map.positions,
-        &map.simplices,
-        sources,
-        &a.options(),
-    )
-}
-
-/// The stage on a hex mesh inside `map`'s volume.
-pub fn hexes(
-    mesh: &mut dualex_cells::HexMesh,
-    map: &dualex_map::TetMap,
-    a: &GeometryArgs,
-) -> Report {
-    dualex_geom::hexes(
-        &mut mesh.positions,
-        &mesh.cells,
-        &map.positions,
-        &map.simplices,
-        &a.options(),
-    )
-}
+use dualex::geom::Report;
 
 /// Inverted elements left: an error under `strict` (nothing written),
 /// else `Ok` (the warning is [`warn`]'s, after writing).

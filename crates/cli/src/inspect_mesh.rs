@@ -5,9 +5,9 @@
 //! `{"mesh": "quads"|"hexes", "elements", "vertices", "normals":
 //! "surface"|"mesh" (quads only), "scaled_jacobian": {elements, inverted,
 //! degenerate, min, p5, median}}`; with `--png`, a histogram of the values
-//! ([`dualex_render::quality_histogram_png`]).
+//! ([`dualex::render::quality_histogram_png`]).
 
-use dualex_geom::Summary;
+use dualex::geom::Summary;
 
 use crate::args::InspectArgs;
 use crate::error::CliError;
@@ -31,7 +31,7 @@ pub fn inspect_mesh(mesh: &Mesh, a: &InspectArgs, name: &str) -> Result<(), CliE
             s.inverted, s.degenerate, s.min, s.median
         );
         let bytes =
-            dualex_render::quality_histogram_png(&values, &title, PNG_SIZE, PNG_SIZE * 5 / 8)
+            dualex::render::quality_histogram_png(&values, &title, PNG_SIZE, PNG_SIZE * 5 / 8)
                 .map_err(|error| CliError::Render {
                     file: name.to_string(),
                     error,

@@ -11,6 +11,7 @@ mod args;
 mod commands;
 mod error;
 mod extract;
+mod extract_args;
 mod generate;
 mod generate_from_mesh;
 mod geometry;
@@ -75,19 +76,24 @@ fn read_2d(
     weld: &WeldArgs,
     g: &Global,
     laps: &mut timing::Laps,
-) -> Result<dualex_map::TriMap, CliError> {
-    let map = dualex_io::read_tri_map(path)?;
+) -> Result<dualex::map::TriMap, CliError> {
+    let map = dualex::io::read_tri_map(path)?;
     laps.lap("read");
     let map = weld_if(map, weld, g, &path.display().to_string());
     laps.lap("weld");
     Ok(map)
 }
 
-fn weld_if(map: dualex_map::TriMap, weld: &WeldArgs, g: &Global, name: &str) -> dualex_map::TriMap {
+fn weld_if(
+    map: dualex::map::TriMap,
+    weld: &WeldArgs,
+    g: &Global,
+    name: &str,
+) -> dualex::map::TriMap {
     if weld.no_weld {
         return map;
     }
-    let (map, rep) = dualex_map::weld::weld_owned(map);
+    let (map, rep) = dualex::map::weld::weld_owned(map);
     if rep.welded_vertices > 0 && !g.quiet {
         eprintln!(
             "dualex: {name}: welded {} (cut mesh); --no-weld keeps them",

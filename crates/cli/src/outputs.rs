@@ -1,7 +1,7 @@
 //! Outputs checked before any work, and the stats written.
 //!
 //! Every file a command will write is checked first
-//! ([`dualex_io::check_output`]: extension, folder exists and takes a new
+//! ([`dualex::io::check_output`]: extension, folder exists and takes a new
 //! file), so a missing folder or a bad `--stats` path fails at once, with
 //! nothing written, instead of after the extraction or after the mesh.
 //! `--stats -` writes the JSON to stdout (the summary line is on stderr).
@@ -19,8 +19,8 @@ pub fn check(path: &Path, allowed: Option<&'static [&'static str]>) -> Result<()
         return Ok(());
     }
     match allowed {
-        Some(exts) => dualex_io::check_output(path, exts),
-        None => dualex_io::check_writable(path),
+        Some(exts) => dualex::io::check_output(path, exts),
+        None => dualex::io::check_writable(path),
     }
     .map_err(CliError::Output)
 }
@@ -50,10 +50,10 @@ pub fn write_stats(path: &Path, json: &serde_json::Value) -> Result<(), CliError
             .and_then(|()| out.flush())
             .map_err(CliError::Stdout);
     }
-    Ok(dualex_io::write_text(path, &text)?)
+    Ok(dualex::io::write_text(path, &text)?)
 }
 
 /// Writes PNG bytes to `path`.
 pub fn write_png(path: &Path, png: &[u8]) -> Result<(), CliError> {
-    Ok(dualex_io::write_bytes(path, png)?)
+    Ok(dualex::io::write_bytes(path, png)?)
 }

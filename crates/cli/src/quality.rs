@@ -1,5 +1,5 @@
 //! Meshes for `dualex inspect` and `dualex view`: reading a quad or hex
-//! mesh, and the scaled Jacobian of each element ([`dualex_geom::quality`]).
+//! mesh, and the scaled Jacobian of each element ([`dualex::geom::quality`]).
 //!
 //! Input: a path (`.obj`/`.ply` whose faces are all quads, `.vtk` of
 //! quads or hexes, MEDIT `.mesh` of hexes) and, for quads, optionally the
@@ -19,14 +19,14 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use dualex_cells::{HexMesh, QuadMesh};
-use dualex_geom::quality::{corners, cross, hex_values, quad_values, sub, unit};
-use dualex_geom::Reference;
+use dualex::geom::quality::{corners, cross, hex_values, quad_values, sub, unit};
+use dualex::geom::Reference;
+use dualex::{HexMesh, QuadMesh};
 use rayon::prelude::*;
 
 use crate::error::{CliError, Need};
-use dualex_render::valence::check_cells;
-use dualex_render::RenderError;
+use dualex::render::valence::check_cells;
+use dualex::render::RenderError;
 
 /// A mesh read for its quality.
 pub enum Mesh {
@@ -78,14 +78,14 @@ impl Normals {
 /// an index out of range, a position not finite.
 pub fn read_mesh(path: &Path, what: &'static str) -> Result<Mesh, CliError> {
     let name = path.display().to_string();
-    let mesh = match dualex_io::lower_extension(path).as_str() {
-        "mesh" => Mesh::Hexes(dualex_io::read_hex_mesh(path)?),
-        "vtk" => match dualex_io::read_vtk(path)? {
-            dualex_io::VtkMesh::Quads(m) => Mesh::Quads(m),
-            dualex_io::VtkMesh::Hexes(m) => Mesh::Hexes(m),
+    let mesh = match dualex::io::lower_extension(path).as_str() {
+        "mesh" => Mesh::Hexes(dualex::io::read_hex_mesh(path)?),
+        "vtk" => match dualex::io::read_vtk(path)? {
+            dualex::io::VtkMesh::Quads(m) => Mesh::Quads(m),
+            dualex::io::VtkMesh::Hexes(m) => Mesh::Hexes(m),
         },
         "obj" | "ply" => {
-            let poly = dualex_io::read_polygon_mesh(path)?;
+            let poly = dualex::io::read_polygon_mesh(path)?;
             Mesh::Quads(quads_of(poly, &name, what)?)
         }
         ext => {
@@ -108,9 +108,9 @@ pub fn read_mesh(path: &Path, what: &'static str) -> Result<Mesh, CliError> {
 /// (`None`: `.hexex`/`.ovm`, an `.obj`/`.ply` of triangles, or one the
 /// polygon reader refuses, whose error the map reader then gives).
 pub fn inspected_mesh(path: &Path) -> Result<Option<Mesh>, CliError> {
-    match dualex_io::lower_extension(path).as_str() {
+    match dualex::io::lower_extension(path).as_str() {
         "mesh" | "vtk" => read_mesh(path, "inspect").map(Some),
-        "obj" | "ply" => match dualex_io::read_polygon_mesh(path) {
+        "obj" | "ply" => match dualex::io::read_polygon_mesh(path) {
             Ok(poly) if poly.faces.iter().any(|f| f.len() != 3) => {
                 let name = path.display().to_string();
                 let quads = quads_of(poly, &name, "inspect")?;
@@ -126,7 +126,7 @@ pub fn inspected_mesh(path: &Path) -> Result<Option<Mesh>, CliError> {
 
 /// The quads of a polygon mesh whose faces all have 4 vertices.
 fn quads_of(
-    poly: dualex_io::PolyMesh,
+    poly: dualex::io::PolyMesh,
     name: &str,
     what: &'static str,
 ) -> Result<QuadMesh, CliError> {
@@ -170,7 +170,7 @@ pub fn quad_quality(
 /// Per quad, the normal of the surface triangle nearest its centre.
 fn surface_normals(mesh: &QuadMesh, path: &Path) -> Result<Vec<[f64; 3]>, CliError> {
     let name = path.display().to_string();
-    let poly = dualex_io::read_polygon_mesh(path).map_err(CliError::SurfaceRead)?;
+    let poly = dualex::io::read_polygon_mesh(path).map_err(CliError::SurfaceRead)?;
     let mut triangles = Vec::with_capacity(poly.faces.len());
     for (i, f) in poly.faces.iter().enumerate() {
         let [a, b, c] = f[..] else {

@@ -91,9 +91,9 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), CliError> {
 /// Step 1 of [`remesh`]: the mesh, `--map-out`, `--png` and `--stats`
 /// checked ([`outputs::check_all`]).
 fn check_outputs(a: &RemeshArgs) -> Result<(), CliError> {
-    let mut all = vec![(a.output.as_path(), Some(dualex_io::QUAD_MESH_EXTENSIONS))];
+    let mut all = vec![(a.output.as_path(), Some(dualex::io::QUAD_MESH_EXTENSIONS))];
     if let Some(m) = &a.map_out {
-        all.push((m.as_path(), Some(dualex_io::TRI_MAP_EXTENSIONS)));
+        all.push((m.as_path(), Some(dualex::io::TRI_MAP_EXTENSIONS)));
     }
     for p in [&a.png, &a.stats].into_iter().flatten() {
         all.push((p.as_path(), None));
@@ -122,7 +122,7 @@ fn read_input(a: &RemeshArgs, g: &Global) -> Result<Input, CliError> {
                     "dualex: no INPUT given: running on the embedded surface ({EMBEDDED_SURFACE})"
                 );
             }
-            let (p, t) = dualex_remesh::shapes::embedded();
+            let (p, t) = dualex::remesh::shapes::embedded();
             Ok((p, t, "embedded surface".to_string()))
         }
     }
@@ -147,7 +147,7 @@ fn options(a: &RemeshArgs) -> dualex::RemeshOptions {
             },
             seed: a.seed,
         },
-        extract: dualex::QuadOptions {
+        extract: dualex::Options {
             weld: false,
             fairing: !a.no_fairing,
             round_transitions: a.round.round,
@@ -225,11 +225,11 @@ fn describe(name: &str, k: usize, made: &dualex::RemeshedMap, a: &RemeshArgs, g:
 /// The map (`--map-out`) and its picture (`--png`), when asked.
 fn write_map(map: &dualex::TriMap, a: &RemeshArgs, name: &str) -> Result<(), CliError> {
     if let Some(path) = &a.map_out {
-        dualex_io::write_tri_map(path, map)?;
+        dualex::io::write_tri_map(path, map)?;
     }
     if let Some(path) = &a.png {
         let bytes =
-            dualex_render::map_png_bytes(map, PNG_SIZE).map_err(|error| CliError::Render {
+            dualex::render::map_png_bytes(map, PNG_SIZE).map_err(|error| CliError::Render {
                 file: name.to_string(),
                 error,
             })?;

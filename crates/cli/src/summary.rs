@@ -22,7 +22,7 @@ pub fn count(n: usize, one: &str, many: &str) -> String {
 /// Quality problems a quad output still has, from its stats (empty: none):
 /// interior vertices of valence ≤ 2, a subdivision, dropped cells, open
 /// holes, rounded transitions.
-pub fn quad_problems(st: &dualex_quad::QuadStats) -> Vec<String> {
+pub fn quad_problems(st: &dualex::steps::QuadReport) -> Vec<String> {
     let mut p = Vec::new();
     if st.quads == 0 {
         p.push("empty mesh: the map covers less than one grid cell".into());
@@ -61,7 +61,7 @@ pub fn quad_problems(st: &dualex_quad::QuadStats) -> Vec<String> {
 
 /// The same for a hex output: interior edges of valence ≤ 2, open
 /// interior faces, rounded transitions.
-pub fn hex_problems(st: &dualex_hex::HexStats) -> Vec<String> {
+pub fn hex_problems(st: &dualex::steps::HexReport) -> Vec<String> {
     let mut p = Vec::new();
     let low: usize = st.edge_valence_interior.range(..=2).map(|(_, n)| n).sum();
     if low > 0 {

@@ -1,4 +1,4 @@
 //! The whole-process laps (read, weld, extract, check, write) shown by
 //! `-v` beside the library's own stage times ([`crate::summary`]).
 
-pub use dualex_util::timing::Laps;
+pub use dualex::steps::Laps;

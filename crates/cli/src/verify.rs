@@ -24,9 +24,9 @@
 //!   snapped): the mesh near them may be wrong ([`sanitize_check`]).
 
 use crate::error::{CliError, Refusal};
-use dualex_check::topology::Comparison;
-use dualex_map::SimplexMap;
-use dualex_segment::sanitize_report::SanitizeReport;
+use dualex::check::topology::Comparison;
+use dualex::map::SimplexMap;
+use dualex::steps::SanitizeReport;
 
 /// Map measure (area in 2D, volume in 3D, unsigned) in grid cells.
 pub fn measure<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> f64 {
@@ -149,7 +149,7 @@ pub fn add_to_stats(json: &mut serde_json::Value, c: &Comparison) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use dualex_check::topology::Shape;
+    use dualex::check::topology::Shape;
 
     fn out(cells: usize, nodes: usize, measure: f64, input: Shape, output: Shape) -> Output {
         Output {
@@ -220,7 +220,7 @@ mod tests {
 
     #[test]
     fn measure_counts_cells() {
-        let (map, _) = dualex_gen::by_name("square_identity", 1).expect("generator");
+        let (map, _) = dualex::gen::by_name("square_identity", 1).expect("generator");
         assert!((measure(&map) - 49.0).abs() < 1e-9, "{}", measure(&map));
     }
 }

@@ -8,7 +8,7 @@ use crate::summary::{self, count};
 
 /// The warnings of the quad extraction's repairs: faces made quads along
 /// paths (local repair), or one step of subdivision of the whole mesh.
-pub fn quad_repairs(stats: &dualex_quad::QuadStats) {
+pub fn quad_repairs(stats: &dualex::steps::QuadReport) {
     if stats.repair_paths > 0 {
         // printed under -q too: the output is not the map's own mesh
         if stats.repair_triangles + stats.holes_filled == 0 {
@@ -31,7 +31,7 @@ pub fn quad_repairs(stats: &dualex_quad::QuadStats) {
 
 /// The warning for the faces quads cannot represent (triangles at
 /// singular vertices, holes), made quads `how`.
-fn faces_made_quads(stats: &dualex_quad::QuadStats, how: &str) {
+fn faces_made_quads(stats: &dualex::steps::QuadReport, how: &str) {
     let faces = stats.repair_triangles + stats.holes_filled;
     eprintln!(
         "dualex: warning: {} that quads cannot represent ({} at singular vertices on dual nodes, {} closed by polygons) {} made quads {how}",
@@ -44,7 +44,7 @@ fn faces_made_quads(stats: &dualex_quad::QuadStats, how: &str) {
 
 /// The warnings of the hex extraction's repairs: holes through columns
 /// filled, interior faces left open.
-pub fn hex_repairs(stats: &dualex_hex::HexStats) {
+pub fn hex_repairs(stats: &dualex::steps::HexReport) {
     if stats.columns.holes > 0 {
         // printed under -q too: the output is not the map's own mesh
         let c = &stats.columns;

@@ -17,11 +17,11 @@ fn main() -> Result<(), dualex::Error> {
         }
     };
     // cut meshes are welded first; `weld: false` keeps their seams apart
-    let out = dualex::quad(&map, &dualex::QuadOptions::default())?;
+    let out = dualex::quad(&map, &dualex::Options::default())?;
     let s = &out.stats;
     println!(
         "{} quads, {} vertices, {} components, Euler characteristic {}",
-        s.quads, s.vertices, s.components, s.euler
+        s.cells, s.vertices, s.components, s.euler
     );
     println!("interior valences: {:?}", s.valence_interior);
     // the geometric stage (default: untangle inverted quads only)

@@ -9,14 +9,24 @@
 //! | a map from slices | [`tri_map_from_slices`] | [`tet_map_from_slices`] |
 //! | a map from a file | [`read_tri_map`] (`.obj`, `.ply`) | [`read_tet_map`] (`.hexex`, `.ovm`) |
 //! | extraction (welds cut meshes first) | [`quad()`] → [`QuadOutput`] | [`hex()`] → [`HexOutput`] |
-//! | typed counts | [`QuadStats`] | [`HexStats`] |
-//! | geometry: quality, untangling, smoothing | [`QuadOptions::geometry`] → [`QuadStats::geometry`] | [`HexOptions::geometry`] → [`HexStats::geometry`] |
+//! | options, typed counts (one type each for both) | [`Options`], [`Stats`] | [`Options`], [`Stats`] |
+//! | geometry: quality, untangling, smoothing | [`Options::geometry`] → [`Stats::geometry`] | the same |
+//! | the pipeline step by step (for tools: the CLI) | [`steps`] | [`steps`] |
 //! | a plain surface from a file | [`read_surface`] (`.obj`, `.ply`; polygons fanned) | — |
 //! | quads from a plain surface (no map) | [`remesh()`] → [`RemeshOutput`] | — |
 //! | a mesh to a file | [`write_quad_mesh`] (`.obj`, `.ply`, `.vtk`) | [`write_hex_mesh`] (`.mesh`, `.vtk`, `.ovm`) |
-//! | with corner map coordinates | [`write_quad_mesh_uv`] (`.obj`, `.ply`) | — ([`HexOutput::corner_uvw`] only) |
+//! | with corner map coordinates | [`write_quad_mesh_uv`] (`.obj`, `.ply`) | — ([`HexOutput`]'s `corners` only) |
 //! | a map to a file | [`write_tri_map`] (`.obj`, `.ply`) | [`write_tet_map`] (`.hexex`, `.ovm`) |
 //! | a map's `inspect` report as JSON | [`map_report_json`] | [`map_report_json`] |
+//!
+//! The layers behind the facade, re-exported whole (as lyon does) for
+//! tools that need more than the table (the CLI is one; a library user
+//! should not need them): [`map`] (the map model: welding, transitions,
+//! the `inspect` report), [`io`] (every reader and writer), [`check`] (the
+//! validity checker and topology), [`geom`] (the geometric stage's
+//! pieces: quality), and behind features [`render`] (`render`: pictures,
+//! the WebGL page), [`gen`] (`gen`: test maps), [`extrude`] (`extrude`:
+//! tet maps from 2D maps and closed surfaces).
 //!
 //! Errors are one [`Error`] enum; input errors name the file and the
 //! element (`triangle 17: …`). Nothing panics on bad input.
@@ -40,9 +50,9 @@
 //!     [3.0 * p[0], 3.0 * p[1]]
 //! }));
 //! let map = dualex::tri_map_from_slices(&positions, &triangles, &uv)?;
-//! let out = dualex::quad(&map, &dualex::QuadOptions::default())?;
+//! let out = dualex::quad(&map, &dualex::Options::default())?;
 //! assert_eq!(out.mesh.cells.len(), 9);
-//! assert_eq!((out.stats.quads, out.stats.components, out.stats.boundary_loops), (9, 1, 1));
+//! assert_eq!((out.stats.cells, out.stats.components, out.stats.boundary_components), (9, 1, 1));
 //! assert_eq!(out.stats.valence_interior.get(&4), Some(&4));
 //! // the geometric stage: nothing inverted before or after
 //! assert_eq!(out.stats.geometry.before.elements, 9);
@@ -54,10 +64,22 @@
 
 mod extract;
 mod inspect;
-mod map;
 pub mod remesh;
+mod slices;
 pub mod stats;
+pub mod steps;
 mod surface;
+
+pub use dualex_check as check;
+#[cfg(feature = "extrude")]
+pub use dualex_extrude as extrude;
+#[cfg(feature = "gen")]
+pub use dualex_gen as gen;
+pub use dualex_geom as geom;
+pub use dualex_io as io;
+pub use dualex_map as map;
+#[cfg(feature = "render")]
+pub use dualex_render as render;
 
 pub use dualex_cells::{HexMesh, QuadMesh};
 pub use dualex_geom::{
@@ -66,14 +88,14 @@ pub use dualex_geom::{
 };
 pub use dualex_io::OutputError;
 pub use dualex_map::{InputError, TetMap, TriMap};
-pub use extract::{hex, quad, HexOptions, HexOutput, QuadOptions, QuadOutput};
+pub use extract::{hex, quad, HexOutput, Options, Output, QuadOutput};
 pub use inspect::map_report_json;
-pub use map::{tet_map_from_slices, tri_map_from_slices};
 pub use remesh::{
     attempt_seed, remesh, remesh_map, remesh_staged, MapOptions, Quantization, RemeshOptions,
     RemeshOutput, RemeshStats, RemeshedMap, Staged, Target, GRID_ATTEMPTS,
 };
-pub use stats::{GridOffset, HexStats, QuadStats, Topology};
+pub use slices::{map_from_slices, tet_map_from_slices, tri_map_from_slices};
+pub use stats::{GridOffset, Repairs, Stats, Topology};
 pub use surface::{has_map_coordinates, read_surface, PlainSurface};
 
 use std::fmt;
@@ -180,7 +202,7 @@ pub fn write_quad_mesh(path: impl AsRef<Path>, mesh: &QuadMesh) -> Result<(), Er
 }
 
 /// Writes a quad mesh with the map coordinates of each quad's corners
-/// ([`QuadOutput::corner_uv`]) as `.obj` (`vt`, `f v/vt`) or `.ply` (face
+/// ([`QuadOutput`]'s `corners`) as `.obj` (`vt`, `f v/vt`) or `.ply` (face
 /// `texcoord`), chosen by extension (as `dualex quad --uv`).
 pub fn write_quad_mesh_uv(
     path: impl AsRef<Path>,

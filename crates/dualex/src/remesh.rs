@@ -43,12 +43,15 @@
 //! Invariants: the map is over the welded surface (its `positions` and
 //! `simplices`); a result is never an empty mesh.
 
-use crate::extract::{finish_staged_quads, inner_quad_options, quad_stage};
+use crate::extract::finish_staged_quads;
+use crate::steps::{self, QuadExtraction};
 use crate::{
-    Error, GeometryMode, GeometryReport, InputError, QuadOptions, QuadOutput, TriMap, SMOOTH_ROUNDS,
+    Error, GeometryMode, GeometryReport, InputError, Options, QuadOutput, TriMap, SMOOTH_ROUNDS,
 };
 use dualex_check::topology;
-pub use dualex_remesh::{Quantization, RemeshOptions as MapOptions, RemeshStats, Target};
+pub use dualex_remesh::{
+    shapes, Quantization, RemeshOptions as MapOptions, RemeshStats, Surface, Target,
+};
 
 /// Options of [`remesh()`] and [`remesh_map`].
 #[derive(Clone, Debug)]
@@ -59,14 +62,14 @@ pub struct RemeshOptions {
     pub map: MapOptions,
     /// The extraction and geometric stage (`weld` and `seed` are not
     /// read: the surface is welded by position, the seed is the map's).
-    /// Default: [`QuadOptions::default`] with smoothing
+    /// Default: [`Options::default`] with smoothing
     /// ([`GeometryMode::Smooth`] with [`SMOOTH_ROUNDS`]).
-    pub extract: QuadOptions,
+    pub extract: Options,
 }
 
 impl Default for RemeshOptions {
     fn default() -> Self {
-        let mut extract = QuadOptions::default();
+        let mut extract = Options::default();
         extract.geometry.mode = GeometryMode::Smooth(SMOOTH_ROUNDS);
         RemeshOptions {
             map: MapOptions::default(),
@@ -77,8 +80,8 @@ impl Default for RemeshOptions {
 
 impl RemeshOptions {
     /// The extraction's options (the seed is the map's).
-    fn quad_options(&self) -> QuadOptions {
-        QuadOptions {
+    fn quad_options(&self) -> Options {
+        Options {
             weld: false,
             seed: self.map.seed,
             ..self.extract.clone()
@@ -98,7 +101,7 @@ pub struct RemeshedMap {
     /// The surface's area (model units²).
     pub surface_area: f64,
     /// The extraction of `map` made while counting, if it was taken.
-    extracted: Option<dualex_quad::Extracted>,
+    extracted: Option<QuadExtraction>,
     /// The options it was made with.
     opts: RemeshOptions,
     /// The welded surface's topology.
@@ -116,12 +119,12 @@ pub fn remesh_map(
     let welded = dualex_remesh::weld::weld(positions, triangles);
     let surface = dualex_remesh::Surface::new(welded.positions, welded.triangles)
         .map_err(|e| InputError::new(e.to_string()))?;
-    let inner = inner_quad_options(&opts.quad_options());
+    let inner = opts.quad_options();
     let shape = topology::surface_shape(surface.positions.len(), &surface.triangles);
     // one extraction per map counted, in the order of `stats.counted`
-    let mut extracted: Vec<Option<dualex_quad::Extracted>> = Vec::new();
+    let mut extracted: Vec<Option<QuadExtraction>> = Vec::new();
     let mut quads_of = |m: &TriMap| {
-        let x = dualex_quad::extract_full(m, &inner).ok();
+        let x = steps::extract_quads(m, &inner, true).ok();
         let n = x.as_ref().and_then(|x| {
             let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
             let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
@@ -201,12 +204,12 @@ impl RemeshedMap {
     /// Step 4: the map's extraction (module docs); the map and the
     /// remesher's numbers come back with it.
     #[doc(hidden)]
-    pub fn extract(self) -> Result<(TriMap, RemeshStats, dualex_quad::Extracted), Error> {
+    pub fn extract(self) -> Result<(TriMap, RemeshStats, QuadExtraction), Error> {
         let x = match self.extracted {
             Some(x) => x,
             None => {
-                let inner = inner_quad_options(&self.opts.quad_options());
-                dualex_quad::extract_full(&self.map, &inner).map_err(|e| {
+                let inner = self.opts.quad_options();
+                steps::extract_quads(&self.map, &inner, true).map_err(|e| {
                     Error::Bug(format!("the extraction refuses the map remesh made: {e}"))
                 })?
             }
@@ -241,7 +244,7 @@ pub struct RemeshOutput {
 /// let mut opts = dualex::RemeshOptions::default();
 /// opts.map.target = dualex::Target::Quads(24);
 /// let out = dualex::remesh(&s.positions, &s.triangles, &opts)?;
-/// assert!(out.quads.stats.quads > 0);
+/// assert!(out.quads.stats.cells > 0);
 /// assert!(out.quads.stats.topology.matches());
 /// // bad input is an error naming the element
 /// let e = dualex::remesh(&s.positions, &[[0, 1, 99]], &opts).unwrap_err();
@@ -290,7 +293,7 @@ pub struct Staged {
     /// Its remesher's numbers, [`RemeshStats::grid_attempts`] filled.
     pub stats: RemeshStats,
     /// Its extraction, the quads moved by the geometric stage.
-    pub extracted: dualex_quad::Extracted,
+    pub extracted: QuadExtraction,
     /// The stage's report; `None` when the extraction is not a valid
     /// quad mesh (the stage did not run: the output check says why).
     pub geometry: Option<GeometryReport>,
@@ -387,7 +390,7 @@ fn attempt(
     let same_shape = report.is_valid() && topology::quad_shape(&report) == made_shape;
     let geometry = report
         .is_valid()
-        .then(|| quad_stage(&map, &mut extracted, &opts.extract.geometry));
+        .then(|| steps::quad_geometry(&map, &mut extracted, &opts.extract.geometry));
     Ok(Staged {
         map,
         stats,

@@ -53,40 +53,53 @@ impl TopologyComparison {
     }
 }
 
-/// What the extraction repaired or had to give up on (quads).
+/// What the extraction repaired or had to give up on. A field that
+/// applies to one dimension only says so; it is 0 (`false`) in the other.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct QuadRepairs {
-    /// Edges joining two singular vertices through a grid point, split.
-    pub split_edges: usize,
+pub struct Repairs {
+    /// 2D: edges joining two singular vertices through a grid point,
+    /// split; 3D: tet edges and faces split before sanitization.
+    pub split: usize,
     /// Vertices snapped to an exactly grid-preserving value.
     pub snapped_vertices: usize,
-    /// Vertices moved off the dual iso-lines.
+    /// Vertices moved off the dual iso-lines (iso-surfaces in 3D).
     pub perturbed_vertices: usize,
     /// Pleats (foldovers) removed by untangling.
     pub pleats_removed: usize,
-    /// Folded quads (valence-1 vertices) collapsed after fairing.
+    /// 2D: folded quads (valence-1 vertices) collapsed after fairing.
     pub folded_corners_collapsed: usize,
-    /// Holes closed by a face.
+    /// 2D: holes closed by a face.
     pub holes_filled: usize,
-    /// Holes that could not be closed (interior faces left open).
+    /// 2D: holes that could not be closed; 3D: interior faces left open
+    /// (cracks at singular edges). Either way, interior faces left open.
     pub holes_left_open: usize,
-    /// Triangles (90° singularities on a node) that forced a subdivision.
+    /// 2D: triangles (90° singularities on a node) that forced a
+    /// subdivision.
     pub triangles: usize,
-    /// Whether the whole mesh was subdivided once to make it all-quad.
+    /// 2D: whether the whole mesh was subdivided once to make it all-quad.
     pub subdivided: bool,
-    /// Interior valence-2 vertices dissolved.
+    /// 2D: interior valence-2 vertices dissolved; 3D: doublet chains
+    /// (valence-2 interior edges) dissolved.
     pub doublets_dissolved: usize,
 }
 
-/// The main counts of a quad extraction.
+/// The main counts of an extraction, of quads ([`quad`](crate::quad())) or
+/// of hexes ([`hex`](crate::hex())). "Simplices" are the input's
+/// triangles or tets, "cells" the output's quads or hexes, "facets" their
+/// edges or faces. A field that applies to one dimension only says so; it
+/// is 0 (empty) in the other.
 #[derive(Clone, Debug, Default)]
-pub struct QuadStats {
-    /// Input triangles.
-    pub input_triangles: usize,
-    /// Input triangles whose map is reverted (det < 0).
-    pub reverted_triangles: usize,
+pub struct Stats {
+    /// Input simplices (triangles, tets).
+    pub input_simplices: usize,
+    /// Input simplices whose map is reverted (det < 0).
+    pub reverted_simplices: usize,
+    /// 3D: input tets with a (near) zero map volume.
+    pub degenerate_simplices: usize,
     /// Singular vertices of the input map.
     pub singular_vertices: usize,
+    /// 3D: singular interior edges of the input map.
+    pub singular_edges: usize,
     /// Largest residual of a transition translation.
     pub max_transition_residual: f64,
     /// Transitions whose translation was rounded to the grid.
@@ -96,24 +109,28 @@ pub struct QuadStats {
     pub welded_vertices: usize,
     /// The grid offset used (`Half` or `Zero`, never `Auto`).
     pub grid_offset: GridOffset,
-    /// Nodes found (one per quad before repairs).
+    /// Nodes found (one per cell before repairs).
     pub nodes: usize,
-    /// Output quads.
-    pub quads: usize,
+    /// Output cells (quads, hexes).
+    pub cells: usize,
     /// Output vertices.
     pub vertices: usize,
-    /// Output boundary loops.
-    pub boundary_loops: usize,
+    /// Output boundary facets (edges of one quad, faces of one hex).
+    pub boundary_facets: usize,
+    /// Output boundary components: loops of a surface, surfaces of a
+    /// volume.
+    pub boundary_components: usize,
     /// Output connected components.
     pub components: usize,
-    /// Output Euler characteristic V − E + F.
+    /// Output Euler characteristic: V − E + F (2D), V − E + F − C (3D).
     pub euler: i64,
-    /// Interior vertex valence → number of vertices.
+    /// 2D: interior vertex valence (quads around the vertex); 3D: interior
+    /// edge valence (hexes around the edge) → how many.
     pub valence_interior: BTreeMap<usize, usize>,
-    /// Boundary vertex valence → number of vertices.
+    /// 2D: boundary vertex valence → how many; empty in 3D.
     pub valence_boundary: BTreeMap<usize, usize>,
     /// Repairs.
-    pub repairs: QuadRepairs,
+    pub repairs: Repairs,
     /// Input and output topology.
     pub topology: TopologyComparison,
     /// The geometric stage: quality (scaled Jacobian) before and after,
@@ -124,31 +141,33 @@ pub struct QuadStats {
     pub time_ms: Vec<(String, f64)>,
 }
 
-impl QuadStats {
-    pub(crate) fn new(
+impl Stats {
+    /// From a quad extraction's own report.
+    pub(crate) fn of_quads(
         s: &dualex_quad::QuadStats,
         welded: usize,
         t: TopologyComparison,
         geometry: GeometryReport,
     ) -> Self {
-        QuadStats {
-            input_triangles: s.input_triangles,
-            reverted_triangles: s.reverted_triangles,
+        Stats {
+            input_simplices: s.input_triangles,
+            reverted_simplices: s.reverted_triangles,
             singular_vertices: s.singular_vertices,
             max_transition_residual: s.max_transition_residual,
             transitions_rounded: s.snapped_transitions,
             welded_vertices: welded,
             grid_offset: s.grid_offset.offset,
             nodes: s.nodes,
-            quads: s.quads,
+            cells: s.quads,
             vertices: s.vertices,
-            boundary_loops: s.boundary_loops,
+            boundary_facets: s.unmatched_sides,
+            boundary_components: s.boundary_loops,
             components: s.components,
             euler: s.euler,
             valence_interior: s.valence_interior.clone(),
             valence_boundary: s.valence_boundary.clone(),
-            repairs: QuadRepairs {
-                split_edges: s.split_edges,
+            repairs: Repairs {
+                split: s.split_edges,
                 snapped_vertices: s.sanitize.snapped_vertices,
                 perturbed_vertices: s.sanitize.perturbed_vertices,
                 pleats_removed: s.untangle.as_ref().map_or(0, |u| u.pleats_removed),
@@ -162,87 +181,21 @@ impl QuadStats {
             topology: t,
             geometry,
             time_ms: s.time_ms.clone(),
+            ..Stats::default()
         }
     }
-}
 
-/// What the extraction repaired or had to give up on (hexes).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct HexRepairs {
-    /// Tet edges and faces split before sanitization.
-    pub split_faces: usize,
-    /// Vertices snapped to an exactly grid-preserving value.
-    pub snapped_vertices: usize,
-    /// Vertices moved off the dual iso-surfaces.
-    pub perturbed_vertices: usize,
-    /// Pleats (foldovers) removed by untangling.
-    pub pleats_removed: usize,
-    /// Interior faces left open (cracks at singular edges).
-    pub open_interior_faces: usize,
-    /// Doublet chains (valence-2 interior edges) dissolved.
-    pub doublet_chains_dissolved: usize,
-}
-
-/// The main counts of a hex extraction.
-#[derive(Clone, Debug, Default)]
-pub struct HexStats {
-    /// Input tets.
-    pub input_tets: usize,
-    /// Input tets whose map is reverted (det < 0).
-    pub reverted_tets: usize,
-    /// Input tets with a (near) zero map volume.
-    pub degenerate_tets: usize,
-    /// Singular vertices of the input map.
-    pub singular_vertices: usize,
-    /// Singular interior edges of the input map.
-    pub singular_edges: usize,
-    /// Largest residual of a transition translation.
-    pub max_transition_residual: f64,
-    /// Transitions whose translation was rounded to the grid.
-    pub transitions_rounded: usize,
-    /// Coincident boundary vertices welded before extraction.
-    pub welded_vertices: usize,
-    /// The grid offset used (`Half` or `Zero`).
-    pub grid_offset: GridOffset,
-    /// Nodes found (one per hex before repairs).
-    pub nodes: usize,
-    /// Output hexes.
-    pub hexes: usize,
-    /// Output vertices.
-    pub vertices: usize,
-    /// Output boundary faces.
-    pub boundary_faces: usize,
-    /// Output boundary surfaces.
-    pub boundary_surfaces: usize,
-    /// Output connected components.
-    pub components: usize,
-    /// Output Euler characteristic V − E + F − C.
-    pub euler: i64,
-    /// Interior edge valence (hexes around the edge) → number of edges.
-    pub edge_valence_interior: BTreeMap<usize, usize>,
-    /// Repairs.
-    pub repairs: HexRepairs,
-    /// Input and output topology.
-    pub topology: TopologyComparison,
-    /// The geometric stage: quality (scaled Jacobian) before and after,
-    /// what it moved (its time is in `geometry.time_ms`, not in
-    /// [`time_ms`](Self::time_ms)).
-    pub geometry: GeometryReport,
-    /// Wall time per stage in milliseconds, in stage order.
-    pub time_ms: Vec<(String, f64)>,
-}
-
-impl HexStats {
-    pub(crate) fn new(
+    /// From a hex extraction's own report.
+    pub(crate) fn of_hexes(
         s: &dualex_hex::HexStats,
         welded: usize,
         t: TopologyComparison,
         geometry: GeometryReport,
     ) -> Self {
-        HexStats {
-            input_tets: s.input_tets,
-            reverted_tets: s.reverted_tets,
-            degenerate_tets: s.degenerate_tets,
+        Stats {
+            input_simplices: s.input_tets,
+            reverted_simplices: s.reverted_tets,
+            degenerate_simplices: s.degenerate_tets,
             singular_vertices: s.singular_vertices,
             singular_edges: s.singular_edges,
             max_transition_residual: s.max_transition_residual,
@@ -250,24 +203,26 @@ impl HexStats {
             welded_vertices: welded,
             grid_offset: s.grid_offset.offset,
             nodes: s.nodes,
-            hexes: s.hexes,
+            cells: s.hexes,
             vertices: s.vertices,
-            boundary_faces: s.unmatched_sides,
-            boundary_surfaces: s.boundary_surfaces,
+            boundary_facets: s.unmatched_sides,
+            boundary_components: s.boundary_surfaces,
             components: s.components,
             euler: s.euler,
-            edge_valence_interior: s.edge_valence_interior.clone(),
-            repairs: HexRepairs {
-                split_faces: s.split_faces,
+            valence_interior: s.edge_valence_interior.clone(),
+            repairs: Repairs {
+                split: s.split_faces,
                 snapped_vertices: s.sanitize.snapped_vertices,
                 perturbed_vertices: s.sanitize.perturbed_vertices,
                 pleats_removed: s.untangle.as_ref().map_or(0, |u| u.pleats_removed),
-                open_interior_faces: s.open_interior_faces,
-                doublet_chains_dissolved: s.doublets.dissolved,
+                holes_left_open: s.open_interior_faces,
+                doublets_dissolved: s.doublets.dissolved,
+                ..Repairs::default()
             },
             topology: t,
             geometry,
             time_ms: s.time_ms.clone(),
+            ..Stats::default()
         }
     }
 }

@@ -46,12 +46,12 @@ fn square(n: u32, k: f64, cut: bool) -> TriMap {
 #[test]
 fn cut_meshes_are_welded_by_default() {
     let map = square(4, 1.0, true);
-    let out = quad(&map, &QuadOptions::default()).unwrap();
+    let out = quad(&map, &Options::default()).unwrap();
     assert_eq!(out.stats.welded_vertices, 5);
-    assert_eq!(out.stats.quads, 16);
+    assert_eq!(out.stats.cells, 16);
     assert_eq!(out.stats.components, 1);
     assert!(out.stats.topology.matches());
-    let apart = QuadOptions {
+    let apart = Options {
         weld: false,
         ..Default::default()
     };
@@ -63,16 +63,16 @@ fn cut_meshes_are_welded_by_default() {
 
 #[test]
 fn counts_are_the_meshes() {
-    let out = quad(&square(2, 2.0, false), &QuadOptions::default()).unwrap();
+    let out = quad(&square(2, 2.0, false), &Options::default()).unwrap();
     let s = &out.stats;
     assert_eq!(
-        (s.quads, s.vertices, s.euler, s.boundary_loops),
+        (s.cells, s.vertices, s.euler, s.boundary_components),
         (16, 25, 1, 1)
     );
-    assert_eq!(s.quads, out.mesh.cells.len());
+    assert_eq!(s.cells, out.mesh.cells.len());
     assert_eq!(s.vertices, out.mesh.positions.len());
     assert_eq!(s.valence_interior.get(&4), Some(&9));
-    assert_eq!(s.input_triangles, 8);
+    assert_eq!(s.input_simplices, 8);
     assert_eq!(s.grid_offset, GridOffset::Half);
 }
 
@@ -82,7 +82,7 @@ fn bad_maps_are_errors_not_panics() {
     let p = [[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
     let flat = [[[0.5, 0.5]; 3]];
     let map = tri_map_from_slices(&p, &[[0, 1, 2]], &flat).unwrap();
-    let r = quad(&map, &QuadOptions::default());
+    let r = quad(&map, &Options::default());
     if let Ok(out) = &r {
         assert!(out.mesh.cells.is_empty());
     }
@@ -98,16 +98,16 @@ fn bad_maps_are_errors_not_panics() {
 fn meshes_are_written_and_read_back() {
     let dir = std::env::temp_dir().join(format!("dualex-facade-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let out = quad(&square(2, 1.0, false), &QuadOptions::default()).unwrap();
+    let out = quad(&square(2, 1.0, false), &Options::default()).unwrap();
     let p = dir.join("q.obj");
     let written = write_quad_mesh(&p, &out.mesh);
     let back = dualex_io::read_polygon_mesh(&p);
     let bad = write_quad_mesh(dir.join("q.stl"), &out.mesh);
     let uv = dir.join("uv.obj");
-    let written_uv = write_quad_mesh_uv(&uv, &out.mesh, &out.corner_uv);
+    let written_uv = write_quad_mesh_uv(&uv, &out.mesh, &out.corners);
     let back_uv = dualex_io::read_polygon_mesh(&uv);
     let text_uv = std::fs::read_to_string(&uv).unwrap_or_default();
-    let bad_uv = write_quad_mesh_uv(dir.join("q.vtk"), &out.mesh, &out.corner_uv);
+    let bad_uv = write_quad_mesh_uv(dir.join("q.vtk"), &out.mesh, &out.corners);
     let _ = std::fs::remove_dir_all(&dir);
     written.unwrap();
     assert_eq!(back.unwrap().faces.len(), 4);
@@ -133,7 +133,7 @@ fn each_quad_names_the_triangle_holding_its_node() {
     // identity map scaled by 3: the node of a quad is its centre
     for cut in [false, true] {
         let map = square(4, 3.0, cut);
-        let out = quad(&map, &QuadOptions::default()).unwrap();
+        let out = quad(&map, &Options::default()).unwrap();
         assert_eq!(out.sources.len(), out.mesh.cells.len());
         for (q, s) in out.mesh.cells.iter().zip(&out.sources) {
             let c = q.map(|v| out.mesh.positions[v as usize]);
@@ -146,8 +146,8 @@ fn each_quad_names_the_triangle_holding_its_node() {
         }
         // the map is 3 × the position (up to sanitization's moves of map
         // vertices on the grid's diagonals), the corners exact integers
-        assert_eq!(out.corner_uv.len(), out.mesh.cells.len());
-        for (q, uv) in out.mesh.cells.iter().zip(&out.corner_uv) {
+        assert_eq!(out.corners.len(), out.mesh.cells.len());
+        for (q, uv) in out.mesh.cells.iter().zip(&out.corners) {
             let uv = uv.expect("corners");
             for (&v, t) in q.iter().zip(uv) {
                 let p = out.mesh.positions[v as usize];
@@ -197,8 +197,8 @@ fn each_hex_names_the_tet_holding_its_node() {
         .map(|t| t.map(|v| positions[v as usize].map(|x| 2.0 * x)))
         .collect();
     let map = tet_map_from_slices(&positions, &tets, &uvw).unwrap();
-    let out = hex(&map, &HexOptions::default()).unwrap();
-    assert_eq!(out.stats.hexes, 64);
+    let out = hex(&map, &Options::default()).unwrap();
+    assert_eq!(out.stats.cells, 64);
     assert_eq!(out.sources.len(), 64);
     let det = |a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]| {
         let (u, v, w) = (
@@ -210,6 +210,7 @@ fn each_hex_names_the_tet_holding_its_node() {
             + u[2] * (v[0] * w[1] - v[1] * w[0])
     };
     for (h, &s) in out.mesh.cells.iter().zip(&out.sources) {
+        let s = s.expect("every hex has a source tet");
         let p = [0, 1, 2].map(|k| {
             h.iter()
                 .map(|&v| out.mesh.positions[v as usize][k])
@@ -227,8 +228,8 @@ fn each_hex_names_the_tet_holding_its_node() {
     }
     // the map is 2 × the position (up to sanitization's moves): each
     // corner's uvw, an exact integer
-    assert_eq!(out.corner_uvw.len(), 64);
-    for (h, uvw) in out.mesh.cells.iter().zip(&out.corner_uvw) {
+    assert_eq!(out.corners.len(), 64);
+    for (h, uvw) in out.mesh.cells.iter().zip(&out.corners) {
         let uvw = uvw.expect("corners");
         for (&v, t) in h.iter().zip(uvw) {
             let p = out.mesh.positions[v as usize];

@@ -49,8 +49,8 @@ fn messy_disk() -> TriMap {
 #[test]
 fn quads_the_default_untangles_what_off_leaves_inverted() {
     let map = messy_disk();
-    let auto = quad(&map, &QuadOptions::default()).unwrap();
-    let off_opts = QuadOptions {
+    let auto = quad(&map, &Options::default()).unwrap();
+    let off_opts = Options {
         geometry: geometry(GeometryMode::Off),
         ..Default::default()
     };
@@ -86,14 +86,14 @@ fn quads_the_default_untangles_what_off_leaves_inverted() {
 #[test]
 fn quads_strict_refuses_inverted_quads_left() {
     let map = messy_disk();
-    let strict_off = QuadOptions {
+    let strict_off = Options {
         strict: true,
         geometry: geometry(GeometryMode::Off),
         ..Default::default()
     };
     let off = quad(
         &map,
-        &QuadOptions {
+        &Options {
             strict: false,
             ..strict_off.clone()
         },
@@ -115,7 +115,7 @@ fn quads_strict_refuses_inverted_quads_left() {
         "1 inverted element (scaled Jacobian ≤ 0) remains after the geometric stage"
     );
     // untangled by default: strict passes
-    let strict = QuadOptions {
+    let strict = Options {
         strict: true,
         ..Default::default()
     };
@@ -126,7 +126,7 @@ fn quads_strict_refuses_inverted_quads_left() {
 #[test]
 fn quads_smoothing_raises_the_low_percentile() {
     let map = messy_disk();
-    let smooth = QuadOptions {
+    let smooth = Options {
         geometry: geometry(GeometryMode::Smooth(5)),
         ..Default::default()
     };
@@ -157,7 +157,7 @@ fn a_clean_map_is_left_as_placed() {
         .map(|s: &[u32; 3]| s.map(|v| [2.0 * p[v as usize][0], 2.0 * p[v as usize][1]]))
         .collect();
     let map = tri_map_from_slices(&p, &t, &uv).unwrap();
-    let out = quad(&map, &QuadOptions::default()).unwrap();
+    let out = quad(&map, &Options::default()).unwrap();
     let g = &out.stats.geometry;
     assert_eq!(g.before.elements, 64);
     assert_eq!(
@@ -172,8 +172,8 @@ fn a_clean_map_is_left_as_placed() {
 fn hexes_the_default_untangles_what_off_leaves_inverted() {
     // 96 hexes around an interior axis of valence 6
     let map = messy_tet_map("cylinder6", 2, 1);
-    let auto = hex(&map, &HexOptions::default()).unwrap();
-    let off_opts = HexOptions {
+    let auto = hex(&map, &Options::default()).unwrap();
+    let off_opts = Options {
         geometry: geometry(GeometryMode::Off),
         ..Default::default()
     };
@@ -181,12 +181,12 @@ fn hexes_the_default_untangles_what_off_leaves_inverted() {
     let (a, o) = (&auto.stats.geometry, &off.stats.geometry);
     assert_eq!(auto.mesh.cells, off.mesh.cells);
     assert_eq!(a.before, o.before);
-    assert_eq!(a.before.elements, auto.stats.hexes);
+    assert_eq!(a.before.elements, auto.stats.cells);
     assert!(o.before.inverted > 0, "{o:?}");
     assert_eq!((o.after, o.moved_vertices), (o.before, 0));
     assert_eq!(a.after.inverted, 0, "{a:?}");
     assert!(a.moved_vertices > 0);
-    let strict_off = HexOptions {
+    let strict_off = Options {
         strict: true,
         ..off_opts
     };

@@ -17,24 +17,24 @@ fn data(rel: &str) -> PathBuf {
 )]
 fn the_dragon_is_welded_by_default() {
     let map = dualex::read_tri_map(data("directional/dragon-param-full-seamless.obj")).unwrap();
-    let out = dualex::quad(&map, &dualex::QuadOptions::default()).unwrap();
+    let out = dualex::quad(&map, &dualex::Options::default()).unwrap();
     let s = &out.stats;
     assert!(s.welded_vertices > 0);
     // 5077 quads whatever the order of the triangles (fairing breaks its
     // ties without node numbers; 5084 before, other orders gave 5072 …
     // 5084), and L × 5077 hexes from the map extruded (tests/extrude.rs)
     assert_eq!(
-        (s.quads, s.components, s.euler, s.boundary_loops),
+        (s.cells, s.components, s.euler, s.boundary_components),
         (5077, 1, 2, 0)
     );
     assert!(s.topology.matches());
     // split edges (knight, dragon) keep the input's triangle numbers
-    assert_eq!(out.sources.len(), s.quads);
+    assert_eq!(out.sources.len(), s.cells);
     assert!(out
         .sources
         .iter()
         .all(|t| t.is_some_and(|t| (t as usize) < map.len())));
-    let apart = dualex::QuadOptions {
+    let apart = dualex::Options {
         weld: false,
         ..Default::default()
     };
@@ -53,8 +53,8 @@ fn the_dragon_is_welded_by_default() {
 )]
 fn hexex_hand_gives_the_reference_count() {
     let map = dualex::read_tet_map(data("hexex/hand_q.hexex")).unwrap();
-    let out = dualex::hex(&map, &dualex::HexOptions::default()).unwrap();
-    assert_eq!(out.stats.hexes, 956);
+    let out = dualex::hex(&map, &dualex::Options::default()).unwrap();
+    assert_eq!(out.stats.cells, 956);
     assert_eq!(out.stats.components, 1);
 }
 
@@ -65,10 +65,10 @@ fn hexex_hand_gives_the_reference_count() {
 )]
 fn repaired_quads_name_their_parents_triangle() {
     let map = dualex::read_tri_map(data("directional/horsers-param-full-seamless.obj")).unwrap();
-    let out = dualex::quad(&map, &dualex::QuadOptions::default()).unwrap();
+    let out = dualex::quad(&map, &dualex::Options::default()).unwrap();
     // its faces that quads cannot represent are repaired locally
     assert!(!out.stats.repairs.subdivided);
-    assert_eq!(out.sources.len(), out.stats.quads);
+    assert_eq!(out.sources.len(), out.stats.cells);
     let known = out.sources.iter().flatten().count();
     assert!(out
         .sources
@@ -78,7 +78,7 @@ fn repaired_quads_name_their_parents_triangle() {
     // only the faces closing holes (a k-gon, plus at most one point of a
     // repair path: ⌈k/2⌉ quads) have no node
     let holes = out.stats.repairs.holes_filled;
-    let unknown = out.stats.quads - known;
+    let unknown = out.stats.cells - known;
     assert!(
         holes > 0 && unknown >= holes && unknown <= 6 * holes,
         "{unknown} quads without a node, {holes} holes"

@@ -22,9 +22,9 @@
 //! is left (each pass splits at most one face per tet).
 
 use crate::local::LocalMap;
-use dualex_segment::simplex::face_corners;
 use dualex_map::{Stars, TetMap};
 use dualex_segment::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
+use dualex_segment::simplex::face_corners;
 use std::collections::HashSet;
 
 /// The free axis of singular vertex `v` in the chart of tet `s` (`None`:

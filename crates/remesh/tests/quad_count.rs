@@ -15,7 +15,7 @@ fn count(name: &str, n: usize, seed: u64, quantization: Quantization) -> (usize,
         ..RemeshOptions::default()
     };
     let made = remesh(&s, &opts).unwrap_or_else(|e| panic!("{name}, {n}, seed {seed}: {e}"));
-    let out = dualex::quad(&made.map, &dualex::QuadOptions::default())
+    let out = dualex::quad(&made.map, &dualex::Options::default())
         .unwrap_or_else(|e| panic!("{name}, {n}, seed {seed}: extraction: {e}"));
     (out.mesh.cells.len(), made.stats.map_area)
 }
@@ -67,7 +67,7 @@ fn map_area_is_fitted_with_singularities_off_the_grid() {
 #[test]
 fn quad_count_within_ten_percent_off_the_grid_with_the_extractions_count() {
     let quads_of = |map: &dualex_map::TriMap| {
-        dualex::quad(map, &dualex::QuadOptions::default())
+        dualex::quad(map, &dualex::Options::default())
             .ok()
             .map(|out| out.mesh.cells.len())
     };

@@ -1,7 +1,9 @@
 """Type stubs of the extension module (re-exported by ``dualex``)."""
 
 import os
-from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
+from typing import Any, Dict, Literal, Optional, Protocol, Tuple, TypedDict, Union, overload
+
+from typing_extensions import Unpack
 
 import numpy as np
 import numpy.typing as npt
@@ -22,141 +24,92 @@ _MeshSources = Tuple[
     npt.NDArray[np.int64],
 ]
 
-@overload
-def quad(
-    V: _Floats,
-    F: _Ints,
-    UV: _Floats,
-    *,
-    weld: bool = True,
-    fairing: bool = True,
-    round_transitions: bool = False,
-    grid_offset: _Offset = "auto",
-    seed: int = 1,
-    strict: bool = False,
-    untangle: _Untangle = "auto",
-    smooth: Union[None, bool, int] = None,
-    return_sources: Literal[False] = False,
-    return_uv: Literal[False] = False,
-) -> _Mesh: ...
-@overload
-def quad(
-    V: _Floats,
-    F: _Ints,
-    UV: _Floats,
-    *,
-    weld: bool = True,
-    fairing: bool = True,
-    round_transitions: bool = False,
-    grid_offset: _Offset = "auto",
-    seed: int = 1,
-    strict: bool = False,
-    untangle: _Untangle = "auto",
-    smooth: Union[None, bool, int] = None,
-    return_sources: Literal[True],
-    return_uv: Literal[False] = False,
-) -> _MeshSources: ...
-@overload
-def quad(
-    V: _Floats,
-    F: _Ints,
-    UV: _Floats,
-    *,
-    weld: bool = True,
-    fairing: bool = True,
-    round_transitions: bool = False,
-    grid_offset: _Offset = "auto",
-    seed: int = 1,
-    strict: bool = False,
-    untangle: _Untangle = "auto",
-    smooth: Union[None, bool, int] = None,
-    return_sources: bool = False,
-    return_uv: bool,
-) -> Tuple[Any, ...]:
-    """Extracts the all-quad mesh of a triangle mesh with a 2D map.
+class _Options(TypedDict, total=False):
+    """The keyword options of `quad` and `hex`, one set for both (the
+    library's one `Options`): weld=True (cut meshes welded first),
+    fairing=True (index fairing; hexes: on columns, extruded maps),
+    round_transitions=False, grid_offset="auto", seed=1, strict=False,
+    untangle="auto", smooth=None."""
 
-    V: (n, 3) positions; F: (m, 3) triangles; UV: (m, 3, 2) map
-    coordinates per triangle corner. Returns (positions (k, 3), quads
-    (q, 4), stats); with return_sources=True also sources (q,) int64: the
-    triangle (row of F) holding each quad's node, -1 for a quad that
-    closes a hole. Raises ValueError on bad arrays or a refused map.
+    weld: bool
+    fairing: bool
+    round_transitions: bool
+    grid_offset: _Offset
+    seed: int
+    strict: bool
+    untangle: _Untangle
+    smooth: Union[None, bool, int]
+
+class _Extraction(Protocol):
+    """`quad(V, F, UV, **options)` and `hex(V, T, UVW, **options)`: the
+    map's positions (n, 3), simplices ((m, 3) triangles or (m, 4) tets)
+    and per-corner map coordinates ((m, 3, 2) or (m, 4, 3)). Returns
+    (positions (k, 3), cells ((q, 4) quads or (h, 8) hexes in VTK order),
+    stats); with return_sources=True also sources (int64, one per cell):
+    the simplex (row of F / T) holding each cell's node, -1 for a quad that
+    closes a hole; with return_uv=True also the map coordinates of each
+    cell's corners ((q, 4, 2) / (h, 8, 3), the node's chart, node ± ½; NaN
+    for a cell made by a repair), after sources when both are asked.
+    Raises ValueError on bad arrays or a refused map.
 
     The geometric stage follows the extraction (as the CLI's):
     untangle="auto" puts boundary vertices on the input's boundary and
-    untangles inverted quads (scaled Jacobian <= 0), moving only the
+    untangles inverted elements (scaled Jacobian <= 0), moving only the
     vertices near them; untangle="off" keeps the map's positions;
-    smooth=N optimises every quad in at most N rounds (True: the default
-    rounds, 10). stats["geometry"] is the CLI's "geometry" section: mode,
-    before / after ({elements, inverted, degenerate, min, p5, median} of
-    the scaled Jacobian), moved_vertices, max_move, boundary, ... With
-    strict=True, inverted quads left are a ValueError. A bad untangle or
-    smooth value is a ValueError naming the argument.
-
-    With return_uv=True also the map coordinates of each cell's corners
-    ((q, 4, 2) / (h, 8, 3), the node's chart, node ± ½; NaN for a cell made
-    by a repair), after sources when both are asked.
+    smooth=N optimises every element in at most N rounds (True: the
+    default rounds, 10). stats["geometry"] is the CLI's "geometry"
+    section: mode, before / after ({elements, inverted, degenerate, min,
+    p5, median} of the scaled Jacobian), moved_vertices, max_move,
+    boundary, ... With strict=True, inverted elements left are a
+    ValueError. A bad untangle or smooth value is a ValueError naming the
+    argument.
     """
 
-@overload
-def hex(
-    V: _Floats,
-    T: _Ints,
-    UVW: _Floats,
-    *,
-    weld: bool = True,
-    round_transitions: bool = False,
-    grid_offset: _Offset = "auto",
-    seed: int = 1,
-    strict: bool = False,
-    untangle: _Untangle = "auto",
-    smooth: Union[None, bool, int] = None,
-    return_sources: Literal[False] = False,
-    return_uv: Literal[False] = False,
-) -> _Mesh: ...
-@overload
-def hex(
-    V: _Floats,
-    T: _Ints,
-    UVW: _Floats,
-    *,
-    weld: bool = True,
-    round_transitions: bool = False,
-    grid_offset: _Offset = "auto",
-    seed: int = 1,
-    strict: bool = False,
-    untangle: _Untangle = "auto",
-    smooth: Union[None, bool, int] = None,
-    return_sources: Literal[True],
-    return_uv: Literal[False] = False,
-) -> _MeshSources: ...
-@overload
-def hex(
-    V: _Floats,
-    T: _Ints,
-    UVW: _Floats,
-    *,
-    weld: bool = True,
-    round_transitions: bool = False,
-    grid_offset: _Offset = "auto",
-    seed: int = 1,
-    strict: bool = False,
-    untangle: _Untangle = "auto",
-    smooth: Union[None, bool, int] = None,
-    return_sources: bool = False,
-    return_uv: bool,
-) -> Tuple[Any, ...]:
-    """Extracts the all-hex mesh of a tet mesh with a 3D map.
+    @overload
+    def __call__(
+        self,
+        V: _Floats,
+        simplices: _Ints,
+        coords: _Floats,
+        /,
+        *,
+        return_sources: Literal[False] = False,
+        return_uv: Literal[False] = False,
+        **options: Unpack[_Options],
+    ) -> _Mesh: ...
+    @overload
+    def __call__(
+        self,
+        V: _Floats,
+        simplices: _Ints,
+        coords: _Floats,
+        /,
+        *,
+        return_sources: Literal[True],
+        return_uv: Literal[False] = False,
+        **options: Unpack[_Options],
+    ) -> _MeshSources: ...
+    @overload
+    def __call__(
+        self,
+        V: _Floats,
+        simplices: _Ints,
+        coords: _Floats,
+        /,
+        *,
+        return_sources: bool = False,
+        return_uv: bool,
+        **options: Unpack[_Options],
+    ) -> Tuple[Any, ...]: ...
 
-    V: (n, 3) positions; T: (m, 4) tets; UVW: (m, 4, 3) map coordinates per
-    tet corner. Returns (positions (k, 3), hexes (h, 8) in VTK order,
-    stats); with return_sources=True also sources (h,) int64: the tet (row
-    of T) holding each hex's node. Raises ValueError on bad arrays or a
-    refused map. untangle, smooth, strict and stats["geometry"] as for
-    quad (boundary vertices onto the tets' boundary surface).
-    With return_uv=True also the map coordinates of each cell's corners
-    ((q, 4, 2) / (h, 8, 3), the node's chart, node ± ½; NaN for a cell made
-    by a repair), after sources when both are asked.
-    """
+quad: _Extraction
+"""Extracts the all-quad mesh of a triangle mesh with a 2D map:
+quad(V, F, UV, **options) (see `_Extraction`)."""
+
+hex: _Extraction
+"""Extracts the all-hex mesh of a tet mesh with a 3D map:
+hex(V, T, UVW, **options) (see `_Extraction`; boundary vertices onto the
+tets' boundary surface)."""
 
 def read(
     path: _Path,

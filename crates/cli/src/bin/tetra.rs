@@ -31,7 +31,7 @@ enum TetraError {
     /// SURFACE or `-o` missing.
     Usage,
     /// The surface could not be read.
-    Input(dualex_map::InputError),
+    Input(dualex::map::InputError),
     /// A face of the surface is not a triangle.
     Face {
         /// The surface.
@@ -46,10 +46,10 @@ enum TetraError {
         /// The surface.
         file: String,
         /// Why.
-        error: dualex_extrude::ExtrudeError,
+        error: dualex::extrude::ExtrudeError,
     },
     /// The map could not be written.
-    Output(dualex_io::OutputError),
+    Output(dualex::io::OutputError),
 }
 
 impl std::fmt::Display for TetraError {
@@ -76,12 +76,12 @@ impl std::fmt::Display for TetraError {
 
 /// The command line read: SURFACE, `-o`, the map's options; `None` for
 /// `--help`.
-type Parsed = Option<(PathBuf, PathBuf, dualex_extrude::volume::IdentityOptions)>;
+type Parsed = Option<(PathBuf, PathBuf, dualex::extrude::volume::IdentityOptions)>;
 
 /// Reads the command line (module docs).
 fn parse(argv: &[String]) -> Result<Parsed, TetraError> {
     let (mut input, mut output) = (None::<PathBuf>, None::<PathBuf>);
-    let mut opts = dualex_extrude::volume::IdentityOptions {
+    let mut opts = dualex::extrude::volume::IdentityOptions {
         scale: 1.0,
         offset: [0.0; 3],
         noise: 0.0,
@@ -126,7 +126,7 @@ fn run(argv: &[String]) -> Result<String, TetraError> {
         return Ok(USAGE.into());
     };
     let name = input.display().to_string();
-    let poly = dualex_io::read_polygon_mesh(&input).map_err(TetraError::Input)?;
+    let poly = dualex::io::read_polygon_mesh(&input).map_err(TetraError::Input)?;
     let mut tris = Vec::with_capacity(poly.faces.len());
     for (i, f) in poly.faces.iter().enumerate() {
         let [a, b, c] = f[..] else {
@@ -140,12 +140,12 @@ fn run(argv: &[String]) -> Result<String, TetraError> {
     }
     let program: PathBuf = std::env::var_os("DUALEX_TETGEN").map_or("tetgen".into(), Into::into);
     let map =
-        dualex_extrude::volume::tetrahedralize_identity(&poly.positions, &tris, &opts, &program)
+        dualex::extrude::volume::tetrahedralize_identity(&poly.positions, &tris, &opts, &program)
             .map_err(|error| TetraError::Extrude {
-                file: name.clone(),
-                error,
-            })?;
-    dualex_io::write_tet_map(&output, &map).map_err(TetraError::Output)?;
+            file: name.clone(),
+            error,
+        })?;
+    dualex::io::write_tet_map(&output, &map).map_err(TetraError::Output)?;
     Ok(format!(
         "{name}: {} tets, {} vertices -> {}",
         map.len(),

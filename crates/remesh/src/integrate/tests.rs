@@ -50,7 +50,7 @@ fn reverted(map: &TriMap) -> usize {
 /// Extracts with the real `dualex quad`; returns (quads, vertex valences,
 /// Euler characteristic of the quad mesh).
 fn extract(map: &TriMap) -> (usize, Vec<usize>, i64) {
-    let out = dualex::quad(map, &dualex::QuadOptions::default()).expect("extraction");
+    let out = dualex::quad(map, &dualex::Options::default()).expect("extraction");
     let m = &out.mesh;
     let mut valence = vec![0; m.positions.len()];
     let mut edges = std::collections::HashSet::new();
@@ -495,7 +495,7 @@ fn noisy_field_with_many_singularities() {
                 assert!(report.rotated_seams > 0);
                 assert_grid_transitions(&s, &map);
                 // messy, but a map the extraction takes
-                dualex::quad(&map, &dualex::QuadOptions::default()).expect("extraction");
+                dualex::quad(&map, &dualex::Options::default()).expect("extraction");
             }
         }
     }

@@ -35,7 +35,7 @@ pub fn tri_map_from_slices(
     triangles: &[[u32; 3]],
     uv: &[[[f64; 2]; 3]],
 ) -> Result<TriMap, Error> {
-    from_slices(positions, triangles, uv)
+    map_from_slices(positions, triangles, uv)
 }
 
 /// A tet mesh with a 3D map, from slices: `uvw[t][c]` is the map
@@ -47,10 +47,13 @@ pub fn tet_map_from_slices(
     tets: &[[u32; 4]],
     uvw: &[[[f64; 3]; 4]],
 ) -> Result<TetMap, Error> {
-    from_slices(positions, tets, uvw)
+    map_from_slices(positions, tets, uvw)
 }
 
-fn from_slices<const N: usize, const D: usize>(
+/// [`tri_map_from_slices`] and [`tet_map_from_slices`] in one, generic
+/// over the simplex (`N` corners) and the map's dimension `D`, for code
+/// written once for both (the C API).
+pub fn map_from_slices<const N: usize, const D: usize>(
     positions: &[[f64; 3]],
     simplices: &[[u32; N]],
     coords: &[[[f64; D]; N]],
