@@ -43,21 +43,12 @@ fn quad_grid(n: usize) -> Grid<4, 3> {
     (p, q, t)
 }
 
-/// The unit cube's surface (the boundary of 6 tets: 12 triangles, 12
-/// feature edges), edges of more than `feature_deg` being features.
+/// The unit cube's surface (the boundary of its 6 Kuhn tets, as the
+/// generator's one-cell block: 12 triangles, 12 feature edges), edges of
+/// more than `feature_deg` being features.
 pub(crate) fn unit_cube_surface(feature_deg: f64) -> crate::Reference {
-    let p: Vec<[f64; 3]> = (0..8)
-        .map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2 & 1) as f64])
-        .collect();
-    let tets = [
-        [0, 1, 3, 7],
-        [0, 3, 2, 7],
-        [0, 2, 6, 7],
-        [0, 6, 4, 7],
-        [0, 4, 5, 7],
-        [0, 5, 1, 7],
-    ];
-    crate::Reference::volume_boundary(&p, &tets, feature_deg)
+    let (cube, _) = dualex_gen::block::block(1, 1, 1, 0.0, 1.0);
+    crate::Reference::volume_boundary(&cube.positions, &cube.simplices, feature_deg)
 }
 
 /// An n³ hex grid on [0, n]³ and its 6 tets per hex.
