@@ -29,7 +29,7 @@
 //! that maps that do not care extract exactly as before. A vertex is read
 //! at its reference corner (first star entry) in that simplex's chart.
 
-use crate::local::{local_transition, simplex_offset, LocalMap};
+use crate::local::{local_transition, simplex_offsets, LocalMap};
 use crate::singular_snap::{singular_corners, snap_singular, Chart, SingularSnap, Snapped};
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
 use std::collections::HashMap;
@@ -214,15 +214,22 @@ pub fn local_map<const N: usize, const D: usize>(
     opt: GridOffset,
     chosen: Option<OffsetChoice>,
 ) -> (LocalMap<N, D>, SingularSnap, OffsetChoice) {
+    let offset = simplex_offsets(map);
     let (choice, chart, snapped) = match (chosen, opt) {
         (Some(c), _) => (c, c.offset, None),
         (None, GridOffset::Auto) => {
-            let (c, snapped) = choose_in_half(map, topo, &trans, stars);
+            let chart = HalfChart {
+                map,
+                topo,
+                trans: &trans,
+                offset: &offset,
+            };
+            let (c, snapped) = choose_in_half(&chart, map.coords.len(), topo, stars);
             (c, GridOffset::Half, Some(snapped))
         }
         (None, given_offset) => (given(given_offset), given_offset, None),
     };
-    let mut local = LocalMap::with_grid_in(map, topo, trans, choice.offset, chart);
+    let mut local = LocalMap::with_grid_in(map, topo, trans, offset, choice.offset, chart);
     let snap = match snapped {
         Some((rep, corners)) => {
             let back = chart.shift() - choice.offset.shift();
@@ -251,19 +258,25 @@ pub fn choose_snapped<const N: usize, const D: usize>(
     if opt != GridOffset::Auto {
         return given(opt);
     }
-    choose_in_half(map, topo, trans, stars).0
+    let offset = simplex_offsets(map);
+    let chart = HalfChart {
+        map,
+        topo,
+        trans,
+        offset: &offset,
+    };
+    choose_in_half(&chart, map.coords.len(), topo, stars).0
 }
 
 /// `Auto` decided on the chart `Half` ([`HalfChart`]) with the singular
 /// vertices snapped; also returns the snapped corners.
 fn choose_in_half<const N: usize, const D: usize>(
-    map: &SimplexMap<N, D>,
+    chart: &HalfChart<'_, N, D>,
+    len: usize,
     topo: &Topology<N>,
-    trans: &Transitions<N, D>,
     stars: &Stars<D>,
 ) -> (OffsetChoice, Snapped<D>) {
-    let chart = HalfChart { map, topo, trans };
-    let (rep, corners) = singular_corners(&chart, topo, stars);
+    let (rep, corners) = singular_corners(chart, topo, stars);
     // the snapped corners, by (simplex, corner)
     let mut at: HashMap<(u32, u8), [f64; D]> = HashMap::new();
     for (v, xs) in &corners {
@@ -277,7 +290,7 @@ fn choose_in_half<const N: usize, const D: usize>(
             None => chart.corner(s, c),
         })
     };
-    let counts = count_in(coords_of, map.coords.len(), 0.5, topo, stars);
+    let counts = count_in(coords_of, len, 0.5, topo, stars);
     (decide(counts), (rep, corners))
 }
 
@@ -288,11 +301,13 @@ struct HalfChart<'a, const N: usize, const D: usize> {
     map: &'a SimplexMap<N, D>,
     topo: &'a Topology<N>,
     trans: &'a Transitions<N, D>,
+    /// [`crate::local::simplex_offset`] of every simplex.
+    offset: &'a [[i64; D]],
 }
 
 impl<const N: usize, const D: usize> Chart<N, D> for HalfChart<'_, N, D> {
     fn corner(&self, s: usize, c: usize) -> [f64; D] {
-        let o = simplex_offset(&self.map.coords[s]);
+        let o = self.offset[s];
         let p = self.map.coords[s][c];
         std::array::from_fn(|k| (p[k] - o[k] as f64) + 0.5)
     }
@@ -302,9 +317,10 @@ impl<const N: usize, const D: usize> Chart<N, D> for HalfChart<'_, N, D> {
         let Some((n, _)) = self.topo.neighbour(s, f) else {
             return (r, t);
         };
-        let os = simplex_offset(&self.map.coords[s]);
-        let on = simplex_offset(&self.map.coords[n]);
-        (r, local_transition(&r, &t, &os, &on, 0.5))
+        (
+            r,
+            local_transition(&r, &t, &self.offset[s], &self.offset[n], 0.5),
+        )
     }
 }
 

@@ -45,6 +45,11 @@ pub fn simplex_offset<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> [i64
     c[0].map(|x| dualex_util::round::floor(x) as i64)
 }
 
+/// [`simplex_offset`] of every simplex of `map`, in order.
+pub fn simplex_offsets<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> Vec<[i64; D]> {
+    map.coords.par_iter().map(simplex_offset).collect()
+}
+
 /// The local translation across a facet whose input transition is
 /// `(r, t)`, from a simplex with offset `os` to one with offset `on`,
 /// under the shift `h` (½ or 0).
@@ -87,7 +92,8 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
         trans: Transitions<N, D>,
         grid: GridOffset,
     ) -> Self {
-        Self::with_grid_in(map, topo, trans, grid, grid)
+        let offset = simplex_offsets(map);
+        Self::with_grid_in(map, topo, trans, offset, grid, grid)
     }
 
     /// [`Self::with_grid`] whose coordinates are rounded in the chart of
@@ -95,11 +101,13 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
     /// `chart` and `h` that of `grid` (the same as `(x − offset) + h` when
     /// `chart == grid`). [`crate::grid_offset::local_map`] builds the
     /// `Zero` an `Auto` choice gives in the chart `Half` the choice was
-    /// made in.
+    /// made in. `offset`: [`simplex_offsets`] of `map` (computed once by
+    /// the caller, which also reads them to make the choice).
     pub fn with_grid_in(
         map: &SimplexMap<N, D>,
         topo: &Topology<N>,
         trans: Transitions<N, D>,
+        offset: Vec<[i64; D]>,
         grid: GridOffset,
         chart: GridOffset,
     ) -> Self {
@@ -109,7 +117,6 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
             GridOffset::Zero => GridOffset::Zero,
             GridOffset::Auto | GridOffset::Half => GridOffset::Half,
         };
-        let offset: Vec<[i64; D]> = map.coords.par_iter().map(simplex_offset).collect();
         let coords = map
             .coords
             .par_iter()
