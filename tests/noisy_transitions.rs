@@ -76,8 +76,8 @@ fn hex(map: &dualex_map::TetMap) -> Outcome {
             let holes = j["output"]["holes"].as_u64().unwrap_or(u64::MAX);
             (
                 ok,
-                st.snapped_transitions,
-                st.max_transition_residual,
+                st.segment.snapped_transitions,
+                st.segment.max_transition_residual,
                 holes,
             )
         }
@@ -103,8 +103,8 @@ fn quad(map: &dualex_map::TriMap) -> Outcome {
             };
             (
                 ok,
-                st.snapped_transitions,
-                st.max_transition_residual,
+                st.segment.snapped_transitions,
+                st.segment.max_transition_residual,
                 st.holes_left_open as u64,
             )
         }

@@ -97,7 +97,7 @@ fn remesh_of_generated_surfaces_is_valid() {
 }
 
 /// `dualex remesh` runs on the shared surfaces' geometry that the gluing
-/// broke before step 8a (`dualex_quad::ambiguous`), the pinch split
+/// broke before step 10a (`dualex_quad::ambiguous`), the pinch split
 /// (`dualex_quad::pinched`) and the handle digons: each now gives a valid mesh of
 /// the surface's topology (sphere: one component, Euler 2), and the stats
 /// name the repair that did it.

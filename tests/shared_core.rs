@@ -1,7 +1,8 @@
 //! The untangling and gluing used by the quad (D = 2) and hex (D = 3) paths
-//! are the same generic code of `dualex-graph`: neither path defines its own
-//! pleat removal, OP1/OP2 or union–find gluing (checked on the sources), and
-//! both suites exercise it (pleats removed on messy maps, via the CLI).
+//! are the same generic code of `dualex-graph`: neither path nor their
+//! shared steps (`dualex-segment`) defines its own pleat removal, OP1/OP2
+//! or union–find gluing (checked on the sources), and both suites exercise
+//! it (pleats removed on messy maps, via the CLI).
 
 mod common;
 use common::*;
@@ -26,10 +27,11 @@ fn sources(dir: &Path) -> Vec<(String, String)> {
 #[test]
 fn quad_and_hex_define_no_graph_operation_of_their_own() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let shared = sources(&root.join("crates/segment/src"));
     for krate in ["quad", "hex"] {
         let src = sources(&root.join("crates").join(krate).join("src"));
         assert!(!src.is_empty());
-        for (file, text) in &src {
+        for (file, text) in src.iter().chain(&shared) {
             for def in [
                 "fn untangle",
                 "fn remove_pleat",
@@ -43,7 +45,8 @@ fn quad_and_hex_define_no_graph_operation_of_their_own() {
                 );
             }
         }
-        let all: String = src.iter().map(|(_, t)| t.as_str()).collect();
+        // the driver and the steps both call (`dualex_segment::steps`)
+        let all: String = src.iter().chain(&shared).map(|(_, t)| t.as_str()).collect();
         // `.untangle()` or `.untangle_best(` (other orders, quads)
         for call in [".untangle", ".glue()", "NodeGraph::<"] {
             assert!(

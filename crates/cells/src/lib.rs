@@ -26,7 +26,7 @@
 //! - [`polygons`]: cells as polygons (repeated corners dropped) and the
 //!   holes of a glued mesh as polygons;
 //! - [`repair_local`]: the local repair of the faces quads cannot
-//!   represent (odd faces paired by paths of quads), run by quad's step 8
+//!   represent (odd faces paired by paths of quads), run by quad's step 10
 //!   and replayed by hex's columns on every layer: it lives here, with
 //!   the mesh it edits, so that hex does not depend on quad.
 #![forbid(unsafe_code)]

@@ -1,5 +1,5 @@
 //! Cells as polygons, and the holes of a glued cell mesh as polygons: the
-//! input of the local repair ([`crate::repair_local`]) in quad's step 8
+//! input of the local repair ([`crate::repair_local`]) in quad's step 10
 //! and in hex's columns.
 //!
 //! - [`polygon`] / [`polygon_of`]: a cell without its consecutive repeated

@@ -1,5 +1,5 @@
 //! A local repair of the faces quads cannot represent, instead of
-//! subdividing the whole mesh: quad's step 8, first choice
+//! subdividing the whole mesh: quad's step 10, first choice
 //! (`dualex_quad::repair`), and each layer of hex's columns.
 //!
 //! Input: the glued cells (a triangle is a cell with a repeated corner) and

@@ -128,18 +128,22 @@ pub fn quad_map(
     // 4. the mesh written, then the stats and the picture
     progress.stage("writing");
     if a.uv {
-        dualex::io::write_quad_mesh_uv(&a.output, &ex.mesh, &ex.corner_uv)
+        dualex::io::write_quad_mesh_uv(&a.output, &ex.mesh, &ex.corners)
     } else {
         dualex::io::write_quad_mesh(&a.output, &ex.mesh)
     }?;
     laps.lap("write");
     drop(progress);
     let json = stats_json(ex.stats.to_json(), &topology, &geo, extra);
-    finish_stats(x, g, &json, &laps, &ex.stats.time_ms)?;
+    finish_stats(x, g, &json, &laps, &ex.stats.segment.time_ms)?;
     write_picture(a, png.as_deref())?;
     // 5. the warnings and the summary line
     let stats = &ex.stats;
-    warnings::rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    warnings::rounded(
+        g,
+        stats.segment.snapped_transitions,
+        stats.segment.max_transition_residual,
+    );
     geometry::warn(&geo, ("quad", "quads"));
     if own_map {
         warnings::degenerate(stats.folded_corners_collapsed, stats.doublets.dissolved);
@@ -191,7 +195,7 @@ fn extract_quads(
     let out = verify::Output {
         cell: "quad",
         cells: ex.mesh.cells.len(),
-        nodes: ex.stats.nodes,
+        nodes: ex.stats.segment.nodes,
         measure: verify::measure(map),
         topology,
     };
@@ -199,7 +203,7 @@ fn extract_quads(
         name,
         &out,
         rep.errors(),
-        &ex.stats.sanitize,
+        &ex.stats.segment.sanitize,
         a.extract.strict,
     )?;
     Ok((ex, topology))
@@ -277,9 +281,13 @@ pub fn hex(a: &HexArgs, g: &Global) -> Result<(), CliError> {
     laps.lap("write");
     drop(progress);
     let json = stats_json(stats.to_json(), &topology, &geo, None);
-    finish_stats(x, g, &json, &laps, &stats.time_ms)?;
+    finish_stats(x, g, &json, &laps, &stats.segment.time_ms)?;
     // 4. the warnings and the summary line
-    warnings::rounded(g, stats.snapped_transitions, stats.max_transition_residual);
+    warnings::rounded(
+        g,
+        stats.segment.snapped_transitions,
+        stats.segment.max_transition_residual,
+    );
     geometry::warn(&geo, ("hex", "hexes"));
     warnings::hex_repairs(&stats);
     if !g.quiet {
@@ -319,11 +327,11 @@ fn extract_hexes(
     let out = verify::Output {
         cell: "hex",
         cells: mesh.cells.len(),
-        nodes: stats.nodes,
+        nodes: stats.segment.nodes,
         measure: verify::measure(map),
         topology,
     };
-    verify::before_writing(name, &out, rep.errors(), &stats.sanitize, x.strict)?;
+    verify::before_writing(name, &out, rep.errors(), &stats.segment.sanitize, x.strict)?;
     Ok((mesh, stats, topology))
 }
 

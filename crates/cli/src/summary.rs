@@ -55,7 +55,7 @@ pub fn quad_problems(st: &dualex::steps::QuadReport) -> Vec<String> {
             count(st.holes_left_open, "hole", "holes")
         ));
     }
-    rounded(&mut p, st.snapped_transitions);
+    rounded(&mut p, st.segment.snapped_transitions);
     p
 }
 
@@ -83,7 +83,7 @@ pub fn hex_problems(st: &dualex::steps::HexReport) -> Vec<String> {
             count(st.open_interior_faces, "interior face", "interior faces")
         ));
     }
-    rounded(&mut p, st.snapped_transitions);
+    rounded(&mut p, st.segment.snapped_transitions);
     p
 }
 

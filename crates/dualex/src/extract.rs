@@ -194,7 +194,7 @@ pub(crate) fn finish_staged_quads(
             .map(|&s| (s != dualex_quad::NO_SOURCE).then_some(s))
             .collect(),
         mesh: x.mesh,
-        corners: x.corner_uv,
+        corners: x.corners,
     })
 }
 
@@ -239,6 +239,6 @@ pub fn hex(map: &TetMap, opts: &Options) -> Result<HexOutput, Error> {
         stats: Stats::of_hexes(&x.stats, welded, t, geometry),
         sources: x.sources.into_iter().map(Some).collect(),
         mesh: x.mesh,
-        corners: x.corner_uvw,
+        corners: x.corners,
     })
 }

@@ -142,6 +142,36 @@ pub struct Stats {
 }
 
 impl Stats {
+    /// The counts of steps 1–7, alike in both dimensions
+    /// ([`dualex_segment::stats::SegmentStats`]), with a dimension's own
+    /// `repairs`.
+    fn of_segment(
+        s: &dualex_segment::stats::SegmentStats,
+        welded: usize,
+        (t, geometry): (TopologyComparison, GeometryReport),
+        repairs: Repairs,
+    ) -> Self {
+        Stats {
+            singular_vertices: s.singular_vertices,
+            max_transition_residual: s.max_transition_residual,
+            transitions_rounded: s.snapped_transitions,
+            welded_vertices: welded,
+            grid_offset: s.grid_offset.offset,
+            nodes: s.nodes,
+            repairs: Repairs {
+                split: s.split,
+                snapped_vertices: s.sanitize.snapped_vertices,
+                perturbed_vertices: s.sanitize.perturbed_vertices,
+                pleats_removed: s.untangle.as_ref().map_or(0, |u| u.pleats_removed),
+                ..repairs
+            },
+            topology: t,
+            geometry,
+            time_ms: s.time_ms.clone(),
+            ..Stats::default()
+        }
+    }
+
     /// From a quad extraction's own report.
     pub(crate) fn of_quads(
         s: &dualex_quad::QuadStats,
@@ -152,12 +182,6 @@ impl Stats {
         Stats {
             input_simplices: s.input_triangles,
             reverted_simplices: s.reverted_triangles,
-            singular_vertices: s.singular_vertices,
-            max_transition_residual: s.max_transition_residual,
-            transitions_rounded: s.snapped_transitions,
-            welded_vertices: welded,
-            grid_offset: s.grid_offset.offset,
-            nodes: s.nodes,
             cells: s.quads,
             vertices: s.vertices,
             boundary_facets: s.unmatched_sides,
@@ -166,22 +190,20 @@ impl Stats {
             euler: s.euler,
             valence_interior: s.valence_interior.clone(),
             valence_boundary: s.valence_boundary.clone(),
-            repairs: Repairs {
-                split: s.split_edges,
-                snapped_vertices: s.sanitize.snapped_vertices,
-                perturbed_vertices: s.sanitize.perturbed_vertices,
-                pleats_removed: s.untangle.as_ref().map_or(0, |u| u.pleats_removed),
-                folded_corners_collapsed: s.folded_corners_collapsed,
-                holes_filled: s.holes_filled,
-                holes_left_open: s.holes_left_open,
-                triangles: s.repair_triangles,
-                subdivided: s.subdivided,
-                doublets_dissolved: s.doublets.dissolved,
-            },
-            topology: t,
-            geometry,
-            time_ms: s.time_ms.clone(),
-            ..Stats::default()
+            ..Self::of_segment(
+                &s.segment,
+                welded,
+                (t, geometry),
+                Repairs {
+                    folded_corners_collapsed: s.folded_corners_collapsed,
+                    holes_filled: s.holes_filled,
+                    holes_left_open: s.holes_left_open,
+                    triangles: s.repair_triangles,
+                    subdivided: s.subdivided,
+                    doublets_dissolved: s.doublets.dissolved,
+                    ..Repairs::default()
+                },
+            )
         }
     }
 
@@ -192,17 +214,16 @@ impl Stats {
         t: TopologyComparison,
         geometry: GeometryReport,
     ) -> Self {
+        let repairs = Repairs {
+            holes_left_open: s.open_interior_faces,
+            doublets_dissolved: s.doublets.dissolved,
+            ..Repairs::default()
+        };
         Stats {
             input_simplices: s.input_tets,
             reverted_simplices: s.reverted_tets,
             degenerate_simplices: s.degenerate_tets,
-            singular_vertices: s.singular_vertices,
             singular_edges: s.singular_edges,
-            max_transition_residual: s.max_transition_residual,
-            transitions_rounded: s.snapped_transitions,
-            welded_vertices: welded,
-            grid_offset: s.grid_offset.offset,
-            nodes: s.nodes,
             cells: s.hexes,
             vertices: s.vertices,
             boundary_facets: s.unmatched_sides,
@@ -210,19 +231,7 @@ impl Stats {
             components: s.components,
             euler: s.euler,
             valence_interior: s.edge_valence_interior.clone(),
-            repairs: Repairs {
-                split: s.split_faces,
-                snapped_vertices: s.sanitize.snapped_vertices,
-                perturbed_vertices: s.sanitize.perturbed_vertices,
-                pleats_removed: s.untangle.as_ref().map_or(0, |u| u.pleats_removed),
-                holes_left_open: s.open_interior_faces,
-                doublets_dissolved: s.doublets.dissolved,
-                ..Repairs::default()
-            },
-            topology: t,
-            geometry,
-            time_ms: s.time_ms.clone(),
-            ..Stats::default()
+            ..Self::of_segment(&s.segment, welded, (t, geometry), repairs)
         }
     }
 }

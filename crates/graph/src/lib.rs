@@ -1,9 +1,14 @@
 //! # dualex-graph — the dimension-generic node graph
 //!
-//! Step 4–6 of the pipeline, shared by quad (D = 2) and hex (D = 3)
-//! extraction (DESIGN §3.4, §4): nodes (future quads/hexes) with 2·D sides,
-//! the opposite relation with a chart rotation per glued pair, and the
-//! operations that act on it, topology only.
+//! Steps 7–9 of the pipeline (ARCHITECTURE.md), shared by quad (D = 2)
+//! and hex (D = 3) extraction (DESIGN §3.4, §4): nodes (future
+//! quads/hexes) with 2·D sides, the opposite relation with a chart
+//! rotation per glued pair, and the operations that act on it, topology
+//! only: 7. the opposite relation ([`walk`]) and untangling
+//! ([`untangle`]); 8. fairing ([`fair`], [`columns`]) and the clean-up
+//! before gluing ([`collapse`], [`pillow`], [`bubble`], [`doublet`]); 9.
+//! gluing ([`glue`]) and the choice of each vertex's position among its
+//! corners' candidates ([`place`]).
 //!
 //! - [`ids`]: [`Node`], [`Side`] (`side = node·2D + dir`);
 //! - [`graph`]: [`NodeGraph`], storage, `link`/`unlink`, queries;

@@ -1,6 +1,7 @@
-//! Step 6b: the local repair of holes through columns — the extrusion of
-//! the 2D local repair (`dualex_cells::repair_local`), replayed in every
-//! layer.
+//! Step 10, D = 3: the local repair of holes through columns — the
+//! extrusion of the 2D local repair (`dualex_cells::repair_local`),
+//! replayed in every layer ([`repair_open`], run on the placed hexes when
+//! the graph has open interior faces).
 //!
 //! In a map extruded from a 2D map (`dualex extrude`), a 90° singular
 //! vertex on a dual node becomes a singular edge along w through nodes:
@@ -38,9 +39,61 @@
 //! and for each hex the input hex it comes from.
 
 use dualex_cells::{HexMesh, QuadMesh};
+use dualex_graph::{Glued, NodeGraph};
+use dualex_segment::place::Placed;
+use dualex_segment::trace::End;
 use std::collections::{HashMap, HashSet};
 
 const NONE: u32 = u32::MAX;
+
+/// Step 10 on the placed hexes: counts the cracks (unmatched sides that
+/// are not on the input's boundary, `closed`: the input has none) and,
+/// when there are some, repairs them as holes through columns ([`repair`]),
+/// the sources and corners carried.
+pub fn repair_open(
+    graph: &NodeGraph<3>,
+    glued: &Glued<3>,
+    ends: &[End<3>],
+    closed: bool,
+    out: &mut Placed<3, 8>,
+    st: &mut crate::HexStats,
+) {
+    st.open_interior_faces = graph.lost_unmatched_sides(ends, closed);
+    if st.open_interior_faces == 0 {
+        return;
+    }
+    let open = open_faces(graph, glued, ends, closed);
+    if let Some(rep) = repair(&out.mesh, &open) {
+        st.columns = rep.report;
+        st.open_interior_faces -= open.len().min(st.open_interior_faces);
+        out.remake(rep.mesh, &rep.origin);
+        st.finish_mesh(&out.mesh);
+    }
+}
+
+/// The corners of the unmatched sides that are cracks, not boundary (see
+/// `NodeGraph::lost_unmatched_sides`).
+fn open_faces(
+    graph: &NodeGraph<3>,
+    glued: &Glued<3>,
+    ends: &[End<3>],
+    closed: bool,
+) -> Vec<[u32; 4]> {
+    graph
+        .lost_sides(ends, closed)
+        .map(|s| {
+            let (node, d) = (graph.node_of(s), graph.dir_of(s));
+            // the side's corners: cube codes with the axis bit of its side
+            let (axis, want) = (d >> 1, usize::from(d & 1 == 0));
+            let mut f = [0u32; 4];
+            let codes = (0..8).filter(|c| (c >> axis) & 1 == want);
+            for (k, c) in codes.enumerate() {
+                f[k] = glued.vertex(node, c);
+            }
+            f
+        })
+        .collect()
+}
 
 /// What [`repair`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -1,5 +1,5 @@
-//! Step 7: doublet chains on the mesh — the fallback of the graph's merge
-//! (`dualex_graph::doublet`, step 5c) for the chains it did not merge: those
+//! Step 11: doublet chains on the mesh — the fallback of the graph's merge
+//! (`dualex_graph::doublet`, step 8e) for the chains it did not merge: those
 //! made by collapsing folded hexes here, and those whose vertices the
 //! gluing identified beyond the graph's corners. The 3D analogue of the 2D
 //! doublet removal (`dualex_quad::doublets`), and its extrusion.
@@ -29,6 +29,7 @@
 //! the dissolved chains' vertices and hexes, vertices renumbered in order.
 
 use dualex_cells::HexMesh;
+use dualex_segment::place::Placed;
 use std::collections::{HashMap, HashSet};
 
 /// What [`dissolve`] did.
@@ -41,11 +42,39 @@ pub struct Chains {
     /// Valence-2 interior edges left (their chain broke a precondition).
     pub left: usize,
     /// Rounds after the first that dissolved chains made by earlier ones
-    /// ([`dissolve_all_traced`]; the graph's passes, step 5c, included).
+    /// ([`dissolve_all_traced`]; the graph's passes, step 8e, included).
     pub rounds: usize,
-    /// Of `dissolved`, the chains merged in the graph (step 5c,
+    /// Of `dissolved`, the chains merged in the graph (step 8e,
     /// `NodeGraph::dissolve_doublets`).
     pub in_graph: usize,
+}
+
+/// Step 11 on the placed hexes: folded hexes collapsed, then doublet
+/// chains dissolved (the extrusions of the 2D collapse of folded quads and
+/// of doublet removal), the counts added to `st`, the sources and corners
+/// carried; only when the checker's counts show a repeated corner or an
+/// interior edge of valence 2 (both passes hash every edge).
+pub fn collapse_and_dissolve(out: &mut Placed<3, 8>, st: &mut crate::HexStats) {
+    let repeated = out
+        .mesh
+        .cells
+        .iter()
+        .any(|h| (0..8).any(|i| (i + 1..8).any(|j| h[i] == h[j])));
+    if !repeated && !st.edge_valence_interior.contains_key(&2) {
+        return;
+    }
+    let (collapsed, folded, kept_folded) = collapse_folded_traced(&out.mesh);
+    let (dissolved, chains, kept_chains) = dissolve_all_traced(&collapsed);
+    st.folded_collapsed = folded;
+    st.doublets.dissolved += chains.dissolved;
+    st.doublets.edges += chains.edges;
+    st.doublets.rounds += chains.rounds;
+    st.doublets.left = chains.left;
+    if folded + chains.edges > 0 {
+        out.remake(collapsed, &kept_folded);
+        out.remake(dissolved, &kept_chains);
+        st.finish_mesh(&out.mesh);
+    }
 }
 
 /// Cube corner code (bit 0: u, bit 1: v, bit 2: w) of each VTK corner.

@@ -1,7 +1,7 @@
 //! The incremental bad-vertex scan of sanitization at D = 3
 //! (`dualex_segment::sanitize::Scan`) on this crate's test blocks.
 
-use crate::local::LocalMap;
+type LocalMap = dualex_segment::local::LocalMap<4, 3>;
 use crate::rng::SplitMix;
 use dualex_map::{Stars, Topology, Transitions};
 use dualex_segment::near::bad_vertices;

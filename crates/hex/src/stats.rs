@@ -1,12 +1,13 @@
 //! Counts at each stage of hex extraction and the output summary
-//! (DESIGN §7), serialised as one JSON object with the keys of the quad
-//! stats where they apply (`input`, `sanitize`, `nodes`, `reverted_nodes`,
-//! `trace`, `untangle`, `output`, `time_ms`).
+//! (DESIGN §7), serialised as one JSON object: the shared half of steps
+//! 1–7 ([`SegmentStats`], the keys both dimensions write: `input`,
+//! `sanitize`, `nodes`, `reverted_nodes`, `trace`, `untangle`, `time_ms`
+//! …) with the hex steps' own counts (`output`, `fairing`, `repair`).
 
-use crate::trace::TraceReport;
 use dualex_cells::HexMesh;
-use dualex_segment::sanitize_report::SanitizeReport;
-use dualex_segment::sanitize_report::{histogram_json, offset_json, times_json};
+use dualex_graph::{Glued, NodeGraph};
+use dualex_segment::sanitize_report::histogram_json;
+use dualex_segment::stats::SegmentStats;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
@@ -19,47 +20,23 @@ pub struct HexStats {
     pub reverted_tets: usize,
     /// Tets with a (near) zero map volume.
     pub degenerate_tets: usize,
-    /// Largest residual of a transition translation.
-    pub max_transition_residual: f64,
-    /// Transitions rounded (residual above the tolerance: up to 0.1 by
-    /// default, any with `round`); `transitions_rounded` in the JSON.
-    pub snapped_transitions: usize,
-    /// Vertices whose star rotations are inconsistent (on singular edges).
-    pub singular_vertices: usize,
+    /// Steps 1–7: the map model, grid offset, split edges and faces
+    /// (`split`), sanitization, nodes, traced sides, links, untangling;
+    /// timings.
+    pub segment: SegmentStats,
     /// Singular interior edges.
     pub singular_edges: usize,
     /// Singular interior edges by angle label (`"+90°"` → count).
     pub singular_edge_angles: BTreeMap<String, usize>,
-    /// Tet edges and faces split before sanitization (`crate::split`).
-    pub split_faces: usize,
-    /// The grid offset used, and the singular vertices on the grid under
-    /// each choice (`Auto`).
-    pub grid_offset: dualex_segment::grid_offset::OffsetChoice,
-    /// Sanitization report.
-    pub sanitize: SanitizeReport,
     /// Doublet chains (valence-2 interior edges) dissolved, in the graph
-    /// (step 5c) and after gluing (step 7).
+    /// (step 8e) and after gluing (step 11).
     pub doublets: crate::doublets::Chains,
-    /// Isolated nodes dropped: no side glued, every walk lost (noise).
-    pub isolated_dropped: usize,
     /// Index fairing on columns (`None`: not columns, or off).
     pub column_fairing: Option<dualex_graph::ColumnFairing>,
     /// Holes through columns repaired locally (`crate::columns`).
     pub columns: crate::columns::ColumnRepair,
     /// Folded hexes collapsed after gluing.
     pub folded_collapsed: usize,
-    /// Nodes found.
-    pub nodes: usize,
-    /// Nodes in reverted tets.
-    pub reverted_nodes: usize,
-    /// Walk outcomes.
-    pub trace: TraceReport,
-    /// What linking the walks found (non-mutual walks, rotation mismatches).
-    pub links: dualex_graph::walk::LinkReport,
-    /// Pairs breaking the pleat label rule after tracing (0 expected).
-    pub label_violations: usize,
-    /// Untangling counts.
-    pub untangle: Option<dualex_graph::UntangleStats>,
     /// Output: hexes.
     pub hexes: usize,
     /// Output: vertices.
@@ -79,18 +56,11 @@ pub struct HexStats {
     pub edge_valence_interior: BTreeMap<usize, usize>,
     /// Output: Euler characteristic V − E + F − C.
     pub euler: i64,
-    /// Wall time per stage in milliseconds.
-    pub time_ms: Vec<(String, f64)>,
 }
 
 impl HexStats {
     /// Fills the output counts from the final graph and mesh.
-    pub fn finish_output(
-        &mut self,
-        graph: &dualex_graph::NodeGraph<3>,
-        glued: &dualex_graph::Glued<3>,
-        mesh: &HexMesh,
-    ) {
+    pub fn finish_output(&mut self, graph: &NodeGraph<3>, glued: &Glued<3>, mesh: &HexMesh) {
         self.hexes = mesh.cells.len();
         self.vertices = mesh.positions.len();
         self.unmatched_sides = graph.unmatched_sides();
@@ -129,29 +99,18 @@ impl HexStats {
 
     /// The stats as one JSON object.
     pub fn to_json(&self) -> Value {
-        let mut sanitize = self.sanitize.to_json();
-        sanitize.insert("singular_moved".into(), json!(self.sanitize.singular_moved));
-        sanitize.insert("split_faces".into(), json!(self.split_faces));
-        json!({
-            "input": {
-                "tets": self.input_tets,
-                "reverted_tets": self.reverted_tets,
-                "degenerate_tets": self.degenerate_tets,
-                "max_transition_residual": self.max_transition_residual,
-                "snapped_transitions": self.snapped_transitions,
-                "transitions_rounded": self.snapped_transitions,
-                "singular_vertices": self.singular_vertices,
-                "singular_edges": self.singular_edges,
-                "singularities": self.singular_edge_angles,
-            },
-            "grid_offset": self.grid_offset.offset.name(),
-            "grid_offset_choice": offset_json(&self.grid_offset),
-            "sanitize": sanitize,
-            "nodes": self.nodes,
-            "isolated_nodes_dropped": self.isolated_dropped,
-            "reverted_nodes": self.reverted_nodes,
-            "trace": self.trace.to_json(&self.links, self.label_violations),
-            "untangle": self.untangle.as_ref().map(|u| u.to_json()),
+        let input = json!({
+            "tets": self.input_tets,
+            "reverted_tets": self.reverted_tets,
+            "degenerate_tets": self.degenerate_tets,
+            "singular_edges": self.singular_edges,
+            "singularities": self.singular_edge_angles,
+        });
+        let sanitize = json!({
+            "singular_moved": self.segment.sanitize.singular_moved,
+            "split_faces": self.segment.split,
+        });
+        let rest = json!({
             "output": {
                 "hexes": self.hexes,
                 "vertices": self.vertices,
@@ -184,7 +143,7 @@ impl HexStats {
                 "column_layers": self.columns.layers,
                 "doublet_rounds": self.doublets.rounds,
             },
-            "time_ms": times_json(&self.time_ms),
-        })
+        });
+        self.segment.to_json(input, sanitize, rest)
     }
 }

@@ -17,7 +17,7 @@ fn block_gives_3x4x2() {
     let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
     assert_block(&mesh, &st, [3, 4, 2], "block", true);
     assert_eq!(st.reverted_tets, 0);
-    assert_eq!(st.nodes, 24);
+    assert_eq!(st.segment.nodes, 24);
     // the + corner of every hex is inside the box: at an integer point
     let at_int = mesh
         .positions
@@ -48,8 +48,12 @@ fn block_on_half_integers_is_sanitized() {
     };
     let m = block(&[l(3.0), l(4.0), l(2.0)], identity);
     let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
-    assert!(st.sanitize.perturbed_vertices > 0, "{}", st.to_json());
-    assert_eq!(st.sanitize.unresolved, 0);
+    assert!(
+        st.segment.sanitize.perturbed_vertices > 0,
+        "{}",
+        st.to_json()
+    );
+    assert_eq!(st.segment.sanitize.unresolved, 0);
     assert_block(&mesh, &st, [3, 4, 2], "half-integers", true);
 }
 
@@ -85,11 +89,11 @@ fn noisy_block_untangles_to_the_block() {
     let m = block(&l, |_, x, _| noise(x));
     let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
     assert!(st.reverted_tets > 0, "{}", st.to_json());
-    assert!(st.reverted_nodes > 0, "{}", st.to_json());
-    let u = st.untangle.clone().unwrap_or_default();
+    assert!(st.segment.reverted_nodes > 0, "{}", st.to_json());
+    let u = st.segment.untangle.clone().unwrap_or_default();
     assert_eq!(
         2 * u.pleats_removed,
-        st.reverted_nodes * 2,
+        st.segment.reverted_nodes * 2,
         "{}",
         st.to_json()
     );
@@ -104,7 +108,7 @@ fn coarse_block_with_many_nodes_per_tet() {
     let l = [even(0.2, 3.2, 1), even(0.2, 3.2, 1), even(0.2, 3.2, 1)];
     let m = block(&l, identity);
     let (mesh, st) = extract(&m, &HexOptions::default()).expect("extract");
-    assert_eq!(st.nodes, 27);
+    assert_eq!(st.segment.nodes, 27);
     assert_block(&mesh, &st, [3, 3, 3], "coarse", true);
 }
 
@@ -129,7 +133,11 @@ fn noisy_block_is_the_same_for_every_seed() {
             ..HexOptions::default()
         };
         let (mesh, st) = extract(&m, &opts).expect("extract");
-        assert!(st.reverted_nodes > 0, "seed {seed}: {}", st.to_json());
+        assert!(
+            st.segment.reverted_nodes > 0,
+            "seed {seed}: {}",
+            st.to_json()
+        );
         assert_block(&mesh, &st, [3, 4, 2], &format!("seed {seed}"), false);
     }
 }
@@ -156,7 +164,7 @@ fn an_isolated_node_in_a_sliver_is_dropped() {
     let (mesh, st) = extract(&f.map, &HexOptions::default()).expect("extract");
     assert_eq!(Some(mesh.cells.len()), f.expected.hexes, "{}", st.to_json());
     assert_eq!(
-        (st.components, st.isolated_dropped),
+        (st.components, st.segment.isolated_dropped),
         (1, 1),
         "{}",
         st.to_json()

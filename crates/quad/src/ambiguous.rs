@@ -1,4 +1,4 @@
-//! Step 8a: edges and faces that vertex pairs cannot tell apart, split
+//! Step 10a: edges and faces that vertex pairs cannot tell apart, split
 //! before the repair.
 //!
 //! The glued mesh is a surface in the graph (every edge is a glued pair of

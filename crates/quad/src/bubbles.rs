@@ -1,4 +1,4 @@
-//! Step 6d: one output component per input component — bubbles deleted.
+//! Step 8d: one output component per input component — bubbles deleted.
 //!
 //! On maps with many folds (`dualex remesh` on coarse grids), untangling can
 //! close part of a fold into a small closed surface beside the real one (a
@@ -6,7 +6,7 @@
 //! vertices (singularities left on the isos) a few nodes can be cut off
 //! the rest (a strip of two quads): the output has more components than
 //! the input, a wrong mesh (the holes they leave in the surface are closed
-//! by step 8 like any other). Walks never leave an input component, so
+//! by step 10 like any other). Walks never leave an input component, so
 //! every component of the node graph lies in one input component (that of
 //! its nodes' triangles). Per *closed* input component the largest graph
 //! component is the surface (an input with boundary can be cut into pieces

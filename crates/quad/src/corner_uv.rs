@@ -1,40 +1,23 @@
-//! Step 10: the map coordinates of each quad's corners (`--uv`), in the
-//! input chart of the triangle that holds the quad's node — see
-//! [`dualex_cells::corners`] for the definition (node ± ½, exact grid points
-//! of the input map: integers with the grid offset `Half`, half-integers
-//! with `Zero`).
+//! The map coordinates of each quad's corners (`--uv`) through the
+//! subdivision of step 10b: each quad's corners are those of its node's
+//! dual cell in the input chart of the triangle holding the node
+//! (`dualex_segment::place`, step 9c; [`dualex_cells::corners`] for the
+//! definition: node ± ½, exact grid points of the input map, integers
+//! with the grid offset `Half`, half-integers with `Zero`), carried by
+//! the steps that remake cells ([`dualex_cells::corners::carry`]).
 //!
-//! Input: the glued cells with their nodes, then each step that remakes
-//! cells. Output: per quad, its 4 corners' coordinates in its cell order,
-//! or `None` (a face closing a hole, a quad merged from a doublet, a quad
-//! of a local repair path). A subdivision (step 8) keeps them: the 4 quads
-//! of a cell get its corners, edge midpoints and centre (half-size squares).
+//! Input: the quads before a subdivision, their corners, the subdivided
+//! quads and their origins. Output: per quad, its 4 corners' coordinates
+//! in its cell order, or `None` (a face closing a hole, a quad merged from
+//! a doublet, a quad of a local repair path): the 4 quads of a cell get
+//! its corners, edge midpoints and centre (half-size squares).
 
-use crate::local::LocalMap;
-use crate::nodes::Nodes;
 use dualex_cells::corners::Corners;
 use dualex_cells::polygons::polygon;
 use dualex_cells::QuadMesh;
-use dualex_graph::{Glued, NodeGraph, Takeover};
-use dualex_segment::local::node_corner;
 
 /// The map coordinates of a quad's corners (module docs).
 pub type QuadCorners = Corners<2, 4>;
-
-/// The corners of the glued cells, in [`Glued::cells`] order (none for a
-/// node that took over another one's corners: a merged doublet).
-pub fn of_glued(
-    glued: &Glued<2>,
-    graph: &NodeGraph<2>,
-    local: &LocalMap,
-    nodes: &Nodes,
-    takeover: &Takeover<2>,
-) -> Vec<QuadCorners> {
-    glued.cell_corners(graph, takeover, |n, code| {
-        let (s, ij) = (nodes.simplex[n.idx()] as usize, &nodes.point[n.idx()]);
-        node_corner(local, s, ij, code)
-    })
-}
 
 /// The corners after a subdivision of every cell of `old` (see
 /// [`crate::repair::subdivide`]: cell `i` of a polygon is `[p_i, mid(p_i,

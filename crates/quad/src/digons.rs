@@ -1,4 +1,4 @@
-//! Step 7b: digons — two glued edges between the same two vertices —
+//! Step 9b: digons — two glued edges between the same two vertices —
 //! pinched off.
 //!
 //! On maps with many folds, the glued graph can join two vertices by two
@@ -12,7 +12,7 @@
 //! The crosswise pairing is the one that keeps the orientation: each new
 //! pair traverses the edge in opposite directions in its two cells. Its
 //! rotations are those that match the corners (as for the zipped holes of
-//! step 7). Preconditions, checked before any write: exactly two pairs on
+//! step 9a). Preconditions, checked before any write: exactly two pairs on
 //! the vertex pair, both new pairs oriented and with a matching rotation.
 //! A loop that does not separate (around a handle) is left as it is:
 //! pinching it would change the topology (the re-pairing is undone when
@@ -23,7 +23,7 @@
 //! there are surplus handles are pinched, each cutting one. Invariant: only the four
 //! sides change; each end of a pinched digon becomes one vertex per piece.
 
-use crate::side_corners;
+use crate::gluing::side_corners;
 use dualex_graph::{Glued, NodeGraph, Side};
 use dualex_map::Rot2;
 
@@ -136,7 +136,7 @@ pub fn pinch_digons(
 }
 
 /// The handles the glued surface has beyond a closed connected input of
-/// Euler characteristic `input_euler`, once step 8 closed its holes:
+/// Euler characteristic `input_euler`, once step 10 closed its holes:
 /// `(χ_input − χ) / 2` when positive, where χ = V − E + F counts every
 /// glued pair and every hole side as an edge, and every cycle of hole
 /// sides as one more face (its fill); an unmatched side whose two corners

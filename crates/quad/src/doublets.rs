@@ -1,7 +1,7 @@
-//! Step 9: doublet removal on the mesh — the fallback of the graph's
-//! (`dualex_graph::doublet`, step 6e) for the interior vertices of valence
+//! Step 11: doublet removal on the mesh — the fallback of the graph's
+//! (`dualex_graph::doublet`, step 8e) for the interior vertices of valence
 //! 2 that it did not merge: those made after it (a zipped hole's folded
-//! corner collapsed, the repairs of step 8) and those whose vertex the
+//! corner collapsed, the repairs of step 10) and those whose vertex the
 //! gluing identified beyond the graph's corners (union–find over corners).
 //!
 //! A valence-2 interior vertex `v` lies in exactly two quads that share
@@ -27,10 +27,11 @@
 //! and the others renumbered in order.
 
 use dualex_cells::QuadMesh;
+use dualex_segment::place::Placed;
 use std::collections::VecDeque;
 
-/// What doublet removal did (the graph's merges, step 6e, and this
-/// fallback on the mesh, step 9).
+/// What doublet removal did (the graph's merges, step 8e, and this
+/// fallback on the mesh, step 11).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Doublets {
     /// Valence-2 interior vertices dissolved (in the graph and on the mesh).
@@ -167,6 +168,18 @@ pub fn dissolve_traced(mesh: &QuadMesh) -> (QuadMesh, Doublets, Vec<u32>) {
         .filter(|&c| alive[c as usize])
         .collect();
     (out, rep, kept)
+}
+
+/// Step 11 on the placed quads: the doublets left dissolved, their
+/// counts added to `st`, the sources and corners carried.
+pub fn dissolve_left(out: &mut Placed<2, 4>, st: &mut crate::QuadStats) {
+    let (dissolved, rep, kept) = dissolve_traced(&out.mesh);
+    st.doublets.dissolved += rep.dissolved;
+    st.doublets.left = rep.left;
+    if rep.dissolved > 0 {
+        out.remake(dissolved, &kept);
+        st.finish_mesh(&out.mesh);
+    }
 }
 
 #[cfg(test)]

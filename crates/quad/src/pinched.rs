@@ -1,4 +1,4 @@
-//! Step 8c: vertices where the surface is pinched, split into one vertex
+//! Step 10c: vertices where the surface is pinched, split into one vertex
 //! per fan.
 //!
 //! After the repair, a vertex whose faces form several fans (faces linked

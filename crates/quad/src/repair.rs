@@ -1,4 +1,4 @@
-//! Step 8: the last resort for configurations no quad can represent.
+//! Step 10b: the last resort for configurations no quad can represent.
 //!
 //! A 90° singularity sitting exactly on a node of the dual grid (a non-SoG
 //! map: `../shared/data/directional/horsers-param-full-seamless.obj` has

@@ -1,4 +1,4 @@
-//! Step 8a's view of the glued cells: each cell edge (a *slot*, `4 ·
+//! Step 10a's view of the glued cells: each cell edge (a *slot*, `4 ·
 //! cell + k`, the edge from corner k to corner k + 1) as the graph side
 //! it is, its glued partner slot, and the unmatched slots that are holes.
 //!
@@ -7,8 +7,8 @@
 //! the hole slots, in the order of the cells, then of the sides'
 //! directions. Invariant: `partner` is an involution on glued slots.
 
-use crate::trace;
 use dualex_graph::{NodeGraph, Side};
+use dualex_segment::trace::End;
 
 /// Each cell edge's side in the graph and its glued partner edge
 /// (`crate::ambiguous::Slot`s: `4 · cell + k`, the edge from corner k to k + 1).
@@ -78,7 +78,7 @@ pub(crate) fn hole_slots(
     graph: &NodeGraph<2>,
     glued: &dualex_graph::Glued<2>,
     slots: &CellSlots,
-    ends: &[trace::End],
+    ends: &[End<2>],
     closed: bool,
 ) -> Vec<crate::ambiguous::Slot> {
     let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
@@ -97,10 +97,7 @@ pub(crate) fn hole_slots(
             // on an input with boundary, only the walks that got lost at a
             // singular vertex leave holes; the others are boundary (reached
             // directly, or handed over by a reconnection during untangling)
-            let lost = matches!(
-                ends.get(s.0 as usize),
-                Some(trace::End::Inconsistent | trace::End::Loop)
-            );
+            let lost = matches!(ends.get(s.0 as usize), Some(End::Inconsistent | End::Loop));
             let (c, k) = (i / 4, i % 4);
             (closed || lost) && cells[c][k] != cells[c][(k + 1) % 4]
         })

@@ -1,10 +1,14 @@
 //! Counts at each stage of quad extraction and the output summary
-//! (DESIGN §7), serialised as one JSON object.
+//! (DESIGN §7), serialised as one JSON object: the shared half of steps
+//! 1–7 ([`SegmentStats`], the keys both dimensions write) with the quad
+//! steps' own counts.
 
-use crate::trace::TraceReport;
 use dualex_cells::QuadMesh;
-use dualex_segment::sanitize_report::SanitizeReport;
-use dualex_segment::sanitize_report::{histogram_json, offset_json, times_json};
+use dualex_graph::{Glued, NodeGraph};
+use dualex_map::TriMap;
+use dualex_segment::sanitize_report::histogram_json;
+use dualex_segment::stats::SegmentStats;
+use dualex_segment::steps::Model;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
@@ -15,35 +19,11 @@ pub struct QuadStats {
     pub input_triangles: usize,
     /// Triangles with det < 0.
     pub reverted_triangles: usize,
-    /// Largest residual of a transition translation.
-    pub max_transition_residual: f64,
-    /// Transitions rounded (residual above the tolerance: up to 0.1 by
-    /// default, any with `--round-transitions`); `transitions_rounded` in
-    /// the JSON.
-    pub snapped_transitions: usize,
-    /// Vertices whose star rotations are inconsistent.
-    pub singular_vertices: usize,
+    /// Steps 1–7: the map model, grid offset, split edges (`split`),
+    /// sanitization, nodes, traced sides, links, untangling; timings.
+    pub segment: SegmentStats,
     /// Singularities by index (fraction string → count), when known.
     pub singularities: BTreeMap<String, usize>,
-    /// Edges joining two singular vertices through a grid point, split.
-    pub split_edges: usize,
-    /// The grid offset used, and the singular vertices on the grid under
-    /// each choice (`Auto`).
-    pub grid_offset: dualex_segment::grid_offset::OffsetChoice,
-    /// Sanitization report.
-    pub sanitize: SanitizeReport,
-    /// Nodes found.
-    pub nodes: usize,
-    /// Nodes in reverted triangles.
-    pub reverted_nodes: usize,
-    /// Walk outcomes.
-    pub trace: TraceReport,
-    /// What linking the walks found (non-mutual walks, rotation mismatches).
-    pub links: dualex_graph::walk::LinkReport,
-    /// Pairs breaking the pleat label rule after tracing (0 expected).
-    pub label_violations: usize,
-    /// Untangling counts.
-    pub untangle: Option<dualex_graph::UntangleStats>,
     /// Index fairing counts.
     pub fairing: Option<serde_json::Value>,
     /// Folded quads (valence-1 vertices) collapsed after fairing.
@@ -76,14 +56,12 @@ pub struct QuadStats {
     pub repair_triangles: usize,
     /// Cells of fewer than 3 distinct corners dropped by the subdivision.
     pub repair_dropped: usize,
-    /// Isolated nodes dropped: no side glued, every walk lost (noise).
-    pub isolated_dropped: usize,
     /// Whether the whole mesh was subdivided once (a triangle, or a hole
     /// that is not a quad, could not be made a quad otherwise).
     pub subdivided: bool,
     /// Paths of the local repair of faces quads cannot represent.
     pub repair_paths: usize,
-    /// Interior valence-2 vertices dissolved (in the graph, step 6e, and
+    /// Interior valence-2 vertices dissolved (in the graph, step 8e, and
     /// after gluing, [`crate::doublets`]) and those left (preconditions not
     /// met).
     pub doublets: crate::doublets::Doublets,
@@ -103,18 +81,11 @@ pub struct QuadStats {
     pub valence_boundary: BTreeMap<usize, usize>,
     /// Output: Euler characteristic V − E + F.
     pub euler: i64,
-    /// Wall time per stage in milliseconds.
-    pub time_ms: Vec<(String, f64)>,
 }
 
 impl QuadStats {
     /// Fills the output counts from the final graph and mesh.
-    pub fn finish_output(
-        &mut self,
-        graph: &dualex_graph::NodeGraph<2>,
-        glued: &dualex_graph::Glued<2>,
-        mesh: &QuadMesh,
-    ) {
+    pub fn finish_output(&mut self, graph: &NodeGraph<2>, glued: &Glued<2>, mesh: &QuadMesh) {
         self.unmatched_sides = graph.unmatched_sides();
         self.boundary_loops = glued.boundary_loops;
         self.components = glued.components;
@@ -135,30 +106,16 @@ impl QuadStats {
 
     /// The stats as one JSON object.
     pub fn to_json(&self) -> Value {
-        let mut sanitize = self.sanitize.to_json();
-        sanitize.insert("split_edges".into(), json!(self.split_edges));
-        sanitize.insert(
-            "singular_on_iso_kinds".into(),
-            json!(self.sanitize.singular_kinds),
-        );
-        json!({
-            "input": {
-                "triangles": self.input_triangles,
-                "reverted_triangles": self.reverted_triangles,
-                "max_transition_residual": self.max_transition_residual,
-                "snapped_transitions": self.snapped_transitions,
-                "transitions_rounded": self.snapped_transitions,
-                "singular_vertices": self.singular_vertices,
-                "singularities": self.singularities,
-            },
-            "grid_offset": self.grid_offset.offset.name(),
-            "grid_offset_choice": offset_json(&self.grid_offset),
-            "sanitize": sanitize,
-            "nodes": self.nodes,
-            "isolated_nodes_dropped": self.isolated_dropped,
-            "reverted_nodes": self.reverted_nodes,
-            "trace": self.trace.to_json(&self.links, self.label_violations),
-            "untangle": self.untangle.as_ref().map(|u| u.to_json()),
+        let input = json!({
+            "triangles": self.input_triangles,
+            "reverted_triangles": self.reverted_triangles,
+            "singularities": self.singularities,
+        });
+        let sanitize = json!({
+            "split_edges": self.segment.split,
+            "singular_on_iso_kinds": self.segment.sanitize.singular_kinds,
+        });
+        let rest = json!({
             "fairing": self.fairing,
             "folded_corners_collapsed": self.folded_corners_collapsed,
             "pillows_removed": self.pillows_removed,
@@ -190,7 +147,17 @@ impl QuadStats {
                 "valence_boundary": histogram_json(&self.valence_boundary),
                 "holes": self.holes_left_open,
             },
-            "time_ms": times_json(&self.time_ms),
-        })
+        });
+        self.segment.to_json(input, sanitize, rest)
     }
+}
+
+/// The input's singularities by index, for [`QuadStats::singularities`]
+/// (read on the first pass of steps 1–3; integer part unknown: "k/4 mod
+/// 1").
+pub fn input_singularities(map: &TriMap, model: &Model<3, 2>) -> BTreeMap<String, usize> {
+    let (mut known, unknown) =
+        dualex_map::report::singularity_histogram(map, &model.topo, &model.trans);
+    known.extend(unknown.into_iter().map(|(k, n)| (format!("{k} mod 1"), n)));
+    known
 }

@@ -51,7 +51,7 @@ fn square_exact_grid_points_is_sanitized() {
     // every vertex on a half-integer: all on dual isos before sanitization
     let m = square(8, -0.5, 7.5);
     let (mesh, st) = extract(&m, &QuadOptions::default()).expect("extract");
-    assert!(st.sanitize.perturbed_vertices > 0);
+    assert!(st.segment.sanitize.perturbed_vertices > 0);
     assert_eq!(mesh.cells.len(), 64, "{}", st.to_json());
 }
 
@@ -77,7 +77,7 @@ fn edges_between_singular_vertices_through_grid_points_are_split() {
     let (m, _) =
         dualex_gen::cube_surface(3, 1, dualex_gen::Perturb::None, dualex_gen::Diagonal::Fixed);
     let (mesh, st) = extract(&m, &QuadOptions::default()).expect("extract");
-    assert!(st.split_edges > 0, "{}", st.to_json());
+    assert!(st.segment.split > 0, "{}", st.to_json());
     let rep = check_valid(&mesh, "cube res 1");
     assert_eq!(mesh.cells.len(), 54, "{}", st.to_json());
     assert_eq!(rep.interior_valence.get(&3), Some(&8));

@@ -98,7 +98,7 @@ fn half_shifted_maps_with_jittered_singular_corners_pick_the_zero_offset() {
                 .unwrap_or_else(|e| panic!("{m} {amp}: {e}"));
             assert_eq!(Some(out.cells.len()), f.expected.quads, "{m} {amp}");
             assert_eq!(
-                st.grid_offset.offset,
+                st.segment.grid_offset.offset,
                 dualex_quad::GridOffset::Zero,
                 "{m} {amp}"
             );

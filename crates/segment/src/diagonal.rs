@@ -1,4 +1,4 @@
-//! Step 7: vertex positions, by tracing node diagonals in the map (paper
+//! Step 9c: vertex positions, by tracing node diagonals in the map (paper
 //! appendix "Quad Mesh Extraction"; DESIGN §5), in any dimension.
 //!
 //! Input: the map (its positions), the sanitized [`LocalMap`],

@@ -192,7 +192,7 @@ fn given(offset: GridOffset) -> OffsetChoice {
     }
 }
 
-/// Step 1 of both extractions, the one place the grid offset is decided:
+/// Step 2 of both extractions, the one place the grid offset is decided:
 /// the offset chosen, then the local map built once with it, its singular
 /// vertices snapped ([`crate::singular_snap`]). `chosen`: the choice of an
 /// earlier pass on the same input (the drivers split the map and build

@@ -1,26 +1,45 @@
 //! # dualex-segment — the dual segmentation's shared steps
 //!
-//! Step 2 of the pipeline, the part both extractions share: from the map
+//! Steps 2–7 of the pipeline (ARCHITECTURE.md), and step 1's model and
+//! step 9's placement, the part both extractions share: from the map
 //! model (`dualex-map`) to a map whose vertices are off the dual grid,
-//! its nodes, their traced sides and the diagonal walks that place the
-//! vertices, for `dualex-quad` and `dualex-hex`. Every module is generic
-//! over the dimension (`N` corners per simplex, `D` map dimension); the
-//! few predicates that differ sit in one `impl` block per dimension
-//! ([`simplex`]). This is the crate where the quad and hex twins become
-//! one code over `const D` (issue 24).
-//! The sanitization ([`sanitize`]) is one code too.
+//! its nodes, their traced sides linked into the node graph
+//! (`dualex-graph`), and the diagonal walks that place the vertices, for
+//! `dualex-quad` and `dualex-hex`. Every module is generic over the
+//! dimension (`N` corners per simplex, `D` map dimension); the few
+//! predicates that differ sit in one `impl` block per dimension on one
+//! marker, [`simplex::Dim`] (fidget's way: [`simplex`], [`diagonal`],
+//! [`sanitize`], [`split`]). [`steps`] runs them as the numbered steps
+//! both drivers call:
 //!
-//! Input: a validated map, its topology, transitions and stars. Output:
-//! local charts, the grid offset, snapped singular vertices, split faces,
-//! collapsed clusters, the incremental bad-vertex scan, the
-//! sanitization report, the nodes, the ends of their traced sides and
-//! the vertices' candidate positions. Invariants: local coordinates stay small (exact
-//! integer offsets), transitions between local charts are integral, and
-//! every step is deterministic whatever the number of threads.
+//! 1. the map model ([`steps::check`], [`steps::model`]);
+//! 2. the local map, built once with the grid offset chosen, singular
+//!    vertices snapped ([`grid_offset::local_map`]);
+//! 3. the faces that vertices which cannot move span across the grid,
+//!    split ([`split`]; steps 1–3 repeated by [`steps::prepare`]);
+//! 4. sanitization ([`steps::sanitize`], [`sanitize`]);
+//! 5. the nodes ([`steps::nodes`], [`nodes`]);
+//! 6. the walk of every node side ([`steps::trace`], [`trace`]);
+//! 7. the opposite relation ([`steps::link`]; untangling: the drivers,
+//!    by `dualex-graph`);
 //!
+//! 9c. (after the graph's steps 8–9) the cells placed by the diagonal
+//! walks, with their source simplices and corners ([`place`]).
+//!
+//! Input: a map, the transition options, the grid offset and the seed.
+//! Output: the (split) map, local charts, nodes, walk ends, the linked
+//! graph, the placed cells, and the shared half of the stats
+//! ([`stats::SegmentStats`]). Invariants: local coordinates stay small
+//! (exact integer offsets), transitions between local charts are
+//! integral, and every step is deterministic whatever the number of
+//! threads.
+//!
+//! - [`steps`]: steps 1–7, one function each, generic over the dimension
+//!   ([`steps::Dimension`]: what a dimension implements);
+//! - [`stats`]: the counts of steps 1–7 and their JSON keys;
 //! - [`grid_offset`]: the dual grid's offset (½ or 0), chosen from the
 //!   singular vertices once, and the local map built with it
-//!   ([`grid_offset::local_map`], the step both drivers call);
+//!   ([`grid_offset::local_map`], step 2);
 //! - [`local`]: local shifted coordinates ([`local::LocalMap`]) and the
 //!   input-chart coordinates of an output cell's corners
 //!   ([`local::node_corner`]);
@@ -28,7 +47,8 @@
 //!   through a grid point);
 //! - [`singular_snap`]: exact placement of singular vertices on the fixed
 //!   sets of their holonomies;
-//! - [`split`]: the barycentric split of faces of any dimension;
+//! - [`split`]: the barycentric split of faces of any dimension, and what
+//!   each dimension splits ([`split::ToSplit`]);
 //! - [`cluster`]: collapsed clusters (vertices joined by zero-length map
 //!   edges), moved as one by sanitization;
 //! - [`bad_scan`]: the incremental bad-vertex scan of sanitization;
@@ -43,7 +63,8 @@
 //!   facets pierced by an axis line, one step of the diagonal walk);
 //! - [`nodes`]: the integer points strictly inside the simplices;
 //! - [`trace`]: the walk of every node side along its iso-line;
-//! - [`diagonal`]: the walk along a node diagonal that places a vertex.
+//! - [`diagonal`]: the walk along a node diagonal that places a vertex;
+//! - [`place`]: the glued cells placed, their sources and corners.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -55,11 +76,14 @@ pub mod grid_offset;
 pub mod local;
 pub mod near;
 pub mod nodes;
+pub mod place;
 pub mod sanitize;
 pub mod sanitize_report;
 pub mod simplex;
 pub mod singular_snap;
 pub mod split;
+pub mod stats;
+pub mod steps;
 #[cfg(test)]
 mod testmap;
 pub mod trace;

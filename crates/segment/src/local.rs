@@ -1,4 +1,4 @@
-//! Local, shifted coordinates: step 1 of both extractions.
+//! Local, shifted coordinates: step 2 of both extractions.
 //!
 //! Input: a map, its topology and transitions, and a grid offset
 //! ([`crate::grid_offset`]). Output: [`LocalMap`], where

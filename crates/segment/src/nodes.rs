@@ -1,4 +1,4 @@
-//! Step 3: nodes — the integer points of the local shifted map strictly
+//! Step 5: nodes — the integer points of the local shifted map strictly
 //! inside each simplex (DESIGN §3.2), in any dimension.
 //!
 //! Input: the sanitized [`LocalMap`] (no integer point within `eps` of a

@@ -1,6 +1,6 @@
 //! Sanitization of the local shifted map, both dimensions (paper appendix,
-//! "Sanitization"; DESIGN §3.1): the last step of the segmentation before
-//! the nodes.
+//! "Sanitization"; DESIGN §3.1): step 4, the last step of the segmentation
+//! before the nodes.
 //!
 //! Input: a [`LocalMap`], its [`Topology`] and vertex [`Stars`], the free
 //! axes of the singular vertices ([`free_axes`]). Output: the same map
@@ -49,9 +49,9 @@ use std::collections::{BTreeMap, BTreeSet, HashSet};
 mod dim2;
 mod dim3;
 
-/// The dimension of a sanitization: `N` corners per simplex, map dimension
-/// `D` ([`Predicates`] is implemented at `Dim<3, 2>` and `Dim<4, 3>`).
-pub struct Dim<const N: usize, const D: usize>;
+/// The dimension marker of every generic step ([`Predicates`] is
+/// implemented at `Dim<3, 2>` and `Dim<4, 3>`).
+pub use crate::simplex::Dim;
 
 /// What sanitization does differently per dimension.
 pub trait Predicates<const N: usize, const D: usize> {

@@ -1,5 +1,5 @@
 //! What sanitization did, in both dimensions (the report of `quad` and
-//! `hex`'s step 2), and its `sanitize` object in the stats JSON; the
+//! `hex`'s step 4), and its `sanitize` object in the stats JSON; the
 //! perturbation schedule both use ([`amplitude`]); what it could not do
 //! ([`SanitizeReport::leftovers`], which the CLI prints even with `-q`).
 

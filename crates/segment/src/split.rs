@@ -1,8 +1,9 @@
-//! Splitting faces of a simplex mesh at their barycentre, in any dimension:
-//! the operation behind the paper's "if both edge extremities are
-//! singularities … we need to split the edge", extended to the tet edges
-//! and faces that vertices which cannot move span (issue: singular
-//! structure anywhere).
+//! Step 3: splitting faces of a simplex mesh at their barycentre, in any
+//! dimension: the operation behind the paper's "if both edge extremities
+//! are singularities … we need to split the edge", extended to the tet
+//! edges and faces that vertices which cannot move span (issue: singular
+//! structure anywhere). Which faces, per dimension: [`ToSplit`]
+//! (`dim2.rs`, `dim3.rs`); the passes: `crate::steps::prepare`.
 //!
 //! Input: a map and a list of faces (2 or more vertex ids each, a face of
 //! some simplex). Output: a new map where each applied face `F` has a new
@@ -20,8 +21,66 @@
 //! earlier applied face of the list waits for the next call (the caller
 //! repeats until nothing is left).
 
-use dualex_map::SimplexMap;
+use crate::local::LocalMap;
+pub use crate::simplex::Dim;
+use dualex_map::{SimplexMap, Stars, Topology, Transitions};
 use std::collections::HashMap;
+
+mod dim2;
+mod dim3;
+
+/// What one pass of step 3 reads: the (split) map, its topology, stars
+/// and local map (singular vertices snapped), the free axes of its
+/// singular vertices ([`ToSplit::free_axes`]).
+pub struct Pass<'a, const N: usize, const D: usize> {
+    /// The map of this pass.
+    pub map: &'a SimplexMap<N, D>,
+    /// Its adjacency.
+    pub topo: &'a Topology<N>,
+    /// Its vertex stars.
+    pub stars: &'a Stars<D>,
+    /// Its local map.
+    pub local: &'a LocalMap<N, D>,
+    /// The free axes of its singular vertices.
+    pub free: &'a [Option<usize>],
+}
+
+/// Step 3's choice of the faces to split, the part that differs per
+/// dimension: one `impl` per dimension on [`Dim`] (`dim2.rs`: edges
+/// between two singular vertices through a grid point; `dim3.rs`: tet
+/// edges and faces that vertices which cannot move span across the grid).
+pub trait ToSplit<const N: usize, const D: usize> {
+    /// What the choice reads from the model of one pass besides the stars,
+    /// before the local map takes the transitions over (D = 3: the
+    /// singular edges; D = 2: nothing).
+    type Singular;
+
+    /// Reads [`Self::Singular`] from the model of one pass.
+    fn singular(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        trans: &Transitions<N, D>,
+        stars: &Stars<D>,
+    ) -> Self::Singular;
+
+    /// The free axis of every singular vertex that has one
+    /// ([`crate::sanitize::free_axes`]; D = 2: none, empty), read by the
+    /// choice and by sanitization (step 4).
+    fn free_axes(
+        topo: &Topology<N>,
+        stars: &Stars<D>,
+        local: &LocalMap<N, D>,
+    ) -> Vec<Option<usize>>;
+
+    /// The faces to split (2 or more vertex ids each), each once, for
+    /// [`split_faces_traced`].
+    fn faces(pass: &Pass<'_, N, D>, singular: &Self::Singular) -> Vec<Vec<u32>>;
+
+    /// The most faces split over all passes, past which the passes stop
+    /// (D = 2: the simplices of the current map, `current`; D = 3: those
+    /// of the input, `input`).
+    fn max_split(input: usize, current: usize) -> usize;
+}
 
 /// Splits `faces` of `map` (see the module docs); returns the new map and
 /// the number of faces applied.

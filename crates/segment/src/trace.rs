@@ -1,4 +1,4 @@
-//! Step 4: tracing the sides of every node along its iso-line (all
+//! Step 6: tracing the sides of every node along its iso-line (all
 //! coordinates but one fixed at integers) to the next node, topologically
 //! (DESIGN §3.3), in any dimension.
 //!

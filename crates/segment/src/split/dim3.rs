@@ -1,10 +1,11 @@
-//! Step 1b: splitting the tet edges and faces that vertices which cannot
-//! move span across the dual grid — the 3D analogue of the 2D split of
-//! edges between two singular vertices (`dualex_quad::split`).
+//! Step 3 at D = 3 ([`Dim<4, 3>`]): the tet edges and faces that vertices
+//! which cannot move span across the dual grid — the 3D analogue of the
+//! 2D split of edges between two singular vertices (`dim2.rs`).
 //!
-//! Input: the map, its local shifted coordinates (singular vertices already
-//! on their fixed sets, `dualex_segment::singular_snap`), the vertex stars and
-//! the singular edges. Output: the faces to split:
+//! Input: the map, its local shifted coordinates (singular vertices
+//! already on their fixed sets, [`crate::singular_snap`]), the vertex
+//! stars, the free axes ([`crate::sanitize::free_axes`]) and the singular
+//! edges. Output: the faces to split:
 //! - every edge whose two ends are singular (they lie on singular edges:
 //!   at most one free axis each) and which passes through an iso-line of
 //!   the dual grid away from its ends, unless the edge is itself a
@@ -16,15 +17,19 @@
 //!   strictly inside, unless one of them can move off the triangle's plane
 //!   (its free axis is not parallel to the plane).
 //!
-//! The split itself is the dimension-generic `dualex_segment::split`: the new
-//! vertex is inside the edge or face, so it is not singular and
-//! sanitization can move it off the grid. The driver repeats until nothing
-//! is left (each pass splits at most one face per tet).
+//! The new vertex of the split ([`super::split_faces_traced`]) is inside
+//! the edge or face, so it is not singular and sanitization can move it
+//! off the grid. The passes stop when nothing is left (each splits at most
+//! one face per tet) or once as many faces are split as the input has
+//! tets.
 
+use super::{Dim, Pass, ToSplit};
+use crate::grid::{dist2d, EPS};
 use crate::local::LocalMap;
-use dualex_map::{Stars, TetMap};
-use dualex_segment::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
-use dualex_segment::simplex::face_corners;
+use crate::near::{grid_point_near_segment, triangle_near_grid_point, EDGES};
+use crate::simplex::face_corners;
+use dualex_map::singularity::{edge_singularities_with_stars, EdgeSingularity};
+use dualex_map::{Stars, TetMap, Topology, Transitions};
 use std::collections::HashSet;
 
 /// The free axis of singular vertex `v` in the chart of tet `s` (`None`:
@@ -46,22 +51,57 @@ fn crosses_stuck(a: &[f64; 3], b: &[f64; 3], axes: [Option<usize>; 2]) -> bool {
         let Some(g) = grid_point_near_segment(&pa, &pb) else {
             return false;
         };
-        let near = |p: &[f64; 2]| dualex_segment::grid::dist2d(&g, p) < dualex_segment::grid::EPS;
+        let near = |p: &[f64; 2]| dist2d(&g, p) < EPS;
         let movable = axes.iter().flatten().any(|&k| k == i || k == j);
         !near(&pa) && !near(&pb) && !movable
     })
 }
 
+impl ToSplit<4, 3> for Dim<4, 3> {
+    type Singular = Vec<EdgeSingularity>;
+
+    fn singular(
+        map: &TetMap,
+        topo: &Topology<4>,
+        trans: &Transitions<4, 3>,
+        stars: &Stars<3>,
+    ) -> Vec<EdgeSingularity> {
+        edge_singularities_with_stars(map, topo, trans, stars)
+    }
+
+    fn free_axes(
+        topo: &Topology<4>,
+        stars: &Stars<3>,
+        local: &LocalMap<4, 3>,
+    ) -> Vec<Option<usize>> {
+        crate::sanitize::free_axes(topo, stars, local)
+    }
+
+    fn faces(pass: &Pass<'_, 4, 3>, singular: &Vec<EdgeSingularity>) -> Vec<Vec<u32>> {
+        let pairs = singular
+            .iter()
+            .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
+            .collect();
+        faces_to_split(pass, &pairs)
+    }
+
+    fn max_split(input: usize, _current: usize) -> usize {
+        input
+    }
+}
+
 /// The edges (2 vertex ids, sorted) and faces (3, sorted) to split, edges
 /// first, each once, in the order of their first tet; `free` as
-/// [`dualex_segment::sanitize::free_axes`].
-pub fn faces_to_split(
-    map: &TetMap,
-    stars: &Stars<3>,
-    free: &[Option<usize>],
-    singular_edges: &HashSet<(u32, u32)>,
-    local: &LocalMap,
-) -> Vec<Vec<u32>> {
+/// [`crate::sanitize::free_axes`], `singular_edges` the singular edges'
+/// sorted vertex pairs.
+fn faces_to_split(pass: &Pass<'_, 4, 3>, singular_edges: &HashSet<(u32, u32)>) -> Vec<Vec<u32>> {
+    let Pass {
+        map,
+        stars,
+        local,
+        free,
+        ..
+    } = *pass;
     let sing = |v: u32| stars.singular[v as usize];
     let mut seen: HashSet<Vec<u32>> = HashSet::new();
     let (mut edges, mut faces) = (Vec::new(), Vec::new());
@@ -121,7 +161,7 @@ fn box_holds_grid_point(t: &[[f64; 3]; 3]) -> bool {
     (0..3).all(|k| {
         let lo = t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
         let hi = t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
-        (lo - dualex_segment::grid::EPS).ceil() <= hi + dualex_segment::grid::EPS
+        (lo - EPS).ceil() <= hi + EPS
     })
 }
 
@@ -142,7 +182,6 @@ fn normal(t: &[[f64; 3]; 3]) -> [f64; 3] {
 mod tests {
     use super::*;
     use dualex_gen::from_mesh::{from_hexes, meshes, FromMeshOptions, TetSplit};
-    use dualex_map::{Topology, Transitions};
 
     /// What the driver's first pass finds on a map.
     fn to_split(map: &TetMap) -> Vec<Vec<u32>> {
@@ -150,15 +189,18 @@ mod tests {
         let (trans, _) =
             Transitions::derive(map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
         let stars = Stars::build(map, &topo, &trans);
-        let singular: HashSet<(u32, u32)> =
-            dualex_map::singularity::edge_singularities_with_stars(map, &topo, &trans, &stars)
-                .iter()
-                .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
-                .collect();
+        let singular = Dim::<4, 3>::singular(map, &topo, &trans, &stars);
         let mut local = LocalMap::new(map, &topo, &trans);
-        dualex_segment::singular_snap::snap_singular(&mut local, &topo, &stars);
-        let free = dualex_segment::sanitize::free_axes(&topo, &stars, &local);
-        faces_to_split(map, &stars, &free, &singular, &local)
+        crate::singular_snap::snap_singular(&mut local, &topo, &stars);
+        let free = Dim::<4, 3>::free_axes(&topo, &stars, &local);
+        let pass = Pass {
+            map,
+            topo: &topo,
+            stars: &stars,
+            local: &local,
+            free: &free,
+        };
+        Dim::<4, 3>::faces(&pass, &singular)
     }
 
     /// The cubed ball at k = 1: every hex's main diagonal joins two
@@ -184,7 +226,7 @@ mod tests {
             if faces.is_empty() {
                 break;
             }
-            let (next, applied) = dualex_segment::split::split_faces(&m, &faces);
+            let (next, applied) = super::super::split_faces(&m, &faces);
             assert!(applied > 0);
             m = next;
         }

@@ -1,0 +1,98 @@
+//! Step 9, D = 2: the graph glued into quads and placed.
+//! - 9a. glued (`dualex_graph`: union–find over node corners); holes of
+//!   exactly two unmatched sides whose endpoints the gluing already
+//!   identified (union–find would close them silently, DESIGN §3.4) are
+//!   zipped: the two sides glued to each other explicitly, with the
+//!   rotation that maps one side's corners onto the other's; a pair of
+//!   adjacent sides of one node zipped is a folded corner, collapsed;
+//! - 9b. two edges between the same two vertices pinched off, the smaller
+//!   piece deleted as a bubble ([`crate::digons`]; on a closed connected
+//!   input, also digons around handles the input does not have);
+//! - 9c. placed (`dualex_segment::place`): vertex positions by diagonal
+//!   tracing, each quad's source triangle and corners' map coordinates.
+//!
+//! Input: the cleaned graph of step 8, the sanitized map, its nodes, the
+//! corners merges took over. Output: the gluing, the placed quads, the
+//! output counts. Invariant: the graph changes only by the zipped pairs,
+//! the collapsed folded corners and the pinched digons' pieces.
+
+use crate::{bubbles, digons, QuadStats};
+use dualex_graph::{Glued, Node, NodeGraph, Side, Takeover};
+use dualex_segment::nodes::Nodes;
+use dualex_segment::place::{place, Placed};
+use dualex_segment::steps::Sanitized;
+
+/// Step 9 (module docs).
+pub fn glue_and_place(
+    graph: &mut NodeGraph<2>,
+    s: &Sanitized<'_, 3, 2>,
+    nodes: &Nodes<3, 2>,
+    takeover: &Takeover<2>,
+    st: &mut QuadStats,
+) -> (Glued<2>, Placed<2, 4>) {
+    // 9a
+    let mut glued = graph.glue();
+    st.zipped_sides = zip_two_side_holes(graph, &glued);
+    if st.zipped_sides > 0 {
+        st.folded_corners_collapsed += graph.collapse_folded_corners();
+        glued = graph.glue();
+    }
+    // 9b
+    let handles = |graph: &NodeGraph<2>| {
+        let closed = s.topo.boundary_facets == 0 && glued.components == 1;
+        let input_euler = || {
+            let shape =
+                dualex_check::topology::surface_shape(s.map.positions.len(), &s.map.simplices);
+            (shape.components == 1).then_some(shape.euler)
+        };
+        match closed.then(input_euler).flatten() {
+            Some(e) => digons::excess_handles(graph, &glued, e),
+            None => 0,
+        }
+    };
+    st.digons_pinched = digons::pinch_digons(graph, &glued, handles);
+    if st.digons_pinched > 0 {
+        st.bubbles_removed += bubbles::drop_bubbles(graph, &s.topo, &nodes.simplex);
+        glued = graph.glue();
+    }
+    // 9c
+    let out = place(s, nodes, graph, &glued, takeover);
+    st.finish_output(graph, &glued, &out.mesh);
+    (glued, out)
+}
+
+/// The two corners (vertex ids) of side `d` of `node`, in the order of the
+/// perpendicular axis (− then +).
+pub(crate) fn side_corners(glued: &Glued<2>, node: Node, d: usize) -> [u32; 2] {
+    let (axis, bit) = (d >> 1, usize::from(d & 1 == 0));
+    let other = 1 - axis;
+    let code = |o: usize| (bit << axis) | (o << other);
+    [glued.vertex(node, code(0)), glued.vertex(node, code(1))]
+}
+
+/// Step 9a's zip (module docs). Returns the number of pairs glued.
+fn zip_two_side_holes(graph: &mut NodeGraph<2>, glued: &Glued<2>) -> usize {
+    let mut by_ends: std::collections::HashMap<(u32, u32), Vec<Side>> = Default::default();
+    for (node, _) in glued.cells() {
+        for d in 0..4 {
+            let s = graph.side(node, d);
+            if graph.opposite(s).is_none() {
+                let [a, b] = side_corners(glued, node, d);
+                if a != b {
+                    by_ends.entry((a.min(b), a.max(b))).or_default().push(s);
+                }
+            }
+        }
+    }
+    let mut zipped = 0;
+    for sides in by_ends.values() {
+        let [s, t] = sides[..] else { continue };
+        // the rotation ρ with the label rule's image of s and matching corners
+        if let Some(r) = digons::matching_rotation(graph, glued, s, t) {
+            if graph.link(s, t, r).is_ok() {
+                zipped += 1;
+            }
+        }
+    }
+    zipped
+}

@@ -1,0 +1,350 @@
+//! Steps 1–7 of both extractions, one function a step, generic over the
+//! dimension (`N` corners per simplex, `D` map axes); [`segment`] runs
+//! them in order for the drivers (`dualex-quad`, `dualex-hex`), which then
+//! untangle (the rest of step 7), run the graph's steps 8–9 and their own
+//! repairs (10–11). The numbering is the pipeline's (ARCHITECTURE.md).
+//!
+//! 1. [`check`], then per pass [`model`]: the map's validity and size
+//!    (3D: reflected charts refused, [`InputCheck`]), its topology,
+//!    transitions and vertex stars (`dualex-map`);
+//! 2. per pass, in [`prepare`]: the grid offset chosen once and the local
+//!    map built with it, its singular vertices snapped
+//!    ([`crate::grid_offset::local_map`]);
+//! 3. [`prepare`]: the faces that vertices which cannot move span across
+//!    the grid split ([`ToSplit`], one `impl` per dimension), steps 1–3
+//!    repeated until none is left;
+//! 4. [`sanitize`]: the local map's vertices off the dual grid
+//!    ([`crate::sanitize`]);
+//! 5. [`nodes`]: the integer points inside the simplices
+//!    ([`crate::nodes`]);
+//! 6. [`trace`]: every node side walked along its iso-line
+//!    ([`crate::trace`]);
+//! 7. [`link`]: the opposite relation, mutual walks linked into a
+//!    [`NodeGraph`] (isolated lost nodes dropped, label-rule violations
+//!    counted); its untangling (`NodeGraph::untangle`, in 2D
+//!    `untangle_best` with fairing) is the drivers' call.
+//!
+//! Step 9c's placement, shared too, is in [`crate::place`].
+//!
+//! Input: a map (not yet validated) and the options. Output: the (split)
+//! map, the input simplex of each of its simplices, the sanitized local
+//! map, the nodes, the walk ends and the linked graph, with their counts
+//! in a [`SegmentStats`] and stage laps (`map`, `sanitize`, `nodes`,
+//! `trace`). Invariants: every step is deterministic whatever the number
+//! of threads; a pass of step 3 splits at least one face, and the passes
+//! stop at [`ToSplit::max_split`] faces.
+
+use crate::diagonal::DiagonalStep;
+use crate::grid_offset::{local_map, GridOffset};
+use crate::local::LocalMap;
+use crate::nodes::Nodes;
+use crate::sanitize::Predicates;
+use crate::simplex::{Dim, Simplex};
+use crate::singular_snap::SingularSnap;
+use crate::split::{split_faces_traced, Pass, ToSplit};
+use crate::stats::SegmentStats;
+use crate::trace::End;
+use dualex_graph::NodeGraph;
+use dualex_map::{InputError, SimplexMap, Stars, Topology, TransitionOptions, Transitions};
+use dualex_util::timing::Laps;
+use std::borrow::Cow;
+
+/// Everything a dimension implements for the generic steps: the input
+/// check ([`InputCheck`]), the predicates of the nodes, walks and diagonal
+/// walk ([`Simplex`], [`DiagonalStep`]), of sanitization ([`Predicates`])
+/// and of the split ([`ToSplit`]).
+pub trait Dimension<const N: usize, const D: usize>:
+    InputCheck<N, D> + Simplex<N, D> + DiagonalStep<N, D> + Predicates<N, D> + ToSplit<N, D>
+{
+}
+
+impl<T, const N: usize, const D: usize> Dimension<N, D> for T where
+    T: InputCheck<N, D> + Simplex<N, D> + DiagonalStep<N, D> + Predicates<N, D> + ToSplit<N, D>
+{
+}
+
+/// Step 1's refusal of a valid map that one dimension cannot extract.
+pub trait InputCheck<const N: usize, const D: usize> {
+    /// `Err` for a map to refuse (after validation and the size check).
+    fn refuse(map: &SimplexMap<N, D>) -> Result<(), InputError>;
+}
+
+impl InputCheck<3, 2> for Dim<3, 2> {
+    /// D = 2: nothing more.
+    fn refuse(_: &SimplexMap<3, 2>) -> Result<(), InputError> {
+        Ok(())
+    }
+}
+
+impl InputCheck<4, 3> for Dim<4, 3> {
+    /// D = 3: charts reflected as a whole (`TetMap::check_not_reflected`).
+    fn refuse(map: &SimplexMap<4, 3>) -> Result<(), InputError> {
+        map.check_not_reflected()
+    }
+}
+
+/// The options of steps 1–4.
+#[derive(Clone, Copy, Debug)]
+pub struct Options<'a> {
+    /// Transition derivation options (step 1).
+    pub transitions: &'a TransitionOptions,
+    /// Where the dual grid sits (step 2).
+    pub grid_offset: GridOffset,
+    /// Seed of the sanitization perturbations (step 4).
+    pub seed: u64,
+}
+
+impl<'a> Options<'a> {
+    /// The options of steps 1–4 (module docs).
+    pub fn new(transitions: &'a TransitionOptions, grid_offset: GridOffset, seed: u64) -> Self {
+        Options {
+            transitions,
+            grid_offset,
+            seed,
+        }
+    }
+}
+
+/// What steps 1–7 leave: the sanitized map, its nodes, the end of every
+/// node side's walk and the linked graph (not yet untangled).
+pub struct Segmented<'a, const N: usize, const D: usize> {
+    /// The sanitized (split) map.
+    pub sanitized: Sanitized<'a, N, D>,
+    /// Its nodes.
+    pub nodes: Nodes<N, D>,
+    /// Per side (`node·2D + dir`), how its walk ended.
+    pub ends: Vec<End<D>>,
+    /// The nodes with every mutual pair of walks linked.
+    pub graph: NodeGraph<D>,
+}
+
+/// Steps 1–7 in order (module docs), `first_pass` as in [`prepare`].
+pub fn segment<'a, const N: usize, const D: usize>(
+    map: &'a SimplexMap<N, D>,
+    opts: &Options<'_>,
+    st: &mut SegmentStats,
+    laps: &mut Laps,
+    first_pass: impl FnOnce(&SimplexMap<N, D>, &Model<N, D>, &<Dim<N, D> as ToSplit<N, D>>::Singular),
+) -> Result<Segmented<'a, N, D>, InputError>
+where
+    Dim<N, D>: Dimension<N, D>,
+{
+    check(map)?;
+    let prepared = prepare(map, opts, st, first_pass)?;
+    laps.lap("map");
+    let sanitized = sanitize(prepared, opts.seed, st, laps);
+    let nodes = nodes(&sanitized.local, st, laps);
+    let ends = trace(&sanitized, &nodes, st);
+    let graph = link(&nodes, &ends, st, laps);
+    Ok(Segmented {
+        sanitized,
+        nodes,
+        ends,
+        graph,
+    })
+}
+
+/// Step 1's model of one pass.
+pub struct Model<const N: usize, const D: usize> {
+    /// Adjacency.
+    pub topo: Topology<N>,
+    /// Transitions across the facets.
+    pub trans: Transitions<N, D>,
+    /// Vertex stars, singular flags.
+    pub stars: Stars<D>,
+}
+
+/// What steps 1–3 leave: the map the rest runs on and its local map.
+pub struct Prepared<'a, const N: usize, const D: usize> {
+    /// The input, or its split (step 3).
+    pub map: Cow<'a, SimplexMap<N, D>>,
+    /// Per simplex of `map`, the input simplex it is (a piece of).
+    pub parent: Vec<u32>,
+    /// Adjacency of `map`.
+    pub topo: Topology<N>,
+    /// Vertex stars of `map` (read by sanitization, then dropped).
+    pub stars: Stars<D>,
+    /// The local map, singular vertices snapped.
+    pub local: LocalMap<N, D>,
+    /// The free axes of the singular vertices ([`ToSplit::free_axes`]).
+    pub free: Vec<Option<usize>>,
+    /// What snapping the singular vertices did.
+    pub snap: SingularSnap,
+}
+
+/// What step 4 leaves: [`Prepared`] without the stars, sanitized.
+pub struct Sanitized<'a, const N: usize, const D: usize> {
+    /// The input, or its split (step 3).
+    pub map: Cow<'a, SimplexMap<N, D>>,
+    /// Per simplex of `map`, the input simplex it is (a piece of).
+    pub parent: Vec<u32>,
+    /// Adjacency of `map`.
+    pub topo: Topology<N>,
+    /// The sanitized local map.
+    pub local: LocalMap<N, D>,
+}
+
+/// Step 1, once: refuses an invalid map, one whose images span absurdly
+/// many grid points (before any allocation), and what the dimension
+/// refuses ([`InputCheck`]).
+pub fn check<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> Result<(), InputError>
+where
+    Dim<N, D>: Dimension<N, D>,
+{
+    map.validate()?;
+    crate::nodes::check_size(map)?;
+    Dim::<N, D>::refuse(map)
+}
+
+/// Step 1, per pass: topology, transitions (their residual and roundings
+/// counted) and vertex stars (singular vertices counted).
+pub fn model<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    opts: &TransitionOptions,
+    st: &mut SegmentStats,
+) -> Result<Model<N, D>, InputError> {
+    let topo = Topology::build(map)?;
+    let (trans, trep) = Transitions::derive(map, &topo, opts)?;
+    st.max_transition_residual = trep.max_residual;
+    st.snapped_transitions = trep.snapped;
+    let stars = Stars::build(map, &topo, &trans);
+    st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
+    Ok(Model { topo, trans, stars })
+}
+
+/// Steps 1–3, repeated until nothing is left to split: the model, the
+/// local map with the grid offset chosen on the first pass (splits add no
+/// singular vertex), the faces to split. `first_pass` reads the input's
+/// own model once (a dimension's input counts).
+pub fn prepare<'a, const N: usize, const D: usize>(
+    map: &'a SimplexMap<N, D>,
+    opts: &Options<'_>,
+    st: &mut SegmentStats,
+    first_pass: impl FnOnce(&SimplexMap<N, D>, &Model<N, D>, &<Dim<N, D> as ToSplit<N, D>>::Singular),
+) -> Result<Prepared<'a, N, D>, InputError>
+where
+    Dim<N, D>: Dimension<N, D>,
+{
+    let input = map.len();
+    let mut map = Cow::Borrowed(map);
+    let mut parent: Vec<u32> = (0..input as u32).collect();
+    let mut first_pass = Some(first_pass);
+    let mut chosen = None;
+    loop {
+        let m = model(&map, opts.transitions, st)?;
+        let singular = Dim::<N, D>::singular(&map, &m.topo, &m.trans, &m.stars);
+        if let Some(read) = first_pass.take() {
+            read(&map, &m, &singular);
+        }
+        let Model { topo, trans, stars } = m;
+        // step 2: the local map takes the transitions over (no copy)
+        let (local, snap, choice) = local_map(&map, &topo, trans, &stars, opts.grid_offset, chosen);
+        chosen = Some(choice);
+        st.grid_offset = choice;
+        // step 3
+        let free = Dim::<N, D>::free_axes(&topo, &stars, &local);
+        let pass = Pass {
+            map: &map,
+            topo: &topo,
+            stars: &stars,
+            local: &local,
+            free: &free,
+        };
+        let faces = Dim::<N, D>::faces(&pass, &singular);
+        if faces.is_empty() || st.split >= Dim::<N, D>::max_split(input, map.len()) {
+            return Ok(Prepared {
+                map,
+                parent,
+                topo,
+                stars,
+                local,
+                free,
+                snap,
+            });
+        }
+        let (next, applied, pieces) = split_faces_traced(&map, &faces);
+        parent = pieces.iter().map(|&p| parent[p as usize]).collect();
+        st.split += applied;
+        map = Cow::Owned(next);
+    }
+}
+
+/// Step 4: sanitization with the seed of its perturbations; the stars are
+/// dropped after it. Laps `sanitize`.
+pub fn sanitize<'a, const N: usize, const D: usize>(
+    p: Prepared<'a, N, D>,
+    seed: u64,
+    st: &mut SegmentStats,
+    laps: &mut Laps,
+) -> Sanitized<'a, N, D>
+where
+    Dim<N, D>: Dimension<N, D>,
+{
+    let Prepared {
+        map,
+        parent,
+        topo,
+        stars,
+        mut local,
+        free,
+        snap,
+    } = p;
+    st.sanitize = crate::sanitize::sanitize(&map, &topo, &stars, &free, &mut local, seed);
+    st.sanitize.singular_snap = snap;
+    drop(stars);
+    laps.lap("sanitize");
+    Sanitized {
+        map,
+        parent,
+        topo,
+        local,
+    }
+}
+
+/// Step 5: the nodes, counted (and those in reverted simplices). Laps
+/// `nodes`.
+pub fn nodes<const N: usize, const D: usize>(
+    local: &LocalMap<N, D>,
+    st: &mut SegmentStats,
+    laps: &mut Laps,
+) -> Nodes<N, D>
+where
+    Dim<N, D>: Dimension<N, D>,
+{
+    let nodes = Nodes::find(local);
+    st.nodes = nodes.len();
+    st.reverted_nodes = nodes.reverted.iter().filter(|&&r| r).count();
+    laps.lap("nodes");
+    nodes
+}
+
+/// Step 6: the end of every node side's walk, the outcomes counted.
+pub fn trace<const N: usize, const D: usize>(
+    s: &Sanitized<'_, N, D>,
+    nodes: &Nodes<N, D>,
+    st: &mut SegmentStats,
+) -> Vec<End<D>>
+where
+    Dim<N, D>: Dimension<N, D>,
+{
+    let (ends, rep) = crate::trace::trace_all(&s.local, &s.topo, nodes);
+    st.trace = rep;
+    ends
+}
+
+/// Step 7's opposite relation: the graph of the nodes with every mutual
+/// pair of walks linked, isolated nodes whose walks were all lost dropped,
+/// label-rule violations counted. Laps `trace` (steps 6 and 7).
+pub fn link<const N: usize, const D: usize>(
+    nodes: &Nodes<N, D>,
+    ends: &[End<D>],
+    st: &mut SegmentStats,
+    laps: &mut Laps,
+) -> NodeGraph<D> {
+    let mut graph = NodeGraph::<D>::new(nodes.reverted.clone());
+    st.links = graph.link_mutual(ends);
+    st.isolated_dropped = graph.drop_isolated_lost(ends);
+    st.label_violations = graph.label_violations();
+    laps.lap("trace");
+    graph
+}
