@@ -12,10 +12,8 @@
 //! ([`unique_fit`]) only answers when exactly one rotation is within `tol`
 //! of the best, and then both agree on it and on the best mismatch.
 
-use crate::mesh::simplex_word;
-use crate::topology_build::facet_word;
+use crate::error::{ElementKind, MapError};
 use crate::transition::ROUND_FIT_LIMIT;
-use crate::transition_derive::num;
 use crate::{InputError, Rot, SimplexMap, Topology, TransitionOptions};
 use dualex_util::round::round;
 
@@ -96,18 +94,17 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     if best > opts.fit_tolerance(tol) {
         // rounding accepts a mismatch up to ROUND_FIT_LIMIT: say so when it
         // would
-        let hint = if !opts.round && best <= opts.fit_tolerance(tol).max(ROUND_FIT_LIMIT) {
-            "; if the charts are only noisy, --round-transitions would accept it"
-        } else {
-            ""
-        };
-        return Err(Box::new(InputError::new(format!(
-            "{w} {s} {fw} {f}: the charts of {w}s {s} and {n} differ by a reflection or a \
-             non-grid rotation (mismatch {}){hint}",
-            num(best),
-            w = simplex_word(N),
-            fw = facet_word(N),
-        ))));
+        let round_hint = !opts.round && best <= opts.fit_tolerance(tol).max(ROUND_FIT_LIMIT);
+        return Err(Box::new(
+            MapError::ReflectedTransition {
+                simplex: ElementKind::simplex(N).at(s),
+                facet: f,
+                neighbour: n,
+                mismatch: best,
+                round_hint,
+            }
+            .into(),
+        ));
     }
     let translation = |r: &Rot<D>| -> [f64; D] {
         let mut t = [0.0; D];
@@ -314,6 +311,7 @@ fn mismatch_table<const D: usize>(a: &[[f64; D]], b: &[[f64; D]]) -> [f64; 18] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::transition_derive::num;
     use dualex_util::rng::SplitMix;
 
     /// The fit as it was first written: every rotation scanned in group
@@ -477,7 +475,7 @@ mod tests {
                     }
                     (Err(g), Err(w)) => {
                         // the message may go on with a hint
-                        assert!(g.message.contains(&format!("({w})")), "{g} vs {w}");
+                        assert!(g.to_string().contains(&format!("({w})")), "{g} vs {w}");
                         errors += 1;
                     }
                     (g, w) => panic!("{:?} vs {w:?} on {map:?}", g.map(|f| f.rot)),
