@@ -43,10 +43,12 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), CliError> {
         describe(&name, k, made, a, g);
         written = write_map(&made.map, a, &name);
         // (the writer's own message is the run's, below; not a remesh bug,
-        // which would send the run to the next grid position)
-        written
-            .as_ref()
-            .map_err(|e| dualex::Error::Input(dualex::InputError::new(e.to_string())))?;
+        // which would send the run to the next grid position; the error
+        // stays in `written`, this one only stops the run)
+        written.as_ref().map_err(|e| {
+            let stop = std::io::Error::other(e.to_string());
+            dualex::Error::Input(dualex::InputErrorKind::from_source(stop).into())
+        })?;
         Ok(())
     };
     let staged = dualex::remesh_staged(&positions, &triangles, &options(a), &mut show);

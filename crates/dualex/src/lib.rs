@@ -87,7 +87,7 @@ pub use dualex_geom::{
     SMOOTH_ROUNDS,
 };
 pub use dualex_io::OutputError;
-pub use dualex_map::{InputError, TetMap, TriMap};
+pub use dualex_map::{InputError, InputErrorKind, TetMap, TriMap};
 pub use extract::{hex, quad, HexOutput, Options, Output, QuadOutput};
 pub use inspect::map_report_json;
 pub use remesh::{

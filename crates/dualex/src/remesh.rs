@@ -49,6 +49,7 @@ use crate::{
     Error, GeometryMode, GeometryReport, InputError, Options, QuadOutput, TriMap, SMOOTH_ROUNDS,
 };
 use dualex_check::topology;
+use dualex_map::InputErrorKind;
 pub use dualex_remesh::{
     shapes, Quantization, RemeshOptions as MapOptions, RemeshStats, Surface, Target,
 };
@@ -118,7 +119,7 @@ pub fn remesh_map(
     crate::tri_map_from_slices(positions, triangles, &vec![[[0.0; 2]; 3]; triangles.len()])?;
     let welded = dualex_remesh::weld::weld(positions, triangles);
     let surface = dualex_remesh::Surface::new(welded.positions, welded.triangles)
-        .map_err(|e| InputError::new(e.to_string()))?;
+        .map_err(|e| InputError::new(InputErrorKind::from_source(e)))?;
     let inner = opts.quad_options();
     let shape = topology::surface_shape(surface.positions.len(), &surface.triangles);
     // one extraction per map counted, in the order of `stats.counted`
@@ -136,7 +137,7 @@ pub fn remesh_map(
     let made = dualex_remesh::remesh_counted(&surface, &opts.map, &mut quads_of)
         // (an option out of range, a solve that fails on this surface:
         // said as the remesher says it, as before the library had it)
-        .map_err(|e| InputError::new(e.to_string()))?;
+        .map_err(|e| InputError::new(InputErrorKind::from_source(e)))?;
     let kept = made.stats.kept.and_then(|k| extracted.into_iter().nth(k));
     Ok(RemeshedMap {
         map: made.map,

@@ -9,6 +9,7 @@
 //! Nothing panics on bad input.
 
 use crate::{Error, TetMap, TriMap};
+use dualex_map::error::CountError;
 use dualex_map::{InputError, SimplexMap};
 
 /// A triangle mesh with a 2D map, from slices: `uv[t][c]` is the map
@@ -59,11 +60,7 @@ pub fn map_from_slices<const N: usize, const D: usize>(
     coords: &[[[f64; D]; N]],
 ) -> Result<SimplexMap<N, D>, Error> {
     if u32::try_from(positions.len()).is_err() {
-        return Err(InputError::new(format!(
-            "{} vertices: more than u32 indices can address",
-            positions.len()
-        ))
-        .into());
+        return Err(InputError::new(CountError::TooManyVertices(positions.len())).into());
     }
     let map = SimplexMap {
         positions: positions.to_vec(),

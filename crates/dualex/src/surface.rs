@@ -7,6 +7,7 @@
 //! [`has_map_coordinates`] tells a plain surface from a map file.
 
 use crate::{Error, InputError};
+use dualex_map::error::{CountError, FaceNeed};
 use std::path::Path;
 
 /// A surface read by [`read_surface`].
@@ -41,10 +42,12 @@ fn fan(faces: &[Vec<u32>]) -> Result<(Vec<[u32; 3]>, usize), InputError> {
     let mut fanned = 0;
     for (i, f) in faces.iter().enumerate() {
         if f.len() < 3 {
-            return Err(InputError::new(format!(
-                "face {i} has {} vertices",
-                f.len()
-            )));
+            return Err(CountError::FaceSize {
+                face: Some(i as u64),
+                vertices: f.len(),
+                need: FaceNeed::Unstated,
+            }
+            .into());
         }
         if f.len() > 3 {
             fanned += 1;
@@ -61,9 +64,8 @@ fn fan(faces: &[Vec<u32>]) -> Result<(Vec<[u32; 3]>, usize), InputError> {
 /// header. (A file without is a plain surface, not a broken map.)
 pub fn has_map_coordinates(path: impl AsRef<Path>) -> Result<bool, Error> {
     let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|e| {
-        InputError::new(format!("cannot read: {e}")).in_file(path.display().to_string())
-    })?;
+    let bytes =
+        std::fs::read(path).map_err(|e| InputError::new(e).in_file(path.display().to_string()))?;
     let ply = bytes.starts_with(b"ply");
     let text = String::from_utf8_lossy(if ply {
         let end = bytes

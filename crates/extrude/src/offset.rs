@@ -25,7 +25,8 @@
 //! larger than the area-weighted normal's was.
 
 use crate::slab::cross;
-use dualex_map::InputError;
+use dualex_map::error::Extrusion;
+use dualex_map::{ElementKind, InputError};
 
 /// Least cosine between the area-weighted normal and an incident
 /// triangle's normal below which the direction is turned (module docs).
@@ -76,9 +77,7 @@ pub fn surface_offsets(p: &[[f64; 3]], tris: &[[u32; 3]]) -> Result<Offsets, Inp
     let mut dirs = Vec::with_capacity(p.len());
     for (v, x) in n.iter().enumerate() {
         dirs.push(unit(*x).ok_or_else(|| {
-            InputError::new(format!(
-                "vertex {v}: its area-weighted normal vanishes: cannot offset the surface there"
-            ))
+            InputError::new(ElementKind::Vertex.at(v).error(Extrusion::VanishingNormal))
         })?);
     }
     let unit_normals: Vec<Option<[f64; 3]>> = fnorm.iter().map(|f| unit(*f)).collect();

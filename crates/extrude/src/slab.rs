@@ -18,6 +18,7 @@
 //! a layer `[k, k+1]` are at `w = k + ½`: exactly `L` layers of hexes.
 
 use crate::offset::{surface_offsets, Offsets};
+use dualex_map::error::Extrusion;
 use dualex_map::{InputError, TriMap};
 
 /// Default total thickness as a fraction of the mean triangle edge length.
@@ -66,13 +67,13 @@ impl Slab {
     pub fn new(map: &TriMap, layers: usize, thickness: Option<f64>) -> Result<Slab, InputError> {
         map.validate()?;
         if layers == 0 {
-            return Err(InputError::new("--layers must be at least 1"));
+            return Err(Extrusion::NoLayers.into());
         }
         let (base, tris) = compact(map);
         let planar = base.iter().all(|p| p[2] == base[0][2]);
         let thickness = match thickness {
             Some(t) if t.is_finite() && t > 0.0 => t,
-            Some(t) => return Err(InputError::new(format!("thickness {t} is not positive"))),
+            Some(t) => return Err(Extrusion::Thickness(t).into()),
             None if planar => PLANAR_THICKNESS_FRACTION * mean_edge_length(&base, &tris),
             None => DEFAULT_THICKNESS_FRACTION * mean_edge_length(&base, &tris),
         };

@@ -18,6 +18,8 @@ use curves::{corners, drop_short_features, label_arcs};
 use std::sync::atomic::{AtomicU32, Ordering};
 
 mod curves;
+#[cfg(test)]
+mod tests;
 
 /// A curve segment of the reference.
 #[derive(Clone, Copy, Debug)]
@@ -443,61 +445,5 @@ impl Reference {
         }
         let (v, w) = (vb / denom, vc / denom);
         [0, 1, 2].map(|k| a[k] + ab[k] * v + ac[k] * w)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The unit square [0,1]² as 2 triangles, and a unit cube of 6 tets.
-    #[test]
-    fn square_curves_corners_and_closest_points() {
-        let p = [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.]];
-        let r = Reference::surface(&p, &[[0, 1, 2], [0, 2, 3]], 35.0);
-        assert_eq!(r.segments.len(), 4);
-        assert!(r.segments.iter().all(|s| s.boundary));
-        assert_eq!(r.corner, vec![true; 4]);
-        let f = r.closest([0.3, 0.6, 2.0], Some([0., 0., 1.])).unwrap();
-        assert!((f.distance - 2.0).abs() < 1e-12);
-        assert!((0..3).all(|k| (f.point[k] - [0.3, 0.6, 0.0][k]).abs() < 1e-12));
-        let (_, q, d) = r.closest_on_curves([0.5, 0.2, 0.0], true).unwrap();
-        assert_eq!(q, [0.5, 0.0, 0.0]);
-        assert!((d - 0.2).abs() < 1e-15);
-        // outside the square: the nearest point on its border
-        let f = r.closest([2.0, 0.5, 0.0], None).unwrap();
-        assert!((f.point[0] - 1.0).abs() < 1e-15 && (f.point[1] - 0.5).abs() < 1e-15);
-    }
-
-    #[test]
-    fn cube_boundary_has_12_feature_edges() {
-        let r = crate::tests::unit_cube_surface(35.0);
-        assert_eq!(r.triangles.len(), 12);
-        assert_eq!(r.segments.len(), 12);
-        assert!(r.segments.iter().all(|s| !s.boundary));
-        assert_eq!(r.corner, vec![true; 8]);
-        // outward normals: the face z = 1 points up
-        let f = r.closest([0.5, 0.5, 1.5], Some([0., 0., 1.])).unwrap();
-        assert!(r.normals[f.triangle as usize][2] > 0.99);
-        // a thin-part hint: from inside near the top, asking for a face
-        // that looks down finds the bottom (within HINT_REACH times the
-        // distance to the top)
-        let f = r.closest([0.5, 0.5, 0.9], Some([0., 0., -1.])).unwrap();
-        assert!(f.point[2].abs() < 1e-15);
-        // beyond that reach, the nearest face, whatever it looks at
-        let f = r.closest([0.5, 0.5, 0.99], Some([0., 0., -1.])).unwrap();
-        assert!((f.point[2] - 1.0).abs() < 1e-15);
-        // a seeded search gives the same answers
-        for t in 0..12 {
-            let g = r
-                .closest_seeded([0.5, 0.5, 0.9], Some([0., 0., -1.]), Some(t))
-                .unwrap();
-            assert_eq!(
-                g.triangle,
-                r.closest([0.5, 0.5, 0.9], Some([0., 0., -1.]))
-                    .unwrap()
-                    .triangle
-            );
-        }
     }
 }

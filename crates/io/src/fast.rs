@@ -17,7 +17,7 @@
 //! checked (text, no NUL) and parsed in parallel with rayon, and joined in
 //! file order, so the result does not depend on the number of threads.
 
-use crate::scan::{parse_finite, Tokens};
+use crate::scan::{finite, Tokens};
 use dualex_map::{TetMap, TriMap};
 use rayon::prelude::*;
 
@@ -80,7 +80,7 @@ fn numbers<'a, const K: usize>(toks: impl Iterator<Item = &'a str>) -> Option<[f
         if tok.starts_with('#') {
             break;
         }
-        let x = parse_finite(tok, "").ok()?;
+        let x = finite(tok)?;
         if let Some(slot) = out.get_mut(n) {
             *slot = x;
         }
@@ -251,7 +251,7 @@ pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
     for _ in 0..nv {
         let mut p = [0.0; 3];
         for x in &mut p {
-            *x = parse_finite(t.next_token()?.0, "").ok()?;
+            *x = finite(t.next_token()?.0)?;
         }
         positions.push(p);
     }

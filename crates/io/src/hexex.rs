@@ -12,8 +12,11 @@
 //! when the file ends early) and the vertex / tet, counted from 0. Counts are
 //! checked against the bytes left before anything is allocated.
 
-use crate::scan::{as_text, fits, parse_finite, quote, Tokens};
-use dualex_map::{InputError, TetMap};
+use crate::scan::{as_text, fits, parse_finite, Tokens};
+use dualex_map::error::{
+    Awaited, CountError, EmptyReason, Format, IndexError, Subject, SyntaxError, Token, Values,
+};
+use dualex_map::{Element, ElementKind, InputError, TetMap};
 
 /// Parses a `.hexex` tet map (see the module docs).
 pub fn parse_hexex(bytes: &[u8]) -> Result<TetMap, InputError> {
@@ -26,16 +29,17 @@ pub fn parse_hexex(bytes: &[u8]) -> Result<TetMap, InputError> {
 /// The sequential reader: the reference of [`crate::fast::hexex`], and the
 /// one that reports errors.
 pub(crate) fn parse_hexex_sequential(bytes: &[u8]) -> Result<TetMap, InputError> {
-    let text = as_text(bytes, "hexex")?;
+    let text = as_text(bytes, Format::Hexex)?;
     let mut t = Tokens::new(text, 1);
-    let nv = read_count(&mut t, ["vertex", "vertices"], 3)?;
+    let nv = read_count(&mut t, ElementKind::Vertex, 3)?;
     let mut positions = Vec::with_capacity(nv);
     for i in 0..nv {
         let mut p = [0.0; 3];
-        read_numbers(&mut t, &mut p, || format!("vertex {i}"), "coordinates")?;
+        let owner = ElementKind::Vertex.at(i);
+        read_numbers(&mut t, &mut p, owner, Values::Coordinates)?;
         positions.push(p);
     }
-    let nt = read_count(&mut t, ["tet", "tets"], 16)?;
+    let nt = read_count(&mut t, ElementKind::Tet, 16)?;
     let mut map = TetMap {
         positions,
         simplices: Vec::with_capacity(nt),
@@ -44,26 +48,27 @@ pub(crate) fn parse_hexex_sequential(bytes: &[u8]) -> Result<TetMap, InputError>
     for s in 0..nt {
         let tet = read_tet_indices(&mut t, s, nv)?;
         let mut uvw = [0.0; 12];
-        read_numbers(&mut t, &mut uvw, || format!("tet {s}"), "map coordinates")?;
+        let owner = ElementKind::Tet.at(s);
+        read_numbers(&mut t, &mut uvw, owner, Values::MapCoordinates)?;
         map.simplices.push(tet);
         map.coords.push(std::array::from_fn(|c| {
             [uvw[3 * c], uvw[3 * c + 1], uvw[3 * c + 2]]
         }));
     }
     if let Some((tok, line)) = t.next_token() {
+        let token = Token::new(tok);
+        let declared = nt;
         return Err(InputError::at_line(
             line,
-            format!(
-                "unexpected {} after the last tet (the file declares {nt} tets)",
-                quote(tok)
-            ),
+            SyntaxError::TrailingToken { token, declared },
         ));
     }
     if map.simplices.is_empty() {
-        return Err(InputError::at_line(
-            t.last_line(),
-            "no tets (the tet count is 0)",
-        ));
+        let empty = CountError::Empty {
+            what: ElementKind::Tet,
+            reason: Some(EmptyReason::ZeroCount("tet")),
+        };
+        return Err(InputError::at_line(t.last_line(), empty));
     }
     map.validate()?;
     Ok(map)
@@ -73,51 +78,56 @@ pub(crate) fn parse_hexex_sequential(bytes: &[u8]) -> Result<TetMap, InputError>
 /// can fit in the bytes left (each token takes at least 2 bytes).
 fn read_count(
     t: &mut Tokens<'_>,
-    [what, whats]: [&str; 2],
+    what: ElementKind,
     tokens_per_item: u64,
 ) -> Result<usize, InputError> {
-    let (tok, line) = t.next_token().ok_or_else(|| {
-        InputError::at_line(t.last_line(), format!("file ends before the {what} count"))
-    })?;
-    let n: u64 = tok.parse().map_err(|_| {
-        InputError::at_line(
-            line,
-            format!("{what} count {} is not a non-negative integer", quote(tok)),
-        )
-    })?;
-    if !fits(n, 2 * tokens_per_item, t.remaining(), 1) {
+    let Some((tok, line)) = t.next_token() else {
+        let awaited = Awaited::Count(what);
         return Err(InputError::at_line(
-            line,
-            format!(
-                "the file declares {n} {whats}, but only {} bytes follow (each {what} needs {tokens_per_item} numbers): truncated file or wrong count",
-                t.remaining()
-            ),
+            t.last_line(),
+            SyntaxError::EndsBefore(awaited),
         ));
+    };
+    let Ok(count) = tok.parse::<u64>() else {
+        let e = SyntaxError::NotANonNegativeInteger {
+            what: Subject::Count(what),
+            token: Token::new(tok),
+            hint: false,
+        };
+        return Err(InputError::at_line(line, e));
+    };
+    if !fits(count, 2 * tokens_per_item, t.remaining(), 1) {
+        let e = CountError::ExceedsBytes {
+            what,
+            count,
+            bytes: t.remaining(),
+            numbers_each: tokens_per_item,
+        };
+        return Err(InputError::at_line(line, e));
     }
-    usize::try_from(n)
-        .map_err(|_| InputError::at_line(line, format!("{what} count {n} is too large")))
+    usize::try_from(count)
+        .map_err(|_| InputError::at_line(line, CountError::TooLarge { what, count }))
 }
 
-/// Fills `out` with finite numbers; `owner` names the vertex / tet.
+/// Fills `out` with finite numbers of `owner` (a vertex / tet).
 fn read_numbers(
     t: &mut Tokens<'_>,
     out: &mut [f64],
-    owner: impl Fn() -> String,
-    what: &str,
+    owner: Element,
+    values: Values,
 ) -> Result<(), InputError> {
     for k in 0..out.len() {
         let Some((tok, line)) = t.next_token() else {
-            return Err(InputError::at_line(
-                t.last_line(),
-                format!(
-                    "file ends in {}: expected {} {what}, found {k}",
-                    owner(),
-                    out.len()
-                ),
-            ));
+            let e = SyntaxError::EndsIn {
+                owner,
+                expected: out.len(),
+                values,
+                found: k,
+            };
+            return Err(InputError::at_line(t.last_line(), e));
         };
-        let x = parse_finite(tok, "value")
-            .map_err(|m| InputError::at_line(line, format!("{}: {m}", owner())))?;
+        let x = parse_finite(tok, Subject::Value)
+            .map_err(|e| InputError::at_line(line, owner.clone().error(e)))?;
         if let Some(slot) = out.get_mut(k) {
             *slot = x;
         }
@@ -130,27 +140,34 @@ fn read_tet_indices(t: &mut Tokens<'_>, s: usize, nv: usize) -> Result<[u32; 4],
     let mut tet = [0u32; 4];
     for (c, slot) in tet.iter_mut().enumerate() {
         let Some((tok, line)) = t.next_token() else {
-            return Err(InputError::at_line(
-                t.last_line(),
-                format!("file ends in tet {s}: expected 4 vertex indices, found {c}"),
-            ));
-        };
-        let at = |m: String| InputError::at_line(line, format!("tet {s}: corner {c}: {m}"));
-        let Ok(i) = tok.parse::<u64>() else {
-            let hint = if tok.parse::<f64>().is_ok() {
-                " (a number is missing or extra earlier in the file, or a count is wrong)"
-            } else {
-                ""
+            let e = SyntaxError::EndsIn {
+                owner: ElementKind::Tet.at(s),
+                expected: 4,
+                values: Values::VertexIndices,
+                found: c,
             };
-            return Err(at(format!(
-                "vertex index {} is not a non-negative integer{hint}",
-                quote(tok)
-            )));
+            return Err(InputError::at_line(t.last_line(), e));
+        };
+        let at = |e: dualex_map::InputErrorKind| {
+            let corner = ElementKind::Corner.at(c).error(e);
+            InputError::at_line(line, ElementKind::Tet.at(s).error(corner))
+        };
+        let Ok(i) = tok.parse::<u64>() else {
+            let e = SyntaxError::NotANonNegativeInteger {
+                what: Subject::Index(ElementKind::Vertex),
+                token: Token::new(tok),
+                hint: tok.parse::<f64>().is_ok(),
+            };
+            return Err(at(e.into()));
         };
         if i >= nv as u64 {
-            return Err(at(format!(
-                "vertex index {i} is out of range (the file has {nv} vertices)"
-            )));
+            let e = IndexError::OutOfRange {
+                what: ElementKind::Vertex,
+                index: i,
+                count: nv,
+                counted: Some(ElementKind::Vertex),
+            };
+            return Err(at(e.into()));
         }
         *slot = i as u32;
     }

@@ -78,6 +78,7 @@ pub use ply_header::PlyFormat;
 pub use vtk::{parse_vtk, VtkMesh};
 
 use dualex_cells::{HexMesh, QuadMesh};
+use dualex_map::error::FormatError;
 use dualex_map::{InputError, TetMap, TriMap};
 use output::{extension, write_atomic};
 use std::path::Path;
@@ -94,9 +95,7 @@ pub struct PolyMesh {
 
 /// Reads the whole file; the error names it.
 fn read_bytes(path: &Path) -> Result<Vec<u8>, InputError> {
-    std::fs::read(path).map_err(|e| {
-        InputError::new(format!("cannot read: {e}")).in_file(path.display().to_string())
-    })
+    std::fs::read(path).map_err(|e| InputError::new(e).in_file(path.display().to_string()))
 }
 
 /// The extension of `path` in lower case (`""` when it has none): what
@@ -109,17 +108,13 @@ pub fn lower_extension(path: &Path) -> String {
 }
 
 /// The lower-case extension if it is one of `allowed`, else an error naming them.
-fn input_extension(path: &Path, allowed: &[&str]) -> Result<String, InputError> {
-    let ext = lower_extension(path);
-    if allowed.contains(&ext.as_str()) {
-        return Ok(ext);
+fn input_extension(path: &Path, allowed: &'static [&'static str]) -> Result<String, InputError> {
+    let extension = lower_extension(path);
+    if allowed.contains(&extension.as_str()) {
+        return Ok(extension);
     }
-    let list: Vec<String> = allowed.iter().map(|e| format!(".{e}")).collect();
-    Err(InputError::new(format!(
-        "unsupported input format `.{ext}`; use {}",
-        list.join(", ")
-    ))
-    .in_file(path.display().to_string()))
+    let e = FormatError::UnsupportedExtension { extension, allowed };
+    Err(InputError::new(e).in_file(path.display().to_string()))
 }
 
 /// Reads a triangle map from `.obj` or `.ply`.

@@ -4,7 +4,10 @@
 //! `dualex view` to show a hex mesh written by `dualex hex`.
 
 use dualex_cells::HexMesh;
-use dualex_map::InputError;
+use dualex_map::error::{
+    CountError, Format, FormatError, IndexError, RangeStyle, Subject, SyntaxError,
+};
+use dualex_map::{ElementKind, InputError};
 
 struct Tokens<'a> {
     it: std::iter::Peekable<std::iter::Enumerate<std::str::Lines<'a>>>,
@@ -25,18 +28,24 @@ impl<'a> Tokens<'a> {
         }
     }
 
-    fn number<T: std::str::FromStr>(&mut self, what: &str) -> Result<T, InputError> {
-        let (t, l) = self
-            .next()
-            .ok_or_else(|| InputError::new(format!("file ends while reading {what}")))?;
-        t.parse()
-            .map_err(|_| InputError::at_line(l, format!("{what}: `{t}` is not a valid number")))
+    /// The next token as a number; `what` names it in errors.
+    fn number<T: std::str::FromStr>(&mut self, what: Subject) -> Result<T, InputError> {
+        let Some((t, l)) = self.next() else {
+            return Err(SyntaxError::EndsWhileReading(what).into());
+        };
+        t.parse().map_err(|_| {
+            let token = t.to_string();
+            InputError::at_line(l, SyntaxError::NotAValidNumber { what, token })
+        })
     }
 }
 
 /// Parses a MEDIT `.mesh` with hexahedra.
 pub fn parse_medit_hex(bytes: &[u8]) -> Result<HexMesh, InputError> {
-    let text = std::str::from_utf8(bytes).map_err(|_| InputError::new("not a text MEDIT file"))?;
+    let text = std::str::from_utf8(bytes).map_err(|_| {
+        let (format, reason) = (Format::Medit, None);
+        InputError::new(FormatError::NotText { format, reason })
+    })?;
     let mut tok = Tokens {
         it: text.lines().enumerate().peekable(),
         line: Vec::new(),
@@ -47,63 +56,69 @@ pub fn parse_medit_hex(bytes: &[u8]) -> Result<HexMesh, InputError> {
     while let Some((word, line)) = tok.next() {
         match word {
             "MeshVersionFormatted" | "Dimension" => {
-                tok.number::<f64>(word)?;
+                tok.number::<f64>(Subject::Keyword(word.to_string()))?;
             }
             "Vertices" => {
-                let n: usize = tok.number("vertex count")?;
+                let n: usize = tok.number(Subject::Count(ElementKind::Vertex))?;
                 if !left(n, 6) {
                     return Err(InputError::at_line(
                         line,
-                        format!("{n} vertices do not fit in the file"),
+                        do_not_fit(ElementKind::Vertex, n),
                     ));
                 }
                 for v in 0..n {
+                    let vertex = || Subject::Element(ElementKind::Vertex.at(v));
                     let p: [f64; 3] = [
-                        tok.number(&format!("vertex {v}"))?,
-                        tok.number(&format!("vertex {v}"))?,
-                        tok.number(&format!("vertex {v}"))?,
+                        tok.number(vertex())?,
+                        tok.number(vertex())?,
+                        tok.number(vertex())?,
                     ];
-                    tok.number::<f64>(&format!("vertex {v} reference"))?;
+                    tok.number::<f64>(Subject::Reference(ElementKind::Vertex.at(v)))?;
                     mesh.positions.push(p);
                 }
             }
             "Hexahedra" => {
-                let n: usize = tok.number("hexahedron count")?;
+                let n: usize = tok.number(Subject::Count(ElementKind::Hexahedron))?;
                 if !left(n, 18) {
-                    return Err(InputError::at_line(
-                        line,
-                        format!("{n} hexahedra do not fit in the file"),
-                    ));
+                    let e = do_not_fit(ElementKind::Hexahedron, n);
+                    return Err(InputError::at_line(line, e));
                 }
                 for h in 0..n {
+                    let hex = || ElementKind::Hexahedron.at(h);
                     let mut cell = [0u32; 8];
                     for c in cell.iter_mut() {
-                        let i: u64 = tok.number(&format!("hexahedron {h}"))?;
+                        let i: u64 = tok.number(Subject::Element(hex()))?;
                         if i == 0 || i > mesh.positions.len() as u64 {
-                            return Err(InputError::new(format!(
-                                "hexahedron {h}: vertex {i} out of range 1..={}",
-                                mesh.positions.len()
-                            )));
+                            let e = IndexError::VertexOutOfRange {
+                                vertex: i,
+                                count: mesh.positions.len(),
+                                style: RangeStyle::OneBased,
+                            };
+                            return Err(hex().error(e).into());
                         }
                         *c = (i - 1) as u32;
                     }
-                    tok.number::<f64>(&format!("hexahedron {h} reference"))?;
+                    tok.number::<f64>(Subject::Reference(hex()))?;
                     mesh.cells.push(cell);
                 }
             }
             "End" => break,
             other => {
-                return Err(InputError::at_line(
-                    line,
-                    format!("unsupported MEDIT section `{other}` (only Vertices and Hexahedra)"),
-                ))
+                let section = FormatError::MeditSection(other.to_string());
+                return Err(InputError::at_line(line, section));
             }
         }
     }
     if mesh.cells.is_empty() {
-        return Err(InputError::new("no hexahedra"));
+        let what = ElementKind::Hexahedron;
+        return Err(CountError::Empty { what, reason: None }.into());
     }
     Ok(mesh)
+}
+
+/// More `what` declared than the file's bytes can hold.
+fn do_not_fit(what: ElementKind, count: usize) -> CountError {
+    CountError::DoNotFit { what, count }
 }
 
 #[cfg(test)]

@@ -9,9 +9,12 @@
 //! the `vt` of that corner, or a [`PolyMesh`]. Every error names its line;
 //! corners in messages are counted from 1 as on the line.
 
-use crate::scan::{as_text, parse_finite, quote};
+use crate::scan::{as_text, parse_finite};
 use crate::PolyMesh;
-use dualex_map::{InputError, TriMap};
+use dualex_map::error::{
+    CountError, EmptyReason, FaceNeed, Format, IndexError, Subject, SyntaxError, Token,
+};
+use dualex_map::{ElementKind, InputError, InputErrorKind, TriMap};
 
 /// One `f` line of a triangle map: vertex and texture indices (0-based,
 /// not yet range-checked against the final counts) and its line.
@@ -32,7 +35,7 @@ pub fn parse_obj(bytes: &[u8]) -> Result<TriMap, InputError> {
 /// The sequential OBJ reader: the reference of [`crate::fast::obj`], and
 /// the one that reports errors.
 pub(crate) fn parse_obj_sequential(bytes: &[u8]) -> Result<TriMap, InputError> {
-    let text = as_text(bytes, "OBJ")?;
+    let text = as_text(bytes, Format::Obj)?;
     let mut positions = Vec::new();
     let mut uvs: Vec<[f64; 2]> = Vec::new();
     let mut tris: Vec<RawTri> = Vec::new();
@@ -40,7 +43,7 @@ pub(crate) fn parse_obj_sequential(bytes: &[u8]) -> Result<TriMap, InputError> {
         let ln = i + 1;
         let mut toks = line.split_ascii_whitespace();
         let Some(kw) = toks.next() else { continue };
-        let at = |m: String| InputError::at_line(ln, m);
+        let at = |k: InputErrorKind| InputError::at_line(ln, k);
         match kw {
             "v" => positions.push(read_position(toks).map_err(at)?),
             "vt" => uvs.push(read_uv(toks).map_err(at)?),
@@ -52,7 +55,7 @@ pub(crate) fn parse_obj_sequential(bytes: &[u8]) -> Result<TriMap, InputError> {
         }
     }
     if tris.is_empty() {
-        return Err(InputError::new("no triangles (the file has no `f` line)"));
+        return Err(no_faces(ElementKind::Triangle));
     }
     let mut map = TriMap {
         positions,
@@ -60,10 +63,11 @@ pub(crate) fn parse_obj_sequential(bytes: &[u8]) -> Result<TriMap, InputError> {
         coords: Vec::with_capacity(tris.len()),
     };
     for t in &tris {
-        let at = |m: String| InputError::at_line(t.line, m);
+        let at = |k: InputErrorKind| InputError::at_line(t.line, k);
         for c in 0..3 {
-            check_range(t.v[c], map.positions.len(), c, "vertex").map_err(at)?;
-            check_range(t.vt[c], uvs.len(), c, "texture coordinate").map_err(at)?;
+            check_range(t.v[c], map.positions.len(), c, ElementKind::Vertex).map_err(at)?;
+            let vt = ElementKind::TextureCoordinate;
+            check_range(t.vt[c], uvs.len(), c, vt).map_err(at)?;
         }
         map.simplices.push(t.v);
         map.coords.push(t.vt.map(|i| uvs[i as usize]));
@@ -75,14 +79,14 @@ pub(crate) fn parse_obj_sequential(bytes: &[u8]) -> Result<TriMap, InputError> {
 /// Parses a text OBJ polygon mesh: positions and faces of 3 or more
 /// vertices (texture and normal indices are ignored).
 pub fn parse_polygon_obj(bytes: &[u8]) -> Result<PolyMesh, InputError> {
-    let text = as_text(bytes, "OBJ")?;
+    let text = as_text(bytes, Format::Obj)?;
     let mut mesh = PolyMesh::default();
     let mut lines = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let ln = i + 1;
         let mut toks = line.split_ascii_whitespace();
         let Some(kw) = toks.next() else { continue };
-        let at = |m: String| InputError::at_line(ln, m);
+        let at = |k: InputErrorKind| InputError::at_line(ln, k);
         match kw {
             "v" => mesh.positions.push(read_position(toks).map_err(at)?),
             "f" => {
@@ -94,55 +98,59 @@ pub fn parse_polygon_obj(bytes: &[u8]) -> Result<PolyMesh, InputError> {
         }
     }
     if mesh.faces.is_empty() {
-        return Err(InputError::new("no faces (the file has no `f` line)"));
+        return Err(no_faces(ElementKind::Face));
     }
     for (face, &ln) in mesh.faces.iter().zip(&lines) {
         for (c, &v) in face.iter().enumerate() {
-            check_range(v, mesh.positions.len(), c, "vertex")
-                .map_err(|m| InputError::at_line(ln, m))?;
+            check_range(v, mesh.positions.len(), c, ElementKind::Vertex)
+                .map_err(|k| InputError::at_line(ln, k))?;
         }
     }
     Ok(mesh)
 }
 
+/// No `what` read: the file has no `f` line.
+fn no_faces(what: ElementKind) -> InputError {
+    let reason = Some(EmptyReason::NoFaceLine);
+    CountError::Empty { what, reason }.into()
+}
+
 /// `v x y z [w …]` after the keyword: the first three must be finite numbers.
-fn read_position<'a>(toks: impl Iterator<Item = &'a str>) -> Result<[f64; 3], String> {
+fn read_position<'a>(toks: impl Iterator<Item = &'a str>) -> Result<[f64; 3], InputErrorKind> {
     let mut p = [0.0; 3];
     let mut n = 0;
     for tok in toks {
         if tok.starts_with('#') {
             break;
         }
-        let x = parse_finite(tok, "vertex coordinate")?;
+        let x = parse_finite(tok, Subject::VertexCoordinate)?;
         if let Some(slot) = p.get_mut(n) {
             *slot = x;
         }
         n += 1;
     }
     if n < 3 {
-        return Err(format!("vertex has {n} coordinates; expected `v x y z`"));
+        return Err(CountError::VertexCoordinates { found: n }.into());
     }
     Ok(p)
 }
 
 /// `vt u v [w]` after the keyword: `u` and `v` must be finite numbers.
-fn read_uv<'a>(toks: impl Iterator<Item = &'a str>) -> Result<[f64; 2], String> {
+fn read_uv<'a>(toks: impl Iterator<Item = &'a str>) -> Result<[f64; 2], InputErrorKind> {
     let mut uv = [0.0; 2];
     let mut n = 0;
     for tok in toks {
         if tok.starts_with('#') {
             break;
         }
-        let x = parse_finite(tok, "texture coordinate")?;
+        let x = parse_finite(tok, Subject::TextureCoordinate)?;
         if let Some(slot) = uv.get_mut(n) {
             *slot = x;
         }
         n += 1;
     }
     if n < 2 {
-        return Err(format!(
-            "texture coordinate has {n} values; expected `vt u v`"
-        ));
+        return Err(CountError::TextureValues { found: n }.into());
     }
     Ok(uv)
 }
@@ -153,102 +161,127 @@ fn read_tri<'a>(
     toks: impl Iterator<Item = &'a str>,
     nv: usize,
     nvt: usize,
-) -> Result<([u32; 3], [u32; 3]), String> {
+) -> Result<([u32; 3], [u32; 3]), InputErrorKind> {
     let corners: Vec<&str> = toks.take_while(|t| !t.starts_with('#')).collect();
     if corners.len() != 3 {
-        return Err(face_size_message(corners.len()));
+        let need = if corners.len() < 3 {
+            FaceNeed::Triangle
+        } else {
+            FaceNeed::OnlyTriangles
+        };
+        return Err(face_size(corners.len(), need));
     }
     let mut v = [0; 3];
     let mut vt = [0; 3];
     for (c, corner) in corners.iter().enumerate() {
         let mut parts = corner.split('/');
         let vi = parts.next().unwrap_or("");
-        v[c] = resolve(vi, nv, c, "vertex")?;
+        v[c] = resolve(vi, nv, c, ElementKind::Vertex)?;
         match parts.next() {
-            Some(ti) if !ti.is_empty() => vt[c] = resolve(ti, nvt, c, "texture coordinate")?,
-            _ => {
-                return Err(format!(
-                    "face corner {} has no texture coordinate (expected f v/vt)",
-                    c + 1
-                ))
+            Some(ti) if !ti.is_empty() => {
+                vt[c] = resolve(ti, nvt, c, ElementKind::TextureCoordinate)?
             }
+            _ => return Err(SyntaxError::NoTextureCoordinate { corner: c + 1 }.into()),
         }
     }
     Ok((v, vt))
 }
 
 /// The vertex indices of an `f` line of a polygon mesh.
-fn read_polygon<'a>(toks: impl Iterator<Item = &'a str>, nv: usize) -> Result<Vec<u32>, String> {
+fn read_polygon<'a>(
+    toks: impl Iterator<Item = &'a str>,
+    nv: usize,
+) -> Result<Vec<u32>, InputErrorKind> {
     let corners = toks.take_while(|t| !t.starts_with('#'));
+    let vertex = |(c, corner): (usize, &str)| {
+        resolve(
+            corner.split('/').next().unwrap_or(""),
+            nv,
+            c,
+            ElementKind::Vertex,
+        )
+    };
     let face = corners
         .enumerate()
-        .map(|(c, corner)| resolve(corner.split('/').next().unwrap_or(""), nv, c, "vertex"))
-        .collect::<Result<Vec<u32>, String>>()?;
+        .map(vertex)
+        .collect::<Result<Vec<u32>, InputErrorKind>>()?;
     if face.len() < 3 {
-        return Err(format!(
-            "face has {} vertices; a face needs at least 3",
-            face.len()
-        ));
+        return Err(face_size(face.len(), FaceNeed::AtLeastThree));
     }
     Ok(face)
 }
 
-fn face_size_message(n: usize) -> String {
-    if n < 3 {
-        format!("face has {n} vertices; a triangle needs 3")
-    } else {
-        format!("face has {n} vertices; only triangles are supported (triangulate the mesh first)")
+/// A face of `vertices` corners, not what a face needs.
+fn face_size(vertices: usize, need: FaceNeed) -> InputErrorKind {
+    let face = None;
+    CountError::FaceSize {
+        face,
+        vertices,
+        need,
     }
+    .into()
 }
 
 /// A 1-based or negative OBJ index to a 0-based one; `defined` is the number
 /// of elements defined so far. Positive indices are range-checked later.
-fn resolve(tok: &str, defined: usize, corner: usize, what: &str) -> Result<u32, String> {
-    let c = corner + 1;
-    let i: i64 = tok.parse().map_err(|_| {
-        format!(
-            "face corner {c}: {what} index {} is not an integer",
-            quote(tok)
-        )
-    })?;
-    let zero_based = if i > 0 {
-        i - 1
-    } else if i < 0 {
-        defined as i64 + i
+fn resolve(
+    tok: &str,
+    defined: usize,
+    corner: usize,
+    what: ElementKind,
+) -> Result<u32, InputErrorKind> {
+    let at = |e: InputErrorKind| ElementKind::FaceCorner.at(corner + 1).error(e);
+    let Ok(index) = tok.parse::<i64>() else {
+        let what = Some(Subject::Index(what));
+        let token = Token::new(tok);
+        return Err(at(SyntaxError::NotAnInteger { what, token }.into()));
+    };
+    let zero_based = if index > 0 {
+        index - 1
+    } else if index < 0 {
+        defined as i64 + index
     } else {
-        return Err(format!(
-            "face corner {c}: {what} index 0 is invalid (OBJ indices start at 1)"
-        ));
+        return Err(at(IndexError::Zero { what }.into()));
     };
     if zero_based < 0 {
-        return Err(format!(
-            "face corner {c}: {what} index {i} points before the first {what} ({defined} defined so far)"
-        ));
+        let e = IndexError::BeforeFirst {
+            what,
+            index,
+            defined,
+        };
+        return Err(at(e.into()));
     }
-    u32::try_from(zero_based).map_err(|_| format!("face corner {c}: {what} index {i} is too large"))
+    u32::try_from(zero_based).map_err(|_| at(IndexError::TooLarge { what, index }.into()))
 }
 
 /// Checks a resolved index against the number of elements in the file.
-fn check_range(i: u32, count: usize, corner: usize, what: &str) -> Result<(), String> {
+fn check_range(
+    i: u32,
+    count: usize,
+    corner: usize,
+    what: ElementKind,
+) -> Result<(), InputErrorKind> {
     if (i as usize) < count {
         return Ok(());
     }
-    Err(format!(
-        "face corner {}: {what} index {} is out of range (the file has {count})",
-        corner + 1,
-        i as u64 + 1
-    ))
+    let e = IndexError::OutOfRange {
+        what,
+        index: u64::from(i) + 1,
+        count,
+        counted: None,
+    };
+    Err(ElementKind::FaceCorner.at(corner + 1).error(e))
 }
 
 /// Comments and alphabetic keywords are skipped; anything else is an error.
-fn check_skippable(kw: &str) -> Result<(), String> {
+fn check_skippable(kw: &str) -> Result<(), InputErrorKind> {
     if kw.starts_with('#')
         || kw.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
             && kw.starts_with(|c: char| c.is_ascii_alphabetic())
     {
         return Ok(());
     }
-    Err(format!("unknown statement {}", quote(kw)))
+    Err(SyntaxError::UnknownStatement(Token::new(kw)).into())
 }
 
 #[cfg(test)]

@@ -22,8 +22,12 @@
 //! line, or the cell when it is not a tet. Counts are checked against the
 //! lines left before anything is allocated.
 
-use crate::scan::{as_text, parse_finite, quote};
-use dualex_map::{InputError, TetMap};
+use crate::scan::{as_text, parse_finite};
+use dualex_map::error::{
+    Awaited, CountError, EmptyReason, Format, FormatError, IndexError, NotATet, Subject,
+    SyntaxError, Token,
+};
+use dualex_map::{Element, ElementKind, InputError, InputErrorKind, TetMap};
 
 /// The halfface property holding the map.
 pub const HEXHEX_PARAM: &str = "HexHex::Parametrization";
@@ -45,10 +49,10 @@ impl<'a> Lines<'a> {
         Lines { lines, at: 0 }
     }
 
-    fn next(&mut self, what: &str) -> Result<(usize, &'a str), InputError> {
+    fn next(&mut self, awaited: Awaited) -> Result<(usize, &'a str), InputError> {
         let l = self.lines.get(self.at).copied().ok_or_else(|| {
             let last = self.lines.last().map_or(1, |l| l.0);
-            InputError::at_line(last, format!("file ends before {what}"))
+            InputError::at_line(last, SyntaxError::EndsBefore(awaited))
         })?;
         self.at += 1;
         Ok(l)
@@ -63,64 +67,70 @@ impl<'a> Lines<'a> {
     }
 
     /// A section keyword line, then its count line (checked against the lines left).
-    fn section(&mut self, keyword: &str) -> Result<usize, InputError> {
-        let (line, l) = self.next(&format!("the {keyword} section"))?;
+    fn section(&mut self, keyword: &'static str) -> Result<usize, InputError> {
+        let (line, l) = self.next(Awaited::Section(keyword))?;
         if !l.eq_ignore_ascii_case(keyword) {
-            return Err(InputError::at_line(
-                line,
-                format!("expected `{keyword}`, found {}", quote(l)),
-            ));
+            let found = Token::new(l);
+            let e = SyntaxError::ExpectedKeyword { keyword, found };
+            return Err(InputError::at_line(line, e));
         }
-        let (line, l) = self.next(&format!("the {keyword} count"))?;
-        let n: usize = l
-            .parse()
-            .map_err(|_| InputError::at_line(line, format!("bad {keyword} count {}", quote(l))))?;
-        if n > self.left() {
-            return Err(InputError::at_line(
-                line,
-                format!(
-                    "{n} {keyword} declared but only {} lines follow",
-                    self.left()
-                ),
-            ));
+        let (line, l) = self.next(Awaited::SectionCount(keyword))?;
+        let Ok(count) = l.parse::<usize>() else {
+            let token = Token::new(l);
+            let e = SyntaxError::BadSectionCount {
+                section: keyword,
+                token,
+            };
+            return Err(InputError::at_line(line, e));
+        };
+        if count > self.left() {
+            let e = CountError::SectionExceedsLines {
+                section: keyword,
+                count,
+                lines: self.left(),
+            };
+            return Err(InputError::at_line(line, e));
         }
-        Ok(n)
+        Ok(count)
     }
 }
 
-/// Parses one line of `N` numbers.
-fn numbers<const N: usize>(line: usize, l: &str, what: &str) -> Result<[f64; N], InputError> {
+/// Parses one line of `N` numbers, the values of `what`.
+fn numbers<const N: usize>(line: usize, l: &str, what: Element) -> Result<[f64; N], InputError> {
     let mut out = [0.0; N];
     let mut toks = l.split_whitespace();
     for x in &mut out {
-        let tok = toks
-            .next()
-            .ok_or_else(|| InputError::at_line(line, format!("{what}: fewer than {N} values")))?;
-        *x = parse_finite(tok, what).map_err(|m| InputError::at_line(line, m))?;
+        let Some(tok) = toks.next() else {
+            let fewer = CountError::FewerValues { expected: N };
+            return Err(InputError::at_line(line, what.error(fewer)));
+        };
+        *x = parse_finite(tok, Subject::Element(what.clone()))
+            .map_err(|e| InputError::at_line(line, e))?;
     }
     Ok(out)
 }
 
-/// Parses `k i_1 … i_k`, each index below `bound`.
-fn index_list(line: usize, l: &str, bound: usize, what: &str) -> Result<Vec<usize>, InputError> {
-    let bad = |m: String| InputError::at_line(line, format!("{what}: {m}"));
+/// Parses `k i_1 … i_k`, each index below `bound`, the list of `what`.
+fn index_list(line: usize, l: &str, bound: usize, what: Element) -> Result<Vec<usize>, InputError> {
+    let bad = |e: InputErrorKind| InputError::at_line(line, what.clone().error(e));
     let mut toks = l
         .split_whitespace()
         .map(|t| t.parse::<usize>().map_err(|_| t));
     let k = match toks.next() {
         Some(Ok(k)) if k <= 64 => k,
-        _ => return Err(bad(format!("bad valence in {}", quote(l)))),
+        _ => return Err(bad(SyntaxError::BadValence(Token::new(l)).into())),
     };
     let list: Vec<usize> = toks
         .take(k)
         .map(|t| match t {
             Ok(i) if i < bound => Ok(i),
-            Ok(i) => Err(bad(format!("index {i} out of range (there are {bound})"))),
-            Err(t) => Err(bad(format!("bad index {}", quote(t)))),
+            Ok(index) => Err(bad(IndexError::ListOutOfRange { index, bound }.into())),
+            Err(t) => Err(bad(SyntaxError::BadIndex(Token::new(t)).into())),
         })
         .collect::<Result<_, _>>()?;
     if list.len() != k {
-        return Err(bad(format!("{k} indices declared, {} given", list.len())));
+        let given = list.len();
+        return Err(bad(CountError::Indices { declared: k, given }.into()));
     }
     Ok(list)
 }
@@ -155,16 +165,13 @@ impl Topology {
 
 /// Parses an OpenVolumeMesh ASCII tet map (see the module docs).
 pub fn parse_ovm_tet_map(bytes: &[u8]) -> Result<TetMap, InputError> {
-    let text = as_text(bytes, "ovm")?;
+    let text = as_text(bytes, Format::Ovm)?;
     let mut lines = Lines::new(text);
     if let Some((line, l)) = lines.peek() {
         let mut t = l.split_whitespace();
         if t.next().is_some_and(|w| w.eq_ignore_ascii_case("ovm")) {
             if t.next().is_some_and(|w| w.eq_ignore_ascii_case("binary")) {
-                return Err(InputError::at_line(
-                    line,
-                    "binary .ovm files are not supported; write it as ASCII",
-                ));
+                return Err(InputError::at_line(line, FormatError::Binary(Format::Ovm)));
             }
             lines.at += 1;
         }
@@ -172,8 +179,8 @@ pub fn parse_ovm_tet_map(bytes: &[u8]) -> Result<TetMap, InputError> {
     let nv = lines.section("Vertices")?;
     let mut positions = Vec::with_capacity(nv);
     for i in 0..nv {
-        let (line, l) = lines.next("a vertex")?;
-        positions.push(numbers::<3>(line, l, &format!("vertex {i}"))?);
+        let (line, l) = lines.next(Awaited::Record(ElementKind::Vertex))?;
+        positions.push(numbers::<3>(line, l, ElementKind::Vertex.at(i))?);
     }
     let ne = lines.section("Edges")?;
     let mut topo = Topology {
@@ -182,7 +189,7 @@ pub fn parse_ovm_tet_map(bytes: &[u8]) -> Result<TetMap, InputError> {
         cells: Vec::new(),
     };
     for i in 0..ne {
-        let (line, l) = lines.next("an edge")?;
+        let (line, l) = lines.next(Awaited::Record(ElementKind::Edge))?;
         let mut ends = [0u32; 2];
         let mut toks = l.split_whitespace();
         for end in &mut ends {
@@ -191,22 +198,23 @@ pub fn parse_ovm_tet_map(bytes: &[u8]) -> Result<TetMap, InputError> {
                 .and_then(|t| t.parse::<u32>().ok())
                 .filter(|&v| (v as usize) < nv)
                 .ok_or_else(|| {
-                    InputError::at_line(line, format!("edge {i}: bad vertex index in {}", quote(l)))
+                    let bad = SyntaxError::BadVertexIndexIn(Token::new(l));
+                    InputError::at_line(line, ElementKind::Edge.at(i).error(bad))
                 })?;
         }
         topo.edges.push(ends);
     }
     let nf = lines.section("Faces")?;
     for i in 0..nf {
-        let (line, l) = lines.next("a face")?;
+        let (line, l) = lines.next(Awaited::Record(ElementKind::Face))?;
         topo.faces
-            .push(index_list(line, l, 2 * ne, &format!("face {i}"))?);
+            .push(index_list(line, l, 2 * ne, ElementKind::Face.at(i))?);
     }
     let nc = lines.section("Polyhedra")?;
     for i in 0..nc {
-        let (line, l) = lines.next("a cell")?;
+        let (line, l) = lines.next(Awaited::Record(ElementKind::Cell))?;
         topo.cells
-            .push((line, index_list(line, l, 2 * nf, &format!("cell {i}"))?));
+            .push((line, index_list(line, l, 2 * nf, ElementKind::Cell.at(i))?));
     }
     let param = read_param(&mut lines, [nv, ne, nf, nc])?;
     let mut map = TetMap {
@@ -215,13 +223,19 @@ pub fn parse_ovm_tet_map(bytes: &[u8]) -> Result<TetMap, InputError> {
         coords: Vec::with_capacity(nc),
     };
     for (c, (line, hfs)) in topo.cells.iter().enumerate() {
-        let (tet, uvw) = cell_tet(&topo, hfs, &param)
-            .map_err(|m| InputError::at_line(*line, format!("cell {c}: {m}")))?;
+        let (tet, uvw) = cell_tet(&topo, hfs, &param).map_err(|why| {
+            let e = ElementKind::Cell.at(c).error(FormatError::NotATet(why));
+            InputError::at_line(*line, e)
+        })?;
         map.simplices.push(tet);
         map.coords.push(uvw);
     }
     if map.simplices.is_empty() {
-        return Err(InputError::new("no cells (the Polyhedra count is 0)"));
+        return Err(CountError::Empty {
+            what: ElementKind::Cell,
+            reason: Some(EmptyReason::ZeroCount("Polyhedra")),
+        }
+        .into());
     }
     map.validate()?;
     Ok(map)
@@ -249,13 +263,8 @@ fn read_param(
             "cprop" => nc,
             "mprop" => 1,
             _ => {
-                return Err(InputError::at_line(
-                    line,
-                    format!(
-                        "expected a property header (`HFProp vec3d \"name\"`), found {}",
-                        quote(l)
-                    ),
-                ))
+                let e = SyntaxError::ExpectedPropertyHeader(Token::new(l));
+                return Err(InputError::at_line(line, e));
             }
         };
         // older writers repeat the quoted name before the values
@@ -263,36 +272,32 @@ fn read_param(
             lines.at += 1;
         }
         if count > lines.left() {
-            return Err(InputError::at_line(
-                line,
-                format!(
-                    "property \"{name}\": {count} values expected but only {} lines follow",
-                    lines.left()
-                ),
-            ));
+            let e = CountError::PropertyExceedsLines {
+                property: name.to_string(),
+                count,
+                lines: lines.left(),
+            };
+            return Err(InputError::at_line(line, e));
         }
         if entity == "hfprop" && name == HEXHEX_PARAM {
             if kind != "vec3d" && kind != "vec3f" {
-                return Err(InputError::at_line(
-                    line,
-                    format!("property \"{HEXHEX_PARAM}\" has type `{kind}`, expected `vec3d`"),
-                ));
+                let e = FormatError::PropertyType {
+                    property: HEXHEX_PARAM,
+                    found: kind,
+                };
+                return Err(InputError::at_line(line, e));
             }
             let mut values = Vec::with_capacity(count);
             for i in 0..count {
-                let (line, l) = lines.next("a parameter")?;
-                values.push(numbers::<3>(line, l, &format!("halfface {i}"))?);
+                let (line, l) = lines.next(Awaited::Parameter)?;
+                values.push(numbers::<3>(line, l, ElementKind::Halfface.at(i))?);
             }
             param = Some(values);
         } else {
             lines.at += count;
         }
     }
-    param.ok_or_else(|| {
-        InputError::new(format!(
-            "no halfface property \"{HEXHEX_PARAM}\" (vec3d): not a HexHex map"
-        ))
-    })
+    param.ok_or_else(|| FormatError::NoHalffaceProperty(HEXHEX_PARAM).into())
 }
 
 /// The tet of one cell and its corners' map coordinates.
@@ -300,16 +305,13 @@ fn cell_tet(
     topo: &Topology,
     hfs: &[usize],
     param: &[[f64; 3]],
-) -> Result<([u32; 4], [[f64; 3]; 4]), String> {
+) -> Result<([u32; 4], [[f64; 3]; 4]), NotATet> {
     if hfs.len() != 4 {
-        return Err(format!(
-            "{} halffaces; only tets (4) are supported",
-            hfs.len()
-        ));
+        return Err(NotATet::Halffaces(hfs.len()));
     }
     let faces: Vec<Vec<u32>> = hfs.iter().map(|&hf| topo.halfface(hf)).collect();
     if faces.iter().any(|f| f.len() != 3) {
-        return Err("a face that is not a triangle".to_string());
+        return Err(NotATet::NonTriangleFace);
     }
     let [a, b, c] = [faces[0][0], faces[0][1], faces[0][2]];
     let d = faces[1..]
@@ -317,22 +319,18 @@ fn cell_tet(
         .flatten()
         .copied()
         .find(|v| ![a, b, c].contains(v))
-        .ok_or("all faces on three vertices")?;
+        .ok_or(NotATet::ThreeVertices)?;
     let tet = [a, b, c, d];
     let mut uvw = [[0.0; 3]; 4];
     for (k, &v) in tet.iter().enumerate() {
         let mut off = hfs.iter().zip(&faces).filter(|(_, f)| !f.contains(&v));
         match (off.next(), off.next()) {
             (Some((&hf, _)), None) => uvw[k] = param[hf],
-            _ => {
-                return Err(format!(
-                    "not a tet: vertex {v} is not opposite exactly one face"
-                ))
-            }
+            _ => return Err(NotATet::NotOpposite { vertex: v }),
         }
     }
     if faces.iter().any(|f| f.iter().any(|v| !tet.contains(v))) {
-        return Err("not a tet: its faces span more than 4 vertices".to_string());
+        return Err(NotATet::MoreThanFourVertices);
     }
     Ok((tet, uvw))
 }

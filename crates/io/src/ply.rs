@@ -18,9 +18,12 @@
 //! record (`face 12`, counted from 0).
 
 use crate::ply_header::{parse_header, texcoord_source, Element, Kind, PlyFormat, Scalar};
-use crate::scan::{fits, quote, Tokens};
+use crate::scan::{fits, Tokens};
 use crate::PolyMesh;
-use dualex_map::{InputError, TriMap};
+use dualex_map::error::{
+    CountError, EmptyReason, FaceNeed, Format, FormatError, IndexError, Subject, SyntaxError, Token,
+};
+use dualex_map::{ElementKind, InputError, InputErrorKind, Location, TriMap};
 
 /// Where values come from: ascii tokens or binary bytes.
 enum Body<'a> {
@@ -35,10 +38,10 @@ enum Body<'a> {
 
 impl Body<'_> {
     /// The position for messages.
-    fn here(&self) -> String {
+    fn here(&self) -> Location {
         match self {
-            Body::Ascii(t) => format!("line {}", t.last_line()),
-            Body::Binary { pos, base, .. } => format!("byte {}", base + pos),
+            Body::Ascii(t) => Location::Line(t.last_line()),
+            Body::Binary { pos, base, .. } => Location::Byte(base + pos),
         }
     }
 
@@ -58,25 +61,25 @@ impl Body<'_> {
     }
 
     /// Reads one scalar of type `ty`.
-    fn scalar(&mut self, ty: Scalar) -> Result<f64, String> {
+    fn scalar(&mut self, ty: Scalar) -> Result<f64, InputErrorKind> {
+        let early = || InputErrorKind::from(SyntaxError::EndsEarly);
         match self {
             Body::Ascii(t) => {
-                let (tok, _) = t.next_token().ok_or("file ends early (truncated file?)")?;
+                let (tok, _) = t.next_token().ok_or_else(early)?;
+                let (what, token) = (None, Token::new(tok));
                 if ty.is_int() {
                     tok.parse::<i64>()
                         .map(|i| i as f64)
-                        .map_err(|_| format!("{} is not an integer", quote(tok)))
+                        .map_err(|_| SyntaxError::NotAnInteger { what, token }.into())
                 } else {
                     tok.parse::<f64>()
-                        .map_err(|_| format!("{} is not a number", quote(tok)))
+                        .map_err(|_| SyntaxError::NotANumber { what, token }.into())
                 }
             }
             Body::Binary {
                 bytes, pos, big, ..
             } => {
-                let raw = bytes
-                    .get(*pos..*pos + ty.size())
-                    .ok_or("file ends early (truncated file?)")?;
+                let raw = bytes.get(*pos..*pos + ty.size()).ok_or_else(early)?;
                 *pos += ty.size();
                 Ok(decode(ty, raw, *big))
             }
@@ -85,17 +88,27 @@ impl Body<'_> {
 
     /// Reads a list length (a non-negative integer that fits in the bytes
     /// left for items of type `item`).
-    fn list_len(&mut self, count: Scalar, item: Scalar, name: &str) -> Result<usize, String> {
+    fn list_len(
+        &mut self,
+        count: Scalar,
+        item: Scalar,
+        name: &str,
+    ) -> Result<usize, InputErrorKind> {
         let n = self.scalar(count)?;
+        let list = || name.to_string();
         if n < 0.0 || n.fract() != 0.0 {
-            return Err(format!(
-                "list `{name}` length {n} is not a non-negative integer"
-            ));
+            return Err(SyntaxError::BadListLength {
+                list: list(),
+                length: n,
+            }
+            .into());
         }
         if !self.fits(n as u64, item.size() as u64, 1) {
-            return Err(format!(
-                "list `{name}` claims {n} items but the file ends before (truncated file?)"
-            ));
+            return Err(SyntaxError::ListTruncated {
+                list: list(),
+                items: n,
+            }
+            .into());
         }
         Ok(n as usize)
     }
@@ -146,26 +159,20 @@ pub fn parse_ply(bytes: &[u8]) -> Result<TriMap, InputError> {
     let mut coords = Vec::new();
     let parsed = parse_body(bytes, true, |f| {
         let [a, b, c] = f.vertices else {
-            return Err(format!(
-                "face {} has {} vertices; only triangles are supported (triangulate the mesh first)",
-                f.index,
-                f.vertices.len()
-            ));
+            return Err(face_size(&f, FaceNeed::OnlyTriangles));
         };
         simplices.push([*a, *b, *c]);
         // without a per-face list the corners take their vertices' pairs (below)
         let Some(uv) = f.texcoord else {
             return Ok(());
         };
+        let face = ElementKind::Face.at(f.index);
         let [u0, v0, u1, v1, u2, v2] = uv else {
-            return Err(format!(
-                "face {}: texcoord list has {} values; expected 6 (u0 v0 u1 v1 u2 v2)",
-                f.index,
-                uv.len()
-            ));
+            return Err(face.error(CountError::Texcoords { values: uv.len() }));
         };
         if uv.iter().any(|x| !x.is_finite()) {
-            return Err(format!("face {}: texcoord is not finite", f.index));
+            let what = Subject::Texcoord;
+            return Err(face.error(InputErrorKind::NonFinite { what, token: None }));
         }
         coords.push([[*u0, *v0], [*u1, *v1], [*u2, *v2]]);
         Ok(())
@@ -176,9 +183,11 @@ pub fn parse_ply(bytes: &[u8]) -> Result<TriMap, InputError> {
         coords = simplices.iter().map(|s| s.map(at)).collect();
     }
     if simplices.is_empty() {
-        return Err(InputError::new(
-            "no triangles (the `face` element is empty)",
-        ));
+        return Err(CountError::Empty {
+            what: ElementKind::Triangle,
+            reason: Some(EmptyReason::EmptyElement("face")),
+        }
+        .into());
     }
     let map = TriMap {
         positions: parsed.positions,
@@ -194,21 +203,21 @@ pub fn parse_polygon_ply(bytes: &[u8]) -> Result<PolyMesh, InputError> {
     let mut faces = Vec::new();
     let parsed = parse_body(bytes, false, |f| {
         if f.vertices.len() < 3 {
-            return Err(format!(
-                "face {} has {} vertices; a face needs at least 3",
-                f.index,
-                f.vertices.len()
-            ));
+            return Err(face_size(&f, FaceNeed::AtLeastThree));
         }
         faces.push(f.vertices.to_vec());
         Ok(())
     })?;
     let nv = parsed.positions.len();
     for (i, face) in faces.iter().enumerate() {
-        if let Some(v) = face.iter().find(|&&v| v as usize >= nv) {
-            return Err(InputError::new(format!(
-                "face {i} refers to vertex {v}, but there are {nv} vertices"
-            )));
+        if let Some(&v) = face.iter().find(|&&v| v as usize >= nv) {
+            return Err(IndexError::RefersToVertex {
+                owner: ElementKind::Face.at(i),
+                corner: None,
+                vertex: v.into(),
+                count: nv,
+            }
+            .into());
         }
     }
     Ok(PolyMesh {
@@ -217,17 +226,27 @@ pub fn parse_polygon_ply(bytes: &[u8]) -> Result<PolyMesh, InputError> {
     })
 }
 
+/// Face `f` of a size that is not read.
+fn face_size(f: &FaceRecord<'_>, need: FaceNeed) -> InputErrorKind {
+    CountError::FaceSize {
+        face: Some(f.index as u64),
+        vertices: f.vertices.len(),
+        need,
+    }
+    .into()
+}
+
 /// Reads header and body; `on_face` receives each face record.
 fn parse_body(
     bytes: &[u8],
     want_texcoord: bool,
-    mut on_face: impl FnMut(FaceRecord<'_>) -> Result<(), String>,
+    mut on_face: impl FnMut(FaceRecord<'_>) -> Result<(), InputErrorKind>,
 ) -> Result<Parsed, InputError> {
     let header = parse_header(bytes)?;
     let rest = bytes.get(header.body..).unwrap_or_default();
     let mut body = match header.format {
         PlyFormat::Ascii => {
-            let text = crate::scan::as_text(bytes, "PLY")?;
+            let text = crate::scan::as_text(bytes, Format::Ply)?;
             Body::Ascii(Tokens::new(
                 text.get(header.body..).unwrap_or_default(),
                 header.body_line,
@@ -271,9 +290,7 @@ fn parse_body(
         } else {
             "vertex"
         };
-        return Err(InputError::new(format!(
-            "PLY file has no `{missing}` element"
-        )));
+        return Err(FormatError::MissingElement(missing).into());
     }
     Ok(parsed)
 }
@@ -284,22 +301,21 @@ fn check_fits(body: &Body<'_>, el: &Element) -> Result<(), InputError> {
     if el.count == 0 || n_props == 0 || body.fits(el.count, el.min_binary_size(), n_props) {
         return Ok(());
     }
-    Err(InputError::at_line(
-        el.line,
-        format!(
-            "element `{}` claims {} records, but only {} bytes follow (truncated or corrupt file)",
-            el.name,
-            el.count,
-            body.remaining()
-        ),
-    ))
+    let e = CountError::ElementExceedsBytes {
+        element: el.name.clone(),
+        count: el.count,
+        bytes: body.remaining(),
+    };
+    Err(InputError::at_line(el.line, e))
 }
 
 /// An error at the current body position, about record `i` of `el`.
-fn at(body: &Body<'_>, el: &Element, i: u64, message: String) -> InputError {
-    let mut e = InputError::new(format!("{} {i}: {message}", el.name));
-    e.location = Some(body.here());
-    e
+fn at(body: &Body<'_>, el: &Element, i: u64, what: InputErrorKind) -> InputError {
+    let record = dualex_map::Element {
+        kind: ElementKind::from_name(&el.name),
+        index: i,
+    };
+    InputError::at(body.here(), record.error(what))
 }
 
 /// Positions and, when asked, per-vertex map coordinates.
@@ -317,10 +333,11 @@ fn read_vertices(
             .find(&[name])
             .filter(|&p| matches!(el.props[p].kind, Kind::Scalar(_)));
         slots[k] = p.ok_or_else(|| {
-            InputError::at_line(
-                el.line,
-                format!("element `vertex` has no scalar property `{name}`"),
-            )
+            let e = FormatError::MissingScalarProperty {
+                element: "vertex",
+                property: name,
+            };
+            InputError::at_line(el.line, e)
         })?;
     }
     // `check_fits` bounded `count` by the file size: this allocation is safe.
@@ -338,13 +355,16 @@ fn read_vertices(
                     let x = body.scalar(ty).map_err(|m| at(body, el, i, m))?;
                     if let Some(k) = slots.iter().position(|&s| s == j) {
                         if !x.is_finite() {
-                            return Err(at(body, el, i, "coordinate is not finite".into()));
+                            let what = Subject::Coordinate;
+                            let e = InputErrorKind::NonFinite { what, token: None };
+                            return Err(at(body, el, i, e));
                         }
                         p[k] = x;
                     } else if let Some(k) = uv_slots.and_then(|s| s.iter().position(|&s| s == j)) {
                         if !x.is_finite() {
-                            let m = format!("texture coordinate `{}` is not finite", prop.name);
-                            return Err(at(body, el, i, m));
+                            let what = Subject::NamedTextureCoordinate(prop.name.clone());
+                            let e = InputErrorKind::NonFinite { what, token: None };
+                            return Err(at(body, el, i, e));
                         }
                         uv[k] = x;
                     }
@@ -365,17 +385,18 @@ fn read_vertices(
 fn read_faces(
     body: &mut Body<'_>,
     el: &Element,
-    on_face: &mut impl FnMut(FaceRecord<'_>) -> Result<(), String>,
+    on_face: &mut impl FnMut(FaceRecord<'_>) -> Result<(), InputErrorKind>,
 ) -> Result<(), InputError> {
     let list = |names: &[&str]| {
         el.find(names)
             .filter(|&p| matches!(el.props[p].kind, Kind::List { .. }))
     };
     let vi = list(&["vertex_indices", "vertex_index"]).ok_or_else(|| {
-        InputError::at_line(
-            el.line,
-            "element `face` has no `vertex_indices` list property",
-        )
+        let e = FormatError::MissingListProperty {
+            element: "face",
+            property: "vertex_indices",
+        };
+        InputError::at_line(el.line, e)
     })?;
     let tc = list(&["texcoord"]);
     let (mut verts, mut uvs) = (Vec::new(), Vec::new());
@@ -398,11 +419,7 @@ fn read_faces(
             vertices: &verts,
             texcoord: tc.map(|_| uvs.as_slice()),
         };
-        on_face(record).map_err(|m| {
-            let mut e = InputError::new(m);
-            e.location = Some(body.here());
-            e
-        })?;
+        on_face(record).map_err(|e| InputError::at(body.here(), e))?;
     }
     Ok(())
 }
@@ -412,7 +429,7 @@ fn read_list(
     count: Scalar,
     item: Scalar,
     out: &mut Vec<f64>,
-) -> Result<(), String> {
+) -> Result<(), InputErrorKind> {
     out.clear();
     let n = body.list_len(count, item, "texcoord")?;
     for _ in 0..n {
@@ -426,20 +443,25 @@ fn read_indices(
     count: Scalar,
     item: Scalar,
     out: &mut Vec<u32>,
-) -> Result<(), String> {
+) -> Result<(), InputErrorKind> {
     out.clear();
     let n = body.list_len(count, item, "vertex_indices")?;
     for _ in 0..n {
         let x = body.scalar(item)?;
         if !(0.0..=u32::MAX as f64).contains(&x) || x.fract() != 0.0 {
-            return Err(format!("vertex index {x} is not a valid index"));
+            return Err(IndexError::NotValid { value: x }.into());
         }
         out.push(x as u32);
     }
     Ok(())
 }
 
-fn skip_list(body: &mut Body<'_>, count: Scalar, item: Scalar, name: &str) -> Result<(), String> {
+fn skip_list(
+    body: &mut Body<'_>,
+    count: Scalar,
+    item: Scalar,
+    name: &str,
+) -> Result<(), InputErrorKind> {
     let n = body.list_len(count, item, name)?;
     for _ in 0..n {
         body.scalar(item)?;

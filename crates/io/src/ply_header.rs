@@ -6,8 +6,8 @@
 //! as `u64` and *not* trusted: the body reader checks each against the bytes
 //! left before allocating anything.
 
-use crate::scan::quote;
-use dualex_map::InputError;
+use dualex_map::error::{Format, FormatError, Subject, SyntaxError, Token};
+use dualex_map::{InputError, InputErrorKind};
 
 /// Encoding of the body.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -119,10 +119,7 @@ pub(crate) struct Header {
 /// Parses the header; errors name the header line.
 pub(crate) fn parse_header(bytes: &[u8]) -> Result<Header, InputError> {
     if !bytes.starts_with(b"ply") {
-        return Err(InputError::at_line(
-            1,
-            "not a PLY file (it does not start with `ply`)",
-        ));
+        return Err(InputError::at_line(1, FormatError::NotFormat(Format::Ply)));
     }
     let mut format = None;
     let mut elements: Vec<Element> = Vec::new();
@@ -134,17 +131,14 @@ pub(crate) fn parse_header(bytes: &[u8]) -> Result<Header, InputError> {
             .get(pos..)
             .and_then(|rest| rest.iter().position(|&b| b == b'\n'))
         else {
-            return Err(InputError::at_line(
-                ln,
-                "PLY header has no `end_header` line (truncated file?)",
-            ));
+            return Err(InputError::at_line(ln, SyntaxError::NoEndHeader));
         };
         let raw = bytes.get(pos..pos + len).unwrap_or_default();
         pos += len + 1;
         let line = std::str::from_utf8(raw)
-            .map_err(|_| InputError::at_line(ln, "PLY header line is not text"))?
+            .map_err(|_| InputError::at_line(ln, SyntaxError::HeaderLineNotText))?
             .trim_end_matches('\r');
-        let at = |m: String| InputError::at_line(ln, m);
+        let at = |k: InputErrorKind| InputError::at_line(ln, k);
         let toks: Vec<&str> = line.split_ascii_whitespace().collect();
         match toks.as_slice() {
             ["end_header"] => break,
@@ -154,10 +148,12 @@ pub(crate) fn parse_header(bytes: &[u8]) -> Result<Header, InputError> {
             ["element", name, count] => elements.push(Element {
                 name: name.to_string(),
                 count: count.parse().map_err(|_| {
-                    at(format!(
-                        "element count {} is not a non-negative integer",
-                        quote(count)
-                    ))
+                    at(SyntaxError::NotANonNegativeInteger {
+                        what: Subject::ElementCount,
+                        token: Token::new(count),
+                        hint: false,
+                    }
+                    .into())
                 })?,
                 props: Vec::new(),
                 line: ln,
@@ -165,14 +161,16 @@ pub(crate) fn parse_header(bytes: &[u8]) -> Result<Header, InputError> {
             ["property", rest @ ..] => {
                 let el = elements
                     .last_mut()
-                    .ok_or_else(|| at("property before any element".into()))?;
+                    .ok_or_else(|| at(SyntaxError::PropertyBeforeElement.into()))?;
                 el.props.push(parse_property(rest).map_err(at)?);
             }
-            _ => return Err(at(format!("unexpected PLY header line {}", quote(line)))),
+            _ => {
+                let e = SyntaxError::UnexpectedHeaderLine(Token::new(line));
+                return Err(at(e.into()));
+            }
         }
     }
-    let format =
-        format.ok_or_else(|| InputError::at_line(ln, "PLY header has no `format` line"))?;
+    let format = format.ok_or_else(|| InputError::at_line(ln, SyntaxError::NoFormatLine))?;
     Ok(Header {
         format,
         elements,
@@ -181,31 +179,26 @@ pub(crate) fn parse_header(bytes: &[u8]) -> Result<Header, InputError> {
     })
 }
 
-fn parse_format(f: &str) -> Result<PlyFormat, String> {
+fn parse_format(f: &str) -> Result<PlyFormat, InputErrorKind> {
     match f {
         "ascii" => Ok(PlyFormat::Ascii),
         "binary_little_endian" => Ok(PlyFormat::BinaryLittleEndian),
         "binary_big_endian" => Ok(PlyFormat::BinaryBigEndian),
-        _ => Err(format!(
-            "unknown PLY format {} (expected ascii, binary_little_endian or binary_big_endian)",
-            quote(f)
-        )),
+        _ => Err(FormatError::PlyFormat(Token::new(f)).into()),
     }
 }
 
 /// `property TYPE NAME` or `property list CTYPE ITYPE NAME` (after `property`).
-fn parse_property(toks: &[&str]) -> Result<Property, String> {
+fn parse_property(toks: &[&str]) -> Result<Property, InputErrorKind> {
     let ty = |name: &str| {
-        Scalar::from_name(name).ok_or_else(|| format!("unknown PLY type {}", quote(name)))
+        Scalar::from_name(name)
+            .ok_or_else(|| InputErrorKind::from(FormatError::PlyType(Token::new(name))))
     };
     let (kind, name) = match toks {
         ["list", count, item, name] => {
             let count = ty(count)?;
             if !count.is_int() {
-                return Err(format!(
-                    "list count type of {} is not an integer type",
-                    quote(name)
-                ));
+                return Err(SyntaxError::ListCountNotInteger(Token::new(name)).into());
             }
             (
                 Kind::List {
@@ -216,12 +209,7 @@ fn parse_property(toks: &[&str]) -> Result<Property, String> {
             )
         }
         [t, name] => (Kind::Scalar(ty(t)?), name),
-        _ => {
-            return Err(format!(
-                "malformed property line `property {}`",
-                toks.join(" ")
-            ))
-        }
+        _ => return Err(SyntaxError::MalformedProperty(toks.join(" ")).into()),
     };
     Ok(Property {
         name: name.to_string(),
@@ -262,17 +250,12 @@ pub(crate) fn texcoord_source(elements: &[Element]) -> Result<Option<[usize; 2]>
     {
         let [a, b] = PAIRS[k];
         let (has, lacks) = if u.is_some() { (a, b) } else { (b, a) };
-        return Err(InputError::at_line(
-            vertex.line,
-            format!(
-                "element `vertex` has property `{has}` but no `{lacks}` (per-vertex texture coordinates need both)"
-            ),
-        ));
+        let e = FormatError::UnpairedTextureCoordinate { has, lacks };
+        return Err(InputError::at_line(vertex.line, e));
     }
     Err(InputError::at_line(
         face.line,
-        "element `face` has no `texcoord` list property (per-corner u0 v0 u1 v1 u2 v2), \
-         and element `vertex` no `u v`, `s t` or `texture_u texture_v` pair",
+        FormatError::NoPlyMapCoordinates,
     ))
 }
 

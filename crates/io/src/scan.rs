@@ -1,28 +1,25 @@
 //! Shared helpers of the text readers: the "is this text?" check, line
 //! numbers of byte offsets, a whitespace token stream that knows its line,
-//! and number parsing with messages that quote the offending token.
+//! and number parsing with errors that quote the offending token.
 //!
 //! Input: raw bytes. Output: `&str` views into them. Nothing here allocates
 //! in proportion to a count read from a file.
 
-use dualex_map::InputError;
+use dualex_map::error::{Format, FormatError, NotTextReason, Subject, SyntaxError, Token};
+use dualex_map::{InputError, InputErrorKind};
 
 /// Checks that `bytes` is text (no NUL byte, valid UTF-8) and returns it as
 /// `&str`; the error names the line of the first bad byte and says
-/// "not a text {kind} file".
-pub(crate) fn as_text<'a>(bytes: &'a [u8], kind: &str) -> Result<&'a str, InputError> {
+/// "not a text {format} file".
+pub(crate) fn as_text(bytes: &[u8], format: Format) -> Result<&str, InputError> {
+    let not_text = |pos: usize, reason| {
+        let reason = Some(reason);
+        InputError::at_line(line_of(bytes, pos), FormatError::NotText { format, reason })
+    };
     if let Some(pos) = bytes.iter().position(|&b| b == 0) {
-        return Err(InputError::at_line(
-            line_of(bytes, pos),
-            format!("not a text {kind} file (NUL byte)"),
-        ));
+        return Err(not_text(pos, NotTextReason::NulByte));
     }
-    std::str::from_utf8(bytes).map_err(|e| {
-        InputError::at_line(
-            line_of(bytes, e.valid_up_to()),
-            format!("not a text {kind} file (invalid UTF-8)"),
-        )
-    })
+    std::str::from_utf8(bytes).map_err(|e| not_text(e.valid_up_to(), NotTextReason::InvalidUtf8))
 }
 
 /// 1-based line number of byte offset `pos`.
@@ -31,23 +28,25 @@ pub(crate) fn line_of(bytes: &[u8], pos: usize) -> usize {
     head.iter().filter(|&&b| b == b'\n').count() + 1
 }
 
-/// A token quoted for a message: at most 24 characters, in backquotes.
-pub(crate) fn quote(tok: &str) -> String {
-    if tok.chars().count() <= 24 {
-        format!("`{tok}`")
-    } else {
-        let head: String = tok.chars().take(20).collect();
-        format!("`{head}…`")
-    }
+/// A finite float, or `None` (the fast paths, which only need to know).
+pub(crate) fn finite(tok: &str) -> Option<f64> {
+    tok.parse::<f64>().ok().filter(|x| x.is_finite())
 }
 
-/// Parses a finite-or-not float; `what` names the value in the message
-/// ("vertex coordinate"). Non-finite values are reported separately.
-pub(crate) fn parse_finite(tok: &str, what: &str) -> Result<f64, String> {
+/// Parses a finite float; `what` names the value in the error ("vertex
+/// coordinate"). Non-finite values are reported separately.
+pub(crate) fn parse_finite(tok: &str, what: Subject) -> Result<f64, InputErrorKind> {
     match tok.parse::<f64>() {
         Ok(x) if x.is_finite() => Ok(x),
-        Ok(_) => Err(format!("{what} is not finite ({})", quote(tok))),
-        Err(_) => Err(format!("{what} {} is not a number", quote(tok))),
+        Ok(_) => Err(InputErrorKind::NonFinite {
+            what,
+            token: Some(Token::new(tok)),
+        }),
+        Err(_) => Err(SyntaxError::NotANumber {
+            what: Some(what),
+            token: Token::new(tok),
+        }
+        .into()),
     }
 }
 
@@ -121,11 +120,11 @@ mod tests {
 
     #[test]
     fn text_check_names_the_line_of_the_bad_byte() {
-        let e = as_text(b"v 1 2 3\nv 1\0 2 3\n", "OBJ").unwrap_err();
+        let e = as_text(b"v 1 2 3\nv 1\0 2 3\n", Format::Obj).unwrap_err();
         assert_eq!(e.to_string(), "line 2: not a text OBJ file (NUL byte)");
-        let e = as_text(b"a\nb\nc\xff\n", "OBJ").unwrap_err();
+        let e = as_text(b"a\nb\nc\xff\n", Format::Obj).unwrap_err();
         assert_eq!(e.to_string(), "line 3: not a text OBJ file (invalid UTF-8)");
-        assert_eq!(as_text(b"ok\n", "OBJ").unwrap(), "ok\n");
+        assert_eq!(as_text(b"ok\n", Format::Obj).unwrap(), "ok\n");
     }
 
     #[test]
@@ -141,17 +140,13 @@ mod tests {
 
     #[test]
     fn numbers_and_quotes() {
-        assert_eq!(parse_finite("1e-3", "x"), Ok(1e-3));
-        assert_eq!(parse_finite(".5", "x"), Ok(0.5));
-        assert_eq!(
-            parse_finite("nan", "x"),
-            Err("x is not finite (`nan`)".into())
-        );
-        assert_eq!(
-            parse_finite("1,5", "x"),
-            Err("x `1,5` is not a number".into())
-        );
-        assert_eq!(quote(&"9".repeat(30)), format!("`{}…`", "9".repeat(20)));
+        let parse = |t: &str| parse_finite(t, Subject::Value).map_err(|e| e.to_string());
+        assert_eq!(parse("1e-3"), Ok(1e-3));
+        assert_eq!(parse(".5"), Ok(0.5));
+        assert_eq!(parse("nan"), Err("value is not finite (`nan`)".into()));
+        assert_eq!(parse("1,5"), Err("value `1,5` is not a number".into()));
+        let long = Token::new(&"9".repeat(30)).to_string();
+        assert_eq!(long, format!("`{}…`", "9".repeat(20)));
         assert!(fits(3, 2, 5, 1));
         assert!(!fits(3, 2, 4, 1));
         assert!(!fits(u64::MAX, u64::MAX, usize::MAX, 1));

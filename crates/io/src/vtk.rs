@@ -8,7 +8,10 @@
 //! line.
 
 use dualex_cells::{HexMesh, QuadMesh};
-use dualex_map::InputError;
+use dualex_map::error::{
+    CountError, Format, FormatError, IndexError, RangeStyle, Subject, SyntaxError,
+};
+use dualex_map::{ElementKind, InputError, InputErrorKind};
 
 /// A mesh read from VTK.
 #[derive(Clone, Debug, PartialEq)]
@@ -41,44 +44,45 @@ impl<'a> Tokens<'a> {
             .map_or(0, |t| t.0)
     }
 
-    fn word(&mut self, what: &str) -> Result<&'a str, InputError> {
+    fn word(&mut self, what: &'static str) -> Result<&'a str, InputError> {
         let t = self.toks.get(self.next).ok_or_else(|| {
-            InputError::at_line(self.line(), format!("truncated: expected {what}"))
+            InputError::at_line(self.line(), SyntaxError::Truncated { expected: what })
         })?;
         self.next += 1;
         Ok(t.1)
     }
 
-    fn parse<T: std::str::FromStr>(&mut self, what: &str) -> Result<T, InputError> {
+    fn parse<T: std::str::FromStr>(&mut self, what: &'static str) -> Result<T, InputError> {
         let line = self.line();
         let w = self.word(what)?;
-        w.parse()
-            .map_err(|_| InputError::at_line(line, format!("expected {what}, found {w:?}")))
+        w.parse().map_err(|_| {
+            let found = w.to_string();
+            InputError::at_line(line, SyntaxError::ExpectedValue { what, found })
+        })
     }
 
     /// A count of items of `per` tokens each, checked against what is left.
-    fn count(&mut self, what: &str, per: usize) -> Result<usize, InputError> {
+    fn count(&mut self, what: &'static str, per: usize) -> Result<usize, InputError> {
         let line = self.line();
-        let n: usize = self.parse(what)?;
-        if n.saturating_mul(per) > self.toks.len() - self.next {
+        let count: usize = self.parse(what)?;
+        if count.saturating_mul(per) > self.toks.len() - self.next {
             return Err(InputError::at_line(
                 line,
-                format!("{what} {n} is more than the file holds"),
+                CountError::ExceedsFile { what, count },
             ));
         }
-        Ok(n)
+        Ok(count)
     }
 }
 
 /// Parses a legacy ASCII VTK file (module docs).
 pub fn parse_vtk(bytes: &[u8]) -> Result<VtkMesh, InputError> {
-    let text = std::str::from_utf8(bytes)
-        .map_err(|_| InputError::new("not a text file (legacy ASCII VTK expected)"))?;
+    let text = std::str::from_utf8(bytes).map_err(|_| {
+        let (format, reason) = (Format::Vtk, None);
+        InputError::new(FormatError::NotText { format, reason })
+    })?;
     if !text.starts_with("# vtk DataFile") {
-        return Err(InputError::at_line(
-            1,
-            "not a VTK file (no `# vtk DataFile` header)",
-        ));
+        return Err(InputError::at_line(1, FormatError::NotFormat(Format::Vtk)));
     }
     let mut t = Tokens::new(text);
     let mut positions = Vec::new();
@@ -88,7 +92,7 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<VtkMesh, InputError> {
         let (line, word) = t.toks[t.next];
         t.next += 1;
         match word {
-            "BINARY" => return Err(InputError::at_line(line, "binary VTK is not supported")),
+            "BINARY" => return Err(InputError::at_line(line, FormatError::Binary(Format::Vtk))),
             "POINTS" => {
                 let n = t.count("point count", 3)?;
                 t.word("coordinate type")?;
@@ -96,7 +100,9 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<VtkMesh, InputError> {
                 for _ in 0..n {
                     let p = [t.parse("x")?, t.parse("y")?, t.parse("z")?];
                     if !p.iter().all(|c: &f64| c.is_finite()) {
-                        return Err(InputError::at_line(t.line(), "coordinate is not finite"));
+                        let what = Subject::Coordinate;
+                        let e = InputErrorKind::NonFinite { what, token: None };
+                        return Err(InputError::at_line(t.line(), e));
                     }
                     positions.push(p);
                 }
@@ -131,37 +137,42 @@ fn build(
     types: &[u8],
 ) -> Result<VtkMesh, InputError> {
     if cells.is_empty() {
-        return Err(InputError::new("no cells"));
+        let what = ElementKind::Cell;
+        return Err(CountError::Empty { what, reason: None }.into());
     }
     if types.len() != cells.len() {
-        return Err(InputError::new(format!(
-            "{} cells but {} cell types",
-            cells.len(),
-            types.len()
-        )));
+        return Err(CountError::CellTypes {
+            cells: cells.len(),
+            types: types.len(),
+        }
+        .into());
     }
     let nv = positions.len();
     for (i, c) in cells.iter().enumerate() {
-        if let Some(v) = c.iter().find(|&&v| v as usize >= nv) {
-            return Err(InputError::new(format!(
-                "cell {i}: vertex {v} out of range ({nv} points)"
-            )));
+        let cell = |e: InputErrorKind| InputError::new(ElementKind::Cell.at(i).error(e));
+        if let Some(&v) = c.iter().find(|&&v| v as usize >= nv) {
+            return Err(cell(
+                IndexError::VertexOutOfRange {
+                    vertex: v.into(),
+                    count: nv,
+                    style: RangeStyle::Points,
+                }
+                .into(),
+            ));
         }
         let want = match types[i] {
             9 => 4,
             12 => 8,
-            t => {
-                return Err(InputError::new(format!(
-                    "cell {i}: type {t}; only quads (9) and hexes (12) are read"
-                )))
-            }
+            t => return Err(cell(FormatError::CellType(t).into())),
         };
         if c.len() != want || types[i] != types[0] {
-            return Err(InputError::new(format!(
-                "cell {i}: {} vertices of type {}; all cells must be quads or all hexes",
-                c.len(),
-                types[i]
-            )));
+            return Err(cell(
+                FormatError::MixedCells {
+                    vertices: c.len(),
+                    cell_type: types[i],
+                }
+                .into(),
+            ));
         }
     }
     Ok(if types[0] == 9 {

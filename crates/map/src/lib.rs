@@ -18,7 +18,9 @@
 //!
 //! - [`rotation`]: the grid rotation groups (4 in 2D, 24 in 3D);
 //! - [`mesh`]: [`TriMap`] / [`TetMap`], the raw input, and its validation;
-//! - [`error`]: [`InputError`], the errors caused by the input;
+//! - [`error`]: [`InputError`], the errors caused by the input: what is
+//!   wrong as a typed [`InputErrorKind`] naming the [`Element`] (vertex,
+//!   triangle, tet, face, …, and its index), the file and the [`Location`];
 //! - [`topology`]: facet adjacency, boundary, manifoldness, orientation
 //!   (built by `topology_build`, private);
 //! - `components` (private): connected components and boundary loops of a
@@ -65,7 +67,7 @@ mod data_tests;
 #[doc(hidden)]
 pub mod test_maps;
 
-pub use error::InputError;
+pub use error::{Element, ElementKind, InputError, InputErrorKind, Location};
 pub use mesh::{SimplexMap, TetMap, TriMap};
 pub use report::{inspect, InspectOptions, MapReport};
 pub use rotation::{Rot, Rot2, Rot3};

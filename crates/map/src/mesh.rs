@@ -14,7 +14,7 @@
 //! Invariants checked by [`SimplexMap::validate`]: indices in range, no
 //! repeated vertex in a simplex, every position and map coordinate finite.
 
-use crate::error::InputError;
+use crate::error::{CountError, ElementKind, IndexError, InputError, InputErrorKind, MapError};
 use rayon::prelude::*;
 
 /// A simplicial mesh with per-corner map coordinates.
@@ -37,15 +37,6 @@ pub type TriMap = SimplexMap<3, 2>;
 /// A tetrahedral mesh with a 3D map (`u, v, w` per corner).
 pub type TetMap = SimplexMap<4, 3>;
 
-/// Word for a simplex of `N` corners, for messages.
-pub fn simplex_word(n: usize) -> &'static str {
-    if n == 3 {
-        "triangle"
-    } else {
-        "tet"
-    }
-}
-
 impl<const N: usize, const D: usize> SimplexMap<N, D> {
     /// Number of simplices.
     pub fn len(&self) -> usize {
@@ -59,42 +50,48 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
 
     /// Checks the invariants of the module docs; the error names the element.
     pub fn validate(&self) -> Result<(), InputError> {
-        let w = simplex_word(N);
+        let w = ElementKind::simplex(N);
         if self.coords.len() != self.simplices.len() {
-            return Err(InputError::new(format!(
-                "{} {w}s but {} sets of map coordinates",
-                self.simplices.len(),
-                self.coords.len()
-            )));
+            return Err(CountError::MapCoordinates {
+                simplex: w,
+                simplices: self.simplices.len(),
+                coords: self.coords.len(),
+            }
+            .into());
         }
         if self.simplices.is_empty() {
-            return Err(InputError::new(format!("no {w}s")));
+            return Err(CountError::Empty {
+                what: w,
+                reason: None,
+            }
+            .into());
         }
         for (i, p) in self.positions.iter().enumerate() {
             if p.iter().any(|x| !x.is_finite()) {
-                return Err(InputError::new(format!(
-                    "vertex {i}: position is not finite ({} {} {})",
-                    p[0], p[1], p[2]
-                )));
+                let e = ElementKind::Vertex
+                    .at(i)
+                    .error(MapError::NonFinitePosition(*p));
+                return Err(e.into());
             }
         }
         let nv = self.positions.len();
         for (s, simplex) in self.simplices.iter().enumerate() {
+            let at = |what: InputErrorKind| InputError::new(w.clone().at(s).error(what));
             for (c, &v) in simplex.iter().enumerate() {
                 if v as usize >= nv {
-                    return Err(InputError::new(format!(
-                        "{w} {s}: corner {c} refers to vertex {v}, but there are {nv} vertices"
-                    )));
+                    return Err(IndexError::RefersToVertex {
+                        owner: w.clone().at(s),
+                        corner: Some(c),
+                        vertex: v.into(),
+                        count: nv,
+                    }
+                    .into());
                 }
                 if simplex[..c].contains(&v) {
-                    return Err(InputError::new(format!(
-                        "{w} {s}: vertex {v} appears twice"
-                    )));
+                    return Err(at(MapError::RepeatedVertex { vertex: v }.into()));
                 }
                 if self.coords[s][c].iter().any(|x| !x.is_finite()) {
-                    return Err(InputError::new(format!(
-                        "{w} {s}: corner {c} has a non-finite map coordinate"
-                    )));
+                    return Err(at(MapError::NonFiniteMapCoordinate { corner: c }.into()));
                 }
             }
         }
@@ -134,14 +131,8 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
             return Ok(total);
         }
         let (n, s) = largest;
-        Err(InputError {
-            file: None,
-            location: Some(format!("{} {s}", simplex_word(N))),
-            message: format!(
-                "map too large: its image spans {n:.3e} grid points, the whole map {total:.3e} \
-                 (limit {MAX_GRID_POINTS:.3e}); scale the map down"
-            ),
-        })
+        let too_large = MapError::TooLarge { points: n, total };
+        Err(ElementKind::simplex(N).at(s).error(too_large).into())
     }
 
     /// Signed volume of the map image of simplex `s` (area in 2D, 6× volume
@@ -211,10 +202,13 @@ impl TetMap {
             }
         }
         match worst {
-            Some(s) if all > 0.0 && bad >= 0.5 * all && reverted > 0.0 => Err(InputError::new(format!(
-                "tet {s}: reverted or degenerate tets make up {:.0}% of the volume: the charts are reflected or collapsed, not a map of this volume",
-                100.0 * bad / all
-            ))),
+            Some(s) if all > 0.0 && bad >= 0.5 * all && reverted > 0.0 => {
+                let percent = 100.0 * bad / all;
+                let e = ElementKind::Tet
+                    .at(s)
+                    .error(MapError::Reflected { percent });
+                Err(e.into())
+            }
             _ => Ok(()),
         }
     }

@@ -14,7 +14,7 @@
 //! their least vertex, each bucket sorted by the other vertices and the
 //! half-facet id, which is the order of one global sort.
 
-use crate::mesh::simplex_word;
+use crate::error::{ElementKind, MapError};
 use crate::star_build::Reached;
 use crate::topology::{Topology, NONE};
 use crate::{InputError, SimplexMap};
@@ -22,15 +22,6 @@ use rayon::prelude::*;
 
 /// Vertices whose facet buckets are sorted by one parallel task.
 const SORT_BLOCK: usize = 4096;
-
-/// Word for a facet of a simplex with `N` corners, for messages.
-pub(crate) fn facet_word(n: usize) -> &'static str {
-    if n == 3 {
-        "edge"
-    } else {
-        "face"
-    }
-}
 
 /// Sorted vertex ids of facet `f` of `simplex` (last slot `u32::MAX`).
 pub(crate) fn facet_key<const N: usize>(simplex: &[u32; N], f: usize) -> [u32; N] {
@@ -52,11 +43,6 @@ pub(crate) fn sorted_facets<const N: usize>(simplices: &[[u32; N]]) -> Vec<([u32
     }
     keys.sort_unstable();
     keys
-}
-
-fn key_text<const N: usize>(key: &[u32; N]) -> String {
-    let parts: Vec<String> = key[..N - 1].iter().map(|v| v.to_string()).collect();
-    parts.join("-")
 }
 
 /// The other vertices of a facet key (all but the least), packed into one
@@ -153,14 +139,13 @@ pub(crate) fn build<const N: usize, const D: usize>(
                     let mut owners: Vec<usize> =
                         bucket[i..j].iter().map(|k| k.1 as usize / N).collect();
                     owners.sort_unstable();
-                    let list: Vec<String> = owners.iter().map(|s| s.to_string()).collect();
-                    return Err(InputError::new(format!(
-                        "{} {} is shared by {n} {}s ({}): non-manifold",
-                        facet_word(N),
-                        key_text(&key),
-                        simplex_word(N),
-                        list.join(", ")
-                    )));
+                    debug_assert_eq!(owners.len(), n);
+                    return Err(MapError::NonManifoldFacet {
+                        simplex: ElementKind::simplex(N),
+                        vertices: key[..N - 1].to_vec(),
+                        simplices: owners,
+                    }
+                    .into());
                 }
             }
             i = j;
@@ -202,12 +187,12 @@ fn glue<const N: usize, const D: usize>(
         let b = s.max(n);
         let mut key = [0u32; N];
         key[..N - 1].copy_from_slice(&facet_key(vs, f)[..N - 1]);
-        return Err(InputError::new(format!(
-            "{w}s {a} and {b} have opposite orientations across {} {}",
-            facet_word(N),
-            key_text(&key),
-            w = simplex_word(N)
-        )));
+        return Err(MapError::OppositeOrientations {
+            simplex: ElementKind::simplex(N),
+            simplices: [a, b],
+            vertices: key[..N - 1].to_vec(),
+        }
+        .into());
     }
     topo.adj[s][f] = n as u32;
     topo.adj[n][g] = s as u32;
@@ -284,14 +269,11 @@ fn check_vertices<const N: usize, const D: usize>(
     let Some(v) = first_bad else {
         return Ok(());
     };
-    let parts = if N == 3 {
-        "its triangles form more than one fan"
-    } else {
-        "its tets are not connected through the faces around it"
-    };
-    Err(InputError::new(format!(
-        "vertex {v} is non-manifold: {parts}"
-    )))
+    Err(MapError::NonManifoldVertex {
+        vertex: v,
+        simplex: ElementKind::simplex(N),
+    }
+    .into())
 }
 
 /// Whether a depth-first walk from the first corner of `star` (the corners

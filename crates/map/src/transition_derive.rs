@@ -28,9 +28,8 @@
 //! the same limit (1/4 with `round`), so that noise that would be rounded is
 //! not refused as a non-grid rotation.
 
+use crate::error::{ElementKind, MapError};
 use crate::holonomy::ridge_rotation;
-use crate::mesh::simplex_word;
-use crate::topology_build::facet_word;
 use crate::transition_fit::{fit_facet, rounded, Fit};
 use rayon::prelude::*;
 
@@ -116,15 +115,15 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     }
     if let Some((res, tol, s, f)) = failed {
         let n = topo.adj[s][f];
-        return Err(InputError::new(format!(
-            "{w} {s} {fw} {f}: the transition to {w} {n} is not integral (residual {} > tolerance {}, \
-             and above {}, the largest rounded by default); --round-transitions would round it",
-            num(res),
-            num(tol),
-            num(opts.round_limit),
-            w = simplex_word(N),
-            fw = facet_word(N),
-        )));
+        return Err(MapError::NonIntegralTransition {
+            simplex: ElementKind::simplex(N).at(s),
+            facet: f,
+            neighbour: n as usize,
+            residual: res,
+            tolerance: tol,
+            round_limit: opts.round_limit,
+        }
+        .into());
     }
     rep.ambiguous_facets = ambiguous.len();
     fix_ambiguous(topo, &mut tr, &ambiguous, 3);
@@ -289,11 +288,11 @@ mod tests {
         let topo = Topology::build(&m).expect("topology");
         let e = derive(&m, &topo, &TransitionOptions::default()).expect_err("residual 0.3");
         assert!(
-            e.message
+            e.to_string()
                 .contains("is not integral (residual 0.3 > tolerance 0.001"),
             "{e}"
         );
-        assert!(e.message.starts_with("triangle "), "{e}");
+        assert!(e.to_string().starts_with("triangle "), "{e}");
         let opts = TransitionOptions {
             round: true,
             ..Default::default()
@@ -321,9 +320,13 @@ mod tests {
         // one corner moved by 0.2: a mismatch of 0.2 (above 0.1, below ¼)
         m.coords[s][0][1] += 0.2;
         let e = derive(&m, &topo, &TransitionOptions::default()).expect_err("mismatch 0.2");
-        assert!(e.message.contains("non-grid rotation (mismatch 0.2"), "{e}");
         assert!(
-            e.message.contains("--round-transitions would accept it"),
+            e.to_string().contains("non-grid rotation (mismatch 0.2"),
+            "{e}"
+        );
+        assert!(
+            e.to_string()
+                .contains("--round-transitions would accept it"),
             "{e}"
         );
         let opts = TransitionOptions {

@@ -90,7 +90,7 @@ fn an_absurd_map_is_refused_naming_its_largest_triangle() {
     m.simplices.push([0, 1, 2]);
     m.coords.insert(0, [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
     let e = check_size(&m).err().unwrap_or_else(|| panic!("accepted"));
-    assert_eq!(e.location.as_deref(), Some("triangle 1"));
+    assert_eq!(e.element(), Some(&dualex_map::ElementKind::Triangle.at(1)));
     assert!(
         e.to_string().starts_with("triangle 1: map too large"),
         "{e}"
@@ -105,6 +105,6 @@ fn an_absurd_map_is_refused_naming_its_largest_tet() {
     m.simplices.push([0, 1, 2, 3]);
     m.coords.insert(0, UNIT);
     let e = check_size(&m).err().unwrap_or_else(|| panic!("accepted"));
-    assert_eq!(e.location.as_deref(), Some("tet 1"));
+    assert_eq!(e.element(), Some(&dualex_map::ElementKind::Tet.at(1)));
     assert!(e.to_string().starts_with("tet 1: map too large"), "{e}");
 }

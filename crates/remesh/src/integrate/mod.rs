@@ -308,6 +308,8 @@ fn scale(surface: &Surface, opts: &IntegrateOptions) -> Result<f64, RemeshError>
 }
 
 #[cfg(test)]
+mod test_checks;
+#[cfg(test)]
 mod test_meshes;
 #[cfg(test)]
 mod tests;
