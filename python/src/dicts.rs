@@ -13,21 +13,21 @@
 use dualex::{Repairs, Stats};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use std::collections::BTreeMap;
 
 use dualex::stats::TopologyComparison;
 
-fn histogram<'py>(py: Python<'py>, h: &BTreeMap<usize, usize>) -> PyResult<Bound<'py, PyDict>> {
+/// `{key: value}` of the pairs, in their order (valence histograms,
+/// stage times).
+fn dict<'py, K, V>(
+    py: Python<'py>,
+    pairs: impl IntoIterator<Item = (K, V)>,
+) -> PyResult<Bound<'py, PyDict>>
+where
+    K: IntoPyObject<'py>,
+    V: IntoPyObject<'py>,
+{
     let d = PyDict::new(py);
-    for (k, v) in h {
-        d.set_item(k, v)?;
-    }
-    Ok(d)
-}
-
-fn times<'py>(py: Python<'py>, t: &[(String, f64)]) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    for (k, v) in t {
+    for (k, v) in pairs {
         d.set_item(k, v)?;
     }
     Ok(d)
@@ -83,15 +83,15 @@ pub fn stats<'py>(py: Python<'py>, s: &Stats, dim: usize) -> PyResult<Bound<'py,
     d.set_item("components", s.components)?;
     d.set_item("euler", s.euler)?;
     if hexes {
-        d.set_item("edge_valence_interior", histogram(py, &s.valence_interior)?)?;
+        d.set_item("edge_valence_interior", dict(py, &s.valence_interior)?)?;
     } else {
-        d.set_item("valence_interior", histogram(py, &s.valence_interior)?)?;
-        d.set_item("valence_boundary", histogram(py, &s.valence_boundary)?)?;
+        d.set_item("valence_interior", dict(py, &s.valence_interior)?)?;
+        d.set_item("valence_boundary", dict(py, &s.valence_boundary)?)?;
     }
     d.set_item("repairs", repairs(py, &s.repairs, hexes)?)?;
     d.set_item("topology", topology(py, &s.topology)?)?;
     d.set_item("geometry", crate::geometry::report(py, &s.geometry)?)?;
-    let t = times(py, &s.time_ms)?;
+    let t = dict(py, s.time_ms.iter().map(|(k, v)| (k, v)))?;
     t.set_item("geometry", s.geometry.time_ms)?;
     d.set_item("time_ms", t)?;
     Ok(d)

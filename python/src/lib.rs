@@ -32,7 +32,7 @@ use arrays::{
     cells_array, corners, corners_array, indices, optional_corners_array, positions_array, rows,
     sources_array,
 };
-use dualex::map::report::{inspect as inspect_map, InspectOptions};
+use dualex::map::report::{inspect as inspect_map, Inspect, InspectOptions, MapReport};
 use dualex::GridOffset;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -249,12 +249,7 @@ fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
         let m = py
             .allow_threads(|| dualex::read_tet_map(&path))
             .map_err(value_error)?;
-        let items = [
-            positions_array(py, &m.positions)?,
-            cells_array(py, &m.simplices)?,
-            corners_array(py, &m.coords)?,
-        ];
-        return PyTuple::new(py, items);
+        return map_tuple(py, &m);
     }
     let m = py.allow_threads(|| match dualex::read_tri_map(&path) {
         Ok(m) => Ok(Ok(m)),
@@ -265,19 +260,39 @@ fn read<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyTuple>> {
             _ => Err(e),
         },
     });
-    let items = match m.map_err(value_error)? {
-        Ok(m) => [
-            positions_array(py, &m.positions)?,
+    match m.map_err(value_error)? {
+        Ok(m) => map_tuple(py, &m),
+        Err(s) => {
+            let (p, f) = (
+                positions_array(py, &s.positions)?,
+                cells_array(py, &s.triangles)?,
+            );
+            PyTuple::new(py, [p, f, py.None().into_bound(py)])
+        }
+    }
+}
+
+/// A map as `read` returns it: (V, simplices, coords).
+fn map_tuple<'py, const N: usize, const D: usize>(
+    py: Python<'py>,
+    m: &dualex::map::SimplexMap<N, D>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let p = positions_array(py, &m.positions)?;
+    PyTuple::new(
+        py,
+        [
+            p,
             cells_array(py, &m.simplices)?,
             corners_array(py, &m.coords)?,
         ],
-        Err(s) => [
-            positions_array(py, &s.positions)?,
-            cells_array(py, &s.triangles)?,
-            py.None().into_bound(py),
-        ],
-    };
-    PyTuple::new(py, items)
+    )
+}
+
+/// The second dimension of an array's shape (`None`: not an array of
+/// rows).
+fn width(obj: &Bound<'_, PyAny>) -> Option<usize> {
+    let shape = obj.getattr("shape").ok()?.extract::<Vec<usize>>().ok()?;
+    shape.get(1).copied()
 }
 
 /// Writes a quad mesh (cells (m, 4): `.obj`, `.ply`, `.vtk`) or a hex mesh
@@ -291,27 +306,40 @@ fn write(
     cells: &Bound<'_, PyAny>,
 ) -> PyResult<()> {
     let positions = rows::<3>("positions", positions)?;
-    let width = cells
-        .getattr("shape")
-        .ok()
-        .and_then(|s| s.extract::<Vec<usize>>().ok())
-        .and_then(|s| s.get(1).copied());
-    let n = positions.len();
-    if width == Some(8) {
+    if width(cells) == Some(8) {
         let cells = indices::<8>("cells", "hex", cells)?;
-        check_range(&cells, n, "hex")?;
-        let mesh = dualex::HexMesh { positions, cells };
-        return py
-            .allow_threads(|| dualex::write_hex_mesh(&path, &mesh))
-            .map_err(value_error);
+        return write_mesh(py, positions, cells, "hex", |m| {
+            dualex::write_hex_mesh(&path, m)
+        });
     }
     let cells = indices::<4>("cells", "quad", cells).map_err(|e| {
         PyValueError::new_err(format!("{} (4 for quads, 8 for hexes)", e.value(py)))
     })?;
-    check_range(&cells, n, "quad")?;
-    let mesh = dualex::QuadMesh { positions, cells };
-    py.allow_threads(|| dualex::write_quad_mesh(&path, &mesh))
-        .map_err(value_error)
+    write_mesh(py, positions, cells, "quad", |m| {
+        dualex::write_quad_mesh(&path, m)
+    })
+}
+
+/// `write`'s mesh of `K`-cornered cells (`element`s in messages), every
+/// index checked below the number of positions (the writers trust their
+/// input), then handed to `write` without the GIL.
+fn write_mesh<const K: usize>(
+    py: Python<'_>,
+    positions: Vec<[f64; 3]>,
+    cells: Vec<[u32; K]>,
+    element: &str,
+    write: impl FnOnce(&dualex::CellMesh<K>) -> Result<(), dualex::Error> + Send,
+) -> PyResult<()> {
+    let n = positions.len();
+    for (i, c) in cells.iter().enumerate() {
+        if let Some((k, &v)) = c.iter().enumerate().find(|(_, &v)| v as usize >= n) {
+            return Err(PyValueError::new_err(format!(
+                "{element} {i}: corner {k} refers to vertex {v}, but there are {n} vertices"
+            )));
+        }
+    }
+    let mesh = dualex::CellMesh { positions, cells };
+    py.allow_threads(|| write(&mesh)).map_err(value_error)
 }
 
 /// Writes a map (the arrays `read` returns): triangles (m, 3) with coords
@@ -328,35 +356,29 @@ fn write_map(
     coords: &Bound<'_, PyAny>,
 ) -> PyResult<()> {
     let p = rows::<3>("V", V)?;
+    let arrays = (p.as_slice(), simplices, coords);
     if is_tet_file(&path) {
-        let (t, c) = (
-            indices::<4>("simplices", "tet", simplices)?,
-            corners::<4, 3>("coords", coords)?,
-        );
-        return py
-            .allow_threads(|| {
-                dualex::write_tet_map(&path, &dualex::tet_map_from_slices(&p, &t, &c)?)
-            })
-            .map_err(value_error);
+        with_map::<4, 3, _>(py, arrays, "tet", |m| dualex::write_tet_map(&path, m))
+    } else {
+        with_map::<3, 2, _>(py, arrays, "triangle", |m| dualex::write_tri_map(&path, m))
     }
-    let (t, c) = (
-        indices::<3>("simplices", "triangle", simplices)?,
-        corners::<3, 2>("coords", coords)?,
-    );
-    py.allow_threads(|| dualex::write_tri_map(&path, &dualex::tri_map_from_slices(&p, &t, &c)?))
-        .map_err(value_error)
 }
 
-/// Every index below `n` (the writers trust their input).
-fn check_range<const K: usize>(cells: &[[u32; K]], n: usize, element: &str) -> PyResult<()> {
-    for (i, c) in cells.iter().enumerate() {
-        if let Some((k, &v)) = c.iter().enumerate().find(|(_, &v)| v as usize >= n) {
-            return Err(PyValueError::new_err(format!(
-                "{element} {i}: corner {k} refers to vertex {v}, but there are {n} vertices"
-            )));
-        }
-    }
-    Ok(())
+/// The map of positions `p`, `simplices` (of `N` corners, `element`s in
+/// messages) and `coords` (`D` per corner), validated and handed to
+/// `then` without the GIL; every error a ValueError.
+fn with_map<const N: usize, const D: usize, T: Send>(
+    py: Python<'_>,
+    (p, simplices, coords): (&[[f64; 3]], &Bound<'_, PyAny>, &Bound<'_, PyAny>),
+    element: &str,
+    then: impl FnOnce(&dualex::map::SimplexMap<N, D>) -> Result<T, dualex::Error> + Send,
+) -> PyResult<T> {
+    let (t, c) = (
+        indices::<N>("simplices", element, simplices)?,
+        corners::<N, D>("coords", coords)?,
+    );
+    py.allow_threads(|| then(&dualex::map_from_slices(p, &t, &c)?))
+        .map_err(value_error)
 }
 
 /// Analyses a map without extracting (the CLI's `inspect --json`): either
@@ -373,56 +395,22 @@ fn inspect<'py>(
     weld: bool,
     round_transitions: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let round = round_transitions;
     let opts = InspectOptions {
         weld,
-        round: round_transitions,
+        round,
         ..Default::default()
     };
     let report = match (simplices, coords) {
-        (None, None) => {
-            let path: PathBuf = map.extract().map_err(|_| {
-                PyValueError::new_err(
-                    "inspect: expected a path, or the arrays V, simplices, coords",
-                )
-            })?;
-            let name = path.display().to_string();
-            py.allow_threads(|| {
-                if is_tet_file(&path) {
-                    let m = dualex::read_tet_map(&path)?;
-                    inspect_map(&m, &opts).map_err(|e| dualex::Error::from(e.in_file(name)))
-                } else {
-                    let m = dualex::read_tri_map(&path)?;
-                    inspect_map(&m, &opts).map_err(|e| dualex::Error::from(e.in_file(name)))
-                }
-            })
-            .map_err(value_error)?
-        }
+        (None, None) => inspect_file(py, map, &opts)?,
         (Some(s), Some(c)) => {
             let p = rows::<3>("V", map)?;
-            let width = s
-                .getattr("shape")
-                .ok()
-                .and_then(|s| s.extract::<Vec<usize>>().ok());
-            if width.as_deref().and_then(|w| w.get(1)) == Some(&4) {
-                let (t, c) = (
-                    indices::<4>("simplices", "tet", s)?,
-                    corners::<4, 3>("coords", c)?,
-                );
-                py.allow_threads(|| {
-                    let m = dualex::tet_map_from_slices(&p, &t, &c)?;
-                    inspect_map(&m, &opts).map_err(dualex::Error::from)
-                })
+            let arrays = (p.as_slice(), s, c);
+            if width(s) == Some(4) {
+                with_map::<4, 3, _>(py, arrays, "tet", |m| Ok(inspect_map(m, &opts)?))
             } else {
-                let (t, c) = (
-                    indices::<3>("simplices", "triangle", s)?,
-                    corners::<3, 2>("coords", c)?,
-                );
-                py.allow_threads(|| {
-                    let m = dualex::tri_map_from_slices(&p, &t, &c)?;
-                    inspect_map(&m, &opts).map_err(dualex::Error::from)
-                })
-            }
-            .map_err(value_error)?
+                with_map::<3, 2, _>(py, arrays, "triangle", |m| Ok(inspect_map(m, &opts)?))
+            }?
         }
         _ => {
             return Err(PyValueError::new_err(
@@ -431,6 +419,36 @@ fn inspect<'py>(
         }
     };
     dicts::map_report(py, &report)
+}
+
+/// `inspect(path)`: the report of the map in the file at `path`, its
+/// errors naming the file.
+fn inspect_file(
+    py: Python<'_>,
+    path: &Bound<'_, PyAny>,
+    opts: &InspectOptions,
+) -> PyResult<MapReport> {
+    let path: PathBuf = path.extract().map_err(|_| {
+        PyValueError::new_err("inspect: expected a path, or the arrays V, simplices, coords")
+    })?;
+    let name = path.display().to_string();
+    py.allow_threads(|| {
+        if is_tet_file(&path) {
+            inspect_read(dualex::read_tet_map(&path), opts, name)
+        } else {
+            inspect_read(dualex::read_tri_map(&path), opts, name)
+        }
+    })
+    .map_err(value_error)
+}
+
+/// The report of a map `read` from the file `name`.
+fn inspect_read(
+    read: Result<impl Inspect, dualex::Error>,
+    opts: &InspectOptions,
+    name: String,
+) -> Result<MapReport, dualex::Error> {
+    inspect_map(&read?, opts).map_err(|e| e.in_file(name).into())
 }
 
 /// The extension module: `dualex` re-exports everything.

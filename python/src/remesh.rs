@@ -10,7 +10,7 @@
 //! (remesh's own bugs start `internal error (bug) in remesh`); the GIL is
 //! released while Rust works.
 
-use crate::arrays::{cells_array, corners_array, indices, positions_array, rows};
+use crate::arrays::{cells_array, indices, positions_array, rows};
 use crate::{dicts, value_error};
 use dualex::{MapOptions, Quantization, RemeshOptions, Target};
 use pyo3::exceptions::PyValueError;
@@ -93,13 +93,7 @@ pub fn remesh<'py>(
         stats.into_any(),
     ];
     if return_map {
-        let m = &out.map;
-        let map = [
-            positions_array(py, &m.positions)?,
-            cells_array(py, &m.simplices)?,
-            corners_array(py, &m.coords)?,
-        ];
-        items.push(PyTuple::new(py, map)?.into_any());
+        items.push(crate::map_tuple(py, &out.map)?.into_any());
     }
     PyTuple::new(py, items)
 }

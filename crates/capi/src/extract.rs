@@ -9,7 +9,8 @@
 //! `dualex_last_error()` says why. Each step: check the pointers, build
 //! the map through the facade (which validates it), extract (the facade
 //! runs the geometric stage too: its quality counts go in the struct),
-//! hand over.
+//! hand over. Both entry points are one template (`extraction_function!`,
+//! the C names of each dimension) over one generic [`extract`].
 
 use crate::error::{guard, Failure};
 use crate::mesh::{DualexHexMesh, DualexMesh, DualexOptions, DualexQuadMesh};
@@ -82,48 +83,56 @@ unsafe fn extract<const N: usize, const D: usize, const K: usize>(
     })
 }
 
-/// Extracts the quad mesh of a triangle map into `*out`; 0 on success.
-///
-/// # Safety
-/// `vpos` holds `3·n_vertices` doubles, `tri_vertices` `3·n_triangles`
-/// indices, `tri_param` `n_triangles·3·2` doubles; `opts` is null or
-/// readable; `out` is writable. (Null pointers are reported, not read.)
-#[no_mangle]
-pub unsafe extern "C" fn dualex_quad_extract(
-    n_vertices: usize,
-    vpos: *const f64,
-    n_triangles: usize,
-    tri_vertices: *const u32,
-    tri_param: *const f64,
-    opts: *const DualexOptions,
-    out: *mut DualexQuadMesh,
-) -> c_int {
-    let tris = (n_triangles, tri_vertices, tri_param);
-    let arrays = ((n_vertices, vpos), tris, ["tri_vertices", "tri_param"]);
-    // SAFETY: the caller's contract above
-    unsafe { extract(arrays, opts, out, dualex::quad, |s| s.singular_vertices) }
+/// `dualex_quad_extract` and `dualex_hex_extract`, one template for both:
+/// `$name(n_vertices, vpos, $n, $simplices, $param, opts, out)` with the
+/// simplices' and coordinates' names of the dimension (as the C header
+/// spells them), the facade's `$run` and the count of `$singular` the
+/// struct's `n_singular_*` field holds.
+macro_rules! extraction_function {
+    ($(#[doc = $doc:literal])* $name:ident($n:ident, $simplices:ident, $param:ident) -> $mesh:ty {
+        $run:path, $singular:ident
+    }) => {
+        $(#[doc = $doc])*
+        #[no_mangle]
+        pub unsafe extern "C" fn $name(
+            n_vertices: usize,
+            vpos: *const f64,
+            $n: usize,
+            $simplices: *const u32,
+            $param: *const f64,
+            opts: *const DualexOptions,
+            out: *mut $mesh,
+        ) -> c_int {
+            let names = [stringify!($simplices), stringify!($param)];
+            let arrays = ((n_vertices, vpos), ($n, $simplices, $param), names);
+            // SAFETY: the caller's contract (the doc above)
+            unsafe { extract(arrays, opts, out, $run, |s| s.$singular) }
+        }
+    };
 }
 
-/// Extracts the hex mesh of a tet map into `*out`; 0 on success.
-///
-/// # Safety
-/// `vpos` holds `3·n_vertices` doubles, `tet_vertices` `4·n_tets`
-/// indices, `tet_param` `n_tets·4·3` doubles; `opts` is null or
-/// readable; `out` is writable. (Null pointers are reported, not read.)
-#[no_mangle]
-pub unsafe extern "C" fn dualex_hex_extract(
-    n_vertices: usize,
-    vpos: *const f64,
-    n_tets: usize,
-    tet_vertices: *const u32,
-    tet_param: *const f64,
-    opts: *const DualexOptions,
-    out: *mut DualexHexMesh,
-) -> c_int {
-    let tets = (n_tets, tet_vertices, tet_param);
-    let arrays = ((n_vertices, vpos), tets, ["tet_vertices", "tet_param"]);
-    // SAFETY: the caller's contract above
-    unsafe { extract(arrays, opts, out, dualex::hex, |s| s.singular_edges) }
+extraction_function! {
+    /// Extracts the quad mesh of a triangle map into `*out`; 0 on success.
+    ///
+    /// # Safety
+    /// `vpos` holds `3·n_vertices` doubles, `tri_vertices` `3·n_triangles`
+    /// indices, `tri_param` `n_triangles·3·2` doubles; `opts` is null or
+    /// readable; `out` is writable. (Null pointers are reported, not read.)
+    dualex_quad_extract(n_triangles, tri_vertices, tri_param) -> DualexQuadMesh {
+        dualex::quad, singular_vertices
+    }
+}
+
+extraction_function! {
+    /// Extracts the hex mesh of a tet map into `*out`; 0 on success.
+    ///
+    /// # Safety
+    /// `vpos` holds `3·n_vertices` doubles, `tet_vertices` `4·n_tets`
+    /// indices, `tet_param` `n_tets·4·3` doubles; `opts` is null or
+    /// readable; `out` is writable. (Null pointers are reported, not read.)
+    dualex_hex_extract(n_tets, tet_vertices, tet_param) -> DualexHexMesh {
+        dualex::hex, singular_edges
+    }
 }
 
 /// The output struct at `out`, first overwritten with `empty` (so that

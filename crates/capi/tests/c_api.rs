@@ -202,6 +202,17 @@ fn dump<const N: usize, const D: usize>(
     std::fs::write(path, s)
 }
 
+/// `map` written for the C test as `kind` (`"tri"`, `"tet"`) to `path`;
+/// the path, as the C test's argument.
+fn dumped<const N: usize, const D: usize>(
+    kind: &str,
+    map: &dualex::map::SimplexMap<N, D>,
+    path: PathBuf,
+) -> String {
+    dump(kind, &map.positions, &map.simplices, &map.coords, &path).expect("write the dump");
+    path.to_str().unwrap_or_default().to_string()
+}
+
 /// Noisy maps of `dualex_gen` meshes (noise 0.6, folds) whose extraction
 /// places some elements inverted (checked by the facade's tests too): the
 /// C program finds them untangled by default (`inverted_after == 0`),
@@ -219,29 +230,21 @@ fn c_program_reads_the_quality_of_messy_maps() {
     let dir = Scratch::new("messy");
     let exe = c_program(&dir, false);
     let disk = meshes::quad_mesh_by_name("ngon4").expect("ngon4");
-    let m = from_mesh::from_quads(&disk, &noisy(3, 2))
-        .expect("a map")
-        .map;
-    let path = dir.0.join("disk.txt");
-    dump("tri", &m.positions, &m.simplices, &m.coords, &path).expect("write the disk dump");
-    let out = run(&exe, &["--messy", path.to_str().unwrap_or_default()]);
-    assert!(
-        out.contains("36 cells") && out.contains(", 0 after"),
-        "{out}"
-    );
-    assert!(out.contains("all checks passed"), "{out}");
+    let disk = from_mesh::from_quads(&disk, &noisy(3, 2)).expect("a map");
     let cylinder = meshes::hex_mesh_by_name("cylinder6").expect("cylinder6");
-    let m = from_mesh::from_hexes(&cylinder, &noisy(2, 1))
-        .expect("a map")
-        .map;
-    let path = dir.0.join("cylinder.txt");
-    dump("tet", &m.positions, &m.simplices, &m.coords, &path).expect("write the cylinder dump");
-    let out = run(&exe, &["--messy", path.to_str().unwrap_or_default()]);
-    assert!(
-        out.contains("96 cells") && out.contains(", 0 after"),
-        "{out}"
-    );
-    assert!(out.contains("all checks passed"), "{out}");
+    let cylinder = from_mesh::from_hexes(&cylinder, &noisy(2, 1)).expect("a map");
+    let runs = [
+        ("36 cells", dumped("tri", &disk.map, dir.0.join("disk.txt"))),
+        (
+            "96 cells",
+            dumped("tet", &cylinder.map, dir.0.join("cylinder.txt")),
+        ),
+    ];
+    for (cells, path) in runs {
+        let out = run(&exe, &["--messy", &path]);
+        assert!(out.contains(cells) && out.contains(", 0 after"), "{out}");
+        assert!(out.contains("all checks passed"), "{out}");
+    }
 }
 
 fn data(rel: &str) -> PathBuf {
@@ -257,17 +260,13 @@ fn c_program_gets_the_reference_counts_on_shared_maps() {
     let fandisk = dualex::read_tri_map(data("qex/fandisk_param.obj")).expect("read fandisk");
     let dir = Scratch::new("shared-maps");
     let exe = c_program(&dir, false);
-    let path = dir.0.join("fandisk.txt");
-    let m = &fandisk;
-    dump("tri", &m.positions, &m.simplices, &m.coords, &path).expect("write the fandisk dump");
-    let out = run(&exe, &[path.to_str().unwrap_or_default(), "897"]);
+    let path = dumped("tri", &fandisk, dir.0.join("fandisk.txt"));
+    let out = run(&exe, &[&path, "897"]);
     assert!(out.contains("897 quads"), "{out}");
 
     let hand = dualex::read_tet_map(data("hexex/hand_q.hexex")).expect("read hand_q");
-    let path = dir.0.join("hand_q.txt");
-    let m = &hand;
-    dump("tet", &m.positions, &m.simplices, &m.coords, &path).expect("write the hand_q dump");
-    let out = run(&exe, &[path.to_str().unwrap_or_default(), "956"]);
+    let path = dumped("tet", &hand, dir.0.join("hand_q.txt"));
+    let out = run(&exe, &[&path, "956"]);
     assert!(out.contains("956 hexes"), "{out}");
 }
 

@@ -70,58 +70,64 @@ fn json_of(pairs: impl Iterator<Item = (u32, usize)>) -> serde_json::Value {
     serde_json::Value::Object(m)
 }
 
+/// The expected counts of a quad mesh's map (`MAP.expected.json`).
+fn expected_quads(e: &dualex::gen::Expected, o: &FromMeshOptions) -> serde_json::Value {
+    serde_json::json!({
+        "dimension": 2,
+        "scale": o.scale * o.magnify,
+        "half_shift": o.half_shift,
+        "quads": e.quads,
+        "interior_valence": e.interior_valence.as_ref()
+            .map(|h| json_of(h.iter().map(|(k, v)| (*k, *v)))),
+        "euler": e.euler,
+        "boundary_loops": e.boundary_loops,
+    })
+}
+
+/// The expected counts of a hex mesh's map.
+fn expected_hexes(e: &dualex::gen::block::ExpectedHex, o: &FromMeshOptions) -> serde_json::Value {
+    serde_json::json!({
+        "dimension": 3,
+        "scale": o.scale * o.magnify,
+        "hexes": e.hexes,
+        "boundary_components": e.boundary_components,
+        "boundary_euler": e.boundary_euler,
+    })
+}
+
 /// Generates and writes (module docs).
 pub fn run(args: &GenerateArgs, g: &Global, input: Input, out: &Path) -> Result<(), CliError> {
     let o = options(args);
     let json_path = out.with_extension("expected.json");
-    let (map_exts, refined): (&'static [&'static str], _) = match &input {
+    let (map_exts, refined, simplices): (&'static [&'static str], _, _) = match &input {
         Input::Quads(..) => (
             dualex::io::TRI_MAP_EXTENSIONS,
             out.with_extension("expected.obj"),
+            ("triangle", "triangles"),
         ),
         Input::Hexes(..) => (
             dualex::io::TET_MAP_EXTENSIONS,
             out.with_extension("expected.mesh"),
+            ("tet", "tets"),
         ),
     };
     crate::outputs::check_all(&[(out, Some(map_exts)), (&json_path, None), (&refined, None)])?;
-    let (what, count, json) = match &input {
+    // the map and the refined mesh written, the expected counts kept
+    let (count, json) = match &input {
         Input::Quads(m, name) => {
             let gen = from_quads(m, &o).map_err(|error| from_mesh(name, error))?;
-            let e = &gen.expected;
-            let json = serde_json::json!({
-                "dimension": 2,
-                "scale": o.scale * o.magnify,
-                "half_shift": o.half_shift,
-                "quads": e.quads,
-                "interior_valence": e.interior_valence.as_ref()
-                    .map(|h| json_of(h.iter().map(|(k, v)| (*k, *v)))),
-                "euler": e.euler,
-                "boundary_loops": e.boundary_loops,
-            });
             dualex::io::write_tri_map(out, &gen.map)?;
             dualex::io::write_quad_mesh(&refined, &gen.refined)?;
-            (
-                plural(gen.map.len(), "triangle", "triangles"),
-                gen.map.len(),
-                json,
-            )
+            (gen.map.len(), expected_quads(&gen.expected, &o))
         }
         Input::Hexes(m, name) => {
             let gen = from_hexes(m, &o).map_err(|error| from_mesh(name, error))?;
-            let e = &gen.expected;
-            let json = serde_json::json!({
-                "dimension": 3,
-                "scale": o.scale * o.magnify,
-                "hexes": e.hexes,
-                "boundary_components": e.boundary_components,
-                "boundary_euler": e.boundary_euler,
-            });
             dualex::io::write_tet_map(out, &gen.map)?;
             dualex::io::write_hex_mesh(&refined, &gen.refined)?;
-            (plural(gen.map.len(), "tet", "tets"), gen.map.len(), json)
+            (gen.map.len(), expected_hexes(&gen.expected, &o))
         }
     };
+    let what = plural(count, simplices.0, simplices.1);
     let text = serde_json::to_string_pretty(&json).map_err(|e| CliError::Bug {
         what: "",
         reason: e.to_string(),

@@ -1,6 +1,5 @@
 //! What `quad`, `hex` and `remesh` say of the geometric stage (the
-//! library's [`dualex::steps::quad_geometry`] and
-//! [`dualex::steps::hex_geometry`], with the options of
+//! library's [`dualex::steps::geometry`], with the options of
 //! [`crate::args::GeometryArgs::options`]): its result (the done line's quality, the warning or `--strict` error
 //! for inverted elements left).
 

@@ -15,9 +15,11 @@ mod extract_args;
 mod generate;
 mod generate_from_mesh;
 mod geometry;
+mod hex;
 mod inspect_mesh;
 mod outputs;
 mod progress;
+mod quad;
 mod quality;
 mod remesh;
 mod summary;
@@ -53,8 +55,8 @@ fn main() -> ExitCode {
     }
     let g = &cli.global;
     let result = match &cli.command {
-        Command::Quad(a) => extract::quad(a, g),
-        Command::Hex(a) => extract::hex(a, g),
+        Command::Quad(a) => quad::quad(a, g),
+        Command::Hex(a) => hex::hex(a, g),
         Command::View(a) => commands::view(a, g),
         Command::Inspect(a) => commands::inspect(a, g),
         Command::Generate(a) => generate::generate(a, g),

@@ -7,7 +7,7 @@
 //! and pictured (`--png`) when asked; then the library's checks (a
 //! collapsed map, a map the extraction refuses: remesh's bug; no quad: an
 //! error) and the extraction kept are handed to the same code as `dualex
-//! quad` ([`crate::extract::quad_map`]), whose checks and summary apply: a
+//! quad` ([`crate::extract::extract_map`]), whose checks and summary apply: a
 //! refused output writes no mesh.
 
 use crate::args::{ExtractArgs, Global, QuadArgs, RemeshArgs, RoundArgs, RoundingArg, WeldArgs};
@@ -23,7 +23,7 @@ const EMBEDDED_SURFACE: &str = "a bumpy sphere of 5120 triangles";
 /// (written and pictured as it goes), the extraction handed on.
 pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), CliError> {
     if a.uv {
-        crate::extract::refuse_uv(&a.output);
+        crate::quad::refuse_uv(&a.output);
     }
     // 1. every output checked first
     check_outputs(a)?;
@@ -75,7 +75,7 @@ pub fn remesh(a: &RemeshArgs, g: &Global) -> Result<(), CliError> {
     } else {
         "embedded surface"
     };
-    crate::extract::quad_map(
+    crate::extract::extract_map(
         &map,
         &name,
         done,
@@ -162,7 +162,7 @@ fn options(a: &RemeshArgs) -> dualex::RemeshOptions {
 }
 
 /// The arguments of `dualex quad` that `remesh` hands its extraction to
-/// ([`crate::extract::quad_map`]).
+/// ([`crate::extract::extract_map`]).
 fn quad_args(a: &RemeshArgs) -> QuadArgs {
     QuadArgs {
         input: a.input.clone(),

@@ -19,78 +19,15 @@ pub fn count(n: usize, one: &str, many: &str) -> String {
     format!("{n} {}", plural(n, one, many))
 }
 
-/// Quality problems a quad output still has, from its stats (empty: none):
-/// interior vertices of valence ≤ 2, a subdivision, dropped cells, open
-/// holes, rounded transitions.
-pub fn quad_problems(st: &dualex::steps::QuadReport) -> Vec<String> {
-    let mut p = Vec::new();
-    if st.quads == 0 {
-        p.push("empty mesh: the map covers less than one grid cell".into());
-    }
-    let low: usize = st.valence_interior.range(..=2).map(|(_, n)| n).sum();
-    if low > 0 {
-        p.push(format!(
-            "{} of valence ≤ 2",
-            count(low, "interior vertex", "interior vertices")
-        ));
-    }
-    if st.subdivided {
-        p.push("subdivided once (quads could not represent the map)".into());
-    }
-    if st.repair_paths > 0 {
-        p.push(format!(
-            "repaired locally along {} (quads could not represent the map)",
-            count(st.repair_paths, "path", "paths")
-        ));
-    }
-    if st.repair_dropped > 0 {
-        p.push(format!(
-            "{} dropped",
-            count(st.repair_dropped, "degenerate cell", "degenerate cells")
-        ));
-    }
-    if st.holes_left_open > 0 {
-        p.push(format!(
-            "{} left open",
-            count(st.holes_left_open, "hole", "holes")
-        ));
-    }
-    rounded(&mut p, st.segment.snapped_transitions);
-    p
+/// The problem of `n` interior vertices (2D) or edges (3D) of valence
+/// ≤ 2 (`one`, `many`: what they are), if any.
+pub fn low_valence((n, one, many): (usize, &str, &str)) -> Option<String> {
+    (n > 0).then(|| format!("{} of valence ≤ 2", count(n, one, many)))
 }
 
-/// The same for a hex output: interior edges of valence ≤ 2, open
-/// interior faces, rounded transitions.
-pub fn hex_problems(st: &dualex::steps::HexReport) -> Vec<String> {
-    let mut p = Vec::new();
-    let low: usize = st.edge_valence_interior.range(..=2).map(|(_, n)| n).sum();
-    if low > 0 {
-        p.push(format!(
-            "{} of valence ≤ 2",
-            count(low, "interior edge", "interior edges")
-        ));
-    }
-    if st.columns.holes > 0 {
-        p.push(format!(
-            "repaired locally along {} of columns, {} split (hexes could not represent the map)",
-            count(st.columns.paths, "path", "paths"),
-            count(st.columns.split, "column", "columns"),
-        ));
-    }
-    if st.open_interior_faces > 0 {
-        p.push(format!(
-            "{} left open",
-            count(st.open_interior_faces, "interior face", "interior faces")
-        ));
-    }
-    rounded(&mut p, st.segment.snapped_transitions);
-    p
-}
-
-fn rounded(p: &mut Vec<String>, n: usize) {
-    if n > 0 {
-        p.push(format!("{} rounded", count(n, "transition", "transitions")));
-    }
+/// The problem of `n` transitions rounded, if any (the last one named).
+pub fn rounded(n: usize) -> Option<String> {
+    (n > 0).then(|| format!("{} rounded", count(n, "transition", "transitions")))
 }
 
 /// `"; check: a, b"` or nothing.

@@ -20,10 +20,9 @@
 //! the output refer to the caller's map either way.
 
 use crate::stats::{GridOffset, Stats, TopologyComparison};
-use crate::steps::{self, QuadExtraction};
+use crate::steps::{self, Dimension, Extraction, Report, NO_SOURCE};
 use crate::{Error, GeometryOptions, GeometryReport, TetMap, TriMap};
 use dualex_cells::CellMesh;
-use dualex_check::topology as topo;
 use dualex_map::SimplexMap;
 use std::borrow::Cow;
 
@@ -122,7 +121,7 @@ fn welded<const N: usize, const D: usize>(
 
 /// The output check of either dimension: its errors (an invalid mesh),
 /// then the topology compared (an error under `strict`).
-fn checked(errors: Vec<String>, t: &TopologyComparison, strict: bool) -> Result<(), Error> {
+fn checked(errors: &[String], t: &TopologyComparison, strict: bool) -> Result<(), Error> {
     if !errors.is_empty() {
         return Err(Error::InvalidOutput(errors.join("; ")));
     }
@@ -144,58 +143,59 @@ fn inverted_check(r: &GeometryReport, strict: bool) -> Result<(), Error> {
     Ok(())
 }
 
-/// Extracts the quad mesh of a triangle map (see the [crate] example),
-/// then runs the geometric stage ([`Options::geometry`]) on it against
-/// the (welded) map's surface; its report is [`Stats::geometry`].
-pub fn quad(map: &TriMap, opts: &Options) -> Result<QuadOutput, Error> {
-    let (map, welded) = welded(map, opts.weld);
-    let x = steps::extract_quads(&map, opts, true)?;
-    finish_quads(&map, x, welded, opts)
-}
-
-/// What follows the extraction of `map` (as [`quad`](crate::quad()) and
-/// [`remesh`](crate::remesh()) run it): the output check, the topology
-/// comparison, the geometric stage; `welded` vertices were merged before.
-pub(crate) fn finish_quads(
-    map: &TriMap,
-    x: QuadExtraction,
-    welded: usize,
+/// [`quad`](crate::quad()) and [`hex`](crate::hex()) in one: weld, then
+/// the steps of [`finish`] after the extraction.
+fn run<const N: usize, const D: usize, const K: usize>(
+    map: &SimplexMap<N, D>,
     opts: &Options,
-) -> Result<QuadOutput, Error> {
-    finish_staged_quads(map, x, welded, opts, None)
+) -> Result<Output<K, D>, Error>
+where
+    SimplexMap<N, D>: Dimension<K, D>,
+{
+    let (map, welded) = welded(map, opts.weld);
+    let x = steps::extract(&*map, opts, true)?;
+    finish(&*map, x, welded, opts, None)
 }
 
-/// [`finish_quads`], the geometric stage's report given when it has run
-/// on `x` already ([`steps::quad_geometry`]).
-pub(crate) fn finish_staged_quads(
-    map: &TriMap,
-    mut x: QuadExtraction,
+/// What follows the extraction `x` of `map` (as [`quad`](crate::quad()),
+/// [`hex`](crate::hex()) and [`remesh`](crate::remesh()) run it): the
+/// output check, the topology comparison, the geometric stage (unless its
+/// report is `staged`: it has run on `x` already); `welded` vertices were
+/// merged before.
+pub(crate) fn finish<M: Dimension<K, D>, const K: usize, const D: usize>(
+    map: &M,
+    mut x: Extraction<K, D, M::Report>,
     welded: usize,
     opts: &Options,
     staged: Option<GeometryReport>,
-) -> Result<QuadOutput, Error> {
-    let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
-    let t = TopologyComparison {
-        input: topo::surface_shape(map.positions.len(), &map.simplices).into(),
-        output: topo::quad_shape(&rep).into(),
-    };
-    checked(rep.errors(), &t, opts.strict)?;
+) -> Result<Output<K, D>, Error> {
+    let check = steps::check(map, &x.mesh);
+    let mut stats = x.stats.stats(&check);
+    checked(&check.errors, &stats.topology, opts.strict)?;
     let geometry = match staged {
         Some(g) => g,
-        None => steps::quad_geometry(map, &mut x, &opts.geometry),
+        None => steps::geometry(map, &mut x, &opts.geometry),
     };
     inverted_check(&geometry, opts.strict)?;
-    let mut stats = Stats::of_quads(&x.stats, welded, t, geometry);
-    stats.boundary_facets = rep.boundary_edges;
-    let sources = x.sources.iter();
-    Ok(QuadOutput {
+    stats.welded_vertices = welded;
+    stats.geometry = geometry;
+    Ok(Output {
         stats,
-        sources: sources
-            .map(|&s| (s != dualex_quad::NO_SOURCE).then_some(s))
+        sources: x
+            .sources
+            .iter()
+            .map(|&s| (s != NO_SOURCE).then_some(s))
             .collect(),
         mesh: x.mesh,
         corners: x.corners,
     })
+}
+
+/// Extracts the quad mesh of a triangle map (see the [crate] example),
+/// then runs the geometric stage ([`Options::geometry`]) on it against
+/// the (welded) map's surface; its report is [`Stats::geometry`].
+pub fn quad(map: &TriMap, opts: &Options) -> Result<QuadOutput, Error> {
+    run(map, opts)
 }
 
 /// Extracts the hex mesh of a tet map, then runs the geometric stage
@@ -225,20 +225,5 @@ pub(crate) fn finish_staged_quads(
 /// # Ok::<(), dualex::Error>(())
 /// ```
 pub fn hex(map: &TetMap, opts: &Options) -> Result<HexOutput, Error> {
-    let (map, welded) = welded(map, opts.weld);
-    let mut x = steps::extract_hexes(&map, opts)?;
-    let rep = dualex_check::check_hex_mesh(x.mesh.positions.len(), &x.mesh.cells, None);
-    let t = TopologyComparison {
-        input: topo::tet_shape(map.positions.len(), &map.simplices).into(),
-        output: topo::hex_shape(&rep).into(),
-    };
-    checked(rep.errors(), &t, opts.strict)?;
-    let geometry = steps::hex_geometry(&map, &mut x.mesh, &opts.geometry);
-    inverted_check(&geometry, opts.strict)?;
-    Ok(HexOutput {
-        stats: Stats::of_hexes(&x.stats, welded, t, geometry),
-        sources: x.sources.into_iter().map(Some).collect(),
-        mesh: x.mesh,
-        corners: x.corners,
-    })
+    run(map, opts)
 }

@@ -62,6 +62,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod dims;
 mod extract;
 mod inspect;
 pub mod remesh;
@@ -81,7 +82,7 @@ pub use dualex_map as map;
 #[cfg(feature = "render")]
 pub use dualex_render as render;
 
-pub use dualex_cells::{HexMesh, QuadMesh};
+pub use dualex_cells::{CellMesh, HexMesh, QuadMesh};
 pub use dualex_geom::{
     Mode as GeometryMode, Options as GeometryOptions, Report as GeometryReport, Summary as Quality,
     SMOOTH_ROUNDS,

@@ -43,7 +43,7 @@
 //! Invariants: the map is over the welded surface (its `positions` and
 //! `simplices`); a result is never an empty mesh.
 
-use crate::extract::finish_staged_quads;
+use crate::extract::finish;
 use crate::steps::{self, QuadExtraction};
 use crate::{
     Error, GeometryMode, GeometryReport, InputError, Options, QuadOutput, TriMap, SMOOTH_ROUNDS,
@@ -125,7 +125,7 @@ pub fn remesh_map(
     // one extraction per map counted, in the order of `stats.counted`
     let mut extracted: Vec<Option<QuadExtraction>> = Vec::new();
     let mut quads_of = |m: &TriMap| {
-        let x = steps::extract_quads(m, &inner, true).ok();
+        let x = steps::extract(m, &inner, true).ok();
         let n = x.as_ref().and_then(|x| {
             let rep = dualex_check::check_quad_mesh(x.mesh.positions.len(), &x.mesh.cells);
             let same = rep.is_valid() && topology::quad_shape(&rep) == shape;
@@ -210,7 +210,7 @@ impl RemeshedMap {
             Some(x) => x,
             None => {
                 let inner = self.opts.quad_options();
-                steps::extract_quads(&self.map, &inner, true).map_err(|e| {
+                steps::extract(&self.map, &inner, true).map_err(|e| {
                     Error::Bug(format!("the extraction refuses the map remesh made: {e}"))
                 })?
             }
@@ -258,7 +258,7 @@ pub fn remesh(
     opts: &RemeshOptions,
 ) -> Result<RemeshOutput, Error> {
     let s = remesh_staged(positions, triangles, opts, &mut |_, _| Ok(()))?;
-    let quads = finish_staged_quads(
+    let quads = finish(
         &s.map,
         s.extracted,
         s.welded,
@@ -391,7 +391,7 @@ fn attempt(
     let same_shape = report.is_valid() && topology::quad_shape(&report) == made_shape;
     let geometry = report
         .is_valid()
-        .then(|| steps::quad_geometry(&map, &mut extracted, &opts.extract.geometry));
+        .then(|| steps::geometry(&map, &mut extracted, &opts.extract.geometry));
     Ok(Staged {
         map,
         stats,

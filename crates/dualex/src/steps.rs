@@ -1,31 +1,50 @@
 //! The pipeline one step at a time, for tools that report on every step
 //! (the CLI: its own checks, messages and `--stats` JSON); [`quad()`] and
-//! [`hex()`] run these same steps in this order:
+//! [`hex()`] run these same steps in this order, one generic code for both
+//! dimensions:
 //!
 //! 1. weld ([`weld`]: coincident boundary vertices merged, a cut mesh
 //!    made whole);
-//! 2. extract ([`extract_quads`], [`extract_hexes`]): the mesh, the
-//!    extraction's own detailed report ([`QuadReport`], [`HexReport`]:
-//!    every stage's counts, its JSON, the sanitization's leftovers), the
-//!    cells' sources and corner map coordinates;
-//! 3. check: [`crate::check`] (the output's validity and topology);
-//! 4. the geometric stage ([`quad_geometry`], [`hex_geometry`]): positions
-//!    moved, cells untouched.
+//! 2. extract ([`extract`]): the mesh, the extraction's own detailed
+//!    report ([`QuadReport`], [`HexReport`]: every stage's counts, its
+//!    JSON, the sanitization's leftovers), the cells' sources and corner
+//!    map coordinates, as one [`Extraction`];
+//! 3. check ([`check`]: the output's validity and its topology compared
+//!    with the input's);
+//! 4. the geometric stage ([`geometry`]): positions moved, cells
+//!    untouched.
+//!
+//! What differs by dimension (which extraction, checker, topology and
+//! geometric stage runs) is the map's [`Dimension`], one impl for
+//! [`TriMap`] (quads) and one for [`TetMap`] (hexes); what the two
+//! extractions' own reports share ([`SegmentStats`]) is read through
+//! [`Report`].
 //!
 //! Input: a map and the facade's [`Options`]; nothing here fails on bad
 //! input other than by an [`InputError`] naming the element.
 //!
 //! [`quad()`]: crate::quad()
 //! [`hex()`]: crate::hex()
+//! [`TriMap`]: crate::TriMap
+//! [`TetMap`]: crate::TetMap
 
-use crate::{GeometryOptions, GeometryReport, HexMesh, InputError, Options, TetMap, TriMap};
-use dualex_map::{SimplexMap, TransitionOptions};
+use crate::{GeometryOptions, GeometryReport, InputError, Options, Stats};
+use dualex_cells::CellMesh;
+use dualex_check::topology::{Comparison, Shape};
+use dualex_map::SimplexMap;
 
-pub use dualex_hex::{Extracted as HexExtraction, HexStats as HexReport};
-pub use dualex_quad::{Extracted as QuadExtraction, QuadStats as QuadReport};
+pub use dualex_hex::HexStats as HexReport;
+pub use dualex_quad::QuadStats as QuadReport;
 pub use dualex_segment::sanitize_report::SanitizeReport;
+pub use dualex_segment::stats::SegmentStats;
 /// The clock of the reports' `time_ms` (laps by name), for a tool's own.
 pub use dualex_util::timing::Laps;
+
+/// In [`Extraction::sources`]: a cell held by no simplex (a quad that
+/// closes a hole); never a simplex index (the map's topology numbers
+/// simplex facets in `u32`).
+pub const NO_SOURCE: u32 = u32::MAX;
+const _: () = assert!(dualex_quad::NO_SOURCE == NO_SOURCE);
 
 /// Step 1: `map` with its coincident boundary vertices merged (the seams of
 /// a cut mesh), and how many were merged; the simplices and their order are
@@ -35,79 +54,116 @@ pub fn weld<const N: usize, const D: usize>(map: SimplexMap<N, D>) -> (SimplexMa
     (map, rep.welded_vertices)
 }
 
-fn transitions(round: bool) -> TransitionOptions {
-    TransitionOptions {
-        round,
-        ..Default::default()
+/// Step 2's result in either dimension (`K` corners a cell, `D` map
+/// coordinates, `R` the extraction's own report), the extraction crates'
+/// one type: `mesh` (positions as the map places them), `stats` (the
+/// report), `sources` (per cell, the input simplex holding its node;
+/// [`NO_SOURCE`] for a quad that closes a hole) and `corners` (per cell,
+/// its corners' map coordinates in that simplex's chart, in the cell's
+/// corner order; `None` for a cell made by a repair).
+pub type Extraction<const K: usize, const D: usize, R> = dualex_segment::place::Extracted<D, K, R>;
+
+/// The quad extraction (step 2 on a [`TriMap`](crate::TriMap)).
+pub type QuadExtraction = Extraction<4, 2, QuadReport>;
+/// The hex extraction (step 2 on a [`TetMap`](crate::TetMap)).
+pub type HexExtraction = Extraction<8, 3, HexReport>;
+/// The extraction of a map `M` of `K`-cornered cells in `D` dimensions.
+pub type ExtractionOf<M, const K: usize, const D: usize> =
+    Extraction<K, D, <M as Dimension<K, D>>::Report>;
+
+/// Step 3's result: the output checked.
+#[derive(Clone, Debug)]
+pub struct Check {
+    /// The checker's findings; empty for a valid mesh.
+    pub errors: Vec<String>,
+    /// The input's and the output's components, Euler characteristic and
+    /// boundary components.
+    pub topology: Comparison,
+    /// The output's boundary facets as the checker counts them (edges of
+    /// one quad, faces of one hex).
+    pub boundary_facets: usize,
+}
+
+impl Check {
+    /// The checker's `errors`, the (input, output) `shapes`, and the
+    /// output's `boundary_facets`.
+    pub fn new(errors: Vec<String>, shapes: (Shape, Shape), boundary_facets: usize) -> Self {
+        let (input, output) = shapes;
+        Check {
+            errors,
+            topology: Comparison { input, output },
+            boundary_facets,
+        }
     }
 }
 
-/// The quad extraction's own options from the facade's; `singularities`:
-/// count the input's singularities by index in the report (about 10 % of
-/// the extraction; the CLI does where stats are shown).
-pub(crate) fn quad_options(opts: &Options, singularities: bool) -> dualex_quad::QuadOptions {
-    dualex_quad::QuadOptions {
-        fairing: opts.fairing,
-        transitions: transitions(opts.round_transitions),
-        seed: opts.seed,
-        grid_offset: opts.grid_offset,
-        singularity_stats: singularities,
-    }
+/// The per-dimension parts of steps 2–4, one impl per map type:
+/// [`TriMap`](crate::TriMap) → quads (`K` = 4, `D` = 2) and
+/// [`TetMap`](crate::TetMap) → hexes (8, 3), in `dims.rs`. Call them
+/// through [`extract`], [`check`] and [`geometry`].
+pub trait Dimension<const K: usize, const D: usize> {
+    /// The extraction's own report: [`QuadReport`] or [`HexReport`].
+    type Report: Report;
+    /// Step 2 (see [`extract`]).
+    fn extract(
+        &self,
+        opts: &Options,
+        singularities: bool,
+    ) -> Result<Extraction<K, D, Self::Report>, InputError>;
+    /// Step 3 (see [`check`]).
+    fn check(&self, mesh: &CellMesh<K>) -> Check;
+    /// Step 4 (see [`geometry`]).
+    fn geometry(
+        &self,
+        x: &mut Extraction<K, D, Self::Report>,
+        opts: &GeometryOptions,
+    ) -> GeometryReport;
 }
 
-/// Step 2 in 2D: the quad extraction of `map` (not welded here) with
-/// `opts`' extraction knobs (`fairing`, `round_transitions`,
-/// `grid_offset`, `seed`); `singularities` fills
-/// [`QuadReport::singularities`] (about 10 % of the extraction).
-pub fn extract_quads(
-    map: &TriMap,
+/// The extraction's own report of either dimension ([`QuadReport`],
+/// [`HexReport`]), one impl each in `dims.rs`.
+pub trait Report {
+    /// The counts of steps 1–7, alike in both dimensions.
+    fn segment(&self) -> &SegmentStats;
+    /// The report as the CLI's `--stats` JSON (before the CLI's sections).
+    fn to_json(&self) -> serde_json::Value;
+    /// The facade's [`Stats`] of this report and the output `check`
+    /// (welded vertices and the geometric stage's report left at their
+    /// defaults: the steps around the extraction fill them).
+    fn stats(&self, check: &Check) -> Stats;
+}
+
+/// Step 2: the extraction of `map` (not welded here) with `opts`'
+/// extraction knobs (`fairing`: in 3D on columns, `round_transitions`,
+/// `grid_offset`, `seed`); `singularities` (2D): count the input's
+/// singularities by index in [`QuadReport::singularities`] (about 10 % of
+/// the extraction; the CLI does where stats are shown; 3D always counts
+/// its singular edges).
+pub fn extract<M: Dimension<K, D>, const K: usize, const D: usize>(
+    map: &M,
     opts: &Options,
     singularities: bool,
-) -> Result<QuadExtraction, InputError> {
-    dualex_quad::extract_full(map, &quad_options(opts, singularities))
+) -> Result<Extraction<K, D, M::Report>, InputError> {
+    Dimension::extract(map, opts, singularities)
 }
 
-/// Step 2 in 3D: the hex extraction of `map` (not welded here) with
-/// `opts`' extraction knobs (`fairing`: on columns, `round_transitions`,
-/// `grid_offset`, `seed`).
-pub fn extract_hexes(map: &TetMap, opts: &Options) -> Result<HexExtraction, InputError> {
-    let inner = dualex_hex::HexOptions {
-        transitions: transitions(opts.round_transitions),
-        seed: opts.seed,
-        grid_offset: opts.grid_offset,
-        fairing: opts.fairing,
-    };
-    dualex_hex::extract_full(map, &inner)
+/// Step 3: the output `mesh` of `map` checked (quads: manifold, oriented;
+/// hexes: combinatorially valid) and its topology compared with the
+/// map's.
+pub fn check<M: Dimension<K, D>, const K: usize, const D: usize>(
+    map: &M,
+    mesh: &CellMesh<K>,
+) -> Check {
+    Dimension::check(map, mesh)
 }
 
-/// Step 4 in 2D: the geometric stage on the quads of `x` (their positions
-/// moved in place) against `map`'s surface (the map `x` was extracted
+/// Step 4: the geometric stage on the cells of `x` (their positions moved
+/// in place) against `map`'s surface or tets (the map `x` was extracted
 /// from).
-pub fn quad_geometry(
-    map: &TriMap,
-    x: &mut QuadExtraction,
+pub fn geometry<M: Dimension<K, D>, const K: usize, const D: usize>(
+    map: &M,
+    x: &mut Extraction<K, D, M::Report>,
     opts: &GeometryOptions,
 ) -> GeometryReport {
-    // the stage's "none" is u32::MAX, the extraction's NO_SOURCE
-    const _: () = assert!(dualex_quad::NO_SOURCE == u32::MAX);
-    dualex_geom::quads(
-        &mut x.mesh.positions,
-        &x.mesh.cells,
-        &map.positions,
-        &map.simplices,
-        &x.sources,
-        opts,
-    )
-}
-
-/// Step 4 in 3D: the geometric stage on `mesh` (its positions moved in
-/// place) against `map`'s tets (the map it was extracted from).
-pub fn hex_geometry(map: &TetMap, mesh: &mut HexMesh, opts: &GeometryOptions) -> GeometryReport {
-    dualex_geom::hexes(
-        &mut mesh.positions,
-        &mesh.cells,
-        &map.positions,
-        &map.simplices,
-        opts,
-    )
+    Dimension::geometry(map, x, opts)
 }

@@ -128,6 +128,22 @@ fn in_triangle(map: &TriMap, t: u32, p: [f64; 2]) -> bool {
     })
 }
 
+/// Every cell of `out` has its corners' map coordinates, exact integers,
+/// `scale` × its vertices' positions (an identity map scaled).
+fn assert_corners_scale<const K: usize, const D: usize>(out: &Output<K, D>, scale: f64) {
+    for (cell, corners) in out.mesh.cells.iter().zip(&out.corners) {
+        let corners = corners.expect("corners");
+        for (&v, t) in cell.iter().zip(corners) {
+            let p = out.mesh.positions[v as usize];
+            assert!(t.iter().all(|x| x.fract() == 0.0), "{t:?}");
+            assert!(
+                (0..D).all(|k| (t[k] - scale * p[k]).abs() < 1e-4),
+                "{t:?} at {p:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn each_quad_names_the_triangle_holding_its_node() {
     // identity map scaled by 3: the node of a quad is its centre
@@ -147,17 +163,7 @@ fn each_quad_names_the_triangle_holding_its_node() {
         // the map is 3 × the position (up to sanitization's moves of map
         // vertices on the grid's diagonals), the corners exact integers
         assert_eq!(out.corners.len(), out.mesh.cells.len());
-        for (q, uv) in out.mesh.cells.iter().zip(&out.corners) {
-            let uv = uv.expect("corners");
-            for (&v, t) in q.iter().zip(uv) {
-                let p = out.mesh.positions[v as usize];
-                assert!(t.iter().all(|x| x.fract() == 0.0), "{t:?}");
-                assert!(
-                    (0..2).all(|k| (t[k] - 3.0 * p[k]).abs() < 1e-4),
-                    "{t:?} at {p:?}"
-                );
-            }
-        }
+        assert_corners_scale(&out, 3.0);
     }
 }
 
@@ -229,15 +235,5 @@ fn each_hex_names_the_tet_holding_its_node() {
     // the map is 2 × the position (up to sanitization's moves): each
     // corner's uvw, an exact integer
     assert_eq!(out.corners.len(), 64);
-    for (h, uvw) in out.mesh.cells.iter().zip(&out.corners) {
-        let uvw = uvw.expect("corners");
-        for (&v, t) in h.iter().zip(uvw) {
-            let p = out.mesh.positions[v as usize];
-            assert!(t.iter().all(|x| x.fract() == 0.0), "{t:?}");
-            assert!(
-                (0..3).all(|k| (t[k] - 2.0 * p[k]).abs() < 1e-4),
-                "{t:?} at {p:?}"
-            );
-        }
-    }
+    assert_corners_scale(&out, 2.0);
 }

@@ -7,30 +7,31 @@
 use crate::*;
 use dualex_gen::from_mesh::{self, meshes, FromMeshOptions};
 
-/// A noisy map of a quad mesh of `dualex_gen` refined `k` times.
-fn messy_tri_map(name: &str, k: usize, seed: u64) -> TriMap {
-    let mesh = meshes::quad_mesh_by_name(name).expect("a generated quad mesh");
-    let o = FromMeshOptions {
-        scale: k,
+/// Noise 0.6 and folds on a mesh refined `scale` times.
+fn messy(scale: usize, seed: u64) -> FromMeshOptions {
+    FromMeshOptions {
+        scale,
         noise: 0.6,
         folds: true,
         seed,
         ..Default::default()
-    };
-    from_mesh::from_quads(&mesh, &o).expect("a map").map
+    }
+}
+
+/// A noisy map of a quad mesh of `dualex_gen` refined `k` times.
+fn messy_tri_map(name: &str, k: usize, seed: u64) -> TriMap {
+    let mesh = meshes::quad_mesh_by_name(name).expect("a generated quad mesh");
+    from_mesh::from_quads(&mesh, &messy(k, seed))
+        .expect("a map")
+        .map
 }
 
 /// A noisy map of a hex mesh of `dualex_gen` refined `k` times.
 fn messy_tet_map(name: &str, k: usize, seed: u64) -> TetMap {
     let mesh = meshes::hex_mesh_by_name(name).expect("a generated hex mesh");
-    let o = FromMeshOptions {
-        scale: k,
-        noise: 0.6,
-        folds: true,
-        seed,
-        ..Default::default()
-    };
-    from_mesh::from_hexes(&mesh, &o).expect("a map").map
+    from_mesh::from_hexes(&mesh, &messy(k, seed))
+        .expect("a map")
+        .map
 }
 
 fn geometry(mode: GeometryMode) -> GeometryOptions {
@@ -46,15 +47,20 @@ fn messy_disk() -> TriMap {
     messy_tri_map("ngon4", 3, 2)
 }
 
-#[test]
-fn quads_the_default_untangles_what_off_leaves_inverted() {
-    let map = messy_disk();
-    let auto = quad(&map, &Options::default()).unwrap();
+/// `run` ([`quad()`], [`hex()`]) on `map` by default and with the
+/// geometric stage off: the same extraction (cells, quality before); off
+/// measures only and leaves the inverted elements, the default untangles
+/// them by moving some vertices.
+fn auto_and_off<M, const K: usize, const D: usize>(
+    map: &M,
+    run: fn(&M, &Options) -> Result<Output<K, D>, Error>,
+) -> (Output<K, D>, Output<K, D>) {
+    let auto = run(map, &Options::default()).unwrap();
     let off_opts = Options {
         geometry: geometry(GeometryMode::Off),
         ..Default::default()
     };
-    let off = quad(&map, &off_opts).unwrap();
+    let off = run(map, &off_opts).unwrap();
     let (a, o) = (&auto.stats.geometry, &off.stats.geometry);
     // the same extraction: the same cells, the same quality before
     assert_eq!(auto.mesh.cells, off.mesh.cells);
@@ -64,10 +70,18 @@ fn quads_the_default_untangles_what_off_leaves_inverted() {
     // off: measured only, nothing moved
     assert_eq!((o.mode, o.moved_vertices, o.max_move), ("off", 0, 0.0));
     assert_eq!(o.after, o.before);
-    // auto: every inverted quad untangled, by moving some vertices
-    assert_eq!(a.mode, "auto");
+    // auto: every inverted element untangled, by moving some vertices
     assert_eq!(a.after.inverted, 0, "{a:?}");
-    assert!(a.after.min > 0.0 && a.moved_vertices > 0, "{a:?}");
+    assert!(a.moved_vertices > 0, "{a:?}");
+    (auto, off)
+}
+
+#[test]
+fn quads_the_default_untangles_what_off_leaves_inverted() {
+    let (auto, off) = auto_and_off(&messy_disk(), quad);
+    let (a, o) = (&auto.stats.geometry, &off.stats.geometry);
+    assert_eq!(a.mode, "auto");
+    assert!(a.after.min > 0.0, "{a:?}");
     assert!(a.moved_vertices <= auto.mesh.positions.len());
     let moved = auto
         .mesh
@@ -172,26 +186,16 @@ fn a_clean_map_is_left_as_placed() {
 fn hexes_the_default_untangles_what_off_leaves_inverted() {
     // 96 hexes around an interior axis of valence 6
     let map = messy_tet_map("cylinder6", 2, 1);
-    let auto = hex(&map, &Options::default()).unwrap();
-    let off_opts = Options {
+    let (_, off) = auto_and_off(&map, hex);
+    let strict_off = Options {
+        strict: true,
         geometry: geometry(GeometryMode::Off),
         ..Default::default()
     };
-    let off = hex(&map, &off_opts).unwrap();
-    let (a, o) = (&auto.stats.geometry, &off.stats.geometry);
-    assert_eq!(auto.mesh.cells, off.mesh.cells);
-    assert_eq!(a.before, o.before);
-    assert_eq!(a.before.elements, auto.stats.cells);
-    assert!(o.before.inverted > 0, "{o:?}");
-    assert_eq!((o.after, o.moved_vertices), (o.before, 0));
-    assert_eq!(a.after.inverted, 0, "{a:?}");
-    assert!(a.moved_vertices > 0);
-    let strict_off = Options {
-        strict: true,
-        ..off_opts
-    };
     match hex(&map, &strict_off) {
-        Err(Error::InvertedElements { count }) => assert_eq!(count, o.before.inverted),
+        Err(Error::InvertedElements { count }) => {
+            assert_eq!(count, off.stats.geometry.before.inverted)
+        }
         other => panic!("expected InvertedElements, got {other:?}"),
     }
 }

@@ -144,31 +144,33 @@ def inspect(
 _Map = Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.float64]]
 _Rounding = Literal["direct", "greedy", "off"]
 
+class _RemeshOptions(TypedDict, total=False):
+    """The keyword options of `remesh` but `return_map`: quads=1000,
+    sharp=35.0, rounding="direct", seed=1, round_transitions=False,
+    strict=False."""
+
+    quads: int
+    sharp: float
+    rounding: _Rounding
+    seed: int
+    round_transitions: bool
+    strict: bool
+
 @overload
 def remesh(
     V: _Floats,
     F: _Ints,
     *,
-    quads: int = 1000,
-    sharp: float = 35.0,
-    rounding: _Rounding = "direct",
-    seed: int = 1,
-    round_transitions: bool = False,
-    strict: bool = False,
     return_map: Literal[False] = False,
+    **options: Unpack[_RemeshOptions],
 ) -> _Mesh: ...
 @overload
 def remesh(
     V: _Floats,
     F: _Ints,
     *,
-    quads: int = 1000,
-    sharp: float = 35.0,
-    rounding: _Rounding = "direct",
-    seed: int = 1,
-    round_transitions: bool = False,
-    strict: bool = False,
     return_map: Literal[True],
+    **options: Unpack[_RemeshOptions],
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, Any], _Map]:
     """Quads from a plain triangle surface, as `dualex remesh`: V (n, 3),
     F (m, 3) (cut surfaces welded first); about `quads` quads; edges sharper
