@@ -18,31 +18,9 @@
 //! ```
 
 /// The 6 faces of a hex (corner order above), each counter-clockwise seen
-/// from outside a hex of positive volume.
-pub const HEX_FACES: [[usize; 4]; 6] = [
-    [0, 3, 2, 1],
-    [4, 5, 6, 7],
-    [0, 1, 5, 4],
-    [1, 2, 6, 5],
-    [2, 3, 7, 6],
-    [3, 0, 4, 7],
-];
-
-/// The 12 edges of a hex (corner order above).
-pub const HEX_EDGES: [[usize; 2]; 12] = [
-    [0, 1],
-    [1, 2],
-    [2, 3],
-    [3, 0],
-    [4, 5],
-    [5, 6],
-    [6, 7],
-    [7, 4],
-    [0, 4],
-    [1, 5],
-    [2, 6],
-    [3, 7],
-];
+/// from outside a hex of positive volume, and its 12 edges: the checker's
+/// tables (one copy; the checker depends on no crate it checks).
+pub use dualex_check::hex::{HEX_EDGES, HEX_FACES};
 
 /// A mesh whose cells all have `K` vertices (4: quads, 8: hexes).
 #[derive(Clone, Debug, Default, PartialEq)]

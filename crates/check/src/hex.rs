@@ -33,9 +33,9 @@ use crate::quad::{check_quad_mesh, QuadReport};
 use dualex_util::union_find::UnionFind;
 use std::collections::{BTreeMap, HashMap};
 
-/// The 6 faces of a hex, oriented outwards for a positive hex (the same as
-/// `dualex_cells::cells::HEX_FACES`, kept here on purpose: the checker
-/// depends on no crate it checks).
+/// The 6 faces of a hex, oriented outwards for a positive hex (the one
+/// copy: `dualex_cells::cells` re-exports it, the checker depending on no
+/// crate it checks).
 pub const HEX_FACES: [[usize; 4]; 6] = [
     [0, 3, 2, 1],
     [4, 5, 6, 7],

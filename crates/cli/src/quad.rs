@@ -114,7 +114,7 @@ impl ExtractCommand<3, 2, 4> for QuadArgs {
         if stats.repair_paths > 0 {
             // printed under -q too: the output is not the map's own mesh
             if stats.repair_triangles + stats.holes_filled == 0 {
-                // the odd faces came from step 8a's splits (parallel edges,
+                // the odd faces came from step 10a's splits (parallel edges,
                 // folded cells), not from triangles or holes: said as such
                 eprintln!(
                     "dualex: warning: faces with an odd number of sides (left by splitting parallel edges and folded cells) were made quads along {} (local repair)",

@@ -3,16 +3,17 @@
 //! [`hex()`] run these same steps in this order, one generic code for both
 //! dimensions:
 //!
-//! 1. weld ([`weld`]: coincident boundary vertices merged, a cut mesh
-//!    made whole);
-//! 2. extract ([`extract`]): the mesh, the extraction's own detailed
-//!    report ([`QuadReport`], [`HexReport`]: every stage's counts, its
-//!    JSON, the sanitization's leftovers), the cells' sources and corner
-//!    map coordinates, as one [`Extraction`];
-//! 3. check ([`check`]: the output's validity and its topology compared
-//!    with the input's);
-//! 4. the geometric stage ([`geometry`]): positions moved, cells
-//!    untouched.
+//! - weld ([`weld`]: coincident boundary vertices merged, a cut mesh
+//!   made whole), before the pipeline's step 1;
+//! - extract ([`extract`], the pipeline's steps 1–11, numbered as in
+//!   ARCHITECTURE.md's "The steps of an extraction"): the mesh, the
+//!   extraction's own detailed report ([`QuadReport`], [`HexReport`]: every
+//!   stage's counts, its JSON, the sanitization's leftovers), the cells'
+//!   sources and corner map coordinates, as one [`Extraction`];
+//! - check ([`check`]: the output's validity and its topology compared
+//!   with the input's), between steps 11 and 12;
+//! - the geometric stage ([`geometry`], step 12): positions moved, cells
+//!   untouched.
 //!
 //! What differs by dimension (which extraction, checker, topology and
 //! geometric stage runs) is the map's [`Dimension`], one impl for
@@ -46,7 +47,7 @@ pub use dualex_util::timing::Laps;
 pub const NO_SOURCE: u32 = u32::MAX;
 const _: () = assert!(dualex_quad::NO_SOURCE == NO_SOURCE);
 
-/// Step 1: `map` with its coincident boundary vertices merged (the seams of
+/// The weld (before step 1): `map` with its coincident boundary vertices merged (the seams of
 /// a cut mesh), and how many were merged; the simplices and their order are
 /// kept. A map with nothing to merge is returned as it is.
 pub fn weld<const N: usize, const D: usize>(map: SimplexMap<N, D>) -> (SimplexMap<N, D>, usize) {
@@ -54,7 +55,7 @@ pub fn weld<const N: usize, const D: usize>(map: SimplexMap<N, D>) -> (SimplexMa
     (map, rep.welded_vertices)
 }
 
-/// Step 2's result in either dimension (`K` corners a cell, `D` map
+/// The extraction's result (steps 1–11) in either dimension (`K` corners a cell, `D` map
 /// coordinates, `R` the extraction's own report), the extraction crates'
 /// one type: `mesh` (positions as the map places them), `stats` (the
 /// report), `sources` (per cell, the input simplex holding its node;
@@ -71,7 +72,7 @@ pub type HexExtraction = Extraction<8, 3, HexReport>;
 pub type ExtractionOf<M, const K: usize, const D: usize> =
     Extraction<K, D, <M as Dimension<K, D>>::Report>;
 
-/// Step 3's result: the output checked.
+/// The last check's result: the output checked.
 #[derive(Clone, Debug)]
 pub struct Check {
     /// The checker's findings; empty for a valid mesh.
@@ -104,15 +105,15 @@ impl Check {
 pub trait Dimension<const K: usize, const D: usize> {
     /// The extraction's own report: [`QuadReport`] or [`HexReport`].
     type Report: Report;
-    /// Step 2 (see [`extract`]).
+    /// Steps 1–11 (see [`extract`]).
     fn extract(
         &self,
         opts: &Options,
         singularities: bool,
     ) -> Result<Extraction<K, D, Self::Report>, InputError>;
-    /// Step 3 (see [`check`]).
+    /// The last check (see [`check`]).
     fn check(&self, mesh: &CellMesh<K>) -> Check;
-    /// Step 4 (see [`geometry`]).
+    /// Step 12 (see [`geometry`]).
     fn geometry(
         &self,
         x: &mut Extraction<K, D, Self::Report>,
@@ -133,7 +134,7 @@ pub trait Report {
     fn stats(&self, check: &Check) -> Stats;
 }
 
-/// Step 2: the extraction of `map` (not welded here) with `opts`'
+/// Steps 1–11: the extraction of `map` (not welded here) with `opts`'
 /// extraction knobs (`fairing`: in 3D on columns, `round_transitions`,
 /// `grid_offset`, `seed`); `singularities` (2D): count the input's
 /// singularities by index in [`QuadReport::singularities`] (about 10 % of
@@ -147,7 +148,7 @@ pub fn extract<M: Dimension<K, D>, const K: usize, const D: usize>(
     Dimension::extract(map, opts, singularities)
 }
 
-/// Step 3: the output `mesh` of `map` checked (quads: manifold, oriented;
+/// The last check: the output `mesh` of `map` checked (quads: manifold, oriented;
 /// hexes: combinatorially valid) and its topology compared with the
 /// map's.
 pub fn check<M: Dimension<K, D>, const K: usize, const D: usize>(
@@ -157,7 +158,7 @@ pub fn check<M: Dimension<K, D>, const K: usize, const D: usize>(
     Dimension::check(map, mesh)
 }
 
-/// Step 4: the geometric stage on the cells of `x` (their positions moved
+/// Step 12: the geometric stage on the cells of `x` (their positions moved
 /// in place) against `map`'s surface or tets (the map `x` was extracted
 /// from).
 pub fn geometry<M: Dimension<K, D>, const K: usize, const D: usize>(
