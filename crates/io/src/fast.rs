@@ -81,27 +81,6 @@ fn corner(tok: &str) -> Option<(u32, u32)> {
     Some((one_based(b.get(..slash)?)?, one_based(rest.get(..end)?)?))
 }
 
-/// The lines of `text` split at `\n` (the tokens of a line are those of
-/// `str::lines`: a `\r` before the `\n` is whitespace to [`Fields`]).
-/// A byte loop: OBJ lines are short (~21 bytes), where `memchr`'s setup
-/// per call costs more than the search; the long `.hexex` tet lines keep
-/// `str::lines` (BENCHMARKS.md, "Reading" of issue 25).
-fn raw_lines(text: &str) -> impl Iterator<Item = &str> {
-    let mut rest = text;
-    std::iter::from_fn(move || {
-        if rest.is_empty() {
-            return None;
-        }
-        let (line, next) = match rest.as_bytes().iter().position(|&b| b == b'\n') {
-            // a `\n` is a char boundary on both sides
-            Some(i) => (rest.get(..i)?, rest.get(i + 1..)?),
-            None => (rest, ""),
-        };
-        rest = next;
-        Some(line)
-    })
-}
-
 /// What one OBJ chunk holds.
 #[derive(Default)]
 struct ObjChunk {
@@ -130,7 +109,7 @@ fn numbers<'a, const K: usize>(toks: impl Iterator<Item = &'a str>) -> Option<[f
 
 fn obj_chunk(text: &str) -> Option<ObjChunk> {
     let mut c = ObjChunk::default();
-    for line in raw_lines(text) {
+    for line in text.lines() {
         let mut toks = Fields { text: line, pos: 0 };
         let Some(kw) = toks.next() else { continue };
         match kw {
