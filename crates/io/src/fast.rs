@@ -55,12 +55,30 @@ fn text_chunks(bytes: &[u8], chunk: usize) -> Option<(&str, Vec<&str>)> {
 
 /// A positive decimal integer token (digits only, as `str::parse::<u64>`
 /// without sign) minus one, or `None`.
-fn one_based(tok: &str) -> Option<u32> {
-    if tok.is_empty() || tok.len() > 10 || !tok.bytes().all(|b| b.is_ascii_digit()) {
+#[inline]
+fn one_based(tok: &[u8]) -> Option<u32> {
+    if tok.is_empty() || tok.len() > 10 {
         return None;
     }
-    let i: u64 = tok.parse().ok()?;
+    let mut i = 0u64;
+    for &b in tok {
+        if !b.is_ascii_digit() {
+            return None;
+        }
+        i = 10 * i + u64::from(b - b'0');
+    }
     u32::try_from(i.checked_sub(1)?).ok()
+}
+
+/// An OBJ corner `v/vt` or `v/vt/…` (as `corner.split('/')`: the first two
+/// parts [`one_based`], the rest not read), or `None`.
+#[inline]
+fn corner(tok: &str) -> Option<(u32, u32)> {
+    let b = tok.as_bytes();
+    let slash = b.iter().position(|&c| c == b'/')?;
+    let rest = b.get(slash + 1..)?;
+    let end = rest.iter().position(|&c| c == b'/').unwrap_or(rest.len());
+    Some((one_based(b.get(..slash)?)?, one_based(rest.get(..end)?)?))
 }
 
 /// What one OBJ chunk holds.
@@ -92,7 +110,7 @@ fn numbers<'a, const K: usize>(toks: impl Iterator<Item = &'a str>) -> Option<[f
 fn obj_chunk(text: &str) -> Option<ObjChunk> {
     let mut c = ObjChunk::default();
     for line in text.lines() {
-        let mut toks = line.split_ascii_whitespace();
+        let mut toks = Fields { text: line, pos: 0 };
         let Some(kw) = toks.next() else { continue };
         match kw {
             "v" => c.positions.push(numbers::<3>(toks)?),
@@ -100,13 +118,11 @@ fn obj_chunk(text: &str) -> Option<ObjChunk> {
             "f" => {
                 let (mut v, mut vt) = ([0u32; 3], [0u32; 3]);
                 let mut n = 0;
-                for corner in toks.take_while(|t| !t.starts_with('#')) {
+                for tok in toks.take_while(|t| !t.starts_with('#')) {
                     if n == 3 {
                         return None;
                     }
-                    let mut parts = corner.split('/');
-                    v[n] = one_based(parts.next()?)?;
-                    vt[n] = one_based(parts.next()?)?;
+                    (v[n], vt[n]) = corner(tok)?;
                     n += 1;
                 }
                 if n != 3 {

@@ -89,6 +89,30 @@ fn corrupted_files_never_pass_the_fast_path_alone() {
     agree_hexex(one_line.as_bytes(), 8, false);
 }
 
+/// The byte-level line and corner scanning of the OBJ fast path against
+/// `str::lines` and `split('/')`: CRLF, a last line without `\n`, tabs,
+/// `v/vt/vn`, and corners it must leave to the sequential reader.
+#[test]
+fn obj_lines_and_corners_read_as_the_sequential_reader() {
+    let head = "v 0 0 0\r\nv 1 0 0\nv 0 1 0\t# c\nvt 0 0\nvt 1 0\r\nvt 0 1\n";
+    for (face, must) in [
+        ("f 1/1 2/2 3/3", true),
+        ("f 1/1 2/2 3/3\r\n", true),
+        ("f\t1/1/9 2/2/ 3/3//x # t\n\n\r\n", true),
+        ("f 1/1 2/2 3/3 \r", true),
+        ("f 1//1 2/2 3/3\n", false),
+        ("f 1/1 2/2 3\n", false),
+        ("f 0/1 2/2 3/3\n", false),
+        ("f 1/+1 2/2 3/3\n", false),
+        ("f 1/1 2/2 3/4\n", false),
+        ("f 1/1 2/2 3/3 1/1\n", false),
+        ("f 99999999999/1 2/2 3/3\n", false),
+    ] {
+        let text = format!("{head}{face}");
+        assert_eq!(agree_obj(text.as_bytes(), 4, false), must, "{face:?}");
+    }
+}
+
 #[test]
 #[cfg_attr(
     no_shared_data,

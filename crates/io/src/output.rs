@@ -1,10 +1,18 @@
 //! Output errors and atomic file writing.
 //!
 //! Every file writer of this crate goes through [`write_atomic`]: the bytes
-//! go to a fresh temporary file in the target's directory, which is flushed,
-//! synced and then renamed over the target. On any error the temporary file
-//! is removed, so a failed write leaves the target untouched (absent or as it
-//! was before).
+//! go to a fresh temporary file in the target's directory, which is flushed
+//! and then renamed over the target. On any error the temporary file is
+//! removed, so a failed write leaves the target untouched (absent or as it
+//! was before), and no reader ever sees a half-written file.
+//!
+//! The temporary file is not `fsync`ed before the rename (as compilers and
+//! `cp` write): the rename-on-success guards against a failed or
+//! killed process, not against a power cut or a kernel crash in the seconds
+//! after the write (ext4 starts writing a file renamed over another at once,
+//! `auto_da_alloc`). The sync cost half of the write on an idle disk and up
+//! to 95 % of it beside another process writing (the journal commit waits
+//! for that process's data): BENCHMARKS.md, "Writing" of issue 25.
 //!
 //! Only regular files are replaced that way. A symbolic link is written
 //! through: its target file is replaced (atomically, beside the target), the
@@ -124,8 +132,10 @@ pub(crate) fn write_atomic(
     let mut w = BufWriter::new(file);
     let result = body(&mut w)
         .and_then(|()| w.into_inner().map_err(|e| e.into_error()))
-        .and_then(|file| file.sync_all())
-        .and_then(|()| fs::rename(&tmp, &target));
+        .and_then(|file| {
+            drop(file);
+            fs::rename(&tmp, &target)
+        });
     if let Err(e) = result {
         let _ = fs::remove_file(&tmp);
         return Err(err(e));
