@@ -14,43 +14,29 @@
 //!   tets per line, a tet split over lines) goes to the sequential reader.
 //!
 //! The file is cut into chunks of ~[`CHUNK`] bytes at line ends; chunks are
-//! checked (text, no NUL) and parsed in parallel with rayon, and joined in
-//! file order, so the result does not depend on the number of threads.
+//! parsed in parallel with rayon, and joined in file order, so the result
+//! does not depend on the number of threads. Fields are read in place by a
+//! [`Cursor`] (numbers by [`crate::decimal`], same bits as `str::parse`).
+//! OBJ chunks are first checked to be text (UTF-8, no NUL: skipped lines
+//! may hold anything); a `.hexex` file needs no such check, as every byte
+//! of an accepted file is whitespace or in an accepted (ASCII) number.
 
-use crate::scan::{finite, Tokens};
+use crate::cursor::{count_lines, line_chunks, Cursor};
+use crate::scan::finite;
 use dualex_map::{TetMap, TriMap};
 use rayon::prelude::*;
 
 /// Target chunk size in bytes.
 const CHUNK: usize = 1 << 20;
 
-/// `text` cut after a `\n` every ~[`CHUNK`] bytes (the last chunk may end
-/// without one; a cut after `\n` is a char boundary).
-fn line_chunks(text: &str, chunk: usize) -> Vec<&str> {
-    let chunk = chunk.max(1);
-    let mut out = Vec::with_capacity(text.len() / chunk + 1);
-    let mut rest = text;
-    while rest.len() > chunk {
-        let cut = rest.as_bytes()[chunk..]
-            .iter()
-            .position(|&b| b == b'\n')
-            .map_or(rest.len(), |i| chunk + i + 1);
-        let (head, tail) = rest.split_at(cut);
-        out.push(head);
-        rest = tail;
-    }
-    if !rest.is_empty() {
-        out.push(rest);
-    }
-    out
-}
-
-/// `bytes` as text chunks, if it is text (valid UTF-8, no NUL byte).
-fn text_chunks(bytes: &[u8], chunk: usize) -> Option<(&str, Vec<&str>)> {
-    let text = std::str::from_utf8(bytes).ok()?;
-    let chunks = line_chunks(text, chunk);
-    let no_nul = chunks.par_iter().all(|c| !c.as_bytes().contains(&0));
-    no_nul.then_some((text, chunks))
+/// `bytes` as text chunks cut after a `\n` every ~`chunk` bytes, if it is
+/// text (valid UTF-8, no NUL byte), checked in parallel (a cut after `\n`
+/// is a char boundary of valid UTF-8).
+fn text_chunks(bytes: &[u8], chunk: usize) -> Option<Vec<&str>> {
+    line_chunks(bytes, chunk)
+        .into_par_iter()
+        .map(|c| std::str::from_utf8(c).ok().filter(|_| !c.contains(&0)))
+        .collect()
 }
 
 /// A positive decimal integer token (digits only, as `str::parse::<u64>`
@@ -73,8 +59,7 @@ fn one_based(tok: &[u8]) -> Option<u32> {
 /// An OBJ corner `v/vt` or `v/vt/…` (as `corner.split('/')`: the first two
 /// parts [`one_based`], the rest not read), or `None`.
 #[inline]
-fn corner(tok: &str) -> Option<(u32, u32)> {
-    let b = tok.as_bytes();
+fn corner(b: &[u8]) -> Option<(u32, u32)> {
     let slash = b.iter().position(|&c| c == b'/')?;
     let rest = b.get(slash + 1..)?;
     let end = rest.iter().position(|&c| c == b'/').unwrap_or(rest.len());
@@ -90,55 +75,64 @@ struct ObjChunk {
     vt: Vec<[u32; 3]>,
 }
 
-/// At least `n` finite numbers before the end or a `#`; the first `K`.
-fn numbers<'a, const K: usize>(toks: impl Iterator<Item = &'a str>) -> Option<[f64; K]> {
+/// At least `K` finite numbers before the line end or a `#` field (the
+/// rest of the line then skipped); the first `K`.
+#[inline]
+fn numbers<const K: usize>(t: &mut Cursor<'_>) -> Option<[f64; K]> {
     let mut out = [0.0; K];
-    let mut n = 0;
-    for tok in toks {
-        if tok.starts_with('#') {
-            break;
-        }
-        let x = finite(tok)?;
-        if let Some(slot) = out.get_mut(n) {
-            *slot = x;
-        }
-        n += 1;
+    for slot in &mut out {
+        *slot = t.float()?;
     }
-    (n >= K).then_some(out)
+    loop {
+        match t.field() {
+            [] => break t.end_line()?,
+            [b'#', ..] => break t.skip_line(),
+            tok => {
+                finite(std::str::from_utf8(tok).ok()?)?;
+            }
+        }
+    }
+    Some(out)
+}
+
+/// The 3 corners of an `f` line, then the line end or a `#` field.
+#[inline]
+fn face(t: &mut Cursor<'_>) -> Option<([u32; 3], [u32; 3])> {
+    let (mut v, mut vt) = ([0u32; 3], [0u32; 3]);
+    for n in 0..3 {
+        (v[n], vt[n]) = corner(t.field())?;
+    }
+    match t.field() {
+        [] => t.end_line()?,
+        [b'#', ..] => t.skip_line(),
+        _ => return None,
+    }
+    Some((v, vt))
+}
+
+/// Whether a line starting with `kw` is skipped: a comment or an
+/// alphabetic keyword (`vn`, `g`, `usemtl`, …).
+fn skippable(kw: &[u8]) -> bool {
+    kw.first() == Some(&b'#')
+        || kw.first().is_some_and(u8::is_ascii_alphabetic)
+            && kw.iter().all(|&b| b.is_ascii_alphanumeric() || b == b'_')
 }
 
 fn obj_chunk(text: &str) -> Option<ObjChunk> {
     let mut c = ObjChunk::default();
-    for line in text.lines() {
-        let mut toks = Fields { text: line, pos: 0 };
-        let Some(kw) = toks.next() else { continue };
-        match kw {
-            "v" => c.positions.push(numbers::<3>(toks)?),
-            "vt" => c.uvs.push(numbers::<2>(toks)?),
-            "f" => {
-                let (mut v, mut vt) = ([0u32; 3], [0u32; 3]);
-                let mut n = 0;
-                for tok in toks.take_while(|t| !t.starts_with('#')) {
-                    if n == 3 {
-                        return None;
-                    }
-                    (v[n], vt[n]) = corner(tok)?;
-                    n += 1;
-                }
-                if n != 3 {
-                    return None;
-                }
+    let mut t = Cursor::new(text.as_bytes());
+    while !t.rest().is_empty() {
+        match t.field() {
+            [] => t.end_line()?,
+            b"v" => c.positions.push(numbers::<3>(&mut t)?),
+            b"vt" => c.uvs.push(numbers::<2>(&mut t)?),
+            b"f" => {
+                let (v, vt) = face(&mut t)?;
                 c.v.push(v);
                 c.vt.push(vt);
             }
-            _ => {
-                let skippable = kw.starts_with('#')
-                    || kw.starts_with(|ch: char| ch.is_ascii_alphabetic())
-                        && kw.chars().all(|ch| ch.is_ascii_alphanumeric() || ch == '_');
-                if !skippable {
-                    return None;
-                }
-            }
+            kw if skippable(kw) => t.skip_line(),
+            _ => return None,
         }
     }
     Some(c)
@@ -151,7 +145,7 @@ pub(crate) fn obj(bytes: &[u8]) -> Option<TriMap> {
 
 /// [`obj`] with chunks of ~`chunk` bytes.
 pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
-    let (_, texts) = text_chunks(bytes, chunk)?;
+    let texts = text_chunks(bytes, chunk)?;
     let parts: Vec<ObjChunk> = texts
         .par_iter()
         .map(|t| obj_chunk(t))
@@ -189,68 +183,6 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
     Some(map)
 }
 
-/// One tet line: 4 vertex indices below `nv` and 12 finite numbers.
-fn tet_line(line: &str, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> {
-    let mut toks = Fields { text: line, pos: 0 };
-    let mut tet = [0u32; 4];
-    for slot in &mut tet {
-        let tok = toks.next()?;
-        // digits only (as `str::parse::<u64>` without a sign), below nv
-        if tok.is_empty() || tok.len() > 10 {
-            return None;
-        }
-        let mut i = 0u64;
-        for b in tok.bytes() {
-            if !b.is_ascii_digit() {
-                return None;
-            }
-            i = 10 * i + u64::from(b - b'0');
-        }
-        if i >= nv as u64 {
-            return None;
-        }
-        *slot = i as u32;
-    }
-    let mut uvw = [[0.0; 3]; 4];
-    for corner in &mut uvw {
-        for x in corner {
-            let v: f64 = toks.next()?.parse().ok()?;
-            if !v.is_finite() {
-                return None;
-            }
-            *x = v;
-        }
-    }
-    toks.next().is_none().then_some((tet, uvw))
-}
-
-/// The ASCII-whitespace-separated fields of a line (what
-/// `str::split_ascii_whitespace` yields, with less machinery).
-struct Fields<'a> {
-    text: &'a str,
-    pos: usize,
-}
-
-impl<'a> Iterator for Fields<'a> {
-    type Item = &'a str;
-
-    #[inline]
-    fn next(&mut self) -> Option<&'a str> {
-        let b = self.text.as_bytes();
-        let mut i = self.pos;
-        while i < b.len() && b[i].is_ascii_whitespace() {
-            i += 1;
-        }
-        let start = i;
-        while i < b.len() && !b[i].is_ascii_whitespace() {
-            i += 1;
-        }
-        self.pos = i;
-        // ASCII bytes around the field: char boundaries
-        (start < i).then(|| self.text.get(start..i)).flatten()
-    }
-}
-
 /// The `.hexex` fast path (see the module docs).
 pub(crate) fn hexex(bytes: &[u8]) -> Option<TetMap> {
     hexex_chunked(bytes, CHUNK)
@@ -258,35 +190,32 @@ pub(crate) fn hexex(bytes: &[u8]) -> Option<TetMap> {
 
 /// [`hexex`] with chunks of ~`chunk` bytes.
 pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
-    let (text, _) = text_chunks(bytes, chunk)?;
     // the header and vertices (a fifth of the file or less): sequential,
-    // with the reader's own token stream, up to the tet count
-    let mut t = Tokens::new(text, 1);
-    let nv: usize = t.next_token()?.0.parse().ok()?;
+    // as one token stream, up to the tet count
+    let mut t = Cursor::new(bytes);
+    t.skip_space();
+    let nv = usize::try_from(t.integer(19)?).ok()?;
     let mut positions = Vec::with_capacity(nv.min(bytes.len() / 6));
     for _ in 0..nv {
         let mut p = [0.0; 3];
         for x in &mut p {
-            *x = finite(t.next_token()?.0)?;
+            t.skip_space();
+            *x = t.float()?;
         }
         positions.push(p);
     }
-    let nt: usize = t.next_token()?.0.parse().ok()?;
+    t.skip_space();
+    let nt = usize::try_from(t.integer(19)?).ok()?;
     // the rest of the tet count's line must be blank
-    let after = &text[text.len() - t.remaining()..];
-    let eol = after.find('\n')?;
-    if !after[..eol].trim().is_empty() || nt == 0 || nt > bytes.len() / 32 {
+    t.end_line()?;
+    if nt == 0 || nt > bytes.len() / 32 {
         return None;
     }
-    let body = &after[eol + 1..];
-    let body_chunks = line_chunks(body, chunk);
-    let lines: Vec<usize> = body_chunks
-        .par_iter()
-        .map(|c| c.bytes().filter(|&b| b == b'\n').count() + usize::from(!c.ends_with('\n')))
-        .collect();
+    let body_chunks = line_chunks(t.rest(), chunk);
+    let lines: Vec<usize> = body_chunks.par_iter().map(|c| count_lines(c)).collect();
     let mut simplices = vec![[0u32; 4]; nt];
     let mut coords = vec![[[0.0f64; 3]; 4]; nt];
-    // per chunk: its text, and the slices of the tets its lines fill
+    // per chunk: its bytes, and the slices of the tets its lines fill
     let mut jobs = Vec::with_capacity(body_chunks.len());
     let (mut rest_s, mut rest_c) = (&mut simplices[..], &mut coords[..]);
     for (c, &n) in body_chunks.iter().zip(&lines) {
@@ -299,17 +228,9 @@ pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
     if !rest_s.is_empty() {
         return None; // fewer lines than tets
     }
-    let ok = jobs.into_par_iter().all(|(text, s, k)| {
-        let mut lines = text.lines();
-        for (slot_s, slot_c) in s.iter_mut().zip(k.iter_mut()) {
-            let Some((tet, uvw)) = lines.next().and_then(|l| tet_line(l, nv)) else {
-                return false;
-            };
-            (*slot_s, *slot_c) = (tet, uvw);
-        }
-        // lines after the last tet: blank only
-        lines.all(|l| l.trim().is_empty())
-    });
+    let ok = jobs
+        .into_par_iter()
+        .all(|(text, s, k)| tet_lines(text, s, k, nv));
     if !ok {
         return None;
     }
@@ -320,4 +241,42 @@ pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
     };
     map.validate().ok()?;
     Some(map)
+}
+
+/// Fills `s` and `k` from the first lines of `text`, one tet per line (4
+/// vertex indices below `nv` and 12 finite numbers); the lines after them
+/// must be blank.
+fn tet_lines(text: &[u8], s: &mut [[u32; 4]], k: &mut [[[f64; 3]; 4]], nv: usize) -> bool {
+    let mut t = Cursor::new(text);
+    for (slot_s, slot_c) in s.iter_mut().zip(k.iter_mut()) {
+        let Some((tet, uvw)) = tet_line(&mut t, nv) else {
+            return false;
+        };
+        (*slot_s, *slot_c) = (tet, uvw);
+    }
+    t.skip_space();
+    t.rest().is_empty()
+}
+
+/// One tet line: 4 vertex indices below `nv` and 12 finite numbers, then
+/// the line end.
+#[inline]
+fn tet_line(t: &mut Cursor<'_>, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> {
+    let mut tet = [0u32; 4];
+    for slot in &mut tet {
+        // digits only (as `str::parse::<u64>` without a sign), below nv
+        let i = t.integer(10)?;
+        if i >= nv as u64 {
+            return None;
+        }
+        *slot = i as u32;
+    }
+    let mut uvw = [[0.0; 3]; 4];
+    for corner in &mut uvw {
+        for x in corner {
+            *x = t.float()?;
+        }
+    }
+    t.end_line()?;
+    Some((tet, uvw))
 }

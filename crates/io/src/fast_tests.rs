@@ -114,6 +114,34 @@ fn obj_lines_and_corners_read_as_the_sequential_reader() {
 }
 
 #[test]
+fn hexex_lines_read_as_the_sequential_reader() {
+    let head = "4\n0 0 0\n1 0 0 0\r\n1 0\n0 0 1\n1";
+    let tet = "0 1 2 3 0 0 0 1 0 0 0 1 0 0 0 1";
+    for (body, must) in [
+        (format!("\n{tet}"), true),
+        (format!(" \t\r\n{tet}\r\n\n \n"), true),
+        (format!("\n\t{tet} \r"), true),
+        (format!("\n{tet}\n7\n"), false),
+        (format!("\n{tet} 7\n"), false),
+        (format!(" 0\n{tet}\n"), false),
+        (format!("\n\n{tet}\n"), false),
+        (
+            format!("\n{}\n", tet.replace(" 1 0 0 0 1", " 1e\x00 0 0 1")),
+            false,
+        ),
+        (format!("\n{}\n", tet.replace("2 3", "2\n3")), false),
+        (format!("\n{}\n", tet.replace("0 1 2", "0 +1 2")), false),
+        // Unicode whitespace is not a separator for the sequential reader
+        (format!("\n{tet}\n\u{a0}\n"), false),
+        (format!("\n{tet}\n\x0b\n"), false),
+        (format!(" \u{2003}\n{tet}\n"), false),
+    ] {
+        let text = format!("{head}{body}");
+        assert_eq!(agree_hexex(text.as_bytes(), 4, false), must, "{body:?}");
+    }
+}
+
+#[test]
 #[cfg_attr(
     no_shared_data,
     ignore = "../shared/data is absent (real maps from libQEx, Directional, MC3D, libHexEx: see README, Tests)"

@@ -23,6 +23,8 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod cursor;
+mod decimal;
 mod fast;
 mod fmt;
 mod hexex;
@@ -45,6 +47,8 @@ pub mod write_uv;
 mod data_tests;
 #[cfg(test)]
 mod fast_tests;
+#[cfg(test)]
+mod float_tests;
 #[cfg(test)]
 mod fuzz_tests;
 #[cfg(test)]

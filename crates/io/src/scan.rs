@@ -28,9 +28,14 @@ pub(crate) fn line_of(bytes: &[u8], pos: usize) -> usize {
     head.iter().filter(|&&b| b == b'\n').count() + 1
 }
 
-/// A finite float, or `None` (the fast paths, which only need to know).
+/// A finite float, or `None` (the fast paths, which only need to know):
+/// the value and decision of `str::parse::<f64>` ([`crate::decimal`]).
+#[inline]
 pub(crate) fn finite(tok: &str) -> Option<f64> {
-    tok.parse::<f64>().ok().filter(|x| x.is_finite())
+    let b = tok.as_bytes();
+    crate::decimal::parse_field(b)
+        .filter(|&(x, n)| n == b.len() && x.is_finite())
+        .map(|(x, _)| x)
 }
 
 /// Parses a finite float; `what` names the value in the error ("vertex

@@ -1,0 +1,162 @@
+//! A byte cursor over whitespace-separated numeric fields, for the fast
+//! paths: numbers are parsed where they lie, without first cutting the
+//! text into lines and tokens, and without checking it is UTF-8.
+//!
+//! Input: raw bytes. Output: numbers, or `None` as soon as a field is not
+//! what is asked. Invariant: a field is a maximal run of non-whitespace
+//! bytes (ASCII whitespace, as `split_ascii_whitespace`), and a field is
+//! accepted exactly when the token-based fast paths would accept the same
+//! token ([`crate::scan::finite`], digits-only indices). Every accepted
+//! field is ASCII, so a file whose every non-blank byte lies in an accepted
+//! field is ASCII text without a NUL byte: the fast paths need no separate
+//! text check (a bad byte makes them refuse, and the sequential reader
+//! reports it).
+
+/// A position in `bytes`.
+pub(crate) struct Cursor<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+}
+
+/// ASCII whitespace other than the line end (`\r` included: `str::lines`
+/// drops it only at the end of a line, and `split_ascii_whitespace` drops
+/// it anywhere).
+#[inline]
+fn blank(b: u8) -> bool {
+    b.is_ascii_whitespace() && b != b'\n'
+}
+
+impl<'a> Cursor<'a> {
+    /// A cursor at the start of `bytes`.
+    pub(crate) fn new(bytes: &'a [u8]) -> Self {
+        Cursor { bytes, pos: 0 }
+    }
+
+    /// Bytes not yet consumed.
+    pub(crate) fn rest(&self) -> &'a [u8] {
+        self.bytes.get(self.pos..).unwrap_or_default()
+    }
+
+    /// Skips ASCII whitespace, line ends included.
+    #[inline]
+    pub(crate) fn skip_space(&mut self) {
+        while self
+            .bytes
+            .get(self.pos)
+            .is_some_and(u8::is_ascii_whitespace)
+        {
+            self.pos += 1;
+        }
+    }
+
+    /// Skips ASCII whitespace up to the line end.
+    #[inline]
+    fn skip_blank(&mut self) {
+        while self.bytes.get(self.pos).is_some_and(|&b| blank(b)) {
+            self.pos += 1;
+        }
+    }
+
+    /// Whether the cursor stands at the end of a field.
+    #[inline]
+    fn at_field_end(&self) -> bool {
+        self.bytes.get(self.pos).is_none_or(u8::is_ascii_whitespace)
+    }
+
+    /// The next field on this line (empty at the line end).
+    #[inline]
+    pub(crate) fn field(&mut self) -> &'a [u8] {
+        self.skip_blank();
+        let start = self.pos;
+        while self
+            .bytes
+            .get(self.pos)
+            .is_some_and(|b| !b.is_ascii_whitespace())
+        {
+            self.pos += 1;
+        }
+        self.bytes.get(start..self.pos).unwrap_or_default()
+    }
+
+    /// Consumes the rest of the line and its `\n`, whatever they hold.
+    #[inline]
+    pub(crate) fn skip_line(&mut self) {
+        let rest = self.rest();
+        self.pos += rest
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(rest.len(), |i| i + 1);
+    }
+
+    /// The next field on this line as a finite float (the same value and
+    /// decision as [`crate::scan::finite`] on the field).
+    #[inline]
+    pub(crate) fn float(&mut self) -> Option<f64> {
+        self.skip_blank();
+        let (x, n) = crate::decimal::parse_field(self.rest())?;
+        self.pos += n;
+        (self.at_field_end() && x.is_finite()).then_some(x)
+    }
+
+    /// The next field on this line as a decimal integer of at most
+    /// `max_digits` digits (digits only, no sign).
+    #[inline]
+    pub(crate) fn integer(&mut self, max_digits: usize) -> Option<u64> {
+        self.skip_blank();
+        let start = self.pos;
+        let mut i = 0u64;
+        while let Some(&b) = self.bytes.get(self.pos).filter(|b| b.is_ascii_digit()) {
+            i = i.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
+            self.pos += 1;
+        }
+        let n = self.pos - start;
+        (n > 0 && n <= max_digits && self.at_field_end()).then_some(i)
+    }
+
+    /// Consumes the rest of the line, which must be blank, and its `\n`
+    /// (or the end of the bytes).
+    #[inline]
+    pub(crate) fn end_line(&mut self) -> Option<()> {
+        self.skip_blank();
+        match self.bytes.get(self.pos) {
+            None => Some(()),
+            Some(b'\n') => {
+                self.pos += 1;
+                Some(())
+            }
+            Some(_) => None,
+        }
+    }
+}
+
+/// The number of lines of `bytes` as `str::lines` counts them: one per
+/// `\n`, plus a last line without one.
+pub(crate) fn count_lines(bytes: &[u8]) -> usize {
+    // blocks of at most 255 bytes summed in u8: the loop vectorizes
+    let newlines: usize = bytes
+        .chunks(255)
+        .map(|c| usize::from(c.iter().fold(0u8, |n, &b| n + u8::from(b == b'\n'))))
+        .sum();
+    newlines + usize::from(bytes.last().is_some_and(|&b| b != b'\n'))
+}
+
+/// `bytes` cut after a `\n` every ~`chunk` bytes (the last piece may end
+/// without one).
+pub(crate) fn line_chunks(bytes: &[u8], chunk: usize) -> Vec<&[u8]> {
+    let chunk = chunk.max(1);
+    let mut out = Vec::with_capacity(bytes.len() / chunk + 1);
+    let mut rest = bytes;
+    while rest.len() > chunk {
+        let cut = rest[chunk..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(rest.len(), |i| chunk + i + 1);
+        let (head, tail) = rest.split_at(cut);
+        out.push(head);
+        rest = tail;
+    }
+    if !rest.is_empty() {
+        out.push(rest);
+    }
+    out
+}
