@@ -13,7 +13,7 @@
 //! in parallel, each into its own slice of the entries (the same entries,
 //! in the same order, as one sequential walk).
 
-use crate::topology_build::vertex_corners;
+use crate::topology_build::vertex_corners_indexed;
 use crate::{Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
@@ -34,7 +34,7 @@ pub(crate) fn build<const N: usize, const D: usize>(
     trans: &Transitions<N, D>,
 ) -> Stars<D> {
     let nv = map.positions.len();
-    let (offsets, corners) = vertex_corners(&map.simplices, nv);
+    let (offsets, corners, position) = vertex_corners_indexed(&map.simplices, nv);
     let blank = StarEntry {
         simplex: 0,
         corner: 0,
@@ -62,78 +62,39 @@ pub(crate) fn build<const N: usize, const D: usize>(
     let offsets = &stars.offsets;
     jobs.into_par_iter().for_each(|(first, e, s, b)| {
         let base = offsets[first] as usize;
-        let mut reached = Reached::default();
+        let mut reached = Vec::new();
         for (i, (sv, bv)) in s.iter_mut().zip(b.iter_mut()).enumerate() {
             let v = first + i;
             let (lo, hi) = (offsets[v] as usize, offsets[v + 1] as usize);
             let out = &mut e[lo - base..hi - base];
-            (*sv, *bv) = star_of(topo, trans, &corners[lo..hi], out, &mut reached);
+            let star = &corners[lo..hi];
+            (*sv, *bv) = star_of(topo, trans, star, &position, out, &mut reached);
         }
     });
     stars
 }
 
-/// Entry index of each simplex reached around one vertex: open addressing
-/// over a table of at least twice the star's size (reused between
-/// vertices).
-#[derive(Default)]
-pub(crate) struct Reached {
-    keys: Vec<u32>,
-    entry: Vec<u32>,
-    shift: u32,
-}
-
-impl Reached {
-    /// Empties the table for a star of up to `star` simplices.
-    pub(crate) fn reset(&mut self, star: usize) {
-        let cap = (2 * star).next_power_of_two().max(4);
-        self.keys.clear();
-        self.keys.resize(cap, u32::MAX);
-        self.entry.resize(cap, 0);
-        self.shift = 32 - cap.trailing_zeros();
-    }
-
-    /// The slot of simplex `n`: its own, or the free one to insert it in.
-    #[inline]
-    pub(crate) fn slot(&self, n: u32) -> usize {
-        let mask = self.keys.len() - 1;
-        let mut i = (n.wrapping_mul(0x9E37_79B9) >> self.shift) as usize;
-        while self.keys[i] != n && self.keys[i] != u32::MAX {
-            i = (i + 1) & mask;
-        }
-        i
-    }
-
-    /// Marks simplex `n` reached (entry `e`); false if it already was.
-    #[inline]
-    pub(crate) fn insert(&mut self, n: u32, e: u32) -> bool {
-        let i = self.slot(n);
-        if self.keys[i] == n {
-            return false;
-        }
-        (self.keys[i], self.entry[i]) = (n, e);
-        true
-    }
-}
-
 /// Walks the star of one vertex, whose corners are `corners`, into `out`
 /// (one entry per corner): breadth-first from each corner not reached yet
 /// (more than one only when the topology was not checked; each new
-/// component's first simplex is its own reference chart). Returns
+/// component's first simplex is its own reference chart). `position` (of
+/// [`vertex_corners_indexed`]) finds a corner in `corners`; `reached[k]`
+/// is the entry of corner `k`, or `u32::MAX`. Returns
 /// `(singular, boundary)`.
 fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
     corners: &[(u32, u8)],
+    position: &[u32],
     out: &mut [StarEntry<D>],
-    reached: &mut Reached,
+    reached: &mut Vec<u32>,
 ) -> (bool, bool) {
     let (mut singular, mut boundary) = (false, false);
-    reached.reset(corners.len());
+    reached.clear();
+    reached.resize(corners.len(), u32::MAX);
     let mut len = 0;
-    for &(s0, c0) in corners {
-        let i0 = reached.slot(s0);
-        if reached.keys[i0] == s0 {
+    for (k0, &(s0, c0)) in corners.iter().enumerate() {
+        if reached[k0] != u32::MAX {
             continue;
         }
         let mut head = len;
@@ -142,7 +103,7 @@ fn star_of<const N: usize, const D: usize>(
             corner: c0,
             rot: Rot::IDENTITY,
         };
-        (reached.keys[i0], reached.entry[i0]) = (s0, len as u32);
+        reached[k0] = len as u32;
         len += 1;
         while head < len {
             let e = out[head];
@@ -153,20 +114,27 @@ fn star_of<const N: usize, const D: usize>(
                     boundary = true;
                     continue;
                 };
-                let rot = e.rot.then(&trans.rot[s][f]);
-                let i = reached.slot(n as u32);
-                if reached.keys[i] == n as u32 {
-                    if out[reached.entry[i] as usize].rot != rot {
+                // crossing an identity transition keeps the rotation
+                let step = &trans.rot[s][f];
+                let rot = if step.is_identity() {
+                    e.rot
+                } else {
+                    e.rot.then(step)
+                };
+                let corner = topo.nbr_corner[s][f][c];
+                let k = position[n * N + corner as usize] as usize;
+                if reached[k] != u32::MAX {
+                    if out[reached[k] as usize].rot != rot {
                         singular = true;
                     }
                     continue;
                 }
                 out[len] = StarEntry {
                     simplex: n as u32,
-                    corner: topo.nbr_corner[s][f][c],
+                    corner,
                     rot,
                 };
-                (reached.keys[i], reached.entry[i]) = (n as u32, len as u32);
+                reached[k] = len as u32;
                 len += 1;
             }
         }
@@ -179,6 +147,7 @@ fn star_of<const N: usize, const D: usize>(
 mod tests {
     use super::*;
     use crate::test_maps::{cone, cube_surface, edge_fan, grid, rechart, tet_cube};
+    use crate::topology_build::vertex_corners;
     use crate::TransitionOptions;
 
     /// The stars as first written: one sequential walk per vertex with a

@@ -15,7 +15,6 @@
 //! half-facet id, which is the order of one global sort.
 
 use crate::error::{ElementKind, MapError};
-use crate::star_build::Reached;
 use crate::topology::{Topology, NONE};
 use crate::{InputError, SimplexMap};
 use rayon::prelude::*;
@@ -222,6 +221,27 @@ pub(crate) fn vertex_corners<const N: usize>(
     simplices: &[[u32; N]],
     vertex_count: usize,
 ) -> (Vec<u32>, Vec<(u32, u8)>) {
+    let (offsets, corners, _) = corners_of(simplices, vertex_count, false);
+    (offsets, corners)
+}
+
+/// [`vertex_corners`], and the position of each corner `s·N + c` in its
+/// vertex's list (`corners[offsets[v] + position]`): a walk around a
+/// vertex marks what it reached in an array of the star's size, without
+/// hashing.
+pub(crate) fn vertex_corners_indexed<const N: usize>(
+    simplices: &[[u32; N]],
+    vertex_count: usize,
+) -> (Vec<u32>, Vec<(u32, u8)>, Vec<u32>) {
+    corners_of(simplices, vertex_count, true)
+}
+
+/// [`vertex_corners`], with the positions when `indexed` (else empty).
+fn corners_of<const N: usize>(
+    simplices: &[[u32; N]],
+    vertex_count: usize,
+    indexed: bool,
+) -> (Vec<u32>, Vec<(u32, u8)>, Vec<u32>) {
     let mut offsets = vec![0u32; vertex_count + 1];
     for simplex in simplices {
         for &v in simplex {
@@ -233,14 +253,18 @@ pub(crate) fn vertex_corners<const N: usize>(
     }
     let mut fill: Vec<u32> = offsets[..vertex_count].to_vec();
     let mut corners = vec![(0u32, 0u8); offsets[vertex_count] as usize];
+    let mut position = vec![0u32; if indexed { simplices.len() * N } else { 0 }];
     for (s, simplex) in simplices.iter().enumerate() {
         for (c, &v) in simplex.iter().enumerate() {
             let slot = &mut fill[v as usize];
             corners[*slot as usize] = (s as u32, c as u8);
+            if indexed {
+                position[s * N + c] = *slot - offsets[v as usize];
+            }
             *slot += 1;
         }
     }
-    (offsets, corners)
+    (offsets, corners, position)
 }
 
 /// Checks that the simplices around each vertex are connected through the
@@ -251,15 +275,15 @@ fn check_vertices<const N: usize, const D: usize>(
     topo: &Topology<N>,
 ) -> Result<(), InputError> {
     let nv = map.positions.len();
-    let (offsets, corners) = vertex_corners(&map.simplices, nv);
+    let (offsets, corners, position) = vertex_corners_indexed(&map.simplices, nv);
     let first_bad = (0..nv.div_ceil(SORT_BLOCK))
         .into_par_iter()
         .map(|b| {
-            let mut reached = Reached::default();
+            let mut reached = Vec::new();
             let mut stack: Vec<(usize, usize)> = Vec::new();
             (b * SORT_BLOCK..nv.min((b + 1) * SORT_BLOCK)).find(|&v| {
                 let star = &corners[offsets[v] as usize..offsets[v + 1] as usize];
-                !connected(topo, star, &mut reached, &mut stack)
+                !connected(topo, star, &position, &mut reached, &mut stack)
             })
         })
         .collect::<Vec<Option<usize>>>()
@@ -277,19 +301,22 @@ fn check_vertices<const N: usize, const D: usize>(
 }
 
 /// Whether a depth-first walk from the first corner of `star` (the corners
-/// of one vertex) across the facets that contain the vertex reaches all of
-/// them (an empty star is connected).
+/// of one vertex; `position` as in [`vertex_corners_indexed`]) across the
+/// facets that contain the vertex reaches all of them (an empty star is
+/// connected).
 fn connected<const N: usize>(
     topo: &Topology<N>,
     star: &[(u32, u8)],
-    reached: &mut Reached,
+    position: &[u32],
+    reached: &mut Vec<bool>,
     stack: &mut Vec<(usize, usize)>,
 ) -> bool {
     let Some(&(s0, c0)) = star.first() else {
         return true;
     };
-    reached.reset(star.len());
-    reached.insert(s0, 0);
+    reached.clear();
+    reached.resize(star.len(), false);
+    reached[0] = true;
     stack.clear();
     stack.push((s0 as usize, c0 as usize));
     let mut count = 1;
@@ -298,9 +325,12 @@ fn connected<const N: usize>(
             let Some((n, _)) = topo.neighbour(s, f) else {
                 continue;
             };
-            if reached.insert(n as u32, 0) {
+            let cn = topo.nbr_corner[s][f][c] as usize;
+            let seen = &mut reached[position[n * N + cn] as usize];
+            if !*seen {
+                *seen = true;
                 count += 1;
-                stack.push((n, topo.nbr_corner[s][f][c] as usize));
+                stack.push((n, cn));
             }
         }
     }

@@ -40,6 +40,9 @@ use crate::{
     InputError, Rot, SimplexMap, Topology, TransitionOptions, TransitionReport, Transitions,
 };
 
+/// The fit of one interior facet, or the error it found.
+type FitResult<const D: usize> = Result<Fit<D>, Box<InputError>>;
+
 /// A facet whose rotation is not determined by its edge vectors.
 struct Ambiguous<const D: usize> {
     s: usize,
@@ -81,21 +84,31 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     let all = Rot::<D>::all();
     let mut ambiguous = Vec::new();
     let mut failed: Option<(f64, f64, usize, usize)> = None;
-    // the fits of a batch in parallel, then used in facet order: the first
-    // error returned is the one of the sequential loop
+    let mut non_identity = 0;
+    // the fits of a batch in parallel, in place into one buffer reused by
+    // every batch (no copy, no new pages), then used in facet order: the
+    // first error returned is the one of the sequential loop
+    let mut fits: Vec<[Option<FitResult<D>>; N]> = Vec::new();
     for lo in (0..ns).step_by(BATCH) {
-        let fits: Vec<(usize, usize, Result<Fit<D>, Box<InputError>>)> = (lo..ns.min(lo + BATCH))
-            .into_par_iter()
-            .flat_map_iter(|s| {
-                let all = &all;
-                (0..N).filter_map(move |f| {
-                    let nf = topo.neighbour(s, f)?;
-                    (nf > (s, f)).then(|| (s, f, fit_facet(map, topo, s, f, all, opts)))
-                })
-            })
-            .collect();
-        for (s, f, fit) in fits {
+        let hi = ns.min(lo + BATCH);
+        fits.truncate(hi - lo);
+        fits.resize_with(hi - lo, || std::array::from_fn(|_| None));
+        fits.par_iter_mut().enumerate().for_each(|(i, slot)| {
+            let s = lo + i;
+            for (f, fit) in slot.iter_mut().enumerate() {
+                let mine = topo.neighbour(s, f).is_some_and(|nf| nf > (s, f));
+                *fit = mine.then(|| fit_facet(map, topo, s, f, &all, opts));
+            }
+        });
+        let facets = fits.iter_mut().enumerate().flat_map(|(i, slot)| {
+            let s = lo + i;
+            slot.iter_mut()
+                .enumerate()
+                .filter_map(move |(f, fit)| Some((s, f, fit.take()?)))
+        });
+        for (s, f, fit) in facets {
             let fit = fit.map_err(|e| *e)?;
+            non_identity += usize::from(!fit.rot.is_identity());
             if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
                 rep.max_residual = rep.max_residual.max(fit.residual);
                 rep.worst_facet = Some((s, f));
@@ -126,12 +139,16 @@ pub(crate) fn derive<const N: usize, const D: usize>(
         .into());
     }
     rep.ambiguous_facets = ambiguous.len();
+    // the ambiguous facets' rotations may change: counted again after
+    let changing = |tr: &Transitions<N, D>| {
+        ambiguous
+            .iter()
+            .filter(|a| !tr.rot[a.s][a.f].is_identity())
+            .count()
+    };
+    non_identity -= changing(&tr);
     fix_ambiguous(topo, &mut tr, &ambiguous, 3);
-    rep.non_identity = (0..ns)
-        .flat_map(|s| (0..N).map(move |f| (s, f)))
-        .filter(|&(s, f)| topo.neighbour(s, f).is_some_and(|nf| nf > (s, f)))
-        .filter(|&(s, f)| !tr.rot[s][f].is_identity())
-        .count();
+    rep.non_identity = non_identity + changing(&tr);
     Ok((tr, rep))
 }
 
@@ -147,11 +164,17 @@ fn set<const N: usize, const D: usize>(
     let Some((n, g)) = topo.neighbour(s, f) else {
         panic!("bug: transition on boundary facet {f} of simplex {s}");
     };
-    let inv = rot.inverse();
+    // the identity is its own inverse and leaves `t` as it is
+    let (inv, back) = if rot.is_identity() {
+        (rot, t)
+    } else {
+        let inv = rot.inverse();
+        (inv, inv.apply_i(&t))
+    };
     tr.rot[s][f] = rot;
     tr.trans[s][f] = t;
     tr.rot[n][g] = inv;
-    tr.trans[n][g] = inv.apply_i(&t).map(|x| -x);
+    tr.trans[n][g] = back.map(|x| -x);
 }
 
 /// Chooses, for each ambiguous facet, the candidate that minimises the number

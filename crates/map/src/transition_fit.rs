@@ -9,8 +9,10 @@
 //!
 //! Invariant: the result is the same, bit for bit, as scanning every
 //! rotation in group order (the reference in the tests): the fast path
-//! ([`unique_fit`]) only answers when exactly one rotation is within `tol`
-//! of the best, and then both agree on it and on the best mismatch.
+//! ([`unique_fit`], and before it [`identity_fit`] for the identity
+//! transitions of most facets) only answers when exactly one rotation is
+//! within `tol` of the best, and then both agree on it and on the best
+//! mismatch.
 
 use crate::error::{ElementKind, MapError};
 use crate::transition::ROUND_FIT_LIMIT;
@@ -77,7 +79,11 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     let tol = opts.tolerance_at(scale);
     let table = mismatch_table(&a[..m], &b[..m]);
     let mut mis = [0.0f64; MAX_ROTATIONS];
-    let (best, unique) = match unique_fit::<D>(&table, tol) {
+    let fast = match identity_fit::<D>(&table, tol) {
+        Some(best) => Some((Rot::IDENTITY, best)),
+        None => unique_fit::<D>(&table, tol),
+    };
+    let (best, unique) = match fast {
         Some((r, best)) => (best, Some(r)),
         None => {
             let mut best = f64::INFINITY;
@@ -109,7 +115,13 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     let translation = |r: &Rot<D>| -> [f64; D] {
         let mut t = [0.0; D];
         for i in 0..m {
-            let ra = r.apply(&a[i]);
+            // the identity copies `a[i]`: the same floats without the
+            // signed permutation
+            let ra = if r.is_identity() {
+                a[i]
+            } else {
+                r.apply(&a[i])
+            };
             for k in 0..D {
                 t[k] += (b[i][k] - ra[k]) / m as f64;
             }
@@ -207,6 +219,32 @@ fn last_image<const D: usize>(img: &[u8; D]) -> Option<u8> {
         }
     }
     Some(2 * last + odd)
+}
+
+/// The fast path of the common case, an identity transition: `Some(best)`
+/// when the identity is the only rotation within `tol` of the best
+/// mismatch, which is then its own, `mis(I)` (what scanning the whole
+/// group finds). Enough for it: at most one axis `j` has a direction
+/// other than `2·j` with an entry `≤ mis(I) + tol` (a planar facet leaves
+/// its normal axis free), since every other rotation moves two axes and
+/// so has an entry above that cut. `None` leaves the facet to
+/// [`unique_fit`].
+#[inline]
+fn identity_fit<const D: usize>(table: &[f64; 18], tol: f64) -> Option<f64> {
+    if tol.is_nan() || tol < 0.0 {
+        return None;
+    }
+    let best = mismatch_of(table, &Rot::<D>::IDENTITY.images());
+    let cut = best + tol;
+    let mut free_axes = 0;
+    for (j, row) in table.chunks_exact(6).take(D).enumerate() {
+        let free = row[..2 * D]
+            .iter()
+            .enumerate()
+            .any(|(d, &x)| d != 2 * j && x <= cut);
+        free_axes += usize::from(free);
+    }
+    (free_axes <= 1).then_some(best)
 }
 
 /// The best mismatch and the only rotation within `tol` of it, if there is

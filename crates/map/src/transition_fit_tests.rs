@@ -191,3 +191,51 @@ fn fit_matches_the_full_scan_2d() {
 fn fit_matches_the_full_scan_3d() {
     compare::<4, 3>(2, 20000);
 }
+
+/// Wherever the identity fast path answers, scanning the whole group
+/// finds the same best mismatch, bit for bit, and the identity as the only
+/// rotation within `tol` of it (random tables: small diagonal entries,
+/// other entries near the cut, ties and free axes included).
+fn identity_fast_path_agrees<const D: usize>(seed: u64) {
+    let all = Rot::<D>::all();
+    let mut rng = SplitMix::new(seed);
+    let mut hits = 0;
+    for _ in 0..20_000 {
+        let mut table = [0.0f64; 18];
+        for (i, x) in table.iter_mut().enumerate() {
+            let diagonal = i % 6 == 2 * (i / 6);
+            *x = match (diagonal, rng.below(5)) {
+                (true, 0) | (false, 0) => 0.0,
+                (true, _) => rng.unit() * 1e-2,
+                (false, 1) => 1e-2 + rng.below(3) as f64 * 1e-3,
+                (false, _) => rng.unit() * 2.0,
+            };
+        }
+        for tol in [0.0, 1e-3, 0.05] {
+            let Some(best) = identity_fit::<D>(&table, tol) else {
+                continue;
+            };
+            hits += 1;
+            let mis: Vec<f64> = all
+                .iter()
+                .map(|r| mismatch_of(&table, &r.images()))
+                .collect();
+            let least = mis.iter().copied().fold(f64::INFINITY, f64::min);
+            assert_eq!(best.to_bits(), least.to_bits(), "{table:?} {tol}");
+            let within: Vec<Rot<D>> = all
+                .iter()
+                .zip(&mis)
+                .filter(|(_, &e)| e <= least + tol)
+                .map(|(r, _)| *r)
+                .collect();
+            assert_eq!(within, vec![Rot::IDENTITY], "{table:?} {tol}");
+        }
+    }
+    assert!(hits > 1000, "{hits}");
+}
+
+#[test]
+fn identity_fast_path_agrees_2d_3d() {
+    identity_fast_path_agrees::<2>(5);
+    identity_fast_path_agrees::<3>(6);
+}
