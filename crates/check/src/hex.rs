@@ -31,7 +31,8 @@
 
 use crate::quad::{check_quad_mesh, QuadReport};
 use dualex_util::union_find::UnionFind;
-use std::collections::{BTreeMap, HashMap};
+use rayon::slice::ParallelSliceMut;
+use std::collections::BTreeMap;
 
 /// The 6 faces of a hex, oriented outwards for a positive hex (the one
 /// copy: `dualex_cells::cells` re-exports it, the checker depending on no
@@ -111,14 +112,15 @@ pub fn check_hex_mesh(
     };
     let good = classify_cells(n_vertices, hexes, &mut r);
     let faces = face_uses(&good);
-    r.faces = faces.len();
     let mut boundary_quads = Vec::new();
-    for (key, uses) in &faces {
-        match uses.as_slice() {
-            [one] => boundary_quads.push(*one),
-            [a, b] if !opposite(a, b) => r.misoriented_faces.push(*key),
+    for uses in faces.chunk_by(|x, y| x.0 == y.0) {
+        r.faces += 1;
+        let key = uses[0].0;
+        match uses {
+            [one] => boundary_quads.push(one.1),
+            [a, b] if !opposite(&a.1, &b.1) => r.misoriented_faces.push(key),
             [_, _] => {}
-            _ => r.non_manifold_faces.push(*key),
+            _ => r.non_manifold_faces.push(key),
         }
     }
     r.misoriented_faces.sort_unstable();
@@ -154,10 +156,10 @@ fn classify_cells(n: usize, hexes: &[[u32; 8]], r: &mut HexReport) -> Vec<[u32; 
             continue;
         }
         let repeated = (0..8).any(|i| h[..i].contains(&h[i]));
-        let mut keys: Vec<[u32; 4]> = HEX_FACES.iter().map(|f| face_key(h, f)).collect();
+        let mut keys = HEX_FACES.map(|f| face_key(h, &f));
         keys.sort_unstable();
-        keys.dedup();
-        if repeated || keys.len() < 6 {
+        let distinct = 1 + keys.windows(2).filter(|w| w[0] != w[1]).count();
+        if repeated || distinct < 6 {
             r.degenerate_cells.push(c);
         } else {
             good.push(*h);
@@ -173,17 +175,17 @@ fn face_key(h: &[u32; 8], f: &[usize; 4]) -> [u32; 4] {
     k
 }
 
-/// Outward vertex cycles of every face, grouped by vertex set.
-fn face_uses(cells: &[[u32; 8]]) -> HashMap<[u32; 4], Vec<[u32; 4]>> {
-    let mut faces: HashMap<[u32; 4], Vec<[u32; 4]>> = HashMap::new();
+/// Every face of every cell as (sorted vertices, outward cycle), sorted
+/// (in parallel; equal elements are equal values, so the order does not
+/// depend on the threads): one run per vertex set.
+fn face_uses(cells: &[[u32; 8]]) -> Vec<([u32; 4], [u32; 4])> {
+    let mut faces = Vec::with_capacity(6 * cells.len());
     for h in cells {
         for f in &HEX_FACES {
-            faces
-                .entry(face_key(h, f))
-                .or_default()
-                .push(f.map(|i| h[i]));
+            faces.push((face_key(h, f), f.map(|i| h[i])));
         }
     }
+    faces.par_sort_unstable();
     faces
 }
 
@@ -194,23 +196,22 @@ fn opposite(a: &[u32; 4], b: &[u32; 4]) -> bool {
 
 /// Edge count and the valence histogram of interior edges.
 fn edge_stats(cells: &[[u32; 8]], boundary: &[[u32; 4]], r: &mut HexReport) {
-    let key = |a: u32, b: u32| (a.min(b), a.max(b));
-    let mut valence: HashMap<(u32, u32), u32> = HashMap::new();
+    // undirected edges `lo << 32 | hi`, sorted: one run per edge
+    let key = |a: u32, b: u32| u64::from(a.min(b)) << 32 | u64::from(a.max(b));
+    let mut edges: Vec<u64> = Vec::with_capacity(12 * cells.len());
     for h in cells {
-        for e in &HEX_EDGES {
-            *valence.entry(key(h[e[0]], h[e[1]])).or_insert(0) += 1;
-        }
+        edges.extend(HEX_EDGES.iter().map(|e| key(h[e[0]], h[e[1]])));
     }
-    let mut on_boundary = std::collections::HashSet::new();
-    for q in boundary {
-        for i in 0..4 {
-            on_boundary.insert(key(q[i], q[(i + 1) % 4]));
-        }
-    }
-    r.edges = valence.len();
-    for (e, &n) in &valence {
-        if !on_boundary.contains(e) {
-            *r.interior_edge_valence.entry(n).or_insert(0) += 1;
+    edges.par_sort_unstable();
+    let mut on_boundary: Vec<u64> = boundary
+        .iter()
+        .flat_map(|q| (0..4).map(move |i| key(q[i], q[(i + 1) % 4])))
+        .collect();
+    on_boundary.sort_unstable();
+    for run in edges.chunk_by(|x, y| x == y) {
+        r.edges += 1;
+        if on_boundary.binary_search(&run[0]).is_err() {
+            *r.interior_edge_valence.entry(run.len() as u32).or_insert(0) += 1;
         }
     }
 }

@@ -13,7 +13,6 @@
 
 use dualex_util::union_find::UnionFind;
 use serde_json::{json, Value};
-use std::collections::HashMap;
 
 /// The topology compared between input and output.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -53,52 +52,104 @@ pub fn cell_components<const K: usize>(n_vertices: usize, cells: &[[u32; K]]) ->
     uf.count_sets((0..n_vertices).filter(|&v| used[v]))
 }
 
+/// The items that `each` produces, ordered by `bucket(item) % nb` (a
+/// counting sort) and sorted within each bucket, so that equal items (of
+/// one bucket) are adjacent: `each` is run twice, to count and to place.
+/// Linear but for the small sorts (a bucket per vertex: a vertex's few
+/// edges or faces), instead of a sort or a hash map of all the items.
+fn bucket_sorted<T: Copy + Default + Ord>(
+    nb: usize,
+    bucket: impl Fn(&T) -> usize,
+    each: impl Fn(&mut dyn FnMut(T)),
+) -> Vec<T> {
+    let nb = nb.max(1);
+    let mut start = vec![0usize; nb + 1];
+    each(&mut |x| start[bucket(&x) % nb + 1] += 1);
+    for i in 0..nb {
+        start[i + 1] += start[i];
+    }
+    let mut out = vec![T::default(); start[nb]];
+    let mut next = start[..nb].to_vec();
+    each(&mut |x| {
+        let b = bucket(&x) % nb;
+        out[next[b]] = x;
+        next[b] += 1;
+    });
+    for w in start.windows(2) {
+        out[w[0]..w[1]].sort_unstable();
+    }
+    out
+}
+
 /// The shape of a polygon surface (faces of `K` corners, indices
 /// `>= n_vertices` ignored).
 pub fn surface_shape<const K: usize>(n_vertices: usize, faces: &[[u32; K]]) -> Shape {
-    let good: Vec<&[u32; K]> = faces
-        .iter()
-        .filter(|f| f.iter().all(|&v| (v as usize) < n_vertices))
-        .collect();
-    let mut edges: HashMap<(u32, u32), usize> = HashMap::new();
+    let good = |f: &&[u32; K]| f.iter().all(|&v| (v as usize) < n_vertices);
+    // every side of a good face as an undirected edge `lo << 32 | hi`,
+    // bucketed by `lo`: one run per edge, a run of one is a boundary edge
+    let edges = bucket_sorted(
+        n_vertices,
+        |e: &u64| (e >> 32) as usize,
+        |emit| {
+            for f in faces.iter().filter(good) {
+                for k in 0..K {
+                    let (a, b) = (f[k], f[(k + 1) % K]);
+                    emit(u64::from(a.min(b)) << 32 | u64::from(a.max(b)));
+                }
+            }
+        },
+    );
     let mut used = vec![false; n_vertices];
-    for f in &good {
-        for k in 0..K {
-            let (a, b) = (f[k], f[(k + 1) % K]);
-            used[a as usize] = true;
-            *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+    for f in faces.iter().filter(good) {
+        for &v in f {
+            used[v as usize] = true;
         }
     }
     let mut uf = UnionFind::new(n_vertices);
     let mut on_boundary = vec![false; n_vertices];
-    for (&(a, b), _) in edges.iter().filter(|(_, &n)| n == 1) {
-        uf.union(a as usize, b as usize);
-        on_boundary[a as usize] = true;
-        on_boundary[b as usize] = true;
+    let mut n_edges = 0i64;
+    for run in edges.chunk_by(|x, y| x == y) {
+        n_edges += 1;
+        if let [e] = run {
+            let (a, b) = ((e >> 32) as usize, (e & 0xffff_ffff) as usize);
+            uf.union(a, b);
+            on_boundary[a] = true;
+            on_boundary[b] = true;
+        }
     }
     let v = used.iter().filter(|&&u| u).count() as i64;
     Shape {
         components: cell_components(n_vertices, faces),
-        euler: v - edges.len() as i64 + good.len() as i64,
+        euler: v - n_edges + faces.iter().filter(good).count() as i64,
         boundary_components: uf.count_sets((0..n_vertices).filter(|&v| on_boundary[v])),
     }
 }
 
-/// The boundary triangles of a tet mesh (faces of exactly one tet).
+/// The boundary triangles of a tet mesh (faces of exactly one tet), sorted.
 pub fn tet_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
-    let mut count: HashMap<[u32; 3], (usize, [u32; 3])> = HashMap::new();
-    for t in tets {
-        for f in 0..4 {
-            let tri = [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]];
-            let mut key = tri;
-            key.sort_unstable();
-            count.entry(key).or_insert((0, tri)).0 += 1;
-        }
-    }
-    let mut out: Vec<[u32; 3]> = count
-        .into_values()
-        .filter(|(n, _)| *n == 1)
-        .map(|(_, t)| t)
+    // every face as (its sorted corners, its place `4·tet + face`),
+    // bucketed by its least corner: one run of equal corners per face, a
+    // run of one is a boundary face, read back in its tet's orientation
+    let oriented = |t: &[u32; 4], f: usize| [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]];
+    let faces = bucket_sorted(
+        tets.len(),
+        |x: &([u32; 3], usize)| x.0[0] as usize,
+        |emit| {
+            for (i, t) in tets.iter().enumerate() {
+                for f in 0..4 {
+                    let mut key = oriented(t, f);
+                    key.sort_unstable();
+                    emit((key, 4 * i + f));
+                }
+            }
+        },
+    );
+    let mut out: Vec<[u32; 3]> = faces
+        .chunk_by(|x, y| x.0 == y.0)
+        .filter_map(|run| match run {
+            [(_, place)] => Some(oriented(&tets[place / 4], place % 4)),
+            _ => None,
+        })
         .collect();
     out.sort_unstable();
     out
@@ -236,5 +287,71 @@ mod tests {
             output: s,
         };
         assert!(same.matches() && same.mismatch().is_none());
+    }
+
+    /// The bucketed counts equal those of hash maps (the former code) on
+    /// random small meshes: repeated faces, degenerate and out-of-range
+    /// cells, isolated vertices.
+    #[test]
+    fn bucketed_counts_equal_hash_maps() {
+        use std::collections::HashMap;
+        fn reference_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
+            let mut count: HashMap<[u32; 3], (usize, [u32; 3])> = HashMap::new();
+            for t in tets {
+                for f in 0..4 {
+                    let tri = [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]];
+                    let mut key = tri;
+                    key.sort_unstable();
+                    count.entry(key).or_insert((0, tri)).0 += 1;
+                }
+            }
+            let mut out: Vec<[u32; 3]> = count
+                .into_values()
+                .filter(|(n, _)| *n == 1)
+                .map(|(_, t)| t)
+                .collect();
+            out.sort_unstable();
+            out
+        }
+        fn reference_edges(n: usize, faces: &[[u32; 3]]) -> (i64, usize) {
+            let mut edges: HashMap<(u32, u32), usize> = HashMap::new();
+            let good = faces.iter().filter(|f| f.iter().all(|&v| (v as usize) < n));
+            for f in good {
+                for k in 0..3 {
+                    let (a, b) = (f[k], f[(k + 1) % 3]);
+                    *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+                }
+            }
+            let once = edges.values().filter(|&&c| c == 1).count();
+            (edges.len() as i64, once)
+        }
+        let mut z = 5u64;
+        let mut next = |m: u64| {
+            z = z
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((z >> 33) % m) as u32
+        };
+        for case in 0..300 {
+            let n = 3 + case % 17;
+            let tets: Vec<[u32; 4]> = (0..case % 40)
+                .map(|_| [0; 4].map(|_| next(n as u64 + 1)))
+                .collect();
+            assert_eq!(tet_boundary(&tets), reference_boundary(&tets), "{tets:?}");
+            let tris = reference_boundary(&tets);
+            let shape = surface_shape(n, &tris);
+            let (e, once) = reference_edges(n, &tris);
+            let good: Vec<[u32; 3]> = tris
+                .iter()
+                .copied()
+                .filter(|f| f.iter().all(|&v| (v as usize) < n))
+                .collect();
+            let mut used: Vec<u32> = good.iter().flatten().copied().collect();
+            used.sort_unstable();
+            used.dedup();
+            let euler = used.len() as i64 - e + good.len() as i64;
+            assert_eq!(shape.euler, euler, "{tris:?}");
+            assert_eq!(shape.boundary_components == 0, once == 0, "{tris:?}");
+        }
     }
 }
