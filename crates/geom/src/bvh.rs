@@ -85,8 +85,9 @@ impl Bvh {
         let nodes = if boxes.is_empty() {
             Vec::new()
         } else {
+            use rayon::prelude::*;
             let centres: Vec<[f64; 3]> = boxes
-                .iter()
+                .par_iter()
                 .map(|b| [0, 1, 2].map(|k| 0.5 * (b.min[k] + b.max[k])))
                 .collect();
             let empty = Node {
@@ -130,22 +131,33 @@ impl Bvh {
         seed: Option<u32>,
         dist2: impl Fn(u32) -> Option<f64>,
     ) -> Option<(u32, f64)> {
-        let mut best: Option<(u32, f64)> = seed
-            .filter(|&i| (i as usize) < self.order.len())
-            .and_then(|i| dist2(i).filter(|&d| d <= max_d2).map(|d| (i, d)));
+        let seed = seed.filter(|&i| (i as usize) < self.order.len());
+        let mut best: Option<(u32, f64)> =
+            seed.and_then(|i| dist2(i).filter(|&d| d <= max_d2).map(|d| (i, d)));
         if self.nodes.is_empty() {
             return None;
         }
-        let mut stack = vec![0u32];
-        while let Some(n) = stack.pop() {
-            let node = &self.nodes[n as usize];
-            let bound = node.bbox.dist2(p);
+        // depth first, each node with its box's distance (taken once, when
+        // its parent orders its children); the stack holds at most two
+        // nodes a level: halving splits keep the depth under 32 (no
+        // allocation)
+        let mut stack = [(0u32, 0.0f64); STACK];
+        stack[0] = (0, self.nodes[0].bbox.dist2(p));
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let (n, bound) = stack[top];
             if bound > max_d2 || best.is_some_and(|(_, d)| bound > d) {
                 continue;
             }
+            let node = &self.nodes[n as usize];
             if node.count > 0 {
                 let first = node.first as usize;
+                // the seed was weighed first: again it would change nothing
                 for &i in &self.order[first..first + node.count as usize] {
+                    if Some(i) == seed {
+                        continue;
+                    }
                     if let Some(d) = dist2(i).filter(|&d| d <= max_d2) {
                         let better = match best {
                             None => true,
@@ -161,18 +173,24 @@ impl Bvh {
                 let dl = self.nodes[l as usize].bbox.dist2(p);
                 let dr = self.nodes[r as usize].bbox.dist2(p);
                 // the nearer child is searched first (pushed last)
-                if dl <= dr {
-                    stack.push(r);
-                    stack.push(l);
+                let (first, second) = if dl <= dr {
+                    ((r, dr), (l, dl))
                 } else {
-                    stack.push(l);
-                    stack.push(r);
-                }
+                    ((l, dl), (r, dr))
+                };
+                stack[top] = first;
+                stack[top + 1] = second;
+                top += 2;
             }
         }
         best
     }
 }
+
+/// The query stack's size: two slots a level of a tree over at most
+/// `u32::MAX` primitives (halving splits: at most 31 levels under the
+/// root).
+const STACK: usize = 64;
 
 /// Ranges at least this long build their two halves in parallel.
 const PARALLEL: usize = 1 << 14;
@@ -192,7 +210,8 @@ fn node_count(n: usize) -> usize {
 /// first numbered `base`): this node, then the left subtree, then the
 /// right one; an inner node's `first` is its right child's number, a
 /// leaf's the position of its first primitive. `centres`: the boxes'
-/// centres.
+/// centres. Returns the subtree's box (an inner node's: the union of its
+/// children's, the same as over its primitives: min and max are exact).
 fn build(
     boxes: &[Aabb],
     centres: &[[f64; 3]],
@@ -200,19 +219,19 @@ fn build(
     offset: usize,
     nodes: &mut [Node],
     base: usize,
-) {
-    let mut bbox = boxes[order[0] as usize];
-    for &i in &order[1..] {
-        bbox.grow(&boxes[i as usize]);
-    }
+) -> Aabb {
     let n = order.len();
     if n <= LEAF {
+        let mut bbox = boxes[order[0] as usize];
+        for &i in &order[1..] {
+            bbox.grow(&boxes[i as usize]);
+        }
         nodes[0] = Node {
             bbox,
             first: offset as u32,
             count: n as u32,
         };
-        return;
+        return bbox;
     }
     let mut cb = Aabb {
         min: [f64::INFINITY; 3],
@@ -235,21 +254,26 @@ fn build(
     });
     let (lo, hi) = order.split_at_mut(mid);
     let right_at = 1 + node_count(mid);
-    nodes[0] = Node {
+    let (head, rest) = nodes.split_at_mut(1);
+    let (left, right) = rest.split_at_mut(right_at - 1);
+    let (mut bbox, b) = if n >= PARALLEL {
+        rayon::join(
+            || build(boxes, centres, lo, offset, left, base + 1),
+            || build(boxes, centres, hi, offset + mid, right, base + right_at),
+        )
+    } else {
+        (
+            build(boxes, centres, lo, offset, left, base + 1),
+            build(boxes, centres, hi, offset + mid, right, base + right_at),
+        )
+    };
+    bbox.grow(&b);
+    head[0] = Node {
         bbox,
         first: (base + right_at) as u32,
         count: 0,
     };
-    let (left, right) = nodes[1..].split_at_mut(right_at - 1);
-    if n >= PARALLEL {
-        rayon::join(
-            || build(boxes, centres, lo, offset, left, base + 1),
-            || build(boxes, centres, hi, offset + mid, right, base + right_at),
-        );
-    } else {
-        build(boxes, centres, lo, offset, left, base + 1);
-        build(boxes, centres, hi, offset + mid, right, base + right_at);
-    }
+    bbox
 }
 
 #[cfg(test)]

@@ -365,9 +365,10 @@ pub fn optimize<const D: usize, const K: usize>(
         }
         let mut evaluations = 0usize;
         if bases.is_empty() {
+            let x: &[[f64; 3]] = x;
             bases = l
                 .vars
-                .iter()
+                .par_iter()
                 .map(|&v| cons.basis(r, v as usize, x[v as usize]))
                 .collect();
         }

@@ -14,7 +14,7 @@
 use crate::bvh::{Aabb, Bvh};
 use crate::quality::{cross, dot, norm, sub};
 pub use curves::MIN_FEATURE_SEGMENTS;
-use curves::{corners, drop_short_features, label_arcs};
+use curves::{corners, curve_segments, drop_short_features, label_arcs};
 use std::sync::atomic::{AtomicU32, Ordering};
 
 mod curves;
@@ -62,8 +62,9 @@ pub struct Reference {
     pub segments: Vec<Segment>,
     /// Per vertex: a corner of the curves.
     pub corner: Vec<bool>,
-    /// Per vertex: the sum of its triangles' angles there (radians; at a
-    /// boundary vertex of a surface, the surface's interior angle).
+    /// Per corner of the curves: the sum of its triangles' angles there
+    /// (radians; at a boundary vertex of a surface, the surface's interior
+    /// angle); 0 at other vertices.
     pub angle: Vec<f64>,
     /// Bounding-box diagonal.
     pub diagonal: f64,
@@ -91,43 +92,18 @@ impl Reference {
                 }
             })
             .collect();
-        // edges by a parallel sort of (edge, triangle): runs of one key
-        let mut keyed: Vec<([u32; 2], u32)> = triangles
-            .par_iter()
-            .enumerate()
-            .flat_map_iter(|(i, t)| {
-                (0..3).map(move |k| {
-                    let (a, b) = (t[k], t[(k + 1) % 3]);
-                    ([a.min(b), a.max(b)], i as u32)
-                })
-            })
-            .collect();
-        keyed.par_sort_unstable();
         let cos = feature_deg.to_radians().cos();
-        let mut segments = Vec::new();
-        for ts in keyed.chunk_by(|a, b| a.0 == b.0) {
-            let boundary = ts.len() == 1;
-            let feature = ts.len() > 2
-                || (ts.len() == 2 && {
-                    let (n0, n1) = (normals[ts[0].1 as usize], normals[ts[1].1 as usize]);
-                    norm(n0) > 0.0 && norm(n1) > 0.0 && dot(n0, n1) < cos
-                });
-            if boundary || feature {
-                segments.push(Segment {
-                    ends: ts[0].0,
-                    boundary,
-                    arc: u32::MAX,
-                });
-            }
-        }
-        segments.sort_unstable_by_key(|s| s.ends);
+        let mut segments = curve_segments(positions.len(), triangles, &normals, cos);
         drop_short_features(&mut segments, positions.len());
         let corner = corners(positions, &segments, cos);
         label_arcs(&mut segments, &corner);
         let mut angle = vec![0.0; positions.len()];
-        for t in triangles {
+        for t in triangles
+            .iter()
+            .filter(|t| t.iter().any(|&v| corner[v as usize]))
+        {
             let p = t.map(|v| positions[v as usize]);
-            for k in 0..3 {
+            for k in (0..3).filter(|&k| corner[t[k] as usize]) {
                 let (a, b) = (sub(p[(k + 1) % 3], p[k]), sub(p[(k + 2) % 3], p[k]));
                 let l = norm(a) * norm(b);
                 if l > 0.0 {
@@ -138,7 +114,7 @@ impl Reference {
         let bbox = Aabb::of(positions);
         let triangle_bvh = Bvh::new(
             &triangles
-                .iter()
+                .par_iter()
                 .map(|t| Aabb::of(&t.map(|v| positions[v as usize])))
                 .collect::<Vec<_>>(),
         );

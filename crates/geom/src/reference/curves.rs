@@ -2,8 +2,9 @@
 //! as noise, the corners where curves meet or turn, and the arcs between
 //! corners.
 //!
-//! Input: the segments found (boundary and feature edges) and the
-//! positions. Output: segments kept, per vertex a corner flag, per
+//! Input: the triangles, their normals and the positions. Output: the
+//! segments (boundary and feature edges, sorted by their ends), those on
+//! too-short feature curves dropped, per vertex a corner flag, per
 //! segment its arc.
 
 use super::Segment;
@@ -12,6 +13,64 @@ use std::collections::HashMap;
 /// Feature curves (connected sets of feature segments) of fewer than this
 /// many segments are noise (a coarse smooth surface), not features.
 pub const MIN_FEATURE_SEGMENTS: usize = 4;
+
+/// The boundary edges (one triangle) and feature edges (more than two
+/// triangles, or two whose unit normals' dot product is below `cos`) of
+/// `triangles` over `n` vertices, sorted by their ends (smaller first).
+/// The edges are bucketed by their smaller end (a counting sort, in
+/// triangle order), each bucket sorted by (other end, triangle): the order
+/// of one sort of every (edge, triangle) pair, in linear time.
+pub(super) fn curve_segments(
+    n: usize,
+    triangles: &[[u32; 3]],
+    normals: &[[f64; 3]],
+    cos: f64,
+) -> Vec<Segment> {
+    let edge = |t: &[u32; 3], k: usize| {
+        let (a, b) = (t[k], t[(k + 1) % 3]);
+        (a.min(b), a.max(b))
+    };
+    let mut start = vec![0usize; n + 1];
+    for t in triangles {
+        for k in 0..3 {
+            start[edge(t, k).0 as usize + 1] += 1;
+        }
+    }
+    for v in 0..n {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    // per edge: its larger end, its triangle
+    let mut other = vec![(0u32, 0u32); start[n]];
+    for (i, t) in triangles.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = edge(t, k);
+            other[fill[a as usize]] = (b, i as u32);
+            fill[a as usize] += 1;
+        }
+    }
+    let mut segments = Vec::new();
+    for a in 0..n {
+        let bucket = &mut other[start[a]..start[a + 1]];
+        bucket.sort_unstable();
+        for ts in bucket.chunk_by(|x, y| x.0 == y.0) {
+            let boundary = ts.len() == 1;
+            let feature = ts.len() > 2
+                || (ts.len() == 2 && {
+                    let (n0, n1) = (normals[ts[0].1 as usize], normals[ts[1].1 as usize]);
+                    norm(n0) > 0.0 && norm(n1) > 0.0 && dot(n0, n1) < cos
+                });
+            if boundary || feature {
+                segments.push(Segment {
+                    ends: [a as u32, ts[0].0],
+                    boundary,
+                    arc: u32::MAX,
+                });
+            }
+        }
+    }
+    segments
+}
 
 /// Drops the feature segments of curves shorter than
 /// [`MIN_FEATURE_SEGMENTS`]; boundary segments stay.
