@@ -149,7 +149,8 @@ fn random_decimal_strings_parse_as_std_does() {
 
 #[test]
 fn every_exact_conversion_parses_as_std_does() {
-    // up to 19 digits and exponents around every boundary of `exact`
+    // up to 19 digits and exponents around the boundaries of the exact
+    // conversions (2^53, 10^22, 19 digits)
     let mut r = Rng(0x1234_5678_9abc_def1);
     for _ in 0..2_000_000 {
         let digits = 1 + r.below(19) as u32;

@@ -20,7 +20,7 @@
 //! temporary file renamed over the target ([`output`]), so a failure never
 //! leaves a half-written file. Errors are [`OutputError`]s. The `write_*`
 //! modules also write to any `std::io::Write`.
-#![forbid(unsafe_code)]
+#![deny(unsafe_code)] // but `mapped::map`: a measured gain (BENCHMARKS.md)
 #![warn(missing_docs)]
 
 mod cursor;
@@ -28,6 +28,7 @@ mod decimal;
 mod fast;
 mod fmt;
 mod hexex;
+mod mapped;
 mod medit;
 mod obj;
 mod ovm;
@@ -127,7 +128,7 @@ pub fn read_tri_map(path: &Path) -> Result<TriMap, InputError> {
         "obj" => parse_obj,
         _ => parse_ply,
     };
-    parse(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+    parse(&mapped::map_or_read(path)?).map_err(|e| e.in_file(path.display().to_string()))
 }
 
 /// Reads a tet map from `.hexex` or OpenVolumeMesh ASCII `.ovm` (with
@@ -137,7 +138,7 @@ pub fn read_tet_map(path: &Path) -> Result<TetMap, InputError> {
         "hexex" => parse_hexex,
         _ => parse_ovm_tet_map,
     };
-    parse(&read_bytes(path)?).map_err(|e| e.in_file(path.display().to_string()))
+    parse(&mapped::map_or_read(path)?).map_err(|e| e.in_file(path.display().to_string()))
 }
 
 /// Reads a hex mesh from a MEDIT `.mesh` (as written by `dualex hex`).
