@@ -268,8 +268,13 @@ fn identity_fit<const D: usize>(table: &[f64; 18], tol: f64, all: &[Rot<D>]) -> 
     if free <= 1 {
         return Some(best);
     }
-    let fits = |r: &Rot<D>| (0..D).all(|j| within[j] >> r.images()[j] & 1 != 0);
-    (!all.iter().any(|r| !r.is_identity() && fits(r))).then_some(best)
+    // the group without its first element, the identity
+    debug_assert!(all.first().is_some_and(Rot::is_identity));
+    let fits = |r: &Rot<D>| {
+        let img = r.images();
+        (0..D).all(|j| within[j] >> img[j] & 1 != 0)
+    };
+    (!all.iter().skip(1).any(fits)).then_some(best)
 }
 
 /// The best mismatch and the only rotation within `tol` of it, if there is
