@@ -30,7 +30,7 @@
 
 use crate::error::{ElementKind, MapError};
 use crate::holonomy::ridge_rotation;
-use crate::transition_fit::{fit_facet, rounded, Fit};
+use crate::transition_fit::{fit_facet, Fit};
 use rayon::prelude::*;
 
 /// Simplices whose facets are fitted in one parallel batch (bounds the
@@ -120,7 +120,7 @@ pub(crate) fn derive<const N: usize, const D: usize>(
                     failed = Some((fit.residual, fit.tol, s, f));
                 }
             }
-            set(topo, &mut tr, s, f, fit.rot, rounded(&fit.trans));
+            set(topo, &mut tr, s, f, fit.rot, fit.rounded);
             if let Some(cands) = fit.ambiguous {
                 ambiguous.push(Ambiguous { s, f, cands });
             }

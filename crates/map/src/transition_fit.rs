@@ -22,7 +22,11 @@ use dualex_util::round::round;
 /// The chosen transition of one facet and what it measured.
 pub(crate) struct Fit<const D: usize> {
     pub(crate) rot: Rot<D>,
+    /// The translation before rounding (read by the tests).
+    #[cfg(test)]
     pub(crate) trans: [f64; D],
+    /// The translation rounded to the nearest integers.
+    pub(crate) rounded: [i64; D],
     pub(crate) residual: f64,
     pub(crate) tol: f64,
     pub(crate) ambiguous: Option<Vec<(Rot<D>, [i64; D])>>,
@@ -34,6 +38,17 @@ fn residual_of<const D: usize>(t: &[f64; D]) -> f64 {
 
 pub(crate) fn rounded<const D: usize>(t: &[f64; D]) -> [i64; D] {
     t.map(|x| round(x) as i64)
+}
+
+/// [`rounded`] and [`residual_of`] with one rounding per coordinate.
+fn rounded_with_residual<const D: usize>(t: &[f64; D]) -> ([i64; D], f64) {
+    let mut residual = 0.0f64;
+    let r = t.map(|x| {
+        let r = round(x);
+        residual = residual.max((x - r).abs());
+        r as i64
+    });
+    (r, residual)
 }
 
 /// Size of the largest rotation group (24 in 3D).
@@ -79,7 +94,7 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     let tol = opts.tolerance_at(scale);
     let table = mismatch_table(&a[..m], &b[..m]);
     let mut mis = [0.0f64; MAX_ROTATIONS];
-    let fast = match identity_fit::<D>(&table, tol) {
+    let fast = match identity_fit::<D>(&table, tol, all) {
         Some(best) => Some((Rot::IDENTITY, best)),
         None => unique_fit::<D>(&table, tol),
     };
@@ -140,10 +155,13 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     if let Some(rot) = single {
         // the common case: the fit determines the rotation
         let trans = translation(&rot);
+        let (rounded, residual) = rounded_with_residual(&trans);
         return Ok(Fit {
             rot,
+            #[cfg(test)]
             trans,
-            residual: residual_of(&trans),
+            rounded,
+            residual,
             tol,
             ambiguous: None,
         });
@@ -176,7 +194,9 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
         (integral.len() > 1).then(|| integral.iter().map(|c| (c.0, rounded(&c.2))).collect());
     Ok(Fit {
         rot: chosen.0,
+        #[cfg(test)]
         trans: chosen.2,
+        rounded: rounded(&chosen.2),
         residual: chosen.3,
         tol,
         ambiguous,
@@ -224,27 +244,37 @@ fn last_image<const D: usize>(img: &[u8; D]) -> Option<u8> {
 /// The fast path of the common case, an identity transition: `Some(best)`
 /// when the identity is the only rotation within `tol` of the best
 /// mismatch, which is then its own, `mis(I)` (what scanning the whole
-/// group finds). Enough for it: at most one axis `j` has a direction
-/// other than `2·j` with an entry `≤ mis(I) + tol` (a planar facet leaves
-/// its normal axis free), since every other rotation moves two axes and
-/// so has an entry above that cut. `None` leaves the facet to
-/// [`unique_fit`].
+/// group finds): when no other rotation of `all` (the group, identity
+/// first) sends every axis `j` to a direction whose entry is within the cut
+/// `mis(I) + tol`. When at most one axis has such a direction other than
+/// `2·j` (a planar facet leaves its normal free) that holds without a
+/// scan, since every other rotation moves two axes. `None` leaves the
+/// facet to [`unique_fit`].
 #[inline]
-fn identity_fit<const D: usize>(table: &[f64; 18], tol: f64) -> Option<f64> {
+fn identity_fit<const D: usize>(table: &[f64; 18], tol: f64, all: &[Rot<D>]) -> Option<f64> {
     if tol.is_nan() || tol < 0.0 {
         return None;
     }
     let best = mismatch_of(table, &Rot::<D>::IDENTITY.images());
     let cut = best + tol;
-    let mut free_axes = 0;
-    for (j, row) in table.chunks_exact(6).take(D).enumerate() {
-        let free = row[..2 * D]
-            .iter()
-            .enumerate()
-            .any(|(d, &x)| d != 2 * j && x <= cut);
-        free_axes += usize::from(free);
+    // per axis, the directions within the cut, as bits
+    let mut within = [0u8; D];
+    for (w, row) in within.iter_mut().zip(table.chunks_exact(6)) {
+        for (d, &x) in row[..2 * D].iter().enumerate() {
+            *w |= u8::from(x <= cut) << d;
+        }
     }
-    (free_axes <= 1).then_some(best)
+    let free = (0..D).filter(|&j| within[j] != 1 << (2 * j)).count();
+    if free <= 1 {
+        return Some(best);
+    }
+    // the group without its first element, the identity
+    debug_assert!(all.first().is_some_and(Rot::is_identity));
+    let fits = |r: &Rot<D>| {
+        let img = r.images();
+        (0..D).all(|j| within[j] >> img[j] & 1 != 0)
+    };
+    (!all.iter().skip(1).any(fits)).then_some(best)
 }
 
 /// The best mismatch and the only rotation within `tol` of it, if there is

@@ -158,6 +158,7 @@ fn compare<const N: usize, const D: usize>(seed: u64, cases: usize) {
                 (Ok(g), Ok(w)) => {
                     assert_eq!(g.rot, w.0, "{map:?}");
                     assert_eq!(g.trans.map(f64::to_bits), w.1.map(f64::to_bits), "{map:?}");
+                    assert_eq!(g.rounded, rounded(&g.trans), "{map:?}");
                     assert_eq!(g.residual.to_bits(), w.2.to_bits(), "{map:?}");
                     assert_eq!(g.tol.to_bits(), w.3.to_bits(), "{map:?}");
                     assert_eq!(g.ambiguous, w.4, "{map:?}");
@@ -212,7 +213,7 @@ fn identity_fast_path_agrees<const D: usize>(seed: u64) {
             };
         }
         for tol in [0.0, 1e-3, 0.05] {
-            let Some(best) = identity_fit::<D>(&table, tol) else {
+            let Some(best) = identity_fit::<D>(&table, tol, &all) else {
                 continue;
             };
             hits += 1;
