@@ -44,7 +44,8 @@ pub fn cell_components<const K: usize>(n_vertices: usize, cells: &[[u32; K]]) ->
         .iter()
         .filter(|c| c.iter().all(|&v| (v as usize) < n_vertices))
     {
-        for &v in c {
+        used[c[0] as usize] = true;
+        for &v in &c[1..] {
             used[v as usize] = true;
             uf.union(c[0] as usize, v as usize);
         }

@@ -32,10 +32,14 @@ pub struct LocalMap<const N: usize, const D: usize> {
     pub trans: Transitions<N, D>,
 }
 
-/// `h − R·h` for `h = (½, …, ½)`: an integer vector.
+/// `h − R·h` for `h = (½, …, ½)`: an integer vector. `R` permutes the
+/// axes with signs, so `R·h = ½·R·(1, …, 1)` has entries `±½` and the
+/// defect is `(1 − (R·1)_k) / 2`, 0 or 1, in integers (no float
+/// conversion per facet).
+#[inline]
 pub fn shift_defect<const D: usize>(r: &Rot<D>) -> [i64; D] {
-    let rh = r.apply(&[0.5; D]);
-    std::array::from_fn(|k| (0.5 - rh[k]) as i64)
+    let r1 = r.apply_i(&[1; D]);
+    std::array::from_fn(|k| (1 - r1[k]) / 2)
 }
 
 /// The integer offset of a simplex (its corners `c`): the floor of its
