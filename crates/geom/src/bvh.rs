@@ -280,15 +280,20 @@ fn build(
         };
         return bbox;
     }
+    // the centres' box (plain comparisons skip a NaN as f64::min does)
     let mut cb = Aabb {
         min: [f64::INFINITY; 3],
         max: [f64::NEG_INFINITY; 3],
     };
     for &i in order.iter() {
-        cb.grow(&Aabb {
-            min: centres[i as usize],
-            max: centres[i as usize],
-        });
+        for (k, &c) in centres[i as usize].iter().enumerate() {
+            if c < cb.min[k] {
+                cb.min[k] = c;
+            }
+            if c > cb.max[k] {
+                cb.max[k] = c;
+            }
+        }
     }
     let axis = (0..3)
         .max_by(|&a, &b| (cb.max[a] - cb.min[a]).total_cmp(&(cb.max[b] - cb.min[b])))
