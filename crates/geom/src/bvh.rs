@@ -195,14 +195,61 @@ const STACK: usize = 64;
 /// Ranges at least this long build their two halves in parallel.
 const PARALLEL: usize = 1 << 14;
 
+/// Ranges at least this long are split on a copy of their keys (the
+/// comparisons then read one array in order, not the centres by index).
+const KEYED: usize = 64;
+
+/// `order` split at its middle `n / 2` by the centres' coordinate `axis`,
+/// ties by index (`f64::total_cmp`): the halves hold the same primitives
+/// however it is done, only their order inside differs.
+fn split_at_median(order: &mut [u32], centres: &[[f64; 3]], axis: usize) {
+    let mid = order.len() / 2;
+    if order.len() < KEYED {
+        order.select_nth_unstable_by(mid, |&a, &b| {
+            centres[a as usize][axis]
+                .total_cmp(&centres[b as usize][axis])
+                .then(a.cmp(&b))
+        });
+        return;
+    }
+    // the key of `f64::total_cmp`: its bits, the magnitude's flipped when
+    // negative, as a signed integer
+    let key = |x: f64| {
+        let b = x.to_bits() as i64;
+        b ^ (((b >> 63) as u64) >> 1) as i64
+    };
+    let mut keyed: Vec<(i64, u32)> = order
+        .iter()
+        .map(|&i| (key(centres[i as usize][axis]), i))
+        .collect();
+    keyed.select_nth_unstable(mid);
+    for (o, k) in order.iter_mut().zip(&keyed) {
+        *o = k.1;
+    }
+}
+
 /// Nodes of the subtree over `n` primitives (a leaf at most [`LEAF`],
 /// else this node and its two halves, the left one `n / 2`).
 fn node_count(n: usize) -> usize {
-    if n <= LEAF {
-        1
-    } else {
-        1 + node_count(n / 2) + node_count(n - n / 2)
+    node_counts(n).0
+}
+
+/// [`node_count`] of `n` and of `n + 1`, from those of `n / 2` and
+/// `n / 2 + 1` (the halves of `n` and `n + 1` are among them): one call a
+/// level instead of one a node.
+fn node_counts(n: usize) -> (usize, usize) {
+    if n < LEAF {
+        return (1, 1);
     }
+    let (a, b) = node_counts(n / 2);
+    let even = n.is_multiple_of(2);
+    let here = match (n <= LEAF, even) {
+        (true, _) => 1,
+        (false, true) => 1 + 2 * a,
+        (false, false) => 1 + a + b,
+    };
+    let next = if even { 1 + a + b } else { 1 + 2 * b };
+    (here, next)
 }
 
 /// The subtree over `order` (the primitives at `offset..` of the whole
@@ -233,25 +280,26 @@ fn build(
         };
         return bbox;
     }
+    // the centres' box (plain comparisons skip a NaN as f64::min does)
     let mut cb = Aabb {
         min: [f64::INFINITY; 3],
         max: [f64::NEG_INFINITY; 3],
     };
     for &i in order.iter() {
-        cb.grow(&Aabb {
-            min: centres[i as usize],
-            max: centres[i as usize],
-        });
+        for (k, &c) in centres[i as usize].iter().enumerate() {
+            if c < cb.min[k] {
+                cb.min[k] = c;
+            }
+            if c > cb.max[k] {
+                cb.max[k] = c;
+            }
+        }
     }
     let axis = (0..3)
         .max_by(|&a, &b| (cb.max[a] - cb.min[a]).total_cmp(&(cb.max[b] - cb.min[b])))
         .unwrap_or(0);
     let mid = n / 2;
-    order.select_nth_unstable_by(mid, |&a, &b| {
-        centres[a as usize][axis]
-            .total_cmp(&centres[b as usize][axis])
-            .then(a.cmp(&b))
-    });
+    split_at_median(order, centres, axis);
     let (lo, hi) = order.split_at_mut(mid);
     let right_at = 1 + node_count(mid);
     let (head, rest) = nodes.split_at_mut(1);
@@ -281,6 +329,44 @@ mod tests {
     use super::*;
 
     #[test]
+    fn median_splits_keyed_or_not() {
+        let centres: Vec<[f64; 3]> = (0..300)
+            .map(|i| [((i * 37) % 11) as f64 - 5.0, -0.0, f64::from(i % 3)])
+            .collect();
+        for n in [10, 63, 64, 65, 300] {
+            for axis in 0..3 {
+                let mut keyed: Vec<u32> = (0..n).rev().collect();
+                split_at_median(&mut keyed, &centres, axis);
+                let mut sorted: Vec<u32> = (0..n).collect();
+                sorted.sort_by(|&a, &b| {
+                    let (x, y) = (centres[a as usize][axis], centres[b as usize][axis]);
+                    x.total_cmp(&y).then(a.cmp(&b))
+                });
+                let mid = n as usize / 2;
+                let mut lo = keyed[..mid].to_vec();
+                lo.sort_unstable();
+                let mut want = sorted[..mid].to_vec();
+                want.sort_unstable();
+                assert_eq!(lo, want, "{n} primitives, axis {axis}");
+            }
+        }
+    }
+
+    #[test]
+    fn node_counts_by_recursion() {
+        fn by_nodes(n: usize) -> usize {
+            if n <= LEAF {
+                1
+            } else {
+                1 + by_nodes(n / 2) + by_nodes(n - n / 2)
+            }
+        }
+        for n in (0..3000).chain([810_000, 1 << 20, (1 << 20) + 1]) {
+            assert_eq!(node_count(n), by_nodes(n), "{n} primitives");
+        }
+    }
+
+    #[test]
     fn nearest_point_by_brute_force() {
         let mut s = 12345u64;
         let mut rnd = || {
@@ -307,6 +393,13 @@ mod tests {
                 .min_by(|&a, &b| d2(q, pts[a]).total_cmp(&d2(q, pts[b])))
                 .map(|i| i as u32);
             assert_eq!(got.map(|g| g.0), want);
+            // from any seed: the same
+            for seed in [0, 7, 250, 499] {
+                let from = bvh.nearest_seeded(q, f64::INFINITY, Some(seed), |i| {
+                    (i % 2 == 0).then(|| d2(q, pts[i as usize]))
+                });
+                assert_eq!(from.map(|g| g.0), want, "seed {seed}");
+            }
         }
         assert!(Bvh::new(&[]).nearest([0.; 3], |_| Some(0.0)).is_none());
     }
