@@ -126,30 +126,43 @@ pub fn surface_shape<const K: usize>(n_vertices: usize, faces: &[[u32; K]]) -> S
     }
 }
 
-/// The boundary triangles of a tet mesh (faces of exactly one tet), sorted.
-pub fn tet_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
-    // every face as (its sorted corners, its place `4·tet + face`),
-    // bucketed by its least corner: one run of equal corners per face, a
-    // run of one is a boundary face, read back in its tet's orientation
-    let oriented = |t: &[u32; 4], f: usize| [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]];
+/// The faces of a tet mesh that belong to exactly one tet (its boundary),
+/// each as its place `4·tet + f` (the face opposite corner `f`), in no
+/// particular order: the callers orient and sort them. Faces are equal
+/// when their three vertices are, whatever their order.
+pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
+    // every face as (its sorted corners, its place), bucketed by its least
+    // corner: one run of equal corners per face, a run of one is boundary
     let faces = bucket_sorted(
         tets.len(),
         |x: &([u32; 3], usize)| x.0[0] as usize,
         |emit| {
             for (i, t) in tets.iter().enumerate() {
                 for f in 0..4 {
-                    let mut key = oriented(t, f);
+                    let mut key = [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]];
                     key.sort_unstable();
                     emit((key, 4 * i + f));
                 }
             }
         },
     );
-    let mut out: Vec<[u32; 3]> = faces
+    faces
         .chunk_by(|x, y| x.0 == y.0)
         .filter_map(|run| match run {
-            [(_, place)] => Some(oriented(&tets[place / 4], place % 4)),
+            [(_, place)] => Some(*place),
             _ => None,
+        })
+        .collect()
+}
+
+/// The boundary triangles of a tet mesh (faces of exactly one tet), each
+/// read in its tet's orientation, sorted.
+pub fn tet_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
+    let mut out: Vec<[u32; 3]> = lone_tet_faces(tets)
+        .into_iter()
+        .map(|place| {
+            let (t, f) = (&tets[place / 4], place % 4);
+            [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]]
         })
         .collect();
     out.sort_unstable();

@@ -140,33 +140,21 @@ impl Reference {
     /// The reference of a tet mesh: its boundary triangles, outward.
     pub fn volume_boundary(positions: &[[f64; 3]], tets: &[[u32; 4]], feature_deg: f64) -> Self {
         use rayon::prelude::*;
-        // every face with its sorted key; a face of one tet is boundary
-        let mut faces: Vec<([u32; 3], [u32; 3])> = tets
+        // the face opposite corner f, outward for a positive tet
+        const FACE: [[usize; 3]; 4] = [[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]];
+        // a face of one tet is boundary (the checker's bucketing, not a
+        // sort of all faces), turned outward by its tet's volume
+        let mut tris: Vec<[u32; 3]> = dualex_check::topology::lone_tet_faces(tets)
             .par_iter()
-            .flat_map_iter(|t| {
+            .map(|&place| {
+                let t = &tets[place / 4];
                 let p = t.map(|v| positions[v as usize]);
                 let vol = dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
-                // faces opposite 0..3, outward for a positive tet
-                [[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]]
-                    .into_iter()
-                    .map(move |f| {
-                        let mut tri = f.map(|k| t[k]);
-                        if vol < 0.0 {
-                            tri.swap(1, 2);
-                        }
-                        let mut key = tri;
-                        key.sort_unstable();
-                        (key, tri)
-                    })
-            })
-            .collect();
-        faces.par_sort_unstable();
-        // a face of one tet is boundary
-        let mut tris: Vec<[u32; 3]> = faces
-            .chunk_by(|a, b| a.0 == b.0)
-            .filter_map(|run| match run {
-                [(_, tri)] => Some(*tri),
-                _ => None,
+                let mut tri = FACE[place % 4].map(|k| t[k]);
+                if vol < 0.0 {
+                    tri.swap(1, 2);
+                }
+                tri
             })
             .collect();
         tris.sort_unstable();
