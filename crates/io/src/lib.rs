@@ -15,6 +15,10 @@
 //! the [`InputError`]. Every error is one line naming the line / record;
 //! no count read from a file is trusted before it is checked against the
 //! bytes left. Map readers end with [`dualex_map::SimplexMap::validate`].
+//! `read_tri_map` / `read_tet_map` map a regular file into memory instead
+//! of copying it (`mapped`; a measured gain): a file truncated by another
+//! process while it is being read ends the process (SIGBUS), where a copy
+//! would have read a shorter file.
 //!
 //! Writers: by extension; the data is checked first, then written to a
 //! temporary file renamed over the target ([`output`]), so a failure never
