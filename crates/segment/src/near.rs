@@ -76,6 +76,7 @@ pub const FACE_EDGES: [[usize; 3]; 4] = [[3, 4, 5], [1, 2, 5], [0, 2, 4], [0, 1,
 pub type Bounds = [[[f64; 2]; 3]; 4];
 
 /// The [`box_bounds`] of every coordinate of a tet.
+#[inline]
 pub fn corner_bounds(c: &[[f64; 3]; 4]) -> Bounds {
     let mut b = [[[0.0; 2]; 3]; 4];
     for (bk, ck) in b.iter_mut().zip(c) {
@@ -89,6 +90,7 @@ pub fn corner_bounds(c: &[[f64; 3]; 4]) -> Bounds {
 /// Per edge of a tet: bit `a` set when the edge's box, grown by `2·EPS`,
 /// holds an integer on axis `a` (no iso-line or grid point within `EPS` of
 /// the edge otherwise; see [`box_spans`], also for faces).
+#[inline]
 pub fn edge_spans(b: &Bounds) -> [u8; 6] {
     let mut span = [0u8; 6];
     for (bits, &[k, l]) in span.iter_mut().zip(&EDGES) {
@@ -100,6 +102,7 @@ pub fn edge_spans(b: &Bounds) -> [u8; 6] {
 }
 
 /// The integer range of edge `k`–`l`'s box (grown by `2·EPS`) per axis.
+#[inline]
 pub fn edge_range(b: &Bounds, k: usize, l: usize) -> [[f64; 2]; 3] {
     // not NaN (validated input): plain comparisons, cheaper than f64::min
     std::array::from_fn(|a| {
