@@ -196,8 +196,8 @@ fn opposite(a: &[u32; 4], b: &[u32; 4]) -> bool {
 
 /// Edge count and the valence histogram of interior edges.
 fn edge_stats(cells: &[[u32; 8]], boundary: &[[u32; 4]], r: &mut HexReport) {
-    // undirected edges `lo << 32 | hi`, sorted: one run per edge
-    let key = |a: u32, b: u32| u64::from(a.min(b)) << 32 | u64::from(a.max(b));
+    // undirected edges, sorted: one run per edge
+    let key = crate::topology::edge_key;
     let mut edges: Vec<u64> = Vec::with_capacity(12 * cells.len());
     for h in cells {
         edges.extend(HEX_EDGES.iter().map(|e| key(h[e[0]], h[e[1]])));

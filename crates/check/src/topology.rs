@@ -11,6 +11,7 @@
 //! components of the boundary edges. A volume's shape is (cell components,
 //! Euler characteristic and components of its boundary surface).
 
+use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
 use serde_json::{json, Value};
 
@@ -53,33 +54,15 @@ pub fn cell_components<const K: usize>(n_vertices: usize, cells: &[[u32; K]]) ->
     uf.count_sets((0..n_vertices).filter(|&v| used[v]))
 }
 
-/// The items that `each` produces, ordered by `bucket(item) % nb` (a
-/// counting sort) and sorted within each bucket, so that equal items (of
-/// one bucket) are adjacent: `each` is run twice, to count and to place.
-/// Linear but for the small sorts (a bucket per vertex: a vertex's few
-/// edges or faces), instead of a sort or a hash map of all the items.
-fn bucket_sorted<T: Copy + Default + Ord>(
-    nb: usize,
-    bucket: impl Fn(&T) -> usize,
-    each: impl Fn(&mut dyn FnMut(T)),
-) -> Vec<T> {
-    let nb = nb.max(1);
-    let mut start = vec![0usize; nb + 1];
-    each(&mut |x| start[bucket(&x) % nb + 1] += 1);
-    for i in 0..nb {
-        start[i + 1] += start[i];
-    }
-    let mut out = vec![T::default(); start[nb]];
-    let mut next = start[..nb].to_vec();
-    each(&mut |x| {
-        let b = bucket(&x) % nb;
-        out[next[b]] = x;
-        next[b] += 1;
-    });
-    for w in start.windows(2) {
-        out[w[0]..w[1]].sort_unstable();
-    }
-    out
+/// An undirected edge as one key, `lo << 32 | hi` (the checkers' edge
+/// runs).
+pub(crate) fn edge_key(a: u32, b: u32) -> u64 {
+    u64::from(a.min(b)) << 32 | u64::from(a.max(b))
+}
+
+/// The face of tet `t` opposite its corner `f`, in the tet's orientation.
+fn opposite_face(t: &[u32; 4], f: usize) -> [u32; 3] {
+    [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]]
 }
 
 /// The shape of a polygon surface (faces of `K` corners, indices
@@ -88,18 +71,14 @@ pub fn surface_shape<const K: usize>(n_vertices: usize, faces: &[[u32; K]]) -> S
     let good = |f: &&[u32; K]| f.iter().all(|&v| (v as usize) < n_vertices);
     // every side of a good face as an undirected edge `lo << 32 | hi`,
     // bucketed by `lo`: one run per edge, a run of one is a boundary edge
-    let edges = bucket_sorted(
-        n_vertices,
-        |e: &u64| (e >> 32) as usize,
-        |emit| {
-            for f in faces.iter().filter(good) {
-                for k in 0..K {
-                    let (a, b) = (f[k], f[(k + 1) % K]);
-                    emit(u64::from(a.min(b)) << 32 | u64::from(a.max(b)));
-                }
+    let (_, edges) = bucket::sorted(n_vertices, |emit| {
+        for f in faces.iter().filter(good) {
+            for k in 0..K {
+                let (a, b) = (f[k], f[(k + 1) % K]);
+                emit(a.min(b) as usize, edge_key(a, b));
             }
-        },
-    );
+        }
+    });
     let mut used = vec![false; n_vertices];
     for f in faces.iter().filter(good) {
         for &v in f {
@@ -133,19 +112,15 @@ pub fn surface_shape<const K: usize>(n_vertices: usize, faces: &[[u32; K]]) -> S
 pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
     // every face as (its sorted corners, its place), bucketed by its least
     // corner: one run of equal corners per face, a run of one is boundary
-    let faces = bucket_sorted(
-        tets.len(),
-        |x: &([u32; 3], usize)| x.0[0] as usize,
-        |emit| {
-            for (i, t) in tets.iter().enumerate() {
-                for f in 0..4 {
-                    let mut key = [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]];
-                    key.sort_unstable();
-                    emit((key, 4 * i + f));
-                }
+    let (_, faces) = bucket::sorted(tets.len(), |emit| {
+        for (i, t) in tets.iter().enumerate() {
+            for f in 0..4 {
+                let mut key = opposite_face(t, f);
+                key.sort_unstable();
+                emit(key[0] as usize, (key, 4 * i + f));
             }
-        },
-    );
+        }
+    });
     faces
         .chunk_by(|x, y| x.0 == y.0)
         .filter_map(|run| match run {
@@ -160,10 +135,7 @@ pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
 pub fn tet_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
     let mut out: Vec<[u32; 3]> = lone_tet_faces(tets)
         .into_iter()
-        .map(|place| {
-            let (t, f) = (&tets[place / 4], place % 4);
-            [t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]]
-        })
+        .map(|place| opposite_face(&tets[place / 4], place % 4))
         .collect();
     out.sort_unstable();
     out

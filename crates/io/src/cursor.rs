@@ -103,13 +103,8 @@ impl<'a> Cursor<'a> {
     #[inline]
     pub(crate) fn integer(&mut self, max_digits: usize) -> Option<u64> {
         self.skip_blank();
-        let start = self.pos;
-        let mut i = 0u64;
-        while let Some(&b) = self.bytes.get(self.pos).filter(|b| b.is_ascii_digit()) {
-            i = i.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
-            self.pos += 1;
-        }
-        let n = self.pos - start;
+        let (i, n) = leading_digits(self.rest());
+        self.pos += n;
         (n > 0 && n <= max_digits && self.at_field_end()).then_some(i)
     }
 
@@ -127,6 +122,19 @@ impl<'a> Cursor<'a> {
             Some(_) => None,
         }
     }
+}
+
+/// The value of the decimal digits at the start of `b` (wrapping past 19
+/// digits: the callers refuse more) and how many there are.
+#[inline]
+pub(crate) fn leading_digits(b: &[u8]) -> (u64, usize) {
+    let mut i = 0u64;
+    let mut n = 0;
+    while let Some(&d) = b.get(n).filter(|d| d.is_ascii_digit()) {
+        i = i.wrapping_mul(10).wrapping_add(u64::from(d - b'0'));
+        n += 1;
+    }
+    (i, n)
 }
 
 /// The number of lines of `bytes` as `str::lines` counts them: one per

@@ -21,7 +21,7 @@
 //! may hold anything); a `.hexex` file needs no such check, as every byte
 //! of an accepted file is whitespace or in an accepted (ASCII) number.
 
-use crate::cursor::{count_lines, line_chunks, Cursor};
+use crate::cursor::{count_lines, leading_digits, line_chunks, Cursor};
 use crate::scan::finite;
 use dualex_map::{TetMap, TriMap};
 use rayon::prelude::*;
@@ -43,15 +43,9 @@ fn text_chunks(bytes: &[u8], chunk: usize) -> Option<Vec<&str>> {
 /// without sign) minus one, or `None`.
 #[inline]
 fn one_based(tok: &[u8]) -> Option<u32> {
-    if tok.is_empty() || tok.len() > 10 {
+    let (i, n) = leading_digits(tok);
+    if n == 0 || n > 10 || n != tok.len() {
         return None;
-    }
-    let mut i = 0u64;
-    for &b in tok {
-        if !b.is_ascii_digit() {
-            return None;
-        }
-        i = 10 * i + u64::from(b - b'0');
     }
     u32::try_from(i.checked_sub(1)?).ok()
 }

@@ -9,6 +9,8 @@
 //! threads and the run (no hashing with random state, no timing in
 //! results).
 //!
+//! - [`bucket`]: a counting sort into buckets, each then sorted (edges
+//!   or faces grouped by their least vertex without hashing);
 //! - [`par`]: deterministic parallel building blocks (CSR building in
 //!   fixed-size chunks joined in input order);
 //! - [`rng`]: a seeded splitmix64 generator;
@@ -19,6 +21,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bucket;
 pub mod par;
 pub mod rng;
 pub mod round;

@@ -9,7 +9,9 @@
 
 use super::Segment;
 use crate::quality::{dot, norm, sub};
-use std::collections::HashMap;
+use dualex_util::bucket;
+use dualex_util::union_find::UnionFind;
+
 /// Feature curves (connected sets of feature segments) of fewer than this
 /// many segments are noise (a coarse smooth surface), not features.
 pub const MIN_FEATURE_SEGMENTS: usize = 4;
@@ -30,30 +32,18 @@ pub(super) fn curve_segments(
         let (a, b) = (t[k], t[(k + 1) % 3]);
         (a.min(b), a.max(b))
     };
-    let mut start = vec![0usize; n + 1];
-    for t in triangles {
-        for k in 0..3 {
-            start[edge(t, k).0 as usize + 1] += 1;
+    // per edge, in its smaller end's bucket: its larger end, its triangle
+    let (start, other) = bucket::sorted(n, |emit| {
+        for (i, t) in triangles.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = edge(t, k);
+                emit(a as usize, (b, i as u32));
+            }
         }
-    }
-    for v in 0..n {
-        start[v + 1] += start[v];
-    }
-    let mut fill = start.clone();
-    // per edge: its larger end, its triangle
-    let mut other = vec![(0u32, 0u32); start[n]];
-    for (i, t) in triangles.iter().enumerate() {
-        for k in 0..3 {
-            let (a, b) = edge(t, k);
-            other[fill[a as usize]] = (b, i as u32);
-            fill[a as usize] += 1;
-        }
-    }
+    });
     let mut segments = Vec::new();
     for a in 0..n {
-        let bucket = &mut other[start[a]..start[a + 1]];
-        bucket.sort_unstable();
-        for ts in bucket.chunk_by(|x, y| x.0 == y.0) {
+        for ts in other[start[a]..start[a + 1]].chunk_by(|x, y| x.0 == y.0) {
             let boundary = ts.len() == 1;
             let feature = ts.len() > 2
                 || (ts.len() == 2 && {
@@ -75,23 +65,16 @@ pub(super) fn curve_segments(
 /// Drops the feature segments of curves shorter than
 /// [`MIN_FEATURE_SEGMENTS`]; boundary segments stay.
 pub(super) fn drop_short_features(segments: &mut Vec<Segment>, n: usize) {
-    let mut parent: Vec<u32> = (0..n as u32).collect();
-    fn find(p: &mut [u32], mut v: u32) -> u32 {
-        while p[v as usize] != v {
-            p[v as usize] = p[p[v as usize] as usize];
-            v = p[v as usize];
-        }
-        v
-    }
+    let mut curves = UnionFind::new(n);
     for s in segments.iter().filter(|s| !s.boundary) {
-        let (a, b) = (find(&mut parent, s.ends[0]), find(&mut parent, s.ends[1]));
-        parent[a.max(b) as usize] = a.min(b);
+        curves.union(s.ends[0] as usize, s.ends[1] as usize);
     }
-    let mut size: HashMap<u32, usize> = HashMap::new();
+    let mut size = vec![0usize; n];
     for s in segments.iter().filter(|s| !s.boundary) {
-        *size.entry(find(&mut parent, s.ends[0])).or_default() += 1;
+        size[curves.find(s.ends[0] as usize)] += 1;
     }
-    segments.retain(|s| s.boundary || size[&find(&mut parent, s.ends[0])] >= MIN_FEATURE_SEGMENTS);
+    segments
+        .retain(|s| s.boundary || size[curves.find(s.ends[0] as usize)] >= MIN_FEATURE_SEGMENTS);
 }
 
 /// Per vertex: a corner of the curves (see the module docs).
