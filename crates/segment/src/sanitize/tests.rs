@@ -75,6 +75,23 @@ mod dim2 {
             );
             assert_eq!(scan.list(), want, "round {round}");
         }
+        // many vertices at once (the update's one pass over everything),
+        // some of them onto isos
+        for round in 0..4 {
+            let moved: Vec<u32> = (0..nv as u32).filter(|v| v % 4 != round).collect();
+            for &v in &moved {
+                let e = stars.of(v as usize)[0];
+                let x = local.coords[e.simplex as usize][e.corner as usize];
+                let d = if v % 3 == 0 {
+                    [x[0].round() - x[0], 0.0]
+                } else {
+                    [0.2 * rng.angle().cos(), 0.2 * rng.angle().sin()]
+                };
+                local.move_vertex(&stars, v as usize, &d);
+            }
+            scan.update(&map, &stars, &local.coords, &moved);
+            assert_eq!(scan.list(), full(&local), "many, round {round}");
+        }
     }
 
     /// The box prefilter of [`tri_mask`] never hides a grid point.
