@@ -5,7 +5,7 @@
 use super::{Dim, Predicates};
 use crate::grid::{near_int_on, spanned_axes};
 use crate::near::{
-    corner_bounds, edge_range, edge_spans, face_corners, near_int, segment_near_iso_line_in_box,
+    corner_bounds, edge_range, edge_spans, face_corners, segment_near_iso_line_in_box,
     triangle_near_grid_point, EDGES, FACE_EDGES,
 };
 use dualex_util::rng::SplitMix;
@@ -30,13 +30,12 @@ impl Predicates<4, 3> for Dim<4, 3> {
                 near_int_on(c, axes.trailing_zeros() as usize)
             };
         }
+        // the other axis (if any): no corner on its isos, no span
         let mut mask = 0u8;
-        for (k, p) in c.iter().enumerate() {
-            if p.iter().any(|&x| near_int(x)) {
-                mask |= 1 << k;
-            }
+        for a in (0..3).filter(|a| axes >> a & 1 == 1) {
+            mask |= near_int_on(c, a);
         }
-        let bounds = corner_bounds(c);
+        let bounds = corner_bounds(c, axes);
         let span = edge_spans(&bounds);
         for (&[k, l], &bits) in EDGES.iter().zip(&span) {
             // fewer than two axes
