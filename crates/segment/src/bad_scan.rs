@@ -11,7 +11,10 @@
 //! the moved vertices are tested again, and only the vertices of simplices
 //! whose mask changed are re-derived (a vertex's star holds all its
 //! corners). The tests run in parallel (order-preserving collect; the
-//! masks do not depend on the thread count).
+//! masks do not depend on the thread count); when the moved vertices'
+//! stars cover about half the simplices or more, the update is one
+//! parallel pass over all simplices and all vertices instead (same
+//! result).
 
 use dualex_map::{SimplexMap, Stars};
 use rayon::prelude::*;
@@ -43,16 +46,7 @@ impl BadScan {
             .with_min_len(min_task)
             .map(&mask_of)
             .collect();
-        let bad = (0..nv)
-            .into_par_iter()
-            .with_min_len(min_task)
-            .map(|v| {
-                stars
-                    .of(v)
-                    .iter()
-                    .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
-            })
-            .collect();
+        let bad = all_bad(stars, &mask, nv, min_task);
         BadScan {
             bad,
             mask,
@@ -81,6 +75,26 @@ impl BadScan {
     ) {
         self.epoch += 1;
         let epoch = self.epoch;
+        let corners: usize = moved.iter().map(|&v| stars.of(v as usize).len()).sum();
+        if corners >= self.mask.len() / 2 {
+            // about half the simplices or more: one parallel pass over all
+            // simplices and all vertices (the same masks and flags)
+            let mut is_moved = vec![false; self.bad.len()];
+            for &v in moved {
+                is_moved[v as usize] = true;
+            }
+            let old = std::mem::take(&mut self.mask);
+            self.mask = retest_moved(
+                &map.simplices,
+                coords,
+                old,
+                &is_moved,
+                mask_of,
+                self.min_task,
+            );
+            self.bad = all_bad(stars, &self.mask, self.bad.len(), self.min_task);
+            return;
+        }
         // the simplices whose corners moved
         let mut redo = Vec::new();
         for &v in moved {
@@ -111,12 +125,52 @@ impl BadScan {
                 }
             }
         }
-        // a vertex's star holds all its corners
         for w in verts {
-            self.bad[w as usize] = stars
-                .of(w as usize)
-                .iter()
-                .any(|e| self.mask[e.simplex as usize] >> e.corner & 1 != 0);
+            self.bad[w as usize] = is_bad(stars, &self.mask, w as usize);
         }
     }
+}
+
+/// Whether vertex `v` is bad: some simplex of its star makes its corner
+/// bad (a vertex's star holds all its corners).
+#[inline]
+fn is_bad<const D: usize>(stars: &Stars<D>, mask: &[u8], v: usize) -> bool {
+    stars
+        .of(v)
+        .iter()
+        .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
+}
+
+/// [`is_bad`] of the vertices `0..nv`, in parallel.
+fn all_bad<const D: usize>(stars: &Stars<D>, mask: &[u8], nv: usize, min_task: usize) -> Vec<bool> {
+    (0..nv)
+        .into_par_iter()
+        .with_min_len(min_task)
+        .map(|v| is_bad(stars, mask, v))
+        .collect()
+}
+
+/// The masks after a move: simplex `s`'s `old[s]`, tested again when one
+/// of its vertices is `moved`; in parallel.
+fn retest_moved<const N: usize, const D: usize>(
+    simplices: &[[u32; N]],
+    coords: &[[[f64; D]; N]],
+    old: Vec<u8>,
+    moved: &[bool],
+    mask_of: impl Fn(&[[f64; D]; N]) -> u8 + Sync,
+    min_task: usize,
+) -> Vec<u8> {
+    simplices
+        .par_iter()
+        .zip(coords)
+        .zip(old)
+        .with_min_len(min_task)
+        .map(|((simplex, c), m)| {
+            if simplex.iter().any(|&w| moved[w as usize]) {
+                mask_of(c)
+            } else {
+                m
+            }
+        })
+        .collect()
 }

@@ -9,10 +9,13 @@
 //! they do not move, and a vertex collapsed onto one (exactly, once
 //! singular vertices are snapped to their fixed points) must still move
 //! away from it. Generic over
-//! the dimension: used by both extractions.
+//! the dimension: used by both extractions. The collapsed edges are found
+//! in parallel and joined in simplex order: the clusters do not depend on
+//! the thread count.
 
 use dualex_map::{Rot, SimplexMap, Stars};
 use dualex_util::union_find::UnionFind;
+use rayon::prelude::*;
 use std::collections::HashMap;
 
 /// The collapsed clusters of a map.
@@ -35,19 +38,26 @@ impl<const D: usize> Clusters<D> {
     ) -> Self {
         let nv = map.positions.len();
         let mut sets = UnionFind::new(nv);
-        let mut edges = Vec::new();
-        for (s, tet) in map.simplices.iter().enumerate() {
-            for k in 0..N {
-                for l in k + 1..N {
-                    // a singular vertex never moves: a vertex collapsed
-                    // onto it moves on its own, away from it
-                    let singular = |v: u32| stars.singular[v as usize];
-                    if coords[s][k] == coords[s][l] && !singular(tet[k]) && !singular(tet[l]) {
-                        edges.push((tet[k], tet[l], s));
-                        sets.union_into(tet[k] as usize, tet[l] as usize);
-                    }
-                }
-            }
+        // a singular vertex never moves: a vertex collapsed onto it moves
+        // on its own, away from it
+        let singular = |v: u32| stars.singular[v as usize];
+        // the collapsed edges, found in parallel, in simplex order
+        let edges: Vec<(u32, u32, usize)> = map
+            .simplices
+            .par_iter()
+            .zip(coords)
+            .enumerate()
+            .with_min_len(4096)
+            .flat_map_iter(|(s, (tet, c))| {
+                (0..N)
+                    .flat_map(|k| (k + 1..N).map(move |l| (k, l)))
+                    .filter(move |&(k, l)| c[k] == c[l] && !singular(tet[k]) && !singular(tet[l]))
+                    .map(move |(k, l)| (tet[k], tet[l], s))
+            })
+            .collect();
+        // joined in that order (the roots depend on it)
+        for &(a, b, _) in &edges {
+            sets.union_into(a as usize, b as usize);
         }
         // only vertices on a collapsed edge can be in a non-trivial cluster
         let mut on_edge: Vec<u32> = edges.iter().flat_map(|&(a, b, _)| [a, b]).collect();

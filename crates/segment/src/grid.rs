@@ -57,6 +57,42 @@ pub fn box_spans(p: [f64; 2], q: [f64; 2]) -> bool {
     p[0] <= q[1] || q[0] <= p[1]
 }
 
+/// Per axis `a` of a simplex's corners `c`, bit `a` set when
+/// [`box_spans`] holds for some pair of its corners on that axis (for a
+/// simplex, some edge), from the least and greatest value alone: `lo` and
+/// `hi` of [`box_bounds`] are monotone, so the pairs' `lo_p ≤ hi_q` holds
+/// for some pair iff `lo(min) ≤ hi(max)` (a corner with `lo ≤ hi` spans
+/// with every other corner; at least two corners). A corner
+/// [`near_int`] on axis `a` sets the bit. Not NaN (validated input); a
+/// NaN first corner sets every bit (the caller then tests everything).
+#[inline]
+pub fn spanned_axes<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
+    let mut bits = 0u8;
+    for a in 0..D {
+        let (mut lo, mut hi) = (c[0][a], c[0][a]);
+        for p in &c[1..] {
+            let x = p[a];
+            lo = if x < lo { x } else { lo };
+            hi = if x > hi { x } else { hi };
+        }
+        let (l, h) = (box_bounds(lo)[0], box_bounds(hi)[1]);
+        bits |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
+    }
+    bits
+}
+
+/// The corners of `c` [`near_int`] on axis `a`, as a mask (bit `k`: corner
+/// `k`); for a simplex that spans at most that axis ([`spanned_axes`]),
+/// the whole of what it makes bad.
+#[inline]
+pub fn near_int_on<const N: usize, const D: usize>(c: &[[f64; D]; N], a: usize) -> u8 {
+    let mut mask = 0u8;
+    for (k, p) in c.iter().enumerate() {
+        mask |= u8::from(near_int(p[a])) << k;
+    }
+    mask
+}
+
 /// Whether [`grid_point_near_segment`] certainly returns `None` for the
 /// segment `a`–`b`, whose box holds the integers `lo[k]..=hi[k]` on axis
 /// `k` (from [`box_bounds`] of its ends, grown by `2·EPS`: any grid point
@@ -250,6 +286,47 @@ mod tests {
             for &y in vals.iter().step_by(step) {
                 let got = box_spans(box_bounds(x), box_bounds(y));
                 assert_eq!(got, reference(x, y), "{x:e} {y:e}");
+            }
+        }
+    }
+
+    /// [`spanned_axes`] equals "some pair spans" by [`box_spans`], on
+    /// triangles and tets of probes and of values near integers and ties.
+    #[test]
+    fn spanned_axes_equal_pairs() {
+        let mut vals: Vec<f64> = probes().into_iter().filter(|x| !x.is_nan()).collect();
+        for k in -5..=5 {
+            for n in [-3.0, 0.0, 1.0, 2.0, 1e6] {
+                vals.push(n + f64::from(k) * EPS);
+                vals.push(n + 0.5 + f64::from(k) * EPS);
+            }
+        }
+        fn pairs<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
+            let mut bits = 0u8;
+            for k in 0..N {
+                for l in k + 1..N {
+                    for (a, (&x, &y)) in c[k].iter().zip(&c[l]).enumerate() {
+                        bits |= u8::from(box_spans(box_bounds(x), box_bounds(y))) << a;
+                    }
+                }
+            }
+            bits
+        }
+        let mut z = 5u64;
+        let mut pick = || {
+            z = z
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            vals[(z >> 33) as usize % vals.len()]
+        };
+        for _ in 0..100000 {
+            let t: [[f64; 2]; 3] = std::array::from_fn(|_| [pick(), pick()]);
+            assert_eq!(spanned_axes(&t), pairs(&t), "{t:?}");
+            let t: [[f64; 3]; 4] = std::array::from_fn(|_| [pick(), pick(), pick()]);
+            assert_eq!(spanned_axes(&t), pairs(&t), "{t:?}");
+            for a in 0..3 {
+                let on = near_int_on(&t, a);
+                assert!(on == 0 || spanned_axes(&t) >> a & 1 == 1, "{t:?}");
             }
         }
     }

@@ -75,13 +75,16 @@ pub const FACE_EDGES: [[usize; 3]; 4] = [[3, 4, 5], [1, 2, 5], [0, 2, 4], [0, 1,
 /// Per corner and axis of a tet: its [`box_bounds`].
 pub type Bounds = [[[f64; 2]; 3]; 4];
 
-/// The [`box_bounds`] of every coordinate of a tet.
+/// The [`box_bounds`] of every coordinate of a tet on the axes `a` with
+/// bit `a` of `axes` set; `[∞, −∞]` on the others. For the axes that no
+/// edge spans ([`crate::grid::spanned_axes`]) that gives the same
+/// [`edge_spans`] (none) and empty [`edge_range`]s, as the bounds would.
 #[inline]
-pub fn corner_bounds(c: &[[f64; 3]; 4]) -> Bounds {
-    let mut b = [[[0.0; 2]; 3]; 4];
-    for (bk, ck) in b.iter_mut().zip(c) {
-        for (bka, &x) in bk.iter_mut().zip(ck) {
-            *bka = box_bounds(x);
+pub fn corner_bounds(c: &[[f64; 3]; 4], axes: u8) -> Bounds {
+    let mut b = [[[f64::INFINITY, f64::NEG_INFINITY]; 3]; 4];
+    for a in (0..3).filter(|a| axes >> a & 1 == 1) {
+        for (bk, ck) in b.iter_mut().zip(c) {
+            bk[a] = box_bounds(ck[a]);
         }
     }
     b

@@ -21,6 +21,7 @@
 use crate::local::LocalMap;
 use crate::simplex::{Dim, Simplex};
 use dualex_map::{InputError, SimplexMap};
+use dualex_util::round::{ceil, floor};
 
 /// The nodes of the dual segmentation (`N` corners per simplex, `D` axes).
 #[derive(Clone, Debug, Default)]
@@ -42,14 +43,13 @@ type Found<const N: usize, const D: usize> = (u32, [i64; D], [f64; N], bool);
 
 /// The integer box `[lo, hi]` of an image, per axis (empty when some
 /// `lo > hi`).
+/// `ceil` and `floor` are [`dualex_util::round`]'s (bit for bit `std`'s,
+/// without a library call).
 fn integer_box<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> ([i64; D], [i64; D]) {
     let lo =
-        std::array::from_fn(|k| p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min).ceil() as i64);
+        std::array::from_fn(|k| ceil(p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min)) as i64);
     let hi = std::array::from_fn(|k| {
-        p.iter()
-            .map(|c| c[k])
-            .fold(f64::NEG_INFINITY, f64::max)
-            .floor() as i64
+        floor(p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max)) as i64
     });
     (lo, hi)
 }

@@ -44,6 +44,7 @@ use crate::sanitize_report::{amplitude, ROUNDS};
 pub use crate::sanitize_report::{SanitizeReport, AMPLITUDE};
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
 use dualex_util::rng::SplitMix;
+use rayon::prelude::*;
 use std::collections::{BTreeMap, BTreeSet, HashSet};
 
 mod dim2;
@@ -106,6 +107,7 @@ where
         moved: vec![false; map.positions.len()],
         moved_singular: HashSet::new(),
         touched: Vec::new(),
+        deltas: Vec::new(),
         done_epoch: vec![0; map.positions.len()],
         epoch: 0,
         stuck: BTreeSet::new(),
@@ -130,7 +132,9 @@ where
         rep.rounds = round;
         executed += 1;
         mv.touched.clear();
-        mv.round::<N>(local, &todo, amp, last_resort);
+        mv.deltas.clear();
+        mv.round::<N>(&todo, amp, last_resort);
+        move_all(&mut local.coords, stars, &mv.touched, &mv.deltas);
         scan.update(map, stars, &local.coords, &mv.touched);
         bad = scan.list();
     }
@@ -157,8 +161,10 @@ struct Mover<'a, const D: usize> {
     rng: SplitMix,
     moved: Vec<bool>,
     moved_singular: HashSet<u32>,
-    /// Vertices moved in the current round.
+    /// Vertices moved in the current round, in order.
     touched: Vec<u32>,
+    /// Their moves, in their reference charts (applied by [`move_all`]).
+    deltas: Vec<[f64; D]>,
     /// Per cluster root: the last round (epoch) in which it moved.
     done_epoch: Vec<u32>,
     epoch: u32,
@@ -186,16 +192,12 @@ impl<const D: usize> Mover<'_, D> {
     }
 
     /// Moves every vertex of `todo` (its whole cluster, once) by a random
-    /// vector of length `amp`. With `last_resort` (the extra rounds), the
-    /// members of a stuck cluster move one by one (each is non-singular:
-    /// consistent in its own charts).
-    fn round<const N: usize>(
-        &mut self,
-        local: &mut LocalMap<N, D>,
-        todo: &[u32],
-        amp: f64,
-        last_resort: bool,
-    ) where
+    /// vector of length `amp` (into `touched` and `deltas`). With
+    /// `last_resort` (the extra rounds), the members of a stuck cluster
+    /// move one by one (each is non-singular: consistent in its own
+    /// charts).
+    fn round<const N: usize>(&mut self, todo: &[u32], amp: f64, last_resort: bool)
+    where
         Dim<N, D>: Predicates<N, D>,
     {
         let step = <Dim<N, D>>::step;
@@ -204,8 +206,8 @@ impl<const D: usize> Mover<'_, D> {
             if let Some(axis) = self.free(v) {
                 let mut d = [0.0; D];
                 d[axis] = if self.rng.unit() < 0.5 { amp } else { -amp };
-                local.move_vertex(self.stars, v as usize, &d);
                 self.touched.push(v);
+                self.deltas.push(d);
                 self.moved_singular.insert(v);
                 continue;
             }
@@ -216,7 +218,7 @@ impl<const D: usize> Mover<'_, D> {
                 let d = step(&mut self.rng, amp);
                 self.moved[v as usize] = true;
                 self.touched.push(v);
-                local.move_vertex(self.stars, v as usize, &d);
+                self.deltas.push(d);
                 continue;
             }
             if self.done_epoch[root as usize] == self.epoch {
@@ -231,10 +233,52 @@ impl<const D: usize> Mover<'_, D> {
             for (w, r) in members {
                 self.moved[w as usize] = true;
                 self.touched.push(w);
-                local.move_vertex(self.stars, w as usize, &r.apply(&delta));
+                self.deltas.push(r.apply(&delta));
             }
         }
     }
+}
+
+/// Corners moved below which [`move_all`] runs as one task.
+const MOVE_TASK: usize = 1 << 15;
+
+/// [`LocalMap::move_vertex`] of every vertex `moved[i]` by `deltas[i]`, in
+/// that order: the simplices are cut into one range per thread and each
+/// range adds, in the moves' order, the moved corners it holds, so every
+/// corner gets the same additions in the same order whatever the cut.
+fn move_all<const N: usize, const D: usize>(
+    coords: &mut [[[f64; D]; N]],
+    stars: &Stars<D>,
+    moved: &[u32],
+    deltas: &[[f64; D]],
+) {
+    let corners: usize = moved.iter().map(|&v| stars.of(v as usize).len()).sum();
+    let parts = if corners < MOVE_TASK {
+        1
+    } else {
+        rayon::current_num_threads().max(1)
+    };
+    let len = coords.len().div_ceil(parts).max(1);
+    coords
+        .par_chunks_mut(len)
+        .enumerate()
+        .for_each(|(i, part)| {
+            let lo = i * len;
+            for (&v, delta) in moved.iter().zip(deltas) {
+                for e in stars.of(v as usize) {
+                    let Some(x) = (e.simplex as usize)
+                        .checked_sub(lo)
+                        .and_then(|s| part.get_mut(s))
+                    else {
+                        continue;
+                    };
+                    let d = e.rot.apply(delta);
+                    for (xk, dk) in x[e.corner as usize].iter_mut().zip(d) {
+                        *xk += dk;
+                    }
+                }
+            }
+        });
 }
 
 /// The free axis (reference chart) of every singular vertex that has one

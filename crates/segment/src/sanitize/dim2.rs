@@ -4,7 +4,7 @@
 use super::{Dim, Predicates};
 use crate::grid::{
     box_bounds, box_spans, dist2d_below_eps as below_eps, grid_point_near_segment, near_int,
-    segment_clear_of_grid,
+    near_int_on, segment_clear_of_grid, spanned_axes,
 };
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology};
@@ -18,7 +18,19 @@ impl Predicates<3, 2> for Dim<3, 2> {
     /// An edge is skipped unless its box, grown by `2·EPS`, holds an
     /// integer on both axes ([`box_spans`]) and one of those integer points
     /// is near its line ([`segment_clear_of_grid`]).
+    ///
+    /// A triangle whose range spans at most one axis ([`spanned_axes`]:
+    /// then no edge spans both) makes bad only its corners on that axis'
+    /// isos.
     fn mask(c: &[[f64; 2]; 3]) -> u8 {
+        let axes = spanned_axes(c);
+        if axes != 0b11 {
+            return if axes == 0 {
+                0
+            } else {
+                near_int_on(c, axes.trailing_zeros() as usize)
+            };
+        }
         let mut b = [[[0.0; 2]; 2]; 3];
         for k in 0..3 {
             for a in 0..2 {

@@ -3,8 +3,9 @@
 //! singular vertices (the 3D report counts them only).
 
 use super::{Dim, Predicates};
+use crate::grid::{near_int_on, spanned_axes};
 use crate::near::{
-    corner_bounds, edge_range, edge_spans, face_corners, near_int, segment_near_iso_line_in_box,
+    corner_bounds, edge_range, edge_spans, face_corners, segment_near_iso_line_in_box,
     triangle_near_grid_point, EDGES, FACE_EDGES,
 };
 use dualex_util::rng::SplitMix;
@@ -16,14 +17,25 @@ impl Predicates<4, 3> for Dim<4, 3> {
     /// The tests of [`crate::near::bad_vertices`]; edges whose box holds
     /// an integer on fewer than two axes, and faces whose box misses one,
     /// are skipped: they cannot be near an iso-line or a grid point.
+    ///
+    /// A tet whose range spans at most one axis ([`spanned_axes`]: then no
+    /// edge spans two, no face three) makes bad only its corners on that
+    /// axis' isos.
     fn mask(c: &[[f64; 3]; 4]) -> u8 {
-        let mut mask = 0u8;
-        for (k, p) in c.iter().enumerate() {
-            if p.iter().any(|&x| near_int(x)) {
-                mask |= 1 << k;
-            }
+        let axes = spanned_axes(c);
+        if axes & axes.wrapping_sub(1) == 0 {
+            return if axes == 0 {
+                0
+            } else {
+                near_int_on(c, axes.trailing_zeros() as usize)
+            };
         }
-        let bounds = corner_bounds(c);
+        // the other axis (if any): no corner on its isos, no span
+        let mut mask = 0u8;
+        for a in (0..3).filter(|a| axes >> a & 1 == 1) {
+            mask |= near_int_on(c, a);
+        }
+        let bounds = corner_bounds(c, axes);
         let span = edge_spans(&bounds);
         for (&[k, l], &bits) in EDGES.iter().zip(&span) {
             // fewer than two axes
@@ -34,6 +46,9 @@ impl Predicates<4, 3> for Dim<4, 3> {
             if let Some((at_k, at_l)) = segment_near_iso_line_in_box(&c[k], &c[l], &range) {
                 mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
             }
+        }
+        if axes != 0b111 {
+            return mask;
         }
         for (f, [e0, e1, e2]) in FACE_EDGES.into_iter().enumerate() {
             if span[e0] | span[e1] | span[e2] != 0b111 {

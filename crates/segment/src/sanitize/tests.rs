@@ -75,6 +75,23 @@ mod dim2 {
             );
             assert_eq!(scan.list(), want, "round {round}");
         }
+        // many vertices at once (the update's one pass over everything),
+        // some of them onto isos
+        for round in 0..4 {
+            let moved: Vec<u32> = (0..nv as u32).filter(|v| v % 4 != round).collect();
+            for &v in &moved {
+                let e = stars.of(v as usize)[0];
+                let x = local.coords[e.simplex as usize][e.corner as usize];
+                let d = if v % 3 == 0 {
+                    [x[0].round() - x[0], 0.0]
+                } else {
+                    [0.2 * rng.angle().cos(), 0.2 * rng.angle().sin()]
+                };
+                local.move_vertex(&stars, v as usize, &d);
+            }
+            scan.update(&map, &stars, &local.coords, &moved);
+            assert_eq!(scan.list(), full(&local), "many, round {round}");
+        }
     }
 
     /// The box prefilter of [`tri_mask`] never hides a grid point.
@@ -257,7 +274,7 @@ mod dim3 {
                     }
                 })
             });
-            let span = edge_spans(&corner_bounds(&c));
+            let span = edge_spans(&corner_bounds(&c, 0b111));
             for a in 0..3 {
                 for (e, &[k, l]) in EDGES.iter().enumerate() {
                     let want = spans_integer(&[&c[k], &c[l]], a);
@@ -270,6 +287,50 @@ mod dim3 {
                 }
             }
         }
+    }
+
+    /// The scan's tet test ([`Predicates::mask`], with its box filters)
+    /// equals the unfiltered tests of [`crate::near::bad_vertices`] on tets
+    /// near integers, on isos, through grid points and spanning 0–3 axes.
+    #[test]
+    fn mask_equals_unfiltered_tests() {
+        use crate::sanitize::{Dim, Predicates};
+        let mut rng = SplitMix::new(23);
+        let mut kinds = [0usize; 4];
+        for _ in 0..40000 {
+            let base: [f64; 3] = std::array::from_fn(|_| {
+                [0.2, 0.6, 0.97][(rng.unit() * 3.0) as usize] + (rng.unit() * 4.0).floor()
+            });
+            let size = [0.05, 0.3, 0.5, 1.5][(rng.unit() * 4.0) as usize];
+            let c: [[f64; 3]; 4] = std::array::from_fn(|_| {
+                std::array::from_fn(|a| {
+                    let x = base[a] + size * rng.unit();
+                    match (rng.unit() * 20.0) as u32 {
+                        0 => x.round() + EPS * (rng.unit() * 6.0 - 3.0).round(),
+                        1 => x.round(),
+                        _ => x,
+                    }
+                })
+            });
+            let mut want = 0u8;
+            for k in 0..4 {
+                want |= u8::from(c[k].iter().any(|&x| near_int(x))) << k;
+                for l in k + 1..4 {
+                    if let Some((at_k, at_l)) = segment_near_iso_line(&c[k], &c[l]) {
+                        want |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
+                    }
+                }
+            }
+            for f in 0..4 {
+                let fc = face_corners(f);
+                if triangle_near_grid_point(&fc.map(|i| c[i])) {
+                    want |= fc.iter().fold(0, |m, &i| m | 1 << i);
+                }
+            }
+            assert_eq!(<Dim<4, 3>>::mask(&c), want, "{c:?}");
+            kinds[crate::grid::spanned_axes(&c).count_ones() as usize] += 1;
+        }
+        assert!(kinds.iter().all(|&n| n > 500), "{kinds:?}");
     }
 
     /// Two fans of `k` tets around the vertical edges A–M and M–B (A, M, B
