@@ -104,6 +104,7 @@ fn hex_case(
         &out.cells,
         &g.map.positions,
         &g.map.simplices,
+        &dualex_check::topology::lone_tet_faces(&g.map.simplices),
         &geometry(mode),
     );
     if out.cells != mesh0.cells {

@@ -109,33 +109,125 @@ pub fn surface_shape<const K: usize>(n_vertices: usize, faces: &[[u32; K]]) -> S
 /// each as its place `4·tet + f` (the face opposite corner `f`), in no
 /// particular order: the callers orient and sort them. Faces are equal
 /// when their three vertices are, whatever their order.
+///
+/// Every face, its corners sorted `a ≤ b ≤ c`, is bucketed by `a` (a
+/// counting sort in tet order, into parallel arrays: the key `b << 32 |
+/// c`, the place). A bucket holds one vertex's few faces: its keys are
+/// sorted (plain `u64`s), a key met once is a boundary face, whose place
+/// is then looked up in the bucket. Buckets are read in parallel blocks,
+/// the places collected in bucket order: the result depends only on the
+/// tets, not on the threads.
 pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
-    // every face as (its sorted corners, its place), bucketed by its least
-    // corner: one run of equal corners per face, a run of one is boundary
-    let (_, faces) = bucket::sorted(tets.len(), |emit| {
-        for (i, t) in tets.iter().enumerate() {
-            for f in 0..4 {
-                let mut key = opposite_face(t, f);
-                key.sort_unstable();
-                emit(key[0] as usize, (key, 4 * i + f));
+    use rayon::prelude::*;
+    let nb = tets.len().max(1);
+    // a face's bucket: its least corner, folded beyond `nb` (only a mesh
+    // with more vertices than tets has such; `a` is compared then too)
+    let bucket = |a: u32| {
+        let a = a as usize;
+        if a < nb {
+            a
+        } else {
+            a % nb
+        }
+    };
+    let mut start = vec![0usize; nb + 1];
+    let mut folded = false;
+    for t in tets {
+        // three faces hold the least corner, the fourth the second least
+        let (lo, second, hi) = least_two_greatest(t);
+        start[bucket(lo) + 1] += 3;
+        start[bucket(second) + 1] += 1;
+        folded |= hi as usize >= nb;
+    }
+    for i in 0..nb {
+        start[i + 1] += start[i];
+    }
+    let n = start[nb];
+    // `a` is kept only when buckets are folded (then part of the key)
+    let (mut keys, mut places) = (vec![0u64; n], vec![0usize; n]);
+    let mut least = vec![0u32; if folded { n } else { 0 }];
+    let mut next = start[..nb].to_vec();
+    for (i, t) in tets.iter().enumerate() {
+        for f in 0..4 {
+            let (a, bc) = sorted_face(t, f);
+            let j = &mut next[bucket(a)];
+            (keys[*j], places[*j]) = (bc, 4 * i + f);
+            if folded {
+                least[*j] = a;
+            }
+            *j += 1;
+        }
+    }
+    drop(next);
+    let lone_in = |s: usize, e: usize, out: &mut Vec<usize>, sorted: &mut Vec<u64>| {
+        if folded {
+            let mut run: Vec<(u64, u32, usize)> =
+                (s..e).map(|j| (keys[j], least[j], places[j])).collect();
+            run.sort_unstable();
+            out.extend(
+                run.chunk_by(|x, y| (x.0, x.1) == (y.0, y.1))
+                    .filter_map(|r| (r.len() == 1).then_some(r[0].2)),
+            );
+            return;
+        }
+        sorted.clear();
+        sorted.extend_from_slice(&keys[s..e]);
+        sorted.sort_unstable();
+        for run in sorted.chunk_by(|x, y| x == y) {
+            if let [key] = run {
+                let at = keys[s..e].iter().position(|k| k == key);
+                out.extend(at.map(|j| places[s + j]));
             }
         }
-    });
-    faces
-        .chunk_by(|x, y| x.0 == y.0)
-        .filter_map(|run| match run {
-            [(_, place)] => Some(*place),
-            _ => None,
+    };
+    (0..nb.div_ceil(LONE_FACE_BLOCK))
+        .into_par_iter()
+        .flat_map_iter(|blk| {
+            let b0 = blk * LONE_FACE_BLOCK;
+            let b1 = (b0 + LONE_FACE_BLOCK).min(nb);
+            let (mut out, mut sorted) = (Vec::new(), Vec::new());
+            for b in b0..b1 {
+                lone_in(start[b], start[b + 1], &mut out, &mut sorted);
+            }
+            out
         })
         .collect()
+}
+
+/// Buckets per parallel block of [`lone_tet_faces`].
+const LONE_FACE_BLOCK: usize = 4096;
+
+/// The least, the second least (with repeats) and the greatest of `t`'s
+/// corners.
+#[inline]
+fn least_two_greatest(t: &[u32; 4]) -> (u32, u32, u32) {
+    let (a, b) = (t[0].min(t[1]), t[0].max(t[1]));
+    let (c, d) = (t[2].min(t[3]), t[2].max(t[3]));
+    (a.min(c), a.max(c).min(b.min(d)), b.max(d))
+}
+
+/// The face of `t` opposite corner `f`, its corners sorted `a ≤ b ≤ c`, as
+/// `(a, b << 32 | c)`.
+#[inline]
+fn sorted_face(t: &[u32; 4], f: usize) -> (u32, u64) {
+    let [x, y, z] = opposite_face(t, f);
+    let (lo, hi) = (x.min(y).min(z), x.max(y).max(z));
+    // the middle one: the three's xor without the least and the greatest
+    let mid = x ^ y ^ z ^ lo ^ hi;
+    (lo, u64::from(mid) << 32 | u64::from(hi))
 }
 
 /// The boundary triangles of a tet mesh (faces of exactly one tet), each
 /// read in its tet's orientation, sorted.
 pub fn tet_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
-    let mut out: Vec<[u32; 3]> = lone_tet_faces(tets)
-        .into_iter()
-        .map(|place| opposite_face(&tets[place / 4], place % 4))
+    tet_boundary_of(tets, &lone_tet_faces(tets))
+}
+
+/// [`tet_boundary`] of the faces `lone` ([`lone_tet_faces`] of `tets`).
+pub fn tet_boundary_of(tets: &[[u32; 4]], lone: &[usize]) -> Vec<[u32; 3]> {
+    let mut out: Vec<[u32; 3]> = lone
+        .iter()
+        .map(|&place| opposite_face(&tets[place / 4], place % 4))
         .collect();
     out.sort_unstable();
     out
@@ -144,9 +236,18 @@ pub fn tet_boundary(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
 /// The shape of a tet mesh: its components, and its boundary surface's
 /// Euler characteristic and components.
 pub fn tet_shape(n_vertices: usize, tets: &[[u32; 4]]) -> Shape {
-    let b = surface_shape(n_vertices, &tet_boundary(tets));
+    tet_shape_of(n_vertices, tets, &lone_tet_faces(tets))
+}
+
+/// [`tet_shape`] with the boundary faces `lone` ([`lone_tet_faces`] of
+/// `tets`) given; the components and the boundary surface in parallel.
+pub fn tet_shape_of(n_vertices: usize, tets: &[[u32; 4]], lone: &[usize]) -> Shape {
+    let (components, b) = rayon::join(
+        || cell_components(n_vertices, tets),
+        || surface_shape(n_vertices, &tet_boundary_of(tets, lone)),
+    );
     Shape {
-        components: cell_components(n_vertices, tets),
+        components,
         euler: b.euler,
         boundary_components: b.components,
     }
@@ -275,6 +376,38 @@ mod tests {
         assert!(same.matches() && same.mismatch().is_none());
     }
 
+    /// A block of `n³` cubes of 6 tets each (`DUALEX_BLOCK_N`, default 8:
+    /// `valgrind --tool=callgrind --toggle-collect='*lone_tet_faces*'` on
+    /// this test with a larger `n` measures the bucketing): `12·n²`
+    /// boundary triangles, a ball.
+    #[test]
+    fn block_boundary() {
+        let n: u32 = std::env::var("DUALEX_BLOCK_N")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(8);
+        let v = |x: u32, y: u32, z: u32| x + (n + 1) * (y + (n + 1) * z);
+        // a cube's 6 tets: the paths 0 → one axis → two axes → 7 (corner
+        // bits x = 1, y = 2, z = 4)
+        let axes = [[0, 1], [1, 0], [1, 2], [2, 1], [2, 0], [0, 2]];
+        let kuhn = axes.map(|[i, j]| [0, 1 << i, 1 << i | 1 << j, 7]);
+        let mut tets = Vec::new();
+        for (x, y, z) in
+            (0..n).flat_map(|z| (0..n).flat_map(move |y| (0..n).map(move |x| (x, y, z))))
+        {
+            let corner = |c: u32| v(x + (c & 1), y + (c >> 1 & 1), z + (c >> 2));
+            tets.extend(kuhn.iter().map(|t: &[u32; 4]| t.map(corner)));
+        }
+        let lone = lone_tet_faces(&tets);
+        assert_eq!(lone.len(), 12 * (n * n) as usize);
+        let nv = ((n + 1) * (n + 1) * (n + 1)) as usize;
+        let shape = tet_shape_of(nv, &tets, &lone);
+        assert_eq!(
+            (shape.components, shape.euler, shape.boundary_components),
+            (1, 2, 1)
+        );
+    }
+
     /// The bucketed counts equal those of hash maps (the former code) on
     /// random small meshes: repeated faces, degenerate and out-of-range
     /// cells, isolated vertices.
@@ -338,6 +471,22 @@ mod tests {
             let euler = used.len() as i64 - e + good.len() as i64;
             assert_eq!(shape.euler, euler, "{tris:?}");
             assert_eq!(shape.boundary_components == 0, once == 0, "{tris:?}");
+        }
+        // more buckets than one parallel block holds, and vertices beyond
+        // the bucket count (folded buckets)
+        for (count, n) in [
+            (9000, 40u64),
+            (3 * LONE_FACE_BLOCK, 20_000),
+            (50, 1000),
+            (2000, 8),
+            (40_000, 4000),
+        ] {
+            let tets: Vec<[u32; 4]> = (0..count).map(|_| [0; 4].map(|_| next(n))).collect();
+            assert_eq!(
+                tet_boundary(&tets),
+                reference_boundary(&tets),
+                "{count} {n}"
+            );
         }
     }
 }

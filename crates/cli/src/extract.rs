@@ -122,13 +122,14 @@ where
     let x = a.extract_args();
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage(&format!("extracting {}", A::CELLS.many));
-    // 1. extracted (unless done before), checked
-    let (mut ex, topology) = extract_checked(map, name, a, g, done_before, &mut laps)?;
+    // 1. extracted (unless done before), checked; the input's boundary
+    // found once for the check and the geometric stage
+    let (mut ex, topology, boundary) = extract_checked(map, name, a, g, done_before, &mut laps)?;
     // 2. the geometric stage (unless run on `done_before` already)
     progress.stage("geometry");
     let geo = match staged {
         Some(geo) => geo,
-        None => steps::geometry(map, &mut ex, &x.geometry.options()),
+        None => steps::geometry(map, &boundary, &mut ex, &x.geometry.options()),
     };
     laps.lap("geometry");
     let cells = (A::CELLS.one, A::CELLS.many);
@@ -170,7 +171,8 @@ where
 /// Step 1 of [`extract_map`]: the extraction (`done_before`, or made
 /// here), its validity (hexes combinatorially: those of a messy map may
 /// be geometrically inverted) and the last checks ([`crate::verify`]),
-/// with the topology compared.
+/// with the topology compared; also the input's boundary
+/// ([`steps::input_boundary`], for the geometric stage too).
 fn extract_checked<A, const N: usize, const D: usize, const K: usize>(
     map: &SimplexMap<N, D>,
     name: &str,
@@ -178,7 +180,7 @@ fn extract_checked<A, const N: usize, const D: usize, const K: usize>(
     g: &Global,
     done_before: Option<Extracted<N, D, K>>,
     laps: &mut timing::Laps,
-) -> Result<(Extracted<N, D, K>, topo::Comparison), CliError>
+) -> Result<Checked<N, D, K>, CliError>
 where
     A: ExtractCommand<N, D, K>,
     SimplexMap<N, D>: Dimension<K, D>,
@@ -192,7 +194,8 @@ where
         }
     };
     laps.lap("extract");
-    let check = steps::check(map, &ex.mesh);
+    let boundary = steps::input_boundary(map);
+    let check = steps::check(map, &boundary, &ex.mesh);
     laps.lap("check");
     let out = verify::Output {
         cell: A::CELLS.one,
@@ -209,8 +212,16 @@ where
         &ex.stats.segment().sanitize,
         strict,
     )?;
-    Ok((ex, check.topology))
+    Ok((ex, check.topology, boundary))
 }
+
+/// What [`extract_checked`] returns: the extraction, its topology
+/// compared with the input's, the input's boundary.
+type Checked<const N: usize, const D: usize, const K: usize> = (
+    Extracted<N, D, K>,
+    topo::Comparison,
+    <SimplexMap<N, D> as Dimension<K, D>>::Boundary,
+);
 
 /// The `--png` picture written (made in memory before), or the warning
 /// that the mesh is empty.

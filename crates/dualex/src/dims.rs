@@ -4,7 +4,8 @@
 //! shares with the other, and the facade's [`Stats`] of it).
 //!
 //! Input: a map and the facade's options; output: the steps' generic
-//! [`Extraction`], [`Check`] and the geometric stage's report.
+//! [`Extraction`], the input's boundary (tets: their faces of one tet),
+//! [`Check`] and the geometric stage's report.
 //! Invariants: the reports' shared half ([`SegmentStats`]) is read in one
 //! place (`report!`, [`common_stats`]), so that both dimensions say the
 //! same thing by the same field; sources keep the extraction's numbering
@@ -31,6 +32,9 @@ fn transitions(round: bool) -> TransitionOptions {
 
 impl Dimension<4, 2> for TriMap {
     type Report = QuadReport;
+    type Boundary = ();
+
+    fn input_boundary(&self) {}
 
     fn extract(&self, opts: &Options, singularities: bool) -> Result<QuadExtraction, InputError> {
         let inner = dualex_quad::QuadOptions {
@@ -43,14 +47,17 @@ impl Dimension<4, 2> for TriMap {
         dualex_quad::extract_full(self, &inner)
     }
 
-    fn check(&self, mesh: &CellMesh<4>) -> Check {
-        let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
-        let input = topo::surface_shape(self.positions.len(), &self.simplices);
+    /// The output's check and the input's shape in parallel.
+    fn check(&self, _: &(), mesh: &CellMesh<4>) -> Check {
+        let (rep, input) = rayon::join(
+            || dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells),
+            || topo::surface_shape(self.positions.len(), &self.simplices),
+        );
         let output = topo::quad_shape(&rep);
         Check::new(rep.errors(), (input, output), rep.boundary_edges)
     }
 
-    fn geometry(&self, x: &mut QuadExtraction, opts: &GeometryOptions) -> GeometryReport {
+    fn geometry(&self, _: &(), x: &mut QuadExtraction, opts: &GeometryOptions) -> GeometryReport {
         // the stage's "none" is u32::MAX, the extraction's NO_SOURCE
         let (m, s) = (&mut x.mesh, &x.sources);
         dualex_geom::quads(
@@ -66,6 +73,12 @@ impl Dimension<4, 2> for TriMap {
 
 impl Dimension<8, 3> for TetMap {
     type Report = HexReport;
+    /// The places `4·tet + f` of the faces of one tet, in no order.
+    type Boundary = Vec<usize>;
+
+    fn input_boundary(&self) -> Vec<usize> {
+        topo::lone_tet_faces(&self.simplices)
+    }
 
     /// (3D always counts its singular edges: no `singularities` switch.)
     fn extract(&self, opts: &Options, _: bool) -> Result<HexExtraction, InputError> {
@@ -79,21 +92,30 @@ impl Dimension<8, 3> for TetMap {
     }
 
     /// Combinatorial validity only: hexes of a messy map may be inverted
-    /// (the geometric stage measures them).
-    fn check(&self, mesh: &CellMesh<8>) -> Check {
-        let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
-        let input = topo::tet_shape(self.positions.len(), &self.simplices);
+    /// (the geometric stage measures them). The output's check and the
+    /// input's shape in parallel.
+    fn check(&self, lone: &Vec<usize>, mesh: &CellMesh<8>) -> Check {
+        let (rep, input) = rayon::join(
+            || dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None),
+            || topo::tet_shape_of(self.positions.len(), &self.simplices, lone),
+        );
         let output = topo::hex_shape(&rep);
         Check::new(rep.errors(), (input, output), rep.boundary_faces)
     }
 
-    fn geometry(&self, x: &mut HexExtraction, opts: &GeometryOptions) -> GeometryReport {
+    fn geometry(
+        &self,
+        lone: &Vec<usize>,
+        x: &mut HexExtraction,
+        opts: &GeometryOptions,
+    ) -> GeometryReport {
         let m = &mut x.mesh;
         dualex_geom::hexes(
             &mut m.positions,
             &m.cells,
             &self.positions,
             &self.simplices,
+            lone,
             opts,
         )
     }

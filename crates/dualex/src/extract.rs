@@ -169,12 +169,13 @@ pub(crate) fn finish<M: Dimension<K, D>, const K: usize, const D: usize>(
     opts: &Options,
     staged: Option<GeometryReport>,
 ) -> Result<Output<K, D>, Error> {
-    let check = steps::check(map, &x.mesh);
+    let boundary = steps::input_boundary(map);
+    let check = steps::check(map, &boundary, &x.mesh);
     let mut stats = x.stats.stats(&check);
     checked(&check.errors, &stats.topology, opts.strict)?;
     let geometry = match staged {
         Some(g) => g,
-        None => steps::geometry(map, &mut x, &opts.geometry),
+        None => steps::geometry(map, &boundary, &mut x, &opts.geometry),
     };
     inverted_check(&geometry, opts.strict)?;
     stats.welded_vertices = welded;

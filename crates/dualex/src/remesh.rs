@@ -391,7 +391,7 @@ fn attempt(
     let same_shape = report.is_valid() && topology::quad_shape(&report) == made_shape;
     let geometry = report
         .is_valid()
-        .then(|| steps::geometry(&map, &mut extracted, &opts.extract.geometry));
+        .then(|| steps::geometry(&map, &(), &mut extracted, &opts.extract.geometry));
     Ok(Staged {
         map,
         stats,

@@ -15,6 +15,12 @@
 //! - the geometric stage ([`geometry`], step 12): positions moved, cells
 //!   untouched.
 //!
+//! The input's boundary that both the check and the geometric stage read
+//! (a tet map's faces of one tet) is found once ([`input_boundary`]) and
+//! handed to both. It is read from the input map, which the extraction
+//! has validated; the check's judgement of the output stays its own (the
+//! output's faces and edges are counted by the checker itself).
+//!
 //! What differs by dimension (which extraction, checker, topology and
 //! geometric stage runs) is the map's [`Dimension`], one impl for
 //! [`TriMap`] (quads) and one for [`TetMap`] (hexes); what the two
@@ -101,10 +107,15 @@ impl Check {
 /// The per-dimension parts of steps 2–4, one impl per map type:
 /// [`TriMap`](crate::TriMap) → quads (`K` = 4, `D` = 2) and
 /// [`TetMap`](crate::TetMap) → hexes (8, 3), in `dims.rs`. Call them
-/// through [`extract`], [`check`] and [`geometry`].
+/// through [`extract`], [`input_boundary`], [`check`] and [`geometry`].
 pub trait Dimension<const K: usize, const D: usize> {
     /// The extraction's own report: [`QuadReport`] or [`HexReport`].
     type Report: Report;
+    /// The input's boundary as the check and the geometric stage read it
+    /// (see [`input_boundary`]).
+    type Boundary: Send;
+    /// The input's boundary (see [`input_boundary`]).
+    fn input_boundary(&self) -> Self::Boundary;
     /// Steps 1–11 (see [`extract`]).
     fn extract(
         &self,
@@ -112,10 +123,11 @@ pub trait Dimension<const K: usize, const D: usize> {
         singularities: bool,
     ) -> Result<Extraction<K, D, Self::Report>, InputError>;
     /// The last check (see [`check`]).
-    fn check(&self, mesh: &CellMesh<K>) -> Check;
+    fn check(&self, boundary: &Self::Boundary, mesh: &CellMesh<K>) -> Check;
     /// Step 12 (see [`geometry`]).
     fn geometry(
         &self,
+        boundary: &Self::Boundary,
         x: &mut Extraction<K, D, Self::Report>,
         opts: &GeometryOptions,
     ) -> GeometryReport;
@@ -148,23 +160,34 @@ pub fn extract<M: Dimension<K, D>, const K: usize, const D: usize>(
     Dimension::extract(map, opts, singularities)
 }
 
+/// The input's boundary that [`check`] and [`geometry`] both read,
+/// found once: of a tet map, its faces of one tet (their places `4·tet +
+/// f`, `dualex_check::topology::lone_tet_faces`); of a triangle map,
+/// nothing (`()`: the check's edge count and the geometric stage's curves
+/// find its boundary edges among all the edges they visit anyway).
+pub fn input_boundary<M: Dimension<K, D>, const K: usize, const D: usize>(map: &M) -> M::Boundary {
+    Dimension::input_boundary(map)
+}
+
 /// The last check: the output `mesh` of `map` checked (quads: manifold, oriented;
 /// hexes: combinatorially valid) and its topology compared with the
-/// map's.
+/// map's (whose `boundary` is [`input_boundary`]'s).
 pub fn check<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
+    boundary: &M::Boundary,
     mesh: &CellMesh<K>,
 ) -> Check {
-    Dimension::check(map, mesh)
+    Dimension::check(map, boundary, mesh)
 }
 
 /// Step 12: the geometric stage on the cells of `x` (their positions moved
 /// in place) against `map`'s surface or tets (the map `x` was extracted
-/// from).
+/// from; its `boundary` is [`input_boundary`]'s).
 pub fn geometry<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
+    boundary: &M::Boundary,
     x: &mut Extraction<K, D, M::Report>,
     opts: &GeometryOptions,
 ) -> GeometryReport {
-    Dimension::geometry(map, x, opts)
+    Dimension::geometry(map, boundary, x, opts)
 }

@@ -139,12 +139,24 @@ impl Reference {
 
     /// The reference of a tet mesh: its boundary triangles, outward.
     pub fn volume_boundary(positions: &[[f64; 3]], tets: &[[u32; 4]], feature_deg: f64) -> Self {
+        let lone = dualex_check::topology::lone_tet_faces(tets);
+        Self::volume_boundary_of(positions, tets, &lone, feature_deg)
+    }
+
+    /// [`Reference::volume_boundary`] with the boundary faces given:
+    /// `lone`, the places `4·tet + f` of the faces of one tet
+    /// (`dualex_check::topology::lone_tet_faces`, in any order).
+    pub fn volume_boundary_of(
+        positions: &[[f64; 3]],
+        tets: &[[u32; 4]],
+        lone: &[usize],
+        feature_deg: f64,
+    ) -> Self {
         use rayon::prelude::*;
         // the face opposite corner f, outward for a positive tet
         const FACE: [[usize; 3]; 4] = [[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]];
-        // a face of one tet is boundary (the checker's bucketing, not a
-        // sort of all faces), turned outward by its tet's volume
-        let mut tris: Vec<[u32; 3]> = dualex_check::topology::lone_tet_faces(tets)
+        // a face of one tet is boundary, turned outward by its tet's volume
+        let mut tris: Vec<[u32; 3]> = lone
             .par_iter()
             .map(|&place| {
                 let t = &tets[place / 4];

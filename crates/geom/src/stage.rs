@@ -109,16 +109,20 @@ pub fn quads(
 }
 
 /// The stage on a hex mesh inside the tet mesh (`volume_positions`,
-/// `tets`): boundary vertices on its boundary surface.
+/// `tets`): boundary vertices on its boundary surface, whose triangles are
+/// the tets' faces `lone` (their places `4·tet + f`, in any order:
+/// `dualex_check::topology::lone_tet_faces`, which the caller has for its
+/// check already).
 pub fn hexes(
     positions: &mut [[f64; 3]],
     cells: &[[u32; 8]],
     volume_positions: &[[f64; 3]],
     tets: &[[u32; 4]],
+    lone: &[usize],
     opts: &Options,
 ) -> Report {
     let t = Instant::now();
-    let make = || Reference::volume_boundary(volume_positions, tets, opts.feature_angle);
+    let make = || Reference::volume_boundary_of(volume_positions, tets, lone, opts.feature_angle);
     let faces = HEX_FACES;
     let mut count = std::collections::HashMap::new();
     for (h, cell) in cells.iter().enumerate() {

@@ -137,7 +137,8 @@ fn clean_meshes_are_left_bit_for_bit() {
     assert_eq!(x, p);
     let (p, h, t) = hex_grid(3);
     let mut x = p.clone();
-    let r = hexes(&mut x, &h, &p, &t, &Options::default());
+    let lone = dualex_check::topology::lone_tet_faces(&t);
+    let r = hexes(&mut x, &h, &p, &t, &lone, &Options::default());
     assert_eq!(
         (r.moved_vertices, r.before.inverted, r.boundary_off),
         (0, 0, 0)
@@ -199,7 +200,8 @@ fn tangled_hex_grid_is_untangled_with_its_boundary_on_the_cube() {
             }
         }
     }
-    let r = hexes(&mut x, &h, &p, &t, &Options::default());
+    let lone = dualex_check::topology::lone_tet_faces(&t);
+    let r = hexes(&mut x, &h, &p, &t, &lone, &Options::default());
     assert!(r.before.inverted > 10, "{:?}", r.before);
     assert_eq!(r.after.inverted, 0, "{r:?}");
     for (a, b) in x.iter().zip(&p) {
