@@ -29,6 +29,15 @@ pub fn near_int(x: f64) -> bool {
     }
 }
 
+/// [`near_int`] of `x` given its [`box_bounds`] `b`: an `x` within `EPS`
+/// of an integer `n` has `x − 2·EPS < n < x + 2·EPS`, so (the rounding of
+/// the two sums being monotone) `n` lies in `b`; an empty `b` (the usual
+/// case) answers without rounding `x` again.
+#[inline]
+pub fn near_int_in(x: f64, b: [f64; 2]) -> bool {
+    b[0] <= b[1] && near_int(x)
+}
+
 /// `[ceil(x − 2·EPS), floor(x + 2·EPS)]` up to the sign of zero: the
 /// integer bounds of `x`'s range grown by `2·EPS`, for [`box_spans`].
 #[inline]
@@ -300,6 +309,9 @@ mod tests {
                 vals.push(n + f64::from(k) * EPS);
                 vals.push(n + 0.5 + f64::from(k) * EPS);
             }
+        }
+        for &x in &vals {
+            assert_eq!(near_int_in(x, box_bounds(x)), near_int(x), "{x:e}");
         }
         fn pairs<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
             let mut bits = 0u8;

@@ -118,18 +118,20 @@ impl Simplex<3, 2> for Dim<3, 2> {
     fn pierced(p: &[[f64; 2]; 3], line: &Line<2>) -> ([Pierce; 3], usize) {
         let (mv, fixed) = (line.axis, 1 - line.axis);
         let v = line.val[fixed] as f64;
+        // each corner's offset from the iso, once
+        let d = p.map(|c| c[fixed] - v);
         let mut out = [NO_PIERCE; 3];
         let mut n = 0;
         for f in 0..3 {
-            let a = p[(f + 1) % 3];
-            let b = p[(f + 2) % 3];
-            let (da, db) = (a[fixed] - v, b[fixed] - v);
+            let (i, j) = ((f + 1) % 3, (f + 2) % 3);
+            let (da, db) = (d[i], d[j]);
             if (da > 0.0) != (db > 0.0) {
                 // the signs change an even number of times around the
                 // triangle: at most 2 crossings
+                let (a, b) = (p[i][mv], p[j][mv]);
                 out[n] = Pierce {
                     face: f,
-                    at: a[mv] + (b[mv] - a[mv]) * da / (da - db),
+                    at: a + (b - a) * da / (da - db),
                     at_corner: da == 0.0 || db == 0.0,
                 };
                 n += 1;

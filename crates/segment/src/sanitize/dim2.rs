@@ -4,7 +4,7 @@
 use super::{Dim, Predicates};
 use crate::grid::{
     box_bounds, box_spans, dist2d_below_eps as below_eps, grid_point_near_segment, near_int,
-    near_int_on, segment_clear_of_grid, spanned_axes,
+    near_int_in, near_int_on, segment_clear_of_grid, spanned_axes,
 };
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology};
@@ -39,7 +39,7 @@ impl Predicates<3, 2> for Dim<3, 2> {
         }
         let mut mask = 0u8;
         for k in 0..3 {
-            if near_int(c[k][0]) || near_int(c[k][1]) {
+            if near_int_in(c[k][0], b[k][0]) || near_int_in(c[k][1], b[k][1]) {
                 mask |= 1 << k;
             }
             let l = (k + 1) % 3;

@@ -3,7 +3,7 @@
 //! singular vertices (the 3D report counts them only).
 
 use super::{Dim, Predicates};
-use crate::grid::{near_int_on, spanned_axes};
+use crate::grid::{near_int_in, near_int_on, spanned_axes};
 use crate::near::{
     corner_bounds, edge_range, edge_spans, face_corners, segment_near_iso_line_in_box,
     triangle_near_grid_point, EDGES, FACE_EDGES,
@@ -31,11 +31,13 @@ impl Predicates<4, 3> for Dim<4, 3> {
             };
         }
         // the other axis (if any): no corner on its isos, no span
-        let mut mask = 0u8;
-        for a in (0..3).filter(|a| axes >> a & 1 == 1) {
-            mask |= near_int_on(c, a);
-        }
         let bounds = corner_bounds(c, axes);
+        let mut mask = 0u8;
+        for (k, (p, b)) in c.iter().zip(&bounds).enumerate() {
+            if p.iter().zip(b).any(|(&x, &bx)| near_int_in(x, bx)) {
+                mask |= 1 << k;
+            }
+        }
         let span = edge_spans(&bounds);
         for (&[k, l], &bits) in EDGES.iter().zip(&span) {
             // fewer than two axes
