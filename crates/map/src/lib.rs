@@ -44,6 +44,7 @@
 #![warn(missing_docs)]
 
 mod components;
+pub mod corners;
 pub mod error;
 pub mod holonomy;
 pub mod mesh;

@@ -66,36 +66,63 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
             }
             .into());
         }
-        for (i, p) in self.positions.iter().enumerate() {
-            if p.iter().any(|x| !x.is_finite()) {
-                let e = ElementKind::Vertex
-                    .at(i)
-                    .error(MapError::NonFinitePosition(*p));
-                return Err(e.into());
-            }
+        // the first bad element found in parallel, its error as the
+        // sequential loops name it
+        let bad_position = |i: usize| self.positions[i].iter().any(|x| !x.is_finite());
+        if let Some(i) = first_where(self.positions.len(), bad_position) {
+            let p = self.positions[i];
+            let e = ElementKind::Vertex
+                .at(i)
+                .error(MapError::NonFinitePosition(p));
+            return Err(e.into());
         }
+        match first_where(self.len(), |s| !self.simplex_ok(s)) {
+            Some(s) => Err(self.simplex_error(s)),
+            None => Ok(()),
+        }
+    }
+
+    /// Whether simplex `s` keeps the invariants of the module docs.
+    #[inline]
+    fn simplex_ok(&self, s: usize) -> bool {
+        let simplex = &self.simplices[s];
         let nv = self.positions.len();
-        for (s, simplex) in self.simplices.iter().enumerate() {
-            let at = |what: InputErrorKind| InputError::new(w.clone().at(s).error(what));
-            for (c, &v) in simplex.iter().enumerate() {
-                if v as usize >= nv {
-                    return Err(IndexError::RefersToVertex {
-                        owner: w.clone().at(s),
-                        corner: Some(c),
-                        vertex: v.into(),
-                        count: nv,
-                    }
-                    .into());
-                }
-                if simplex[..c].contains(&v) {
-                    return Err(at(MapError::RepeatedVertex { vertex: v }.into()));
-                }
-                if self.coords[s][c].iter().any(|x| !x.is_finite()) {
-                    return Err(at(MapError::NonFiniteMapCoordinate { corner: c }.into()));
-                }
+        let mut ok = true;
+        for c in 0..N {
+            ok &= (simplex[c] as usize) < nv;
+            for d in 0..c {
+                ok &= simplex[c] != simplex[d];
             }
         }
-        Ok(())
+        ok && self.coords[s].iter().flatten().all(|x| x.is_finite())
+    }
+
+    /// The first invariant simplex `s` breaks (module docs), in corner
+    /// order; `s` must break one.
+    #[cold]
+    fn simplex_error(&self, s: usize) -> InputError {
+        let w = ElementKind::simplex(N);
+        let nv = self.positions.len();
+        let simplex = &self.simplices[s];
+        let at = |what: InputErrorKind| InputError::new(w.clone().at(s).error(what));
+        for (c, &v) in simplex.iter().enumerate() {
+            if v as usize >= nv {
+                return IndexError::RefersToVertex {
+                    owner: w.clone().at(s),
+                    corner: Some(c),
+                    vertex: v.into(),
+                    count: nv,
+                }
+                .into();
+            }
+            if simplex[..c].contains(&v) {
+                return at(MapError::RepeatedVertex { vertex: v }.into());
+            }
+            if self.coords[s][c].iter().any(|x| !x.is_finite()) {
+                return at(MapError::NonFiniteMapCoordinate { corner: c }.into());
+            }
+        }
+        panic!("bug: simplex {s} keeps the invariants")
     }
 
     /// Vertex indices of facet `f` of simplex `s` (the corners other than `f`,
@@ -114,14 +141,22 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
     /// when it exceeds [`MAX_GRID_POINTS`] (e.g. a triangle spanning
     /// 10⁹ × 10⁹ map units): absurd maps are refused up front.
     pub fn check_grid_size(&self) -> Result<f64, InputError> {
+        // per simplex in parallel, summed in simplex order
+        let points: Vec<f64> = self
+            .coords
+            .par_iter()
+            .map(|p| {
+                let mut n = 1.0;
+                for k in 0..D {
+                    let lo = p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
+                    let hi = p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
+                    n *= hi - lo + 1.0;
+                }
+                n
+            })
+            .collect();
         let (mut total, mut largest) = (0.0f64, (0.0f64, 0usize));
-        for (s, p) in self.coords.iter().enumerate() {
-            let mut n = 1.0;
-            for k in 0..D {
-                let lo = p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
-                let hi = p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
-                n *= hi - lo + 1.0;
-            }
+        for (s, &n) in points.iter().enumerate() {
             total += n;
             if n.is_nan() || n > largest.0 {
                 largest = (n, s);
@@ -140,6 +175,16 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
     pub fn map_det(&self, s: usize) -> f64 {
         det_of::<N, D>(&self.coords[s])
     }
+}
+
+/// The least `i < len` with `bad(i)`: blocks of elements tested in
+/// parallel, the first block with one searched in order.
+fn first_where(len: usize, bad: impl Fn(usize) -> bool + Sync) -> Option<usize> {
+    const BLOCK: usize = 4096;
+    let block = (0..len.div_ceil(BLOCK))
+        .into_par_iter()
+        .find_first(|&b| (b * BLOCK..len.min((b + 1) * BLOCK)).any(&bad))?;
+    (block * BLOCK..len.min((block + 1) * BLOCK)).find(|&i| bad(i))
 }
 
 /// Determinant of the edge vectors `p1-p0, …, pD-p0` of a simplex image.

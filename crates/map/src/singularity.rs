@@ -20,9 +20,9 @@
 //! longest map edge of the simplex and `c` its largest |coordinate| (the
 //! second term is the float noise of the edge vectors of far-off maps).
 
+use crate::corners::{split, VertexCorners};
 use crate::holonomy::ridge_rotation;
 use crate::mesh::det_of;
-use crate::topology_build::vertex_corners;
 use crate::transition_derive::ulp;
 use crate::{Rot3, SimplexMap, TetMap, Topology, Transitions, TriMap};
 use rayon::prelude::*;
@@ -116,24 +116,28 @@ pub fn vertex_singularities(
     topo: &Topology<3>,
     trans: &Transitions<3, 2>,
 ) -> Vec<VertexSingularity> {
-    let (offsets, corners) = vertex_corners(&map.simplices, map.positions.len());
+    let lists = VertexCorners::build(&map.simplices, map.positions.len(), false);
     let mut out = Vec::new();
     for v in 0..map.positions.len() {
-        let ring = &corners[offsets[v] as usize..offsets[v + 1] as usize];
-        let Some(&(s0, c0)) = ring.first() else {
+        let ring = lists.of(v);
+        let Some(&first) = ring.first() else {
             continue;
         };
-        let Some(rot) = ridge_rotation(topo, trans, s0 as usize, &[c0 as usize]) else {
+        let (s0, c0) = split::<3>(first);
+        let Some(rot) = ridge_rotation(topo, trans, s0, &[c0]) else {
             continue; // boundary vertex
         };
         let turns = rot.turns();
-        let fold_free = ring.iter().all(|&(s, _)| {
-            let p = &map.coords[s as usize];
+        let fold_free = ring.iter().all(|&id| {
+            let p = &map.coords[split::<3>(id).0];
             det_of::<3, 2>(p) > 0.0 && !is_degenerate(p)
         });
         let angles: f64 = ring
             .iter()
-            .map(|&(s, c)| corner_angle(&map.coords[s as usize], c as usize))
+            .map(|&id| {
+                let (s, c) = split::<3>(id);
+                corner_angle(&map.coords[s], c)
+            })
             .sum();
         let tau = std::f64::consts::TAU;
         let q = (4.0 * (tau - angles) / tau).round() as i64;
@@ -190,14 +194,16 @@ pub fn edge_angle(r: &Rot3, dir: &[f64; 3]) -> Option<EdgeAngle> {
 /// Found around each vertex (through its corners, in tet order) among the
 /// edges to larger vertices: no global sort.
 fn first_tet_of_edges(map: &TetMap) -> Vec<(u32, u8, u8)> {
-    let (offsets, corners) = vertex_corners(&map.simplices, map.positions.len());
+    let lists = VertexCorners::build(&map.simplices, map.positions.len(), false);
     let mut out = Vec::with_capacity(map.len() * 2);
     let mut around: Vec<(u32, u32, u8, u8)> = Vec::new();
     // seen[b] == a: edge (a, b) already has its first tet
     let mut seen = vec![u32::MAX; map.positions.len()];
     for a in 0..map.positions.len() {
         around.clear();
-        for &(s, c) in &corners[offsets[a] as usize..offsets[a + 1] as usize] {
+        for &id in lists.of(a) {
+            let (s, c) = split::<4>(id);
+            let (s, c) = (s as u32, c as u8);
             let t = &map.simplices[s as usize];
             for (d, &b) in t.iter().enumerate() {
                 if b as usize > a && seen[b as usize] != a as u32 {

@@ -11,6 +11,7 @@
 //! `entries[offsets[v]..offsets[v+1]]`, first entry = reference chart
 //! (identity rotation).
 
+use crate::corners::VertexCorners;
 use crate::{topology::Topology, transition::Transitions, Rot, SimplexMap};
 
 /// One corner around a vertex.
@@ -45,6 +46,17 @@ impl<const D: usize> Stars<D> {
         trans: &Transitions<N, D>,
     ) -> Self {
         crate::star_build::build(map, topo, trans)
+    }
+
+    /// [`Self::build`] with the map's corner lists, built `indexed`
+    /// ([`VertexCorners::build`]; shared with [`Topology::build_with`]).
+    pub fn build_with<const N: usize>(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        trans: &Transitions<N, D>,
+        corners: &VertexCorners,
+    ) -> Self {
+        crate::star_build::build_with(map, topo, trans, corners)
     }
 
     /// The star of vertex `v`.

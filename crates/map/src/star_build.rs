@@ -13,7 +13,7 @@
 //! in parallel, each into its own slice of the entries (the same entries,
 //! in the same order, as one sequential walk).
 
-use crate::topology_build::vertex_corners_indexed;
+use crate::corners::{split, VertexCorners};
 use crate::{Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
@@ -33,15 +33,29 @@ pub(crate) fn build<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
 ) -> Stars<D> {
+    let corners = VertexCorners::build(&map.simplices, map.positions.len(), true);
+    build_with(map, topo, trans, &corners)
+}
+
+/// [`build`] with the map's corner lists (built `indexed`).
+pub(crate) fn build_with<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    trans: &Transitions<N, D>,
+    corners: &VertexCorners,
+) -> Stars<D> {
     let nv = map.positions.len();
-    let (offsets, corners, position) = vertex_corners_indexed(&map.simplices, nv);
+    let offsets = corners.offsets.clone();
+    let (corners, position) = (&corners.corners, &corners.position);
     let blank = StarEntry {
         simplex: 0,
         corner: 0,
         rot: Rot::IDENTITY,
     };
     let mut stars = Stars {
-        entries: vec![blank; corners.len()],
+        // every entry is written by the walks below; filled in parallel
+        // (the pages touched by both threads)
+        entries: (0..corners.len()).into_par_iter().map(|_| blank).collect(),
         offsets,
         singular: vec![false; nv],
         boundary: vec![false; nv],
@@ -68,23 +82,23 @@ pub(crate) fn build<const N: usize, const D: usize>(
             let (lo, hi) = (offsets[v] as usize, offsets[v + 1] as usize);
             let out = &mut e[lo - base..hi - base];
             let star = &corners[lo..hi];
-            (*sv, *bv) = star_of(topo, trans, star, &position, out, &mut reached);
+            (*sv, *bv) = star_of(topo, trans, star, position, out, &mut reached);
         }
     });
     stars
 }
 
-/// Walks the star of one vertex, whose corners are `corners`, into `out`
+/// Walks the star of one vertex, whose corner ids are `corners`, into `out`
 /// (one entry per corner): breadth-first from each corner not reached yet
 /// (more than one only when the topology was not checked; each new
 /// component's first simplex is its own reference chart). `position` (of
-/// [`vertex_corners_indexed`]) finds a corner in `corners`; `reached[k]`
+/// [`VertexCorners`]) finds a corner in `corners`; `reached[k]`
 /// is the entry of corner `k`, or `u32::MAX`. Returns
 /// `(singular, boundary)`.
 fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
-    corners: &[(u32, u8)],
+    corners: &[u32],
     position: &[u32],
     out: &mut [StarEntry<D>],
     reached: &mut Vec<u32>,
@@ -93,14 +107,15 @@ fn star_of<const N: usize, const D: usize>(
     reached.clear();
     reached.resize(corners.len(), u32::MAX);
     let mut len = 0;
-    for (k0, &(s0, c0)) in corners.iter().enumerate() {
+    for (k0, &id) in corners.iter().enumerate() {
         if reached[k0] != u32::MAX {
             continue;
         }
+        let (s0, c0) = split::<N>(id);
         let mut head = len;
         out[len] = StarEntry {
-            simplex: s0,
-            corner: c0,
+            simplex: s0 as u32,
+            corner: c0 as u8,
             rot: Rot::IDENTITY,
         };
         reached[k0] = len as u32;
@@ -147,7 +162,6 @@ fn star_of<const N: usize, const D: usize>(
 mod tests {
     use super::*;
     use crate::test_maps::{cone, cube_surface, edge_fan, grid, rechart, tet_cube};
-    use crate::topology_build::vertex_corners;
     use crate::TransitionOptions;
 
     /// The stars as first written: one sequential walk per vertex with a
@@ -158,7 +172,7 @@ mod tests {
         trans: &Transitions<N, D>,
     ) -> Stars<D> {
         let nv = map.positions.len();
-        let (offsets, corners) = vertex_corners(&map.simplices, nv);
+        let lists = VertexCorners::build(&map.simplices, nv, false);
         let mut stars = Stars {
             offsets: vec![0u32; nv + 1],
             entries: Vec::new(),
@@ -167,7 +181,9 @@ mod tests {
         };
         let mut seen = vec![(u32::MAX, 0u32); map.simplices.len()];
         for v in 0..nv {
-            for &(s0, c0) in &corners[offsets[v] as usize..offsets[v + 1] as usize] {
+            for &id in lists.of(v) {
+                let (s0, c0) = split::<N>(id);
+                let (s0, c0) = (s0 as u32, c0 as u8);
                 if seen[s0 as usize].0 == v as u32 {
                     continue;
                 }

@@ -9,6 +9,7 @@
 //! (`adj[adj[s][f]][adj_facet[s][f]] == s`); facet `f` is the one opposite
 //! corner `f` (see [`crate::mesh`]).
 
+use crate::corners::VertexCorners;
 use crate::{InputError, SimplexMap};
 
 /// Marks "no neighbour" (boundary facet) in [`Topology::adj`].
@@ -33,6 +34,15 @@ impl<const N: usize> Topology<N> {
     /// Builds the adjacency and checks manifoldness and orientation.
     pub fn build<const D: usize>(map: &SimplexMap<N, D>) -> Result<Self, InputError> {
         crate::topology_build::build(map)
+    }
+
+    /// [`Self::build`] with the map's corner lists, built `indexed`
+    /// ([`VertexCorners::build`]; shared with [`crate::Stars::build_with`]).
+    pub fn build_with<const D: usize>(
+        map: &SimplexMap<N, D>,
+        corners: &VertexCorners,
+    ) -> Result<Self, InputError> {
+        crate::topology_build::build_with(map, corners)
     }
 
     /// Neighbour across facet `f` of `s`, if any.

@@ -11,13 +11,24 @@
 //! Key of a facet: its sorted vertex ids (the unused last slot holds
 //! `u32::MAX`). The half-facets `(key, s·N + f)` are visited in sorted
 //! order (so the first error is the one of the least key): bucketed by
-//! their least vertex, each bucket sorted by the other vertices and the
-//! half-facet id, which is the order of one global sort.
+//! their least vertex, found through that vertex's corners
+//! ([`VertexCorners`]), each bucket sorted by the other vertices and the
+//! half-facet id, which is the order of one global sort. Blocks of
+//! vertices are bucketed and glued in parallel: a glued pair writes the
+//! other half-facet's id into a per-half-facet `mate` (each half-facet
+//! is in one bucket), each block stops at its first error and the first
+//! block's error is returned; the adjacency is then read off `mate` per
+//! simplex, in parallel.
 
+use crate::corners::{split, VertexCorners};
 use crate::error::{ElementKind, MapError};
 use crate::topology::{Topology, NONE};
 use crate::{InputError, SimplexMap};
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+
+/// A half-facet not glued (yet) in `mate`.
+const UNGLUED: u64 = u64::MAX;
 
 /// Vertices whose facet buckets are sorted by one parallel task.
 const SORT_BLOCK: usize = 4096;
@@ -45,161 +56,234 @@ pub(crate) fn sorted_facets<const N: usize>(simplices: &[[u32; N]]) -> Vec<([u32
 }
 
 /// The other vertices of a facet key (all but the least), packed into one
-/// integer in the key's order.
-#[inline]
+/// integer in the key's order ([`rest_without`] finds it without the key).
+#[cfg(test)]
 fn rest_of<const N: usize>(key: &[u32; N]) -> u64 {
     key[1..N - 1]
         .iter()
         .fold(0u64, |acc, &v| (acc << 32) | u64::from(v))
 }
 
-/// All half-facets as CSR buckets by their least vertex:
-/// `(offsets, (rest_of(key), s·N + f))`, each bucket sorted.
-fn facet_buckets<const N: usize>(
-    simplices: &[[u32; N]],
-    vertex_count: usize,
-) -> (Vec<u32>, Vec<(u64, u32)>) {
-    let least = |simplex: &[u32; N], f: usize| {
-        (0..N)
-            .filter(|&c| c != f)
-            .map(|c| simplex[c])
-            .min()
-            .unwrap_or(u32::MAX)
-    };
-    let mut offsets = vec![0u32; vertex_count + 1];
-    for simplex in simplices {
-        for f in 0..N {
-            offsets[least(simplex, f) as usize + 1] += 1;
-        }
-    }
-    for v in 0..vertex_count {
-        offsets[v + 1] += offsets[v];
-    }
-    let mut fill: Vec<u32> = offsets[..vertex_count].to_vec();
-    let mut half = vec![(0u64, 0u32); offsets[vertex_count] as usize];
-    for (s, simplex) in simplices.iter().enumerate() {
-        for f in 0..N {
-            let key = facet_key(simplex, f);
-            let slot = &mut fill[key[0] as usize];
-            half[*slot as usize] = (rest_of(&key), (s * N + f) as u32);
-            *slot += 1;
-        }
-    }
-    // the buckets of blocks of vertices sorted in parallel, each block in
-    // its own slice
-    let mut blocks: Vec<(usize, &mut [(u64, u32)])> = Vec::new();
-    let mut rest = &mut half[..];
-    for first in (0..vertex_count).step_by(SORT_BLOCK) {
-        let end = vertex_count.min(first + SORT_BLOCK);
-        let len = (offsets[end] - offsets[first]) as usize;
-        let (block, tail) = std::mem::take(&mut rest).split_at_mut(len);
-        rest = tail;
-        blocks.push((first, block));
-    }
-    blocks.into_par_iter().for_each(|(first, block)| {
-        let base = offsets[first] as usize;
-        for v in first..vertex_count.min(first + SORT_BLOCK) {
-            block[offsets[v] as usize - base..offsets[v + 1] as usize - base].sort_unstable();
-        }
-    });
-    (offsets, half)
-}
-
 pub(crate) fn build<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> Result<Topology<N>, InputError> {
-    let ns = map.simplices.len();
-    let mut topo = Topology {
-        adj: vec![[NONE; N]; ns],
-        adj_facet: vec![[0u8; N]; ns],
-        nbr_corner: vec![[[0u8; N]; N]; ns],
-        boundary_facets: 0,
-    };
-    let (offsets, half) = facet_buckets(&map.simplices, map.positions.len());
-    for v in 0..map.positions.len() {
-        let bucket = &half[offsets[v] as usize..offsets[v + 1] as usize];
-        let mut i = 0;
-        while i < bucket.len() {
-            let mut j = i + 1;
-            while j < bucket.len() && bucket[j].0 == bucket[i].0 {
-                j += 1;
+    let corners = VertexCorners::build(&map.simplices, map.positions.len(), true);
+    build_with(map, &corners)
+}
+
+/// [`build`] with the map's corner lists (built `indexed`).
+pub(crate) fn build_with<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    corners: &VertexCorners,
+) -> Result<Topology<N>, InputError> {
+    let (nv, ns) = (map.positions.len(), map.len());
+    // the other half-facet of each glued one and the corner map to it
+    // ([`pack`]), written by the bucket that holds both (each half-facet
+    // is in exactly one bucket)
+    let mate: Vec<AtomicU64> = (0..ns * N)
+        .into_par_iter()
+        .map(|_| AtomicU64::new(UNGLUED))
+        .collect();
+    let blocks: Vec<Result<usize, InputError>> = (0..nv.div_ceil(SORT_BLOCK))
+        .into_par_iter()
+        .map(|b| {
+            let mut bucket = Vec::new();
+            let mut boundary = 0;
+            for v in b * SORT_BLOCK..nv.min((b + 1) * SORT_BLOCK) {
+                facets_from(map, corners.of(v), v as u32, &mut bucket);
+                boundary += glue_bucket(map, &bucket, &mate)?;
             }
-            match j - i {
-                1 => topo.boundary_facets += 1,
-                2 => glue(
-                    map,
-                    &mut topo,
-                    bucket[i].1 as usize,
-                    bucket[i + 1].1 as usize,
-                )?,
-                n => {
-                    let h = bucket[i].1 as usize;
-                    let key = facet_key(&map.simplices[h / N], h % N);
-                    let mut owners: Vec<usize> =
-                        bucket[i..j].iter().map(|k| k.1 as usize / N).collect();
-                    owners.sort_unstable();
-                    debug_assert_eq!(owners.len(), n);
-                    return Err(MapError::NonManifoldFacet {
-                        simplex: ElementKind::simplex(N),
-                        vertices: key[..N - 1].to_vec(),
-                        simplices: owners,
-                    }
-                    .into());
+            Ok(boundary)
+        })
+        .collect();
+    let mut boundary_facets = 0;
+    for block in blocks {
+        boundary_facets += block?;
+    }
+    let (adj, (adj_facet, nbr_corner)) = mate
+        .par_chunks(N)
+        .map(|mates| {
+            let mut adj = [NONE; N];
+            let mut adj_facet = [0u8; N];
+            let mut nbr = [[0u8; N]; N];
+            for (f, m) in mates.iter().enumerate() {
+                let m = m.load(Relaxed);
+                if m != UNGLUED {
+                    let (n, g) = split::<N>(m as u32);
+                    adj[f] = n as u32;
+                    adj_facet[f] = g as u8;
+                    nbr[f] = std::array::from_fn(|c| (m >> (32 + 8 * c)) as u8);
                 }
             }
-            i = j;
-        }
-    }
-    check_vertices(map, &topo)?;
+            (adj, (adj_facet, nbr))
+        })
+        .unzip();
+    let topo = Topology {
+        adj,
+        adj_facet,
+        nbr_corner,
+        boundary_facets,
+    };
+    check_vertices(map, &topo, corners)?;
     Ok(topo)
 }
 
-/// Links half-facets `h1 = s·N + f` and `h2 = n·N + g` (same key); checks
-/// that the two simplices are consistently oriented.
-fn glue<const N: usize, const D: usize>(
+/// The half-facets `(rest, s·N + f)` ([`rest_without`]) whose least vertex is `v`,
+/// found through `v`'s corners `star`, sorted: the bucket of `v`.
+fn facets_from<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
-    topo: &mut Topology<N>,
-    h1: usize,
-    h2: usize,
-) -> Result<(), InputError> {
-    let (s, f) = (h1 / N, h1 % N);
-    let (n, g) = (h2 / N, h2 % N);
-    let (vs, vn) = (&map.simplices[s], &map.simplices[n]);
-    let mut corner_sn = [0u8; N];
-    let mut corner_ns = [0u8; N];
-    corner_sn[f] = g as u8;
-    corner_ns[g] = f as u8;
+    star: &[u32],
+    v: u32,
+    bucket: &mut Vec<(u64, u32)>,
+) {
+    bucket.clear();
+    for &id in star {
+        let (s, c) = split::<N>(id);
+        let simplex = &map.simplices[s];
+        // the facets through corner c whose other vertices are all above v:
+        // every one when no corner is below v, the one opposite the only
+        // corner below v, none when two are below
+        let (mut below, mut last) = (0, 0);
+        for (j, &w) in simplex.iter().enumerate() {
+            if w < v {
+                below += 1;
+                last = j;
+            }
+        }
+        match below {
+            0 => {
+                for f in (0..N).filter(|&f| f != c) {
+                    bucket.push((rest_without(simplex, f, c), (s * N + f) as u32));
+                }
+            }
+            1 => bucket.push((rest_without(simplex, last, c), (s * N + last) as u32)),
+            _ => {}
+        }
+    }
+    bucket.sort_unstable();
+}
+
+/// The other vertices of the key of facet `f` of `simplex` (all but its
+/// least, at corner `c`), packed into one integer in the key's order.
+#[inline]
+fn rest_without<const N: usize>(simplex: &[u32; N], f: usize, c: usize) -> u64 {
+    let mut other = [u32::MAX; N];
+    let mut k = 0;
+    for (j, &w) in simplex.iter().enumerate() {
+        if j != f && j != c {
+            other[k] = w;
+            k += 1;
+        }
+    }
+    match k {
+        1 => u64::from(other[0]),
+        2 => (u64::from(other[0].min(other[1])) << 32) | u64::from(other[0].max(other[1])),
+        _ => {
+            other[..k].sort_unstable();
+            other[..k]
+                .iter()
+                .fold(0u64, |acc, &w| (acc << 32) | u64::from(w))
+        }
+    }
+}
+
+/// Glues the pairs of a sorted bucket (writes `mate`), checking that each
+/// pair is consistently oriented; returns the number of boundary facets,
+/// or the bucket's first error in key order.
+fn glue_bucket<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    bucket: &[(u64, u32)],
+    mate: &[AtomicU64],
+) -> Result<usize, InputError> {
+    let mut boundary = 0;
+    let mut i = 0;
+    while i < bucket.len() {
+        let mut j = i + 1;
+        while j < bucket.len() && bucket[j].0 == bucket[i].0 {
+            j += 1;
+        }
+        match j - i {
+            1 => boundary += 1,
+            2 => {
+                let (h1, h2) = (bucket[i].1, bucket[i + 1].1);
+                let there = check_orientation(map, h1, h2)?;
+                let mut back = [0u8; N];
+                for (c, &cn) in there.iter().enumerate() {
+                    back[cn as usize] = c as u8;
+                }
+                mate[h1 as usize].store(pack(h2, &there), Relaxed);
+                mate[h2 as usize].store(pack(h1, &back), Relaxed);
+            }
+            n => {
+                let (s, f) = split::<N>(bucket[i].1);
+                let key = facet_key(&map.simplices[s], f);
+                let mut owners: Vec<usize> =
+                    bucket[i..j].iter().map(|k| k.1 as usize / N).collect();
+                owners.sort_unstable();
+                debug_assert_eq!(owners.len(), n);
+                return Err(MapError::NonManifoldFacet {
+                    simplex: ElementKind::simplex(N),
+                    vertices: key[..N - 1].to_vec(),
+                    simplices: owners,
+                }
+                .into());
+            }
+        }
+        i = j;
+    }
+    Ok(boundary)
+}
+
+/// One glued half-facet's `mate`: the other half-facet's id in the low
+/// 32 bits, the corner map (`nbr_corner`, N ≤ 4 bytes) above.
+fn pack<const N: usize>(other: u32, corners: &[u8; N]) -> u64 {
+    corners
+        .iter()
+        .enumerate()
+        .fold(u64::from(other), |m, (c, &k)| {
+            m | u64::from(k) << (32 + 8 * c)
+        })
+}
+
+/// `map[c]`: the corner of `vn` that holds the same vertex as corner `c`
+/// of `vs`, across facet `f` of `vs` (facet `g` of `vn`); `map[f] = g`.
+fn corner_map<const N: usize>(vs: &[u32; N], f: usize, vn: &[u32; N], g: usize) -> [u8; N] {
+    let mut out = [0u8; N];
+    out[f] = g as u8;
     for c in (0..N).filter(|&c| c != f) {
         let Some(cn) = vn.iter().position(|&v| v == vs[c]) else {
-            panic!(
-                "bug: facet key matched but vertex {} is not in simplex {n}",
-                vs[c]
-            );
+            panic!("bug: facet key matched but vertex {} is not shared", vs[c]);
         };
-        corner_sn[c] = cn as u8;
-        corner_ns[cn] = c as u8;
+        out[c] = cn as u8;
     }
+    out
+}
+
+/// Checks that the simplices of half-facets `h1 = s·N + f` and
+/// `h2 = n·N + g` (same key) are consistently oriented; returns the
+/// corner map from `s` to `n` ([`corner_map`]).
+fn check_orientation<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    h1: u32,
+    h2: u32,
+) -> Result<[u8; N], InputError> {
+    let ((s, f), (n, g)) = (split::<N>(h1), split::<N>(h2));
+    let vs = &map.simplices[s];
+    let there = corner_map(vs, f, &map.simplices[n], g);
     // consistent orientation <=> putting s's apex in place of n's apex gives
-    // an odd permutation of s's corners (the two lie on opposite sides)
-    if permutation_parity(&corner_ns) == 0 {
-        let a = s.min(n);
-        let b = s.max(n);
+    // an odd permutation of s's corners (the two lie on opposite sides); a
+    // permutation and its inverse have the same parity
+    if permutation_parity(&there) == 0 {
         let mut key = [0u32; N];
         key[..N - 1].copy_from_slice(&facet_key(vs, f)[..N - 1]);
         return Err(MapError::OppositeOrientations {
             simplex: ElementKind::simplex(N),
-            simplices: [a, b],
+            simplices: [s.min(n), s.max(n)],
             vertices: key[..N - 1].to_vec(),
         }
         .into());
     }
-    topo.adj[s][f] = n as u32;
-    topo.adj[n][g] = s as u32;
-    topo.adj_facet[s][f] = g as u8;
-    topo.adj_facet[n][g] = f as u8;
-    topo.nbr_corner[s][f] = corner_sn;
-    topo.nbr_corner[n][g] = corner_ns;
-    Ok(())
+    Ok(there)
 }
 
 /// Parity (0 even, 1 odd) of a permutation of `0..N`.
@@ -215,75 +299,23 @@ fn permutation_parity<const N: usize>(p: &[u8; N]) -> u32 {
     inv % 2
 }
 
-/// The corners around each vertex, as CSR: `(offsets, (simplex, corner))`,
-/// each vertex's corners in simplex order.
-pub(crate) fn vertex_corners<const N: usize>(
-    simplices: &[[u32; N]],
-    vertex_count: usize,
-) -> (Vec<u32>, Vec<(u32, u8)>) {
-    let (offsets, corners, _) = corners_of(simplices, vertex_count, false);
-    (offsets, corners)
-}
-
-/// [`vertex_corners`], and the position of each corner `s·N + c` in its
-/// vertex's list (`corners[offsets[v] + position]`): a walk around a
-/// vertex marks what it reached in an array of the star's size, without
-/// hashing.
-pub(crate) fn vertex_corners_indexed<const N: usize>(
-    simplices: &[[u32; N]],
-    vertex_count: usize,
-) -> (Vec<u32>, Vec<(u32, u8)>, Vec<u32>) {
-    corners_of(simplices, vertex_count, true)
-}
-
-/// [`vertex_corners`], with the positions when `indexed` (else empty).
-fn corners_of<const N: usize>(
-    simplices: &[[u32; N]],
-    vertex_count: usize,
-    indexed: bool,
-) -> (Vec<u32>, Vec<(u32, u8)>, Vec<u32>) {
-    let mut offsets = vec![0u32; vertex_count + 1];
-    for simplex in simplices {
-        for &v in simplex {
-            offsets[v as usize + 1] += 1;
-        }
-    }
-    for v in 0..vertex_count {
-        offsets[v + 1] += offsets[v];
-    }
-    let mut fill: Vec<u32> = offsets[..vertex_count].to_vec();
-    let mut corners = vec![(0u32, 0u8); offsets[vertex_count] as usize];
-    let mut position = vec![0u32; if indexed { simplices.len() * N } else { 0 }];
-    for (s, simplex) in simplices.iter().enumerate() {
-        for (c, &v) in simplex.iter().enumerate() {
-            let slot = &mut fill[v as usize];
-            corners[*slot as usize] = (s as u32, c as u8);
-            if indexed {
-                position[s * N + c] = *slot - offsets[v as usize];
-            }
-            *slot += 1;
-        }
-    }
-    (offsets, corners, position)
-}
-
 /// Checks that the simplices around each vertex are connected through the
 /// facets that contain the vertex (blocks of vertices in parallel; the
 /// error names the first vertex that fails).
 fn check_vertices<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     topo: &Topology<N>,
+    corners: &VertexCorners,
 ) -> Result<(), InputError> {
     let nv = map.positions.len();
-    let (offsets, corners, position) = vertex_corners_indexed(&map.simplices, nv);
     let first_bad = (0..nv.div_ceil(SORT_BLOCK))
         .into_par_iter()
         .map(|b| {
             let mut reached = Vec::new();
             let mut stack: Vec<(usize, usize)> = Vec::new();
             (b * SORT_BLOCK..nv.min((b + 1) * SORT_BLOCK)).find(|&v| {
-                let star = &corners[offsets[v] as usize..offsets[v + 1] as usize];
-                !connected(topo, star, &position, &mut reached, &mut stack)
+                let star = corners.of(v);
+                !connected(topo, star, &corners.position, &mut reached, &mut stack)
             })
         })
         .collect::<Vec<Option<usize>>>()
@@ -300,25 +332,25 @@ fn check_vertices<const N: usize, const D: usize>(
     .into())
 }
 
-/// Whether a depth-first walk from the first corner of `star` (the corners
-/// of one vertex; `position` as in [`vertex_corners_indexed`]) across the
+/// Whether a depth-first walk from the first corner of `star` (the corner
+/// ids of one vertex; `position` as in [`VertexCorners`]) across the
 /// facets that contain the vertex reaches all of them (an empty star is
 /// connected).
 fn connected<const N: usize>(
     topo: &Topology<N>,
-    star: &[(u32, u8)],
+    star: &[u32],
     position: &[u32],
     reached: &mut Vec<bool>,
     stack: &mut Vec<(usize, usize)>,
 ) -> bool {
-    let Some(&(s0, c0)) = star.first() else {
+    let Some(&first) = star.first() else {
         return true;
     };
     reached.clear();
     reached.resize(star.len(), false);
     reached[0] = true;
     stack.clear();
-    stack.push((s0 as usize, c0 as usize));
+    stack.push(split::<N>(first));
     let mut count = 1;
     while let Some((s, c)) = stack.pop() {
         for f in (0..N).filter(|&f| f != c) {
@@ -338,108 +370,5 @@ fn connected<const N: usize>(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::TriMap;
-
-    fn tri(simplices: Vec<[u32; 3]>, nv: usize) -> TriMap {
-        TriMap {
-            positions: vec![[0.0; 3]; nv],
-            coords: vec![[[0.0; 2]; 3]; simplices.len()],
-            simplices,
-        }
-    }
-
-    #[test]
-    fn two_triangles() {
-        let m = tri(vec![[0, 1, 2], [2, 1, 3]], 4);
-        let t = Topology::build(&m).expect("valid");
-        assert_eq!(t.boundary_facets, 4);
-        // edge 1-2 is facet 0 of triangle 0 and facet 2 of triangle 1
-        assert_eq!(t.neighbour(0, 0), Some((1, 2)));
-        assert_eq!(t.neighbour(1, 2), Some((0, 0)));
-        assert_eq!(t.nbr_corner[0][0], [2, 1, 0]);
-        assert_eq!(t.neighbour(0, 1), None);
-    }
-
-    #[test]
-    fn tets_share_face() {
-        let m = crate::TetMap {
-            positions: vec![[0.0; 3]; 5],
-            simplices: vec![[0, 1, 2, 3], [1, 2, 3, 4]],
-            coords: vec![[[0.0; 3]; 4]; 2],
-        };
-        // (1,2,3,4) vs (0,1,2,3): s's apex 0 in place of 4 gives (1,2,3,0): odd
-        let t = Topology::build(&m).expect("valid");
-        assert_eq!(t.neighbour(0, 0), Some((1, 3)));
-        assert_eq!(t.nbr_corner[0][0], [3, 0, 1, 2]);
-        assert_eq!(t.boundary_facets, 6);
-        let bad = crate::TetMap {
-            simplices: vec![[0, 1, 2, 3], [2, 1, 3, 4]],
-            ..m
-        };
-        let e = Topology::build(&bad).expect_err("misoriented");
-        assert_eq!(
-            e.to_string(),
-            "tets 0 and 1 have opposite orientations across face 1-2-3"
-        );
-    }
-
-    #[test]
-    fn errors() {
-        let e = Topology::build(&tri(vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]], 5)).expect_err("nm");
-        assert_eq!(
-            e.to_string(),
-            "edge 0-1 is shared by 3 triangles (0, 1, 2): non-manifold"
-        );
-        let e = Topology::build(&tri(vec![[0, 1, 2], [1, 2, 3]], 4)).expect_err("orient");
-        assert_eq!(
-            e.to_string(),
-            "triangles 0 and 1 have opposite orientations across edge 1-2"
-        );
-        // bow tie: two fans at vertex 0
-        let e = Topology::build(&tri(vec![[0, 1, 2], [0, 3, 4]], 5)).expect_err("bow tie");
-        assert_eq!(
-            e.to_string(),
-            "vertex 0 is non-manifold: its triangles form more than one fan"
-        );
-    }
-
-    #[test]
-    fn the_first_pinched_vertex_is_named() {
-        // bow ties pinched at vertices 9000 and 5000 (blocks of 4096
-        // vertices checked in parallel): the least is reported
-        let mut simplices = Vec::new();
-        for v in [9000u32, 5000] {
-            let o = 10000 + 4 * v;
-            simplices.extend([[v, o, o + 1], [v, o + 2, o + 3]]);
-        }
-        let e = Topology::build(&tri(simplices, 50000)).expect_err("pinched");
-        assert_eq!(
-            e.to_string(),
-            "vertex 5000 is non-manifold: its triangles form more than one fan"
-        );
-    }
-
-    #[test]
-    fn tets_touching_at_a_vertex() {
-        let m = crate::TetMap {
-            positions: vec![[0.0; 3]; 7],
-            simplices: vec![[0, 1, 2, 3], [0, 4, 5, 6]],
-            coords: vec![[[0.0; 3]; 4]; 2],
-        };
-        let e = Topology::build(&m).expect_err("pinched");
-        assert_eq!(
-            e.to_string(),
-            "vertex 0 is non-manifold: its tets are not connected through the faces around it"
-        );
-    }
-
-    #[test]
-    fn parity() {
-        assert_eq!(permutation_parity(&[0u8, 1, 2]), 0);
-        assert_eq!(permutation_parity(&[1u8, 0, 2]), 1);
-        assert_eq!(permutation_parity(&[1u8, 2, 0]), 0);
-        assert_eq!(permutation_parity(&[3u8, 0, 1, 2]), 1);
-    }
-}
+#[path = "topology_build_tests.rs"]
+mod tests;

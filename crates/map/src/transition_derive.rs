@@ -76,9 +76,14 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     opts: &TransitionOptions,
 ) -> Result<(Transitions<N, D>, TransitionReport), InputError> {
     let ns = map.len();
+    // every interior entry is written below, the boundary's stay as they
+    // are: filled in parallel (the pages touched by both threads)
     let mut tr = Transitions {
-        rot: vec![[Rot::<D>::IDENTITY; N]; ns],
-        trans: vec![[[0i64; D]; N]; ns],
+        rot: (0..ns)
+            .into_par_iter()
+            .map(|_| [Rot::<D>::IDENTITY; N])
+            .collect(),
+        trans: (0..ns).into_par_iter().map(|_| [[0i64; D]; N]).collect(),
     };
     let mut rep = TransitionReport::default();
     let all = Rot::<D>::all();
@@ -86,8 +91,9 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     let mut failed: Option<(f64, f64, usize, usize)> = None;
     let mut non_identity = 0;
     // the fits of a batch in parallel, in place into one buffer reused by
-    // every batch (no copy, no new pages), then used in facet order: the
-    // first error returned is the one of the sequential loop
+    // every batch (no copy, no new pages), then read in facet order (the
+    // first error returned is the one of the sequential loop), then
+    // written into the batch's simplices in parallel
     let mut fits: Vec<[Option<FitResult<D>>; N]> = Vec::new();
     for lo in (0..ns).step_by(BATCH) {
         let hi = ns.min(lo + BATCH);
@@ -100,31 +106,33 @@ pub(crate) fn derive<const N: usize, const D: usize>(
                 *fit = mine.then(|| fit_facet(map, topo, s, f, &all, opts));
             }
         });
-        let facets = fits.iter_mut().enumerate().flat_map(|(i, slot)| {
+        for (i, slot) in fits.iter_mut().enumerate() {
             let s = lo + i;
-            slot.iter_mut()
-                .enumerate()
-                .filter_map(move |(f, fit)| Some((s, f, fit.take()?)))
-        });
-        for (s, f, fit) in facets {
-            let fit = fit.map_err(|e| *e)?;
-            non_identity += usize::from(!fit.rot.is_identity());
-            if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
-                rep.max_residual = rep.max_residual.max(fit.residual);
-                rep.worst_facet = Some((s, f));
-            }
-            if fit.residual > fit.tol {
-                if opts.rounds(fit.residual) {
-                    rep.snapped += 1;
-                } else if failed.is_none_or(|w| fit.residual > w.0) {
-                    failed = Some((fit.residual, fit.tol, s, f));
+            for (f, fit) in slot.iter_mut().enumerate() {
+                if matches!(fit, Some(Err(_))) {
+                    if let Some(Err(e)) = fit.take() {
+                        return Err(*e);
+                    }
+                }
+                let Some(Ok(fit)) = fit else { continue };
+                non_identity += usize::from(!fit.rot.is_identity());
+                if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
+                    rep.max_residual = rep.max_residual.max(fit.residual);
+                    rep.worst_facet = Some((s, f));
+                }
+                if fit.residual > fit.tol {
+                    if opts.rounds(fit.residual) {
+                        rep.snapped += 1;
+                    } else if failed.is_none_or(|w| fit.residual > w.0) {
+                        failed = Some((fit.residual, fit.tol, s, f));
+                    }
+                }
+                if let Some(cands) = fit.ambiguous.take() {
+                    ambiguous.push(Ambiguous { s, f, cands });
                 }
             }
-            set(topo, &mut tr, s, f, fit.rot, fit.rounded);
-            if let Some(cands) = fit.ambiguous {
-                ambiguous.push(Ambiguous { s, f, cands });
-            }
         }
+        write_batch(topo, &mut tr, &fits, lo);
     }
     if let Some((res, tol, s, f)) = failed {
         let n = topo.adj[s][f];
@@ -152,6 +160,58 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     Ok((tr, rep))
 }
 
+/// Writes the transitions of simplices `lo..lo + fits.len()` (in
+/// parallel, each simplex its own entries): across a facet it owns (the
+/// greater side: `(n, g) > (s, f)`) its fit, across the others the
+/// inverse of the owner's fit, which is in `fits` (same batch) or in `tr`
+/// (an earlier batch).
+fn write_batch<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    tr: &mut Transitions<N, D>,
+    fits: &[[Option<FitResult<D>>; N]],
+    lo: usize,
+) {
+    let hi = lo + fits.len();
+    let (done_rot, rot) = tr.rot.split_at_mut(lo);
+    let (done_trans, trans) = tr.trans.split_at_mut(lo);
+    let (done_rot, done_trans) = (&*done_rot, &*done_trans);
+    let fit_of = |s: usize, f: usize| match &fits[s - lo][f] {
+        Some(Ok(fit)) => (fit.rot, fit.rounded),
+        _ => panic!("bug: no fit across facet {f} of simplex {s}"),
+    };
+    rot[..hi - lo]
+        .par_iter_mut()
+        .zip(&mut trans[..hi - lo])
+        .enumerate()
+        .for_each(|(i, (rot, trans))| {
+            let s = lo + i;
+            for f in 0..N {
+                let Some((n, g)) = topo.neighbour(s, f) else {
+                    continue;
+                };
+                (rot[f], trans[f]) = if (n, g) > (s, f) {
+                    fit_of(s, f)
+                } else if n >= lo {
+                    inverse(fit_of(n, g))
+                } else {
+                    inverse((done_rot[n][g], done_trans[n][g]))
+                };
+            }
+        });
+}
+
+/// The transition back across a facet, from the one across it.
+fn inverse<const D: usize>((rot, t): (Rot<D>, [i64; D])) -> (Rot<D>, [i64; D]) {
+    // the identity is its own inverse and leaves `t` as it is
+    let (inv, back) = if rot.is_identity() {
+        (rot, t)
+    } else {
+        let inv = rot.inverse();
+        (inv, inv.apply_i(&t))
+    };
+    (inv, back.map(|x| -x))
+}
+
 /// Stores the transition across facet `f` of `s` and its inverse.
 fn set<const N: usize, const D: usize>(
     topo: &Topology<N>,
@@ -164,17 +224,9 @@ fn set<const N: usize, const D: usize>(
     let Some((n, g)) = topo.neighbour(s, f) else {
         panic!("bug: transition on boundary facet {f} of simplex {s}");
     };
-    // the identity is its own inverse and leaves `t` as it is
-    let (inv, back) = if rot.is_identity() {
-        (rot, t)
-    } else {
-        let inv = rot.inverse();
-        (inv, inv.apply_i(&t))
-    };
     tr.rot[s][f] = rot;
     tr.trans[s][f] = t;
-    tr.rot[n][g] = inv;
-    tr.trans[n][g] = back.map(|x| -x);
+    (tr.rot[n][g], tr.trans[n][g]) = inverse((rot, t));
 }
 
 /// Chooses, for each ambiguous facet, the candidate that minimises the number

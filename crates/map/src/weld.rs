@@ -11,7 +11,8 @@
 //! into a simplex is left unmerged. Afterwards unused vertices are dropped;
 //! simplices keep their order and their per-corner coordinates.
 
-use crate::topology_build::{sorted_facets, vertex_corners};
+use crate::corners::{split, VertexCorners};
+use crate::topology_build::sorted_facets;
 use crate::SimplexMap;
 use dualex_util::union_find::UnionFind;
 
@@ -135,7 +136,7 @@ fn boundary_vertices<const N: usize>(simplices: &[[u32; N]], nv: usize) -> Vec<b
         }
         return boundary;
     }
-    let (offsets, corners) = vertex_corners(simplices, nv);
+    let lists = VertexCorners::build(simplices, nv, false);
     let open: Vec<[bool; N]> = simplices
         .par_iter()
         .enumerate()
@@ -147,10 +148,9 @@ fn boundary_vertices<const N: usize>(simplices: &[[u32; N]], nv: usize) -> Vec<b
                 let Some(&v0) = facet.iter().min() else {
                     return false;
                 };
-                let star =
-                    &corners[offsets[v0 as usize] as usize..offsets[v0 as usize + 1] as usize];
-                !star.iter().any(|&(t, _)| {
-                    t as usize != s && facet.iter().all(|v| simplices[t as usize].contains(v))
+                !lists.of(v0 as usize).iter().any(|&id| {
+                    let t = split::<N>(id).0;
+                    t != s && facet.iter().all(|v| simplices[t].contains(v))
                 })
             })
         })

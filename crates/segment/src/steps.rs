@@ -45,6 +45,7 @@ use crate::split::{split_faces_traced, Pass, ToSplit};
 use crate::stats::SegmentStats;
 use crate::trace::End;
 use dualex_graph::NodeGraph;
+use dualex_map::corners::VertexCorners;
 use dualex_map::{InputError, SimplexMap, Stars, Topology, TransitionOptions, Transitions};
 use dualex_util::timing::Laps;
 use std::borrow::Cow;
@@ -203,11 +204,14 @@ pub fn model<const N: usize, const D: usize>(
     opts: &TransitionOptions,
     st: &mut SegmentStats,
 ) -> Result<Model<N, D>, InputError> {
-    let topo = Topology::build(map)?;
+    // the corner lists, built once for the topology's vertex check and
+    // the stars
+    let corners = VertexCorners::build(&map.simplices, map.positions.len(), true);
+    let topo = Topology::build_with(map, &corners)?;
     let (trans, trep) = Transitions::derive(map, &topo, opts)?;
     st.max_transition_residual = trep.max_residual;
     st.snapped_transitions = trep.snapped;
-    let stars = Stars::build(map, &topo, &trans);
+    let stars = Stars::build_with(map, &topo, &trans, &corners);
     st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
     Ok(Model { topo, trans, stars })
 }

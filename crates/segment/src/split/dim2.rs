@@ -16,6 +16,7 @@ use super::{Dim, Pass, ToSplit};
 use crate::grid::grid_point_near_segment as grid_point_near_edge;
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology, Transitions, TriMap};
+use rayon::prelude::*;
 
 impl ToSplit<3, 2> for Dim<3, 2> {
     type Singular = ();
@@ -35,8 +36,9 @@ impl ToSplit<3, 2> for Dim<3, 2> {
             local,
             ..
         } = *pass;
-        let mut out = Vec::new();
-        for (s, tri) in map.simplices.iter().enumerate() {
+        // blocks of triangles in parallel, joined in triangle order
+        let edges_of = |s: usize, out: &mut Vec<Vec<u32>>| {
+            let tri = &map.simplices[s];
             for f in 0..3 {
                 let (ca, cb) = ((f + 1) % 3, (f + 2) % 3);
                 let (a, b) = (tri[ca] as usize, tri[cb] as usize);
@@ -54,8 +56,20 @@ impl ToSplit<3, 2> for Dim<3, 2> {
                     }
                 }
             }
-        }
-        out
+        };
+        const BLOCK: usize = 8192;
+        let ns = map.simplices.len();
+        let blocks: Vec<Vec<Vec<u32>>> = (0..ns.div_ceil(BLOCK))
+            .into_par_iter()
+            .map(|b| {
+                let mut out = Vec::new();
+                for s in b * BLOCK..ns.min((b + 1) * BLOCK) {
+                    edges_of(s, &mut out);
+                }
+                out
+            })
+            .collect();
+        blocks.concat()
     }
 
     fn max_split(_input: usize, current: usize) -> usize {

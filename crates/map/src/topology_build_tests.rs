@@ -1,0 +1,172 @@
+//! Tests of [`super`]: adjacency, errors in key order, helpers.
+
+use super::*;
+use crate::TriMap;
+
+fn tri(simplices: Vec<[u32; 3]>, nv: usize) -> TriMap {
+    TriMap {
+        positions: vec![[0.0; 3]; nv],
+        coords: vec![[[0.0; 2]; 3]; simplices.len()],
+        simplices,
+    }
+}
+
+fn tets(simplices: Vec<[u32; 4]>, nv: usize) -> crate::TetMap {
+    crate::TetMap {
+        positions: vec![[0.0; 3]; nv],
+        coords: vec![[[0.0; 3]; 4]; simplices.len()],
+        simplices,
+    }
+}
+
+#[test]
+fn two_triangles() {
+    let m = tri(vec![[0, 1, 2], [2, 1, 3]], 4);
+    let t = Topology::build(&m).expect("valid");
+    assert_eq!(t.boundary_facets, 4);
+    // edge 1-2 is facet 0 of triangle 0 and facet 2 of triangle 1
+    assert_eq!(t.neighbour(0, 0), Some((1, 2)));
+    assert_eq!(t.neighbour(1, 2), Some((0, 0)));
+    assert_eq!(t.nbr_corner[0][0], [2, 1, 0]);
+    assert_eq!(t.neighbour(0, 1), None);
+}
+
+#[test]
+fn tets_share_face() {
+    let m = tets(vec![[0, 1, 2, 3], [1, 2, 3, 4]], 5);
+    // (1,2,3,4) vs (0,1,2,3): s's apex 0 in place of 4 gives (1,2,3,0): odd
+    let t = Topology::build(&m).expect("valid");
+    assert_eq!(t.neighbour(0, 0), Some((1, 3)));
+    assert_eq!(t.nbr_corner[0][0], [3, 0, 1, 2]);
+    assert_eq!(t.boundary_facets, 6);
+    let bad = crate::TetMap {
+        simplices: vec![[0, 1, 2, 3], [2, 1, 3, 4]],
+        ..m
+    };
+    let e = Topology::build(&bad).expect_err("misoriented");
+    assert_eq!(
+        e.to_string(),
+        "tets 0 and 1 have opposite orientations across face 1-2-3"
+    );
+}
+
+#[test]
+fn errors() {
+    let e = Topology::build(&tri(vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]], 5)).expect_err("nm");
+    assert_eq!(
+        e.to_string(),
+        "edge 0-1 is shared by 3 triangles (0, 1, 2): non-manifold"
+    );
+    let e = Topology::build(&tri(vec![[0, 1, 2], [1, 2, 3]], 4)).expect_err("orient");
+    assert_eq!(
+        e.to_string(),
+        "triangles 0 and 1 have opposite orientations across edge 1-2"
+    );
+    // bow tie: two fans at vertex 0
+    let e = Topology::build(&tri(vec![[0, 1, 2], [0, 3, 4]], 5)).expect_err("bow tie");
+    assert_eq!(
+        e.to_string(),
+        "vertex 0 is non-manifold: its triangles form more than one fan"
+    );
+}
+
+#[test]
+fn the_first_pinched_vertex_is_named() {
+    // bow ties pinched at vertices 9000 and 5000 (blocks of 4096
+    // vertices checked in parallel): the least is reported
+    let mut simplices = Vec::new();
+    for v in [9000u32, 5000] {
+        let o = 10000 + 4 * v;
+        simplices.extend([[v, o, o + 1], [v, o + 2, o + 3]]);
+    }
+    let e = Topology::build(&tri(simplices, 50000)).expect_err("pinched");
+    assert_eq!(
+        e.to_string(),
+        "vertex 5000 is non-manifold: its triangles form more than one fan"
+    );
+}
+
+/// The adjacency against one global sort of the half-facets.
+fn same_as_sorted<const N: usize, const D: usize>(m: &SimplexMap<N, D>) {
+    let topo = Topology::build(m).expect("valid");
+    let mut boundary = 0;
+    for group in sorted_facets(&m.simplices).chunk_by(|a, b| a.0 == b.0) {
+        match group {
+            [(_, h)] => {
+                boundary += 1;
+                let (s, f) = split::<N>(*h);
+                assert_eq!(topo.adj[s][f], NONE);
+            }
+            [(_, a), (_, b)] => {
+                let ((s, f), (n, g)) = (split::<N>(*a), split::<N>(*b));
+                assert_eq!(topo.neighbour(s, f), Some((n, g)));
+                assert_eq!(topo.neighbour(n, g), Some((s, f)));
+                assert_eq!(topo.nbr_corner[s][f][f], g as u8);
+            }
+            _ => panic!("non-manifold test map"),
+        }
+    }
+    assert_eq!(topo.boundary_facets, boundary);
+}
+
+#[test]
+fn same_adjacency_as_one_global_sort() {
+    same_as_sorted(&crate::test_maps::grid(90));
+    same_as_sorted(&crate::test_maps::tet_cube(6));
+}
+
+#[test]
+fn the_first_error_in_key_order_is_named() {
+    // a misoriented pair at vertex 9000, a non-manifold edge at vertex
+    // 5000 (blocks of 4096 vertices glued in parallel): the least key
+    let e = Topology::build(&tri(
+        vec![
+            [9000, 9001, 9002],
+            [9001, 9002, 9003],
+            [5000, 5001, 5002],
+            [5001, 5000, 5003],
+            [5000, 5001, 5004],
+        ],
+        10000,
+    ))
+    .expect_err("two errors");
+    assert_eq!(
+        e.to_string(),
+        "edge 5000-5001 is shared by 3 triangles (2, 3, 4): non-manifold"
+    );
+}
+
+#[test]
+fn tets_touching_at_a_vertex() {
+    let m = tets(vec![[0, 1, 2, 3], [0, 4, 5, 6]], 7);
+    let e = Topology::build(&m).expect_err("pinched");
+    assert_eq!(
+        e.to_string(),
+        "vertex 0 is non-manifold: its tets are not connected through the faces around it"
+    );
+}
+
+#[test]
+fn rest_without_the_key_is_the_keys_rest() {
+    for t in [[4u32, 9, 2, 7], [1, 2, 3, 4], [8, 3, 5, 0]] {
+        for f in 0..4 {
+            let key = facet_key(&t, f);
+            let c = (0..4).find(|&c| c != f && t[c] == key[0]).expect("least");
+            assert_eq!(rest_without(&t, f, c), rest_of(&key), "{t:?} facet {f}");
+        }
+        let tri = [t[0], t[1], t[2]];
+        for f in 0..3 {
+            let key = facet_key(&tri, f);
+            let c = (0..3).find(|&c| c != f && tri[c] == key[0]).expect("least");
+            assert_eq!(rest_without(&tri, f, c), rest_of(&key), "{tri:?} facet {f}");
+        }
+    }
+}
+
+#[test]
+fn parity() {
+    assert_eq!(permutation_parity(&[0u8, 1, 2]), 0);
+    assert_eq!(permutation_parity(&[1u8, 0, 2]), 1);
+    assert_eq!(permutation_parity(&[1u8, 2, 0]), 0);
+    assert_eq!(permutation_parity(&[3u8, 0, 1, 2]), 1);
+}
