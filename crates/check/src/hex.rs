@@ -30,6 +30,7 @@
 //! - the volume Euler characteristic is `V − E + F − C` over good cells.
 
 use crate::quad::{check_quad_mesh, QuadReport};
+use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
 use rayon::slice::ParallelSliceMut;
 use std::collections::BTreeMap;
@@ -187,6 +188,32 @@ fn face_uses(cells: &[[u32; 8]]) -> Vec<([u32; 4], [u32; 4])> {
     }
     faces.par_sort_unstable();
     faces
+}
+
+/// The faces of one cell (the boundary) of `hexes`, as (cell, face of
+/// [`HEX_FACES`]), sorted; faces are equal when their four vertices are,
+/// whatever their order. Every cell counts, good or not (the geometric
+/// stage's boundary vertices; [`check_hex_mesh`] judges the cells). The
+/// faces are bucketed by their least vertex ([`bucket::sorted`]), as the
+/// tets' in [`crate::topology::lone_tet_faces`].
+pub fn lone_hex_faces(hexes: &[[u32; 8]]) -> Vec<(usize, usize)> {
+    let (_, faces) = bucket::sorted(hexes.len(), |emit| {
+        for (h, cell) in hexes.iter().enumerate() {
+            for (f, face) in HEX_FACES.iter().enumerate() {
+                let key = face_key(cell, face);
+                emit(key[0] as usize, (key, h, f));
+            }
+        }
+    });
+    let mut lone: Vec<(usize, usize)> = faces
+        .chunk_by(|x, y| x.0 == y.0)
+        .filter_map(|run| match run {
+            [(_, h, f)] => Some((*h, *f)),
+            _ => None,
+        })
+        .collect();
+    lone.sort_unstable();
+    lone
 }
 
 /// Whether cycle `b` is cycle `a` traversed backwards.

@@ -122,14 +122,14 @@ where
     let x = a.extract_args();
     let progress = progress::Progress::new(map.len(), g.quiet);
     progress.stage(&format!("extracting {}", A::CELLS.many));
-    // 1. extracted (unless done before), checked; the input's boundary
-    // found once for the check and the geometric stage
-    let (mut ex, topology, boundary) = extract_checked(map, name, a, g, done_before, &mut laps)?;
+    // 1. extracted (unless done before), checked; the input's shape and
+    // boundary found once for the check and the geometric stage
+    let (mut ex, topology, input) = extract_checked(map, name, a, g, done_before, &mut laps)?;
     // 2. the geometric stage (unless run on `done_before` already)
     progress.stage("geometry");
     let geo = match staged {
         Some(geo) => geo,
-        None => steps::geometry(map, &boundary, &mut ex, &x.geometry.options()),
+        None => steps::geometry(map, &input, &mut ex, &x.geometry.options()),
     };
     laps.lap("geometry");
     let cells = (A::CELLS.one, A::CELLS.many);
@@ -171,8 +171,9 @@ where
 /// Step 1 of [`extract_map`]: the extraction (`done_before`, or made
 /// here), its validity (hexes combinatorially: those of a messy map may
 /// be geometrically inverted) and the last checks ([`crate::verify`]),
-/// with the topology compared; also the input's boundary
-/// ([`steps::input_boundary`], for the geometric stage too).
+/// with the topology compared; also the input's shape and boundary
+/// ([`steps::input_shape`], found while the extraction runs; for the
+/// geometric stage too).
 fn extract_checked<A, const N: usize, const D: usize, const K: usize>(
     map: &SimplexMap<N, D>,
     name: &str,
@@ -185,17 +186,17 @@ where
     A: ExtractCommand<N, D, K>,
     SimplexMap<N, D>: Dimension<K, D>,
 {
-    let ex = match done_before {
+    let (ex, input) = match done_before {
         // the same map, extracted with the same options already
-        Some(x) => x,
+        Some(x) => (x, steps::input_shape(map)),
         None => {
             let (opts, singularities) = a.options(g);
-            steps::extract(map, &opts, singularities).map_err(|e| e.in_file(name.to_string()))?
+            let (x, input) = steps::extract_and_survey(map, &opts, singularities);
+            (x.map_err(|e| e.in_file(name.to_string()))?, input)
         }
     };
     laps.lap("extract");
-    let boundary = steps::input_boundary(map);
-    let check = steps::check(map, &boundary, &ex.mesh);
+    let check = steps::check(map, &input, &ex.mesh);
     laps.lap("check");
     let out = verify::Output {
         cell: A::CELLS.one,
@@ -212,15 +213,15 @@ where
         &ex.stats.segment().sanitize,
         strict,
     )?;
-    Ok((ex, check.topology, boundary))
+    Ok((ex, check.topology, input))
 }
 
 /// What [`extract_checked`] returns: the extraction, its topology
-/// compared with the input's, the input's boundary.
+/// compared with the input's, the input's shape and boundary.
 type Checked<const N: usize, const D: usize, const K: usize> = (
     Extracted<N, D, K>,
     topo::Comparison,
-    <SimplexMap<N, D> as Dimension<K, D>>::Boundary,
+    steps::InputShape<<SimplexMap<N, D> as Dimension<K, D>>::Boundary>,
 );
 
 /// The `--png` picture written (made in memory before), or the warning

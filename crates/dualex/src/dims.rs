@@ -4,15 +4,15 @@
 //! shares with the other, and the facade's [`Stats`] of it).
 //!
 //! Input: a map and the facade's options; output: the steps' generic
-//! [`Extraction`], the input's boundary (tets: their faces of one tet),
-//! [`Check`] and the geometric stage's report.
+//! [`Extraction`], the input's shape and boundary ([`InputShape`]: tets,
+//! their faces of one tet), [`Check`] and the geometric stage's report.
 //! Invariants: the reports' shared half ([`SegmentStats`]) is read in one
 //! place (`report!`, [`common_stats`]), so that both dimensions say the
 //! same thing by the same field; sources keep the extraction's numbering
 //! ([`NO_SOURCE`] only for a quad closing a hole).
 
 use crate::stats::{Repairs, Stats, TopologyComparison};
-use crate::steps::{Check, Dimension, Report, SegmentStats};
+use crate::steps::{Check, Dimension, InputShape, Report, SegmentStats};
 use crate::steps::{HexExtraction, HexReport, QuadExtraction, QuadReport};
 use crate::{GeometryOptions, GeometryReport, InputError, Options, TetMap, TriMap};
 use dualex_cells::CellMesh;
@@ -34,7 +34,12 @@ impl Dimension<4, 2> for TriMap {
     type Report = QuadReport;
     type Boundary = ();
 
-    fn input_boundary(&self) {}
+    fn input_shape(&self) -> InputShape<()> {
+        InputShape {
+            shape: topo::surface_shape(self.positions.len(), &self.simplices),
+            boundary: (),
+        }
+    }
 
     fn extract(&self, opts: &Options, singularities: bool) -> Result<QuadExtraction, InputError> {
         let inner = dualex_quad::QuadOptions {
@@ -47,17 +52,18 @@ impl Dimension<4, 2> for TriMap {
         dualex_quad::extract_full(self, &inner)
     }
 
-    /// The output's check and the input's shape in parallel.
-    fn check(&self, _: &(), mesh: &CellMesh<4>) -> Check {
-        let (rep, input) = rayon::join(
-            || dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells),
-            || topo::surface_shape(self.positions.len(), &self.simplices),
-        );
-        let output = topo::quad_shape(&rep);
+    fn check(&self, input: &InputShape<()>, mesh: &CellMesh<4>) -> Check {
+        let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+        let (input, output) = (input.shape, topo::quad_shape(&rep));
         Check::new(rep.errors(), (input, output), rep.boundary_edges)
     }
 
-    fn geometry(&self, _: &(), x: &mut QuadExtraction, opts: &GeometryOptions) -> GeometryReport {
+    fn geometry(
+        &self,
+        _: &InputShape<()>,
+        x: &mut QuadExtraction,
+        opts: &GeometryOptions,
+    ) -> GeometryReport {
         // the stage's "none" is u32::MAX, the extraction's NO_SOURCE
         let (m, s) = (&mut x.mesh, &x.sources);
         dualex_geom::quads(
@@ -76,8 +82,12 @@ impl Dimension<8, 3> for TetMap {
     /// The places `4·tet + f` of the faces of one tet, in no order.
     type Boundary = Vec<usize>;
 
-    fn input_boundary(&self) -> Vec<usize> {
-        topo::lone_tet_faces(&self.simplices)
+    fn input_shape(&self) -> InputShape<Vec<usize>> {
+        let lone = topo::lone_tet_faces(&self.simplices);
+        InputShape {
+            shape: topo::tet_shape_of(self.positions.len(), &self.simplices, &lone),
+            boundary: lone,
+        }
     }
 
     /// (3D always counts its singular edges: no `singularities` switch.)
@@ -92,20 +102,17 @@ impl Dimension<8, 3> for TetMap {
     }
 
     /// Combinatorial validity only: hexes of a messy map may be inverted
-    /// (the geometric stage measures them). The output's check and the
-    /// input's shape in parallel.
-    fn check(&self, lone: &Vec<usize>, mesh: &CellMesh<8>) -> Check {
-        let (rep, input) = rayon::join(
-            || dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None),
-            || topo::tet_shape_of(self.positions.len(), &self.simplices, lone),
-        );
+    /// (the geometric stage measures them).
+    fn check(&self, input: &InputShape<Vec<usize>>, mesh: &CellMesh<8>) -> Check {
+        let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+        let input = input.shape;
         let output = topo::hex_shape(&rep);
         Check::new(rep.errors(), (input, output), rep.boundary_faces)
     }
 
     fn geometry(
         &self,
-        lone: &Vec<usize>,
+        input: &InputShape<Vec<usize>>,
         x: &mut HexExtraction,
         opts: &GeometryOptions,
     ) -> GeometryReport {
@@ -115,7 +122,7 @@ impl Dimension<8, 3> for TetMap {
             &m.cells,
             &self.positions,
             &self.simplices,
-            lone,
+            &input.boundary,
             opts,
         )
     }

@@ -20,7 +20,7 @@
 //! the output refer to the caller's map either way.
 
 use crate::stats::{GridOffset, Stats, TopologyComparison};
-use crate::steps::{self, Dimension, Extraction, Report, NO_SOURCE};
+use crate::steps::{self, Dimension, Extraction, InputShape, Report, NO_SOURCE};
 use crate::{Error, GeometryOptions, GeometryReport, TetMap, TriMap};
 use dualex_cells::CellMesh;
 use dualex_map::SimplexMap;
@@ -153,29 +153,30 @@ where
     SimplexMap<N, D>: Dimension<K, D>,
 {
     let (map, welded) = welded(map, opts.weld);
-    let x = steps::extract(&*map, opts, true)?;
-    finish(&*map, x, welded, opts, None)
+    let (x, input) = steps::extract_and_survey(&*map, opts, true);
+    finish(&*map, x?, welded, opts, None, Some(input))
 }
 
 /// What follows the extraction `x` of `map` (as [`quad`](crate::quad()),
 /// [`hex`](crate::hex()) and [`remesh`](crate::remesh()) run it): the
 /// output check, the topology comparison, the geometric stage (unless its
 /// report is `staged`: it has run on `x` already); `welded` vertices were
-/// merged before.
+/// merged before; `input`: the map's [`InputShape`] when found already.
 pub(crate) fn finish<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
     mut x: Extraction<K, D, M::Report>,
     welded: usize,
     opts: &Options,
     staged: Option<GeometryReport>,
+    input: Option<InputShape<M::Boundary>>,
 ) -> Result<Output<K, D>, Error> {
-    let boundary = steps::input_boundary(map);
-    let check = steps::check(map, &boundary, &x.mesh);
+    let input = input.unwrap_or_else(|| steps::input_shape(map));
+    let check = steps::check(map, &input, &x.mesh);
     let mut stats = x.stats.stats(&check);
     checked(&check.errors, &stats.topology, opts.strict)?;
     let geometry = match staged {
         Some(g) => g,
-        None => steps::geometry(map, &boundary, &mut x, &opts.geometry),
+        None => steps::geometry(map, &input, &mut x, &opts.geometry),
     };
     inverted_check(&geometry, opts.strict)?;
     stats.welded_vertices = welded;

@@ -264,6 +264,7 @@ pub fn remesh(
         s.welded,
         &s.opts.quad_options(),
         s.geometry,
+        None,
     )?;
     Ok(RemeshOutput {
         quads,
@@ -389,9 +390,14 @@ fn attempt(
     let m = &extracted.mesh;
     let report = dualex_check::check_quad_mesh(m.positions.len(), &m.cells);
     let same_shape = report.is_valid() && topology::quad_shape(&report) == made_shape;
+    // (the quad stage reads nothing of the input's shape: the surface's)
+    let input = steps::InputShape {
+        shape: made_shape,
+        boundary: (),
+    };
     let geometry = report
         .is_valid()
-        .then(|| steps::geometry(&map, &(), &mut extracted, &opts.extract.geometry));
+        .then(|| steps::geometry(&map, &input, &mut extracted, &opts.extract.geometry));
     Ok(Staged {
         map,
         stats,

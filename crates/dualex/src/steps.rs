@@ -15,11 +15,13 @@
 //! - the geometric stage ([`geometry`], step 12): positions moved, cells
 //!   untouched.
 //!
-//! The input's boundary that both the check and the geometric stage read
-//! (a tet map's faces of one tet) is found once ([`input_boundary`]) and
-//! handed to both. It is read from the input map, which the extraction
-//! has validated; the check's judgement of the output stays its own (the
-//! output's faces and edges are counted by the checker itself).
+//! What the check and the geometric stage read of the input map, its
+//! [`InputShape`] (the topology the check compares with the output's; a
+//! tet map's faces of one tet, the geometric stage's reference too), is
+//! found once ([`input_shape`], which depends on the map only: callers run
+//! it while the extraction runs, [`extract_and_survey`]) and handed to
+//! both. The check's judgement of the output stays its own (the output's
+//! faces and edges are counted by the checker itself).
 //!
 //! What differs by dimension (which extraction, checker, topology and
 //! geometric stage runs) is the map's [`Dimension`], one impl for
@@ -107,15 +109,15 @@ impl Check {
 /// The per-dimension parts of steps 2–4, one impl per map type:
 /// [`TriMap`](crate::TriMap) → quads (`K` = 4, `D` = 2) and
 /// [`TetMap`](crate::TetMap) → hexes (8, 3), in `dims.rs`. Call them
-/// through [`extract`], [`input_boundary`], [`check`] and [`geometry`].
+/// through [`extract`], [`input_shape`], [`check`] and [`geometry`].
 pub trait Dimension<const K: usize, const D: usize> {
     /// The extraction's own report: [`QuadReport`] or [`HexReport`].
-    type Report: Report;
-    /// The input's boundary as the check and the geometric stage read it
-    /// (see [`input_boundary`]).
+    type Report: Report + Send;
+    /// The input's boundary as the geometric stage reads it (see
+    /// [`InputShape::boundary`]).
     type Boundary: Send;
-    /// The input's boundary (see [`input_boundary`]).
-    fn input_boundary(&self) -> Self::Boundary;
+    /// The input's shape (see [`input_shape`]).
+    fn input_shape(&self) -> InputShape<Self::Boundary>;
     /// Steps 1–11 (see [`extract`]).
     fn extract(
         &self,
@@ -123,11 +125,11 @@ pub trait Dimension<const K: usize, const D: usize> {
         singularities: bool,
     ) -> Result<Extraction<K, D, Self::Report>, InputError>;
     /// The last check (see [`check`]).
-    fn check(&self, boundary: &Self::Boundary, mesh: &CellMesh<K>) -> Check;
+    fn check(&self, input: &InputShape<Self::Boundary>, mesh: &CellMesh<K>) -> Check;
     /// Step 12 (see [`geometry`]).
     fn geometry(
         &self,
-        boundary: &Self::Boundary,
+        input: &InputShape<Self::Boundary>,
         x: &mut Extraction<K, D, Self::Report>,
         opts: &GeometryOptions,
     ) -> GeometryReport;
@@ -160,34 +162,66 @@ pub fn extract<M: Dimension<K, D>, const K: usize, const D: usize>(
     Dimension::extract(map, opts, singularities)
 }
 
-/// The input's boundary that [`check`] and [`geometry`] both read,
-/// found once: of a tet map, its faces of one tet (their places `4·tet +
-/// f`, `dualex_check::topology::lone_tet_faces`); of a triangle map,
-/// nothing (`()`: the check's edge count and the geometric stage's curves
-/// find its boundary edges among all the edges they visit anyway).
-pub fn input_boundary<M: Dimension<K, D>, const K: usize, const D: usize>(map: &M) -> M::Boundary {
-    Dimension::input_boundary(map)
+/// What [`check`] and [`geometry`] read of the input map (see the
+/// module docs), found once by [`input_shape`].
+#[derive(Clone, Debug)]
+pub struct InputShape<B> {
+    /// Its components, Euler characteristic and boundary components, as
+    /// the check compares them with the output's.
+    pub shape: Shape,
+    /// Of a tet map, its faces of one tet (their places `4·tet + f`, in no
+    /// order: `dualex_check::topology::lone_tet_faces`); of a triangle
+    /// map, nothing (`()`: the geometric stage's curves find its boundary
+    /// edges among all the edges they visit anyway).
+    pub boundary: B,
+}
+
+/// The input's shape and boundary ([`InputShape`]), read by [`check`] and
+/// [`geometry`]: of the map only, so that it may be found while the
+/// extraction runs ([`extract_and_survey`]).
+pub fn input_shape<M: Dimension<K, D>, const K: usize, const D: usize>(
+    map: &M,
+) -> InputShape<M::Boundary> {
+    Dimension::input_shape(map)
+}
+
+/// [`extract`] and [`input_shape`] at once (`rayon::join`: the shape is
+/// found by a thread the extraction leaves idle, or after it); the same
+/// results as one after the other.
+#[allow(clippy::type_complexity)] // the two steps' own types
+pub fn extract_and_survey<M, const K: usize, const D: usize>(
+    map: &M,
+    opts: &Options,
+    singularities: bool,
+) -> (
+    Result<Extraction<K, D, M::Report>, InputError>,
+    InputShape<M::Boundary>,
+)
+where
+    M: Dimension<K, D> + Sync,
+{
+    rayon::join(|| extract(map, opts, singularities), || input_shape(map))
 }
 
 /// The last check: the output `mesh` of `map` checked (quads: manifold, oriented;
 /// hexes: combinatorially valid) and its topology compared with the
-/// map's (whose `boundary` is [`input_boundary`]'s).
+/// map's (`input`: [`input_shape`]'s).
 pub fn check<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
-    boundary: &M::Boundary,
+    input: &InputShape<M::Boundary>,
     mesh: &CellMesh<K>,
 ) -> Check {
-    Dimension::check(map, boundary, mesh)
+    Dimension::check(map, input, mesh)
 }
 
 /// Step 12: the geometric stage on the cells of `x` (their positions moved
 /// in place) against `map`'s surface or tets (the map `x` was extracted
-/// from; its `boundary` is [`input_boundary`]'s).
+/// from; `input`: [`input_shape`]'s).
 pub fn geometry<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
-    boundary: &M::Boundary,
+    input: &InputShape<M::Boundary>,
     x: &mut Extraction<K, D, M::Report>,
     opts: &GeometryOptions,
 ) -> GeometryReport {
-    Dimension::geometry(map, boundary, x, opts)
+    Dimension::geometry(map, input, x, opts)
 }

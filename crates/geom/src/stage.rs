@@ -123,25 +123,11 @@ pub fn hexes(
 ) -> Report {
     let t = Instant::now();
     let make = || Reference::volume_boundary_of(volume_positions, tets, lone, opts.feature_angle);
-    let faces = HEX_FACES;
-    let mut count = std::collections::HashMap::new();
-    for (h, cell) in cells.iter().enumerate() {
-        for (f, face) in faces.iter().enumerate() {
-            let mut key = face.map(|k| cell[k]);
-            key.sort_unstable();
-            count.entry(key).or_insert((0u32, h, f)).0 += 1;
-        }
-    }
     let mut on_boundary = vec![false; positions.len()];
     let mut hint = vec![[0.0; 3]; positions.len()];
-    let mut outer: Vec<(usize, usize)> = count
-        .into_values()
-        .filter(|c| c.0 == 1)
-        .map(|c| (c.1, c.2))
-        .collect();
-    outer.sort_unstable();
-    for (h, f) in outer {
-        let q = faces[f].map(|k| cells[h][k]);
+    // the faces of one hex, in (hex, face) order: the checker's
+    for (h, f) in dualex_check::hex::lone_hex_faces(cells) {
+        let q = HEX_FACES[f].map(|k| cells[h][k]);
         let p = q.map(|v| positions[v as usize]);
         let n = cross(sub(p[2], p[0]), sub(p[3], p[1]));
         for v in q {

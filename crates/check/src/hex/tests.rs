@@ -137,3 +137,38 @@ fn missing_positions_are_reported() {
     assert!(r.missing_positions);
     assert_eq!(r.inverted_cells, Some(vec![0]));
 }
+
+/// The bucketed faces of one hex equal a hash map's count (the geometric
+/// stage's former code): a block, and random cells with repeated
+/// vertices and shared faces.
+#[test]
+fn lone_hex_faces_equal_a_hash_count() {
+    fn reference(hexes: &[[u32; 8]]) -> Vec<(usize, usize)> {
+        let mut count = std::collections::HashMap::new();
+        for (h, cell) in hexes.iter().enumerate() {
+            for (f, face) in HEX_FACES.iter().enumerate() {
+                count.entry(face_key(cell, face)).or_insert((0, h, f)).0 += 1;
+            }
+        }
+        let mut out: Vec<_> = count
+            .into_values()
+            .filter(|c| c.0 == 1)
+            .map(|c| (c.1, c.2))
+            .collect();
+        out.sort_unstable();
+        out
+    }
+    let (_, h) = block(3, 2, 2);
+    assert_eq!(lone_hex_faces(&h).len(), 2 * (6 + 6 + 4));
+    assert_eq!(lone_hex_faces(&h), reference(&h));
+    let mut z = 11u32;
+    let mut next = |m: u32| {
+        z = z.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+        (z >> 8) % m
+    };
+    for case in 0..200u32 {
+        let n = 4 + case % 13;
+        let cells: Vec<[u32; 8]> = (0..case % 30).map(|_| [0; 8].map(|_| next(n))).collect();
+        assert_eq!(lone_hex_faces(&cells), reference(&cells), "{cells:?}");
+    }
+}
