@@ -22,6 +22,11 @@
 //! 11. [`doublets`]: folded hexes collapsed, chains of valence-2 interior
 //!     edges the graph did not merge dissolved (in rounds).
 //!
+//! A map with reverted nodes whose glued mesh is invalid is extracted once
+//! more, its local map relaxed in the fold regions between steps 3 and 4
+//! (`dualex_segment::relax::retry`, issue 22); that result is kept only if
+//! valid (`relax` in the stats), else the first one stands.
+//!
 //! Input: a [`TetMap`]. Output: a [`HexMesh`] (VTK order) and [`HexStats`]
 //! ([`extract_traced`]: also the input tet holding each hex's node;
 //! [`extract_full`]: also the map coordinates of its corners).
@@ -38,7 +43,8 @@ use dualex_cells::HexMesh;
 use dualex_graph::Takeover;
 use dualex_map::{InputError, TetMap, TransitionOptions};
 pub use dualex_segment::grid_offset::GridOffset;
-use dualex_segment::place::place;
+use dualex_segment::place::{place, Placed};
+use dualex_segment::relax;
 use dualex_segment::steps::{self, Segmented};
 use dualex_util::timing::Laps;
 pub use stats::HexStats;
@@ -111,12 +117,33 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
         st.singular_edge_angles = dualex_map::report::singular_edge_histogram(singular);
         (st.reverted_tets, st.degenerate_tets) = dualex_map::singularity::quality(m);
     };
+    let seg = steps::segment(map, &o, &mut st.segment, &mut laps, first_pass)?;
+    let before = st.clone();
+    let out = graph_and_mesh(seg, opts, &mut st, &mut laps);
+    // a folded map whose glued mesh is invalid: relaxed where it folds and
+    // extracted again, the result kept only if valid (issue 22)
+    let rest = |seg, s: &mut HexStats, l: &mut Laps| graph_and_mesh(seg, opts, s, l);
+    let retried = (!st.mesh_valid && st.segment.reverted_nodes > 0)
+        .then(|| relax::retry(map, &o, before, &mut laps, rest, |s| s.mesh_valid))
+        .flatten();
+    let (out, mut st) = retried.unwrap_or((out, st));
+    st.segment.time_ms = laps.into_laps();
+    Ok(out.extracted(st))
+}
+
+/// Steps 7 (untangling) to 11 on the segmented map.
+fn graph_and_mesh(
+    seg: Segmented<'_, 4, 3>,
+    opts: &HexOptions,
+    st: &mut HexStats,
+    laps: &mut Laps,
+) -> Placed<3, 8> {
     let Segmented {
         sanitized: s,
         nodes,
         mut ends,
         mut graph,
-    } = steps::segment(map, &o, &mut st.segment, &mut laps, first_pass)?;
+    } = seg;
     st.segment.untangle = Some(graph.untangle());
     laps.lap("untangle");
     // 8a: index fairing on columns (an extruded map's graph: the 2D saddle
@@ -140,12 +167,11 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     st.finish_output(&graph, &glued, &out.mesh);
     // 10: holes through columns repaired locally
     let closed = s.topo.boundary_facets == 0;
-    columns::repair_open(&graph, &glued, &ends, closed, &mut out, &mut st);
+    columns::repair_open(&graph, &glued, &ends, closed, &mut out, st);
     // 11: folded hexes collapsed, doublet chains dissolved
-    doublets::collapse_and_dissolve(&mut out, &mut st);
+    doublets::collapse_and_dissolve(&mut out, st);
     laps.lap("glue_geometry");
-    st.segment.time_ms = laps.into_laps();
-    Ok(out.extracted(st))
+    out
 }
 
 #[cfg(test)]

@@ -56,6 +56,15 @@ pub struct HexStats {
     pub edge_valence_interior: BTreeMap<usize, usize>,
     /// Output: Euler characteristic V − E + F − C.
     pub euler: i64,
+    /// Output: valid by the checker without positions (the driver's
+    /// trigger of the relaxed retry; not in the JSON).
+    pub mesh_valid: bool,
+}
+
+impl AsMut<SegmentStats> for HexStats {
+    fn as_mut(&mut self) -> &mut SegmentStats {
+        &mut self.segment
+    }
 }
 
 impl HexStats {
@@ -70,6 +79,7 @@ impl HexStats {
         // the counts of the validity checker (one piece of code for both)
         let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
         self.euler = c.euler;
+        self.mesh_valid = c.is_valid();
         self.edge_valence_interior = c
             .interior_edge_valence
             .iter()
@@ -86,6 +96,7 @@ impl HexStats {
         self.vertices = mesh.positions.len();
         let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
         self.euler = c.euler;
+        self.mesh_valid = c.is_valid();
         self.unmatched_sides = c.boundary_faces;
         // the repairs close holes and may split the boundary surface
         self.boundary_surfaces = c.boundary.components;

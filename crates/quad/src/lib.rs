@@ -26,6 +26,13 @@
 //! 11. [`doublets`]: interior valence-2 vertices the graph did not merge
 //!     (made by steps 9–10) dissolved on the mesh.
 //!
+//! A map with reverted nodes where fairing left valence-1 or 2 vertices
+//! (collapsed or dissolved: `dualex quad` warns) is extracted once more,
+//! its local map relaxed in the fold regions between steps 3 and 4
+//! (`dualex_segment::relax::retry`, issue 22); that result is kept only if
+//! valid with no such vertex (`relax` in the stats), else the first one
+//! stands.
+//!
 //! Input: a validated [`TriMap`]. Output: a [`QuadMesh`] and [`QuadStats`]
 //! ([`extract_traced`]: also the input triangle holding each quad's node;
 //! [`extract_full`]: also the map coordinates of its corners).
@@ -48,6 +55,8 @@ pub mod stats;
 use dualex_cells::QuadMesh;
 use dualex_map::{InputError, TransitionOptions, TriMap};
 pub use dualex_segment::grid_offset::GridOffset;
+use dualex_segment::place::Placed;
+use dualex_segment::relax;
 use dualex_segment::steps::{self, Segmented};
 use dualex_util::timing::Laps;
 pub use stats::QuadStats;
@@ -122,6 +131,38 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
             st.singularities = stats::input_singularities(m, model);
         }
     })?;
+    let before = st.clone();
+    let out = graph_and_mesh(seg, opts, (&mut st, &mut laps));
+    // a folded map whose degenerate vertices fairing found no partner for
+    // (the mesh may differ from the map's there): relaxed where it folds
+    // and extracted again, the result kept only if it has none and is
+    // valid (issue 22)
+    let rest = |seg, s: &mut QuadStats, l: &mut Laps| graph_and_mesh(seg, opts, (s, l));
+    let retried = (degenerate(&st) && st.segment.reverted_nodes > 0)
+        .then(|| {
+            relax::retry(map, &o, before, &mut laps, rest, |s| {
+                !degenerate(s) && s.mesh_valid
+            })
+        })
+        .flatten();
+    let (out, mut st) = retried.unwrap_or((out, st));
+    st.segment.time_ms = laps.into_laps();
+    Ok(out.extracted(st))
+}
+
+/// Whether fairing left valence-1 or 2 vertices (collapsed or dissolved
+/// in the graph: `dualex quad` warns).
+fn degenerate(st: &QuadStats) -> bool {
+    st.folded_corners_collapsed > 0 || st.doublets.dissolved > 0
+}
+
+/// Steps 7 (untangling) to 11 on the segmented map (`seg`), counted in
+/// the stats and laps (`stats`).
+fn graph_and_mesh(
+    seg: Segmented<'_, 3, 2>,
+    opts: &QuadOptions,
+    (st, laps): (&mut QuadStats, &mut Laps),
+) -> Placed<2, 4> {
     let Segmented {
         sanitized: s,
         nodes,
@@ -129,19 +170,18 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         mut graph,
     } = seg;
     // 7–8: untangled, faired, cleaned up in the graph
-    let takeover = graph_steps::run(&mut graph, &mut ends, &s, &nodes, opts, &mut st, &mut laps);
+    let takeover = graph_steps::run(&mut graph, &mut ends, &s, &nodes, opts, st, laps);
     // 9: glued and placed
-    let (glued, mut out) = gluing::glue_and_place(&mut graph, &s, &nodes, &takeover, &mut st);
+    let (glued, mut out) = gluing::glue_and_place(&mut graph, &s, &nodes, &takeover, st);
     // 10: repairs on the mesh
-    repairs::repair(&graph, &glued, &ends, &s.topo, &mut out, &mut st);
+    repairs::repair(&graph, &glued, &ends, &s.topo, &mut out, st);
     // 11: doublets the graph did not merge (only when the counts show an
     // interior vertex of valence 2)
     if opts.fairing && st.valence_interior.contains_key(&2) {
-        doublets::dissolve_left(&mut out, &mut st);
+        doublets::dissolve_left(&mut out, st);
     }
     laps.lap("glue_geometry");
-    st.segment.time_ms = laps.into_laps();
-    Ok(out.extracted(st))
+    out
 }
 
 #[cfg(test)]

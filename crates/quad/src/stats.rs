@@ -81,6 +81,15 @@ pub struct QuadStats {
     pub valence_boundary: BTreeMap<usize, usize>,
     /// Output: Euler characteristic V − E + F.
     pub euler: i64,
+    /// Output: valid by the checker (the relaxed retry's condition; not
+    /// in the JSON).
+    pub mesh_valid: bool,
+}
+
+impl AsMut<SegmentStats> for QuadStats {
+    fn as_mut(&mut self) -> &mut SegmentStats {
+        &mut self.segment
+    }
 }
 
 impl QuadStats {
@@ -102,6 +111,7 @@ impl QuadStats {
         self.valence_interior = hist(&c.interior_valence);
         self.valence_boundary = hist(&c.boundary_valence);
         self.euler = c.euler;
+        self.mesh_valid = c.is_valid();
     }
 
     /// The stats as one JSON object.

@@ -57,6 +57,8 @@
 //! - [`sanitize`]: one sanitization for both dimensions (snap, then rounds
 //!   of perturbation), its per-dimension predicates at `Dim<3, 2>` and
 //!   `Dim<4, 3>`;
+//! - [`relax`]: the drivers' retry on a folded map whose graph path
+//!   failed: the local map relaxed in its fold regions (issue 22);
 //! - [`sanitize_report`]: what sanitization did, its perturbation
 //!   schedule, and the JSON helpers of the extraction stats;
 //! - [`simplex`]: the per-dimension predicates (barycentric weights,
@@ -77,6 +79,7 @@ pub mod local;
 pub mod near;
 pub mod nodes;
 pub mod place;
+pub mod relax;
 pub mod sanitize;
 pub mod sanitize_report;
 pub mod simplex;

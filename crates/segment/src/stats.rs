@@ -1,7 +1,8 @@
 //! The shared half of the extraction stats: the counts of steps 1–7
 //! (the map model, the grid offset, the split, sanitization, the nodes,
 //! the traced sides, the opposite relation and untangling) and the stage
-//! timings, which both dimensions report under the same JSON keys.
+//! timings, which both dimensions report under the same JSON keys (and
+//! the relaxed retry's report, `relax`, when a driver kept it).
 //!
 //! Input: the numbered steps of [`crate::steps`] fill a [`SegmentStats`]
 //! (untangling: the driver). Output: its JSON keys, merged with a
@@ -10,6 +11,7 @@
 //! so the merge order does not show).
 
 use crate::grid_offset::OffsetChoice;
+use crate::relax::RelaxReport;
 use crate::sanitize_report::{offset_json, times_json, SanitizeReport};
 use dualex_graph::walk::{LinkReport, TraceReport};
 use dualex_graph::UntangleStats;
@@ -53,6 +55,9 @@ pub struct SegmentStats {
     pub untangle: Option<UntangleStats>,
     /// Wall time per stage in milliseconds.
     pub time_ms: Vec<(String, f64)>,
+    /// The drivers' relaxed retry, when its result was kept (`relax` in
+    /// the JSON, only then: [`crate::relax::retry`]).
+    pub relax: Option<RelaxReport>,
 }
 
 /// Adds the keys of `more` (an object) to `into`.
@@ -95,6 +100,9 @@ impl SegmentStats {
                 "time_ms": times_json(&self.time_ms),
             }),
         );
+        if let Some(r) = &self.relax {
+            all.insert("relax".into(), r.to_json());
+        }
         merge(&mut all, rest);
         Value::Object(all)
     }
