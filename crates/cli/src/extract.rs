@@ -172,7 +172,7 @@ where
 /// here), its validity (hexes combinatorially: those of a messy map may
 /// be geometrically inverted) and the last checks ([`crate::verify`]),
 /// with the topology compared; also the input's shape and boundary
-/// ([`steps::input_shape`], found while the extraction runs; for the
+/// ([`steps::input_shape`], found after the extraction; for the
 /// geometric stage too).
 fn extract_checked<A, const N: usize, const D: usize, const K: usize>(
     map: &SimplexMap<N, D>,
