@@ -3,11 +3,13 @@
 //! not apply, stdout clean data and the summary on stderr, outputs checked
 //! before any work, results said where people look, `generate --list` /
 //! `--size`; mesh formats (`view` of `.vtk`, `.ovm` maps and hex meshes)
-//! in `formats`.
+//! in `formats`; the warning of a map relaxed where it folds in `relax`.
 
 mod common;
 #[path = "cli/formats.rs"]
 mod formats;
+#[path = "cli/relax.rs"]
+mod relax;
 use common::*;
 use std::process::Output;
 

@@ -152,6 +152,7 @@ where
         segment.max_transition_residual,
     );
     geometry::warn(&geo, cells);
+    warnings::relaxed(segment.relax.map(|r| (r.reverted_before, r.vertices)));
     A::warn_repairs(&ex, own_map);
     if !g.quiet {
         // the command's problems, then the transitions rounded

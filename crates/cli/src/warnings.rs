@@ -28,6 +28,20 @@ pub fn degenerate(folded: usize, doublets: usize) {
     }
 }
 
+/// The warning for a map relaxed where it folded (issue 22's retry:
+/// `relax` in the stats), printed under -q too: the mesh is the one of
+/// the relaxed map there, not of the map as given. `relax`: the reverted
+/// simplices before, the vertices that could move.
+pub fn relaxed(relax: Option<(usize, usize)>) {
+    if let Some((reverted, vertices)) = relax {
+        eprintln!(
+            "dualex: warning: the map folds over {} that the untangling could not resolve; {} moved in map space until none was left reverted, and the mesh extracted again (see \"relax\" in the stats)",
+            count(reverted, "reverted simplex", "reverted simplices"),
+            count(vertices, "vertex of the fold region was", "vertices of the fold region were"),
+        );
+    }
+}
+
 /// The warning for transitions rounded without `--round-transitions`
 /// (or with it): how many, and the largest residual.
 pub fn rounded(g: &Global, rounded: usize, max_residual: f64) {
