@@ -187,16 +187,17 @@ where
     A: ExtractCommand<N, D, K>,
     SimplexMap<N, D>: Dimension<K, D>,
 {
-    let (ex, input) = match done_before {
+    let ex = match done_before {
         // the same map, extracted with the same options already
-        Some(x) => (x, steps::input_shape(map)),
+        Some(x) => x,
         None => {
             let (opts, singularities) = a.options(g);
-            let (x, input) = steps::extract_and_survey(map, &opts, singularities);
-            (x.map_err(|e| e.in_file(name.to_string()))?, input)
+            steps::extract(map, &opts, singularities).map_err(|e| e.in_file(name.to_string()))?
         }
     };
     laps.lap("extract");
+    let input = steps::input_shape(map);
+    laps.lap("input_shape");
     let check = steps::check(map, &input, &ex.mesh);
     laps.lap("check");
     let out = verify::Output {

@@ -153,8 +153,9 @@ where
     SimplexMap<N, D>: Dimension<K, D>,
 {
     let (map, welded) = welded(map, opts.weld);
-    let (x, input) = steps::extract_and_survey(&*map, opts, true);
-    finish(&*map, x?, welded, opts, None, Some(input))
+    let x = steps::extract(&*map, opts, true)?;
+    let input = steps::input_shape(&*map);
+    finish(&*map, x, welded, opts, None, Some(input))
 }
 
 /// What follows the extraction `x` of `map` (as [`quad`](crate::quad()),

@@ -18,8 +18,8 @@
 //! What the check and the geometric stage read of the input map, its
 //! [`InputShape`] (the topology the check compares with the output's; a
 //! tet map's faces of one tet, the geometric stage's reference too), is
-//! found once ([`input_shape`], which depends on the map only; after the
-//! extraction, [`extract_and_survey`]) and handed to both. The check's judgement of the output stays its own (the output's
+//! found once ([`input_shape`], which depends on the map only; callers
+//! find it after the extraction) and handed to both. The check's judgement of the output stays its own (the output's
 //! faces and edges are counted by the checker itself).
 //!
 //! What differs by dimension (which extraction, checker, topology and
@@ -176,32 +176,12 @@ pub struct InputShape<B> {
 }
 
 /// The input's shape and boundary ([`InputShape`]), read by [`check`] and
-/// [`geometry`]: of the map only ([`extract_and_survey`]).
+/// [`geometry`]: of the map only (found after the extraction: beside it,
+/// the peak memory grew, BENCHMARKS.md).
 pub fn input_shape<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
 ) -> InputShape<M::Boundary> {
     Dimension::input_shape(map)
-}
-
-/// [`extract`], then [`input_shape`] (both, whatever the extraction's
-/// outcome).
-#[allow(clippy::type_complexity)] // the two steps' own types
-pub fn extract_and_survey<M, const K: usize, const D: usize>(
-    map: &M,
-    opts: &Options,
-    singularities: bool,
-) -> (
-    Result<Extraction<K, D, M::Report>, InputError>,
-    InputShape<M::Boundary>,
-)
-where
-    M: Dimension<K, D> + Sync,
-{
-    // one after the other: found beside the extraction (`rayon::join`) the
-    // shape gained no wall time on the benchmark maps but raised the peak
-    // RSS of a 1M-triangle map by 13 % (a second thread's allocations)
-    let x = extract(map, opts, singularities);
-    (x, input_shape(map))
 }
 
 /// The last check: the output `mesh` of `map` checked (quads: manifold, oriented;
