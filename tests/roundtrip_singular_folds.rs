@@ -27,26 +27,15 @@ use std::collections::BTreeMap;
 use std::time::Instant;
 
 /// Cases that fail today (issue 22; see docs/messy-cases.md, "Folds
-/// centred on singular vertices"): run and reported, not asserted. All are
-/// ball_cutout4 at k ≥ 2, refused as a map before extraction (over half of
-/// the volume reverted; refined maps flip about half of the simplices near
-/// each centre, against 0–20 % at k = 1 and in the magnified maps,
-/// `fold_tests.rs` in dualex-gen). The refined k ≥ 2 maps of ball_cutout5,
-/// ball_hole69 and polycube_notch (degenerate cells) and the quad maps
-/// prism5_poles s696 and s918 (a pole split) came back exact once the
-/// drivers relaxed the folded map and extracted again
-/// (`dualex_segment::relax`).
-#[rustfmt::skip]
-const KNOWN_FAILING: &[&str] = &[
-    "ball_cutout4/k2/centre/s1",
-    "ball_cutout4/k2/centre/s2",
-    "ball_cutout4/k2/s1",
-    "ball_cutout4/k2/s2",
-    "ball_cutout4/k3/centre/s1",
-    "ball_cutout4/k3/centre/s2",
-    "ball_cutout4/k3/s1",
-    "ball_cutout4/k3/s2",
-];
+/// centred on singular vertices"): run and reported, not asserted. None
+/// now: the refined k ≥ 2 maps of ball_cutout5, ball_hole69 and
+/// polycube_notch (degenerate cells) and the quad maps prism5_poles s696
+/// and s918 (a pole split) came back exact once the drivers relaxed the
+/// folded map and extracted again (`dualex_segment::relax`); ball_cutout4
+/// at k ≥ 2 (over half of its volume reverted, refused as reflected
+/// charts) once the input check took a map whose signed volume stays
+/// positive for a folded one (`TetMap::check_not_reflected`).
+const KNOWN_FAILING: &[&str] = &[];
 
 /// Seeds on which the long runs found a quad map coming back wrong: 442,
 /// 483, 1209 and 1385 came back exact once other untangling orders were
