@@ -216,16 +216,7 @@ where
         return None;
     }
     seg.relax = Some(rep);
-    let sanitized = steps::sanitize(prepared, opts.seed, seg, laps);
-    let nodes = steps::nodes(&sanitized.local, seg, laps);
-    let ends = steps::trace(&sanitized, &nodes, seg);
-    let graph = steps::link(&nodes, &ends, seg, laps);
-    let segmented = Segmented {
-        sanitized,
-        nodes,
-        ends,
-        graph,
-    };
+    let segmented = steps::segment_prepared(prepared, opts.seed, seg, laps);
     let out = rest(segmented, &mut st, laps);
     good(&st).then_some((out, st))
 }

@@ -133,16 +133,30 @@ where
     check(map)?;
     let prepared = prepare(map, opts, st, first_pass)?;
     laps.lap("map");
-    let sanitized = sanitize(prepared, opts.seed, st, laps);
+    Ok(segment_prepared(prepared, opts.seed, st, laps))
+}
+
+/// Steps 4–7 in order on what steps 1–3 left (for [`segment`], and for
+/// the drivers' retry on a relaxed local map: `crate::relax::retry`).
+pub fn segment_prepared<'a, const N: usize, const D: usize>(
+    prepared: Prepared<'a, N, D>,
+    seed: u64,
+    st: &mut SegmentStats,
+    laps: &mut Laps,
+) -> Segmented<'a, N, D>
+where
+    Dim<N, D>: Dimension<N, D>,
+{
+    let sanitized = sanitize(prepared, seed, st, laps);
     let nodes = nodes(&sanitized.local, st, laps);
     let ends = trace(&sanitized, &nodes, st);
     let graph = link(&nodes, &ends, st, laps);
-    Ok(Segmented {
+    Segmented {
         sanitized,
         nodes,
         ends,
         graph,
-    })
+    }
 }
 
 /// Step 1's model of one pass.
