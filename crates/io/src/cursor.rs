@@ -89,13 +89,14 @@ impl<'a> Cursor<'a> {
     }
 
     /// The next field on this line as a finite float (the same value and
-    /// decision as [`crate::scan::finite`] on the field).
+    /// decision as [`crate::scan::finite`] on the field; `parse_field`
+    /// reads the field whole, up to whitespace or the end).
     #[inline]
     pub(crate) fn float(&mut self) -> Option<f64> {
         self.skip_blank();
         let (x, n) = crate::decimal::parse_field(self.rest())?;
         self.pos += n;
-        (self.at_field_end() && x.is_finite()).then_some(x)
+        x.is_finite().then_some(x)
     }
 
     /// The next field on this line as a decimal integer of at most

@@ -192,6 +192,54 @@ fn every_kind_of_printed_f64_parses_as_std_does() {
 }
 
 #[test]
+fn long_mantissas_parse_as_std_does() {
+    // the benchmark maps' shape ("0.19999999995343387"): 1–3 integer
+    // digits, 12–20 fraction digits, often runs of 9s or 0s; then the
+    // 19/20-digit limit with leading zeros, signs and exponents
+    let mut r = Rng(0x0dd1_7e57_5eed_1234);
+    for _ in 0..1_000_000 {
+        let mut s = String::from(r.pick(&["", "", "-", "+"]));
+        let int = 1 + r.below(3);
+        r.digits(int, &mut s);
+        s.push('.');
+        s.push_str(&"0".repeat(if r.below(4) == 0 { r.below(6) } else { 0 }));
+        let frac = 12 + r.below(9);
+        r.digits(frac, &mut s);
+        if r.below(4) == 0 {
+            s.push_str(r.pick(&["e", "E"]));
+            s.push_str(r.pick(&["", "-", "+"]));
+            s.push_str(&(r.below(330)).to_string());
+        }
+        check(&s);
+    }
+}
+
+#[test]
+fn halfway_cases_parse_as_std_does() {
+    // m·2^e with m odd of 54 bits lies halfway between two f64: written as
+    // an integer (e ≥ 0) or as m·5^k · 10^-k (e = -k), then one unit of
+    // the last digit below and above
+    let mut r = Rng(0x4a1f_3a1f_0123_4567);
+    for _ in 0..200_000 {
+        let m = u128::from((r.next() >> 10) | 1 << 53 | 1);
+        let (digits, exp) = match r.below(2) {
+            0 => (m << r.below(12), 0),
+            _ => {
+                let k = r.below(6) as u32;
+                (m * 5u128.pow(k), -(k as i64))
+            }
+        };
+        for d in [digits - 1, digits, digits + 1] {
+            check(&format!("{d}e{exp}"));
+            let t = d.to_string();
+            let point = r.below(t.len() + 1);
+            let shift = (t.len() - point) as i64;
+            check(&format!("{}.{}e{}", &t[..point], &t[point..], exp + shift));
+        }
+    }
+}
+
+#[test]
 fn hard_cases_parse_as_std_does() {
     let cases = [
         "9007199254740993",
@@ -220,6 +268,20 @@ fn hard_cases_parse_as_std_does() {
         "5.",
         ".5",
         "+.5e-0",
+        "1e-342",
+        "9999999999999999999e-362",
+        "1e308",
+        "9999999999999999999e289",
+        "0.0000000000000000000000000000001",
+        "1234567890123456789",
+        "12345678901234567890",
+        "0.1234567890123456789",
+        "0.01234567890123456789",
+        "00000000000000000000000000001.5",
+        "1.5e0000",
+        "1.5e00001",
+        "-.0e-0",
+        "7.",
     ];
     for tok in cases {
         check(tok);

@@ -29,6 +29,7 @@
 
 mod cursor;
 mod decimal;
+mod exact;
 mod fast;
 mod fmt;
 mod hexex;
@@ -40,6 +41,7 @@ mod ovm_out;
 mod ply;
 mod ply_header;
 mod ply_out;
+mod pow5;
 mod scan;
 mod vtk;
 
@@ -60,6 +62,8 @@ mod fuzz_tests;
 mod ovm_tests;
 #[cfg(test)]
 mod ply_uv_tests;
+#[cfg(test)]
+mod pow5_tests;
 #[cfg(test)]
 mod roundtrip_tests;
 #[cfg(test)]
