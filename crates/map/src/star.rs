@@ -12,7 +12,7 @@
 //! (identity rotation).
 
 use crate::corners::VertexCorners;
-use crate::{topology::Topology, transition::Transitions, Rot, SimplexMap};
+use crate::{topology::Topology, transition::Transitions, InputError, Rot, SimplexMap};
 
 /// One corner around a vertex.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -57,6 +57,19 @@ impl<const D: usize> Stars<D> {
         corners: &VertexCorners,
     ) -> Self {
         crate::star_build::build_with(map, topo, trans, corners)
+    }
+
+    /// [`Self::build_with`] on a topology built without its vertex check
+    /// ([`Topology::glue_with`]), which the walk makes: the error of
+    /// [`Topology::build`] for the first vertex whose simplices are not
+    /// connected through its facets.
+    pub fn build_checked<const N: usize>(
+        map: &SimplexMap<N, D>,
+        topo: &Topology<N>,
+        trans: &Transitions<N, D>,
+        corners: &VertexCorners,
+    ) -> Result<Self, InputError> {
+        crate::star_build::build_checked(map, topo, trans, corners)
     }
 
     /// The star of vertex `v`.

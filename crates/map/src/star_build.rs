@@ -8,13 +8,19 @@
 //! reached with two different rotations; on the boundary when one of its
 //! facets has no neighbour. Vertices used by no simplex have an empty star.
 //!
+//! On a topology built without its vertex check
+//! ([`Topology::glue_with`]) the walk makes it: a star reached in more
+//! than one piece is a non-manifold vertex, the first one named
+//! ([`build_checked`]).
+//!
 //! Every simplex around a vertex gets exactly one entry, so the stars have
 //! the layout of the vertices' corner lists: blocks of vertices are walked
 //! in parallel, each into its own slice of the entries (the same entries,
 //! in the same order, as one sequential walk).
 
 use crate::corners::{split, VertexCorners};
-use crate::{Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
+use crate::topology::NONE;
+use crate::{InputError, Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
 /// Vertices walked by one parallel task.
@@ -44,6 +50,32 @@ pub(crate) fn build_with<const N: usize, const D: usize>(
     trans: &Transitions<N, D>,
     corners: &VertexCorners,
 ) -> Stars<D> {
+    walk(map, topo, trans, corners).0
+}
+
+/// [`build_with`] on a topology whose vertices were not checked
+/// ([`Topology::glue_with`]): the error of that check
+/// ([`crate::topology_build::check_vertices`]) for the first vertex whose
+/// star the walk finds in more than one piece.
+pub(crate) fn build_checked<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    trans: &Transitions<N, D>,
+    corners: &VertexCorners,
+) -> Result<Stars<D>, InputError> {
+    match walk(map, topo, trans, corners) {
+        (_, Some(v)) => Err(crate::topology_build::non_manifold_vertex::<N>(v)),
+        (stars, None) => Ok(stars),
+    }
+}
+
+/// The stars, and the first vertex whose star is in more than one piece.
+fn walk<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    topo: &Topology<N>,
+    trans: &Transitions<N, D>,
+    corners: &VertexCorners,
+) -> (Stars<D>, Option<usize>) {
     let nv = map.positions.len();
     let offsets = corners.offsets.clone();
     let (corners, position) = (&corners.corners, &corners.position);
@@ -74,18 +106,28 @@ pub(crate) fn build_with<const N: usize, const D: usize>(
         jobs.push((first, e, s, b));
     }
     let offsets = &stars.offsets;
-    jobs.into_par_iter().for_each(|(first, e, s, b)| {
-        let base = offsets[first] as usize;
-        let mut reached = Vec::new();
-        for (i, (sv, bv)) in s.iter_mut().zip(b.iter_mut()).enumerate() {
-            let v = first + i;
-            let (lo, hi) = (offsets[v] as usize, offsets[v + 1] as usize);
-            let out = &mut e[lo - base..hi - base];
-            let star = &corners[lo..hi];
-            (*sv, *bv) = star_of(topo, trans, star, position, out, &mut reached);
-        }
-    });
-    stars
+    let pieces: Vec<Option<usize>> = jobs
+        .into_par_iter()
+        .map(|(first, e, s, b)| {
+            let base = offsets[first] as usize;
+            let mut reached = Vec::new();
+            let mut apart = None;
+            for (i, (sv, bv)) in s.iter_mut().zip(b.iter_mut()).enumerate() {
+                let v = first + i;
+                let (lo, hi) = (offsets[v] as usize, offsets[v + 1] as usize);
+                let out = &mut e[lo - base..hi - base];
+                let star = &corners[lo..hi];
+                let one;
+                (*sv, *bv, one) = star_of(topo, trans, star, position, out, &mut reached);
+                if !one && apart.is_none() {
+                    apart = Some(v);
+                }
+            }
+            apart
+        })
+        .collect();
+    let apart = pieces.into_iter().flatten().next();
+    (stars, apart)
 }
 
 /// Walks the star of one vertex, whose corner ids are `corners`, into `out`
@@ -94,7 +136,7 @@ pub(crate) fn build_with<const N: usize, const D: usize>(
 /// component's first simplex is its own reference chart). `position` (of
 /// [`VertexCorners`]) finds a corner in `corners`; `reached[k]`
 /// is the entry of corner `k`, or `u32::MAX`. Returns
-/// `(singular, boundary)`.
+/// `(singular, boundary, one piece)`.
 fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
@@ -102,8 +144,8 @@ fn star_of<const N: usize, const D: usize>(
     position: &[u32],
     out: &mut [StarEntry<D>],
     reached: &mut Vec<u32>,
-) -> (bool, bool) {
-    let (mut singular, mut boundary) = (false, false);
+) -> (bool, bool, bool) {
+    let (mut singular, mut boundary, mut pieces) = (false, false, 0);
     reached.clear();
     reached.resize(corners.len(), u32::MAX);
     let mut len = 0;
@@ -111,6 +153,7 @@ fn star_of<const N: usize, const D: usize>(
         if reached[k0] != u32::MAX {
             continue;
         }
+        pieces += 1;
         let (s0, c0) = split::<N>(id);
         let mut head = len;
         out[len] = StarEntry {
@@ -124,19 +167,22 @@ fn star_of<const N: usize, const D: usize>(
             let e = out[head];
             head += 1;
             let (s, c) = (e.simplex as usize, e.corner as usize);
+            // the rows of `s`, read once for its facets
+            let (adj, steps, nbr) = (&topo.adj[s], &trans.rot[s], &topo.nbr_corner[s]);
             for f in (0..N).filter(|&f| f != c) {
-                let Some((n, _)) = topo.neighbour(s, f) else {
+                let n = adj[f] as usize;
+                if adj[f] == NONE {
                     boundary = true;
                     continue;
-                };
+                }
                 // crossing an identity transition keeps the rotation
-                let step = &trans.rot[s][f];
+                let step = &steps[f];
                 let rot = if step.is_identity() {
                     e.rot
                 } else {
                     e.rot.then(step)
                 };
-                let corner = topo.nbr_corner[s][f][c];
+                let corner = nbr[f][c];
                 let k = position[n * N + corner as usize] as usize;
                 if reached[k] != u32::MAX {
                     if out[reached[k] as usize].rot != rot {
@@ -155,7 +201,7 @@ fn star_of<const N: usize, const D: usize>(
         }
     }
     debug_assert_eq!(len, out.len());
-    (singular, boundary)
+    (singular, boundary, pieces <= 1)
 }
 
 #[cfg(test)]

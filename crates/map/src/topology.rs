@@ -45,6 +45,27 @@ impl<const N: usize> Topology<N> {
         crate::topology_build::build_with(map, corners)
     }
 
+    /// [`Self::build_with`] without the check of the vertices (that the
+    /// simplices around each are connected through its facets): for a
+    /// caller that makes it otherwise, as [`crate::Stars::build_checked`]
+    /// does in its walk, or with [`Self::check_vertices`].
+    pub fn glue_with<const D: usize>(
+        map: &SimplexMap<N, D>,
+        corners: &VertexCorners,
+    ) -> Result<Self, InputError> {
+        crate::topology_build::glue_with(map, corners)
+    }
+
+    /// The check of the vertices that [`Self::glue_with`] leaves out: the
+    /// error of [`Self::build`] for the first vertex that fails it.
+    pub fn check_vertices<const D: usize>(
+        &self,
+        map: &SimplexMap<N, D>,
+        corners: &VertexCorners,
+    ) -> Result<(), InputError> {
+        crate::topology_build::check_vertices(map, self, corners)
+    }
+
     /// Neighbour across facet `f` of `s`, if any.
     #[inline]
     pub fn neighbour(&self, s: usize, f: usize) -> Option<(usize, usize)> {

@@ -6,7 +6,8 @@
 //! 1. a facet shared by more than two simplices (non-manifold facet);
 //! 2. two neighbours with opposite orientations across their facet;
 //! 3. a non-manifold vertex: the simplices around it are not connected
-//!    through the facets that contain it (2D: more than one fan).
+//!    through the facets that contain it (2D: more than one fan); left
+//!    out by [`glue_with`] for a caller whose stars' walk makes it.
 //!
 //! Key of a facet: its sorted vertex ids (the unused last slot holds
 //! `u32::MAX`). The half-facets `(key, s·N + f)` are visited in sorted
@@ -76,6 +77,18 @@ pub(crate) fn build_with<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     corners: &VertexCorners,
 ) -> Result<Topology<N>, InputError> {
+    let topo = glue_with(map, corners)?;
+    check_vertices(map, &topo, corners)?;
+    Ok(topo)
+}
+
+/// [`build_with`] without the vertex check (error 3 of the module docs),
+/// for a caller that makes it otherwise (the stars' walk,
+/// [`crate::Stars::build_checked`]).
+pub(crate) fn glue_with<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    corners: &VertexCorners,
+) -> Result<Topology<N>, InputError> {
     let (nv, ns) = (map.positions.len(), map.len());
     // the other half-facet of each glued one and the corner map to it
     // ([`pack`]), written by the bucket that holds both (each half-facet
@@ -118,14 +131,12 @@ pub(crate) fn build_with<const N: usize, const D: usize>(
             (adj, (adj_facet, nbr))
         })
         .unzip();
-    let topo = Topology {
+    Ok(Topology {
         adj,
         adj_facet,
         nbr_corner,
         boundary_facets,
-    };
-    check_vertices(map, &topo, corners)?;
-    Ok(topo)
+    })
 }
 
 /// The half-facets `(rest, s·N + f)` ([`rest_without`]) whose least vertex is `v`,
@@ -302,7 +313,7 @@ fn permutation_parity<const N: usize>(p: &[u8; N]) -> u32 {
 /// Checks that the simplices around each vertex are connected through the
 /// facets that contain the vertex (blocks of vertices in parallel; the
 /// error names the first vertex that fails).
-fn check_vertices<const N: usize, const D: usize>(
+pub(crate) fn check_vertices<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     topo: &Topology<N>,
     corners: &VertexCorners,
@@ -322,14 +333,20 @@ fn check_vertices<const N: usize, const D: usize>(
         .into_iter()
         .flatten()
         .next();
-    let Some(v) = first_bad else {
-        return Ok(());
-    };
-    Err(MapError::NonManifoldVertex {
-        vertex: v,
+    match first_bad {
+        Some(v) => Err(non_manifold_vertex::<N>(v)),
+        None => Ok(()),
+    }
+}
+
+/// The error of a vertex whose simplices are not connected through its
+/// facets.
+pub(crate) fn non_manifold_vertex<const N: usize>(vertex: usize) -> InputError {
+    MapError::NonManifoldVertex {
+        vertex,
         simplex: ElementKind::simplex(N),
     }
-    .into())
+    .into()
 }
 
 /// Whether a depth-first walk from the first corner of `star` (the corner

@@ -70,16 +70,21 @@ fn errors() {
     );
 }
 
-#[test]
-fn the_first_pinched_vertex_is_named() {
-    // bow ties pinched at vertices 9000 and 5000 (blocks of 4096
-    // vertices checked in parallel): the least is reported
+/// Bow ties pinched at vertices 9000 and 5000 (in two blocks of 4096
+/// vertices checked in parallel).
+fn pinched_twice() -> TriMap {
     let mut simplices = Vec::new();
     for v in [9000u32, 5000] {
         let o = 10000 + 4 * v;
         simplices.extend([[v, o, o + 1], [v, o + 2, o + 3]]);
     }
-    let e = Topology::build(&tri(simplices, 50000)).expect_err("pinched");
+    tri(simplices, 50000)
+}
+
+#[test]
+fn the_first_pinched_vertex_is_named() {
+    // the least is reported
+    let e = Topology::build(&pinched_twice()).expect_err("pinched");
     assert_eq!(
         e.to_string(),
         "vertex 5000 is non-manifold: its triangles form more than one fan"
@@ -169,4 +174,25 @@ fn parity() {
     assert_eq!(permutation_parity(&[1u8, 0, 2]), 1);
     assert_eq!(permutation_parity(&[1u8, 2, 0]), 0);
     assert_eq!(permutation_parity(&[3u8, 0, 1, 2]), 1);
+}
+
+/// Without its vertex check ([`glue_with`]), the topology leaves it to
+/// the stars' walk, which names the same first vertex.
+#[test]
+fn the_stars_walk_names_the_same_pinched_vertex() {
+    let pinched = pinched_twice();
+    let touching = tets(vec![[0, 1, 2, 3], [0, 4, 5, 6]], 7);
+    fn same<const N: usize, const D: usize>(m: &SimplexMap<N, D>) {
+        let want = Topology::build(m).expect_err("pinched").to_string();
+        let corners = VertexCorners::build(&m.simplices, m.positions.len(), true);
+        let topo = Topology::glue_with(m, &corners).expect("glued");
+        let e = topo.check_vertices(m, &corners).expect_err("pinched");
+        assert_eq!(e.to_string(), want);
+        let opts = crate::TransitionOptions::default();
+        let (tr, _) = crate::Transitions::derive(m, &topo, &opts).expect("no interior facet");
+        let e = crate::Stars::build_checked(m, &topo, &tr, &corners).expect_err("pinched");
+        assert_eq!(e.to_string(), want);
+    }
+    same(&pinched);
+    same(&touching);
 }

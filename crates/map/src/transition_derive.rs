@@ -30,26 +30,19 @@
 
 use crate::error::{ElementKind, MapError};
 use crate::holonomy::ridge_rotation;
-use crate::transition_fit::{fit_facet, Fit};
+use crate::transition_fit::{fit_facet, Group};
 use rayon::prelude::*;
 
 /// Simplices whose facets are fitted in one parallel batch (bounds the
-/// memory of the fits waiting to be used in order).
+/// memory of the fits waiting to be written).
 const BATCH: usize = 1 << 13;
+use crate::transition_tally::{Ambiguous, Tally};
 use crate::{
     InputError, Rot, SimplexMap, Topology, TransitionOptions, TransitionReport, Transitions,
 };
 
-/// The fit of one interior facet, or the error it found.
-type FitResult<const D: usize> = Result<Fit<D>, Box<InputError>>;
-
-/// A facet whose rotation is not determined by its edge vectors.
-struct Ambiguous<const D: usize> {
-    s: usize,
-    f: usize,
-    /// Rotations with an integral translation, and that translation.
-    cands: Vec<(Rot<D>, [i64; D])>,
-}
+/// Per simplex of a batch, the transition across each facet it owns.
+type Owned<const N: usize, const D: usize> = [(Rot<D>, [i64; D]); N];
 
 /// Distance from `x` to the next larger float (`x ≥ 0`).
 pub(crate) fn ulp(x: f64) -> f64 {
@@ -86,55 +79,40 @@ pub(crate) fn derive<const N: usize, const D: usize>(
         trans: (0..ns).into_par_iter().map(|_| [[0i64; D]; N]).collect(),
     };
     let mut rep = TransitionReport::default();
-    let all = Rot::<D>::all();
-    let mut ambiguous = Vec::new();
-    let mut failed: Option<(f64, f64, usize, usize)> = None;
-    let mut non_identity = 0;
+    let group = Group::<D>::new();
     // the fits of a batch in parallel, in place into one buffer reused by
-    // every batch (no copy, no new pages), then read in facet order (the
-    // first error returned is the one of the sequential loop), then
-    // written into the batch's simplices in parallel
-    let mut fits: Vec<[Option<FitResult<D>>; N]> = Vec::new();
+    // every batch (no new pages), counted per run of simplices and
+    // combined in facet order (the first error returned is the one of a sequential
+    // loop), then written into the batch's simplices in parallel
+    let mut tally = Tally::<D>::default();
+    let mut fits: Vec<Owned<N, D>> = Vec::new();
     for lo in (0..ns).step_by(BATCH) {
         let hi = ns.min(lo + BATCH);
-        fits.truncate(hi - lo);
-        fits.resize_with(hi - lo, || std::array::from_fn(|_| None));
-        fits.par_iter_mut().enumerate().for_each(|(i, slot)| {
-            let s = lo + i;
-            for (f, fit) in slot.iter_mut().enumerate() {
-                let mine = topo.neighbour(s, f).is_some_and(|nf| nf > (s, f));
-                *fit = mine.then(|| fit_facet(map, topo, s, f, &all, opts));
-            }
-        });
-        for (i, slot) in fits.iter_mut().enumerate() {
-            let s = lo + i;
-            for (f, fit) in slot.iter_mut().enumerate() {
-                if matches!(fit, Some(Err(_))) {
-                    if let Some(Err(e)) = fit.take() {
-                        return Err(*e);
+        fits.clear();
+        fits.resize(hi - lo, [(Rot::IDENTITY, [0; D]); N]);
+        let batch = fits
+            .par_iter_mut()
+            .enumerate()
+            .fold(Tally::default, |mut t, (i, slot)| {
+                let s = lo + i;
+                for (f, out) in slot.iter_mut().enumerate() {
+                    if topo.neighbour(s, f).is_some_and(|nf| nf > (s, f)) {
+                        *out = t.add(s, f, fit_facet(map, topo, s, f, &group, opts), opts);
                     }
                 }
-                let Some(Ok(fit)) = fit else { continue };
-                non_identity += usize::from(!fit.rot.is_identity());
-                if fit.residual > rep.max_residual || rep.worst_facet.is_none() {
-                    rep.max_residual = rep.max_residual.max(fit.residual);
-                    rep.worst_facet = Some((s, f));
-                }
-                if fit.residual > fit.tol {
-                    if opts.rounds(fit.residual) {
-                        rep.snapped += 1;
-                    } else if failed.is_none_or(|w| fit.residual > w.0) {
-                        failed = Some((fit.residual, fit.tol, s, f));
-                    }
-                }
-                if let Some(cands) = fit.ambiguous.take() {
-                    ambiguous.push(Ambiguous { s, f, cands });
-                }
-            }
+                t
+            })
+            .reduce(Tally::default, Tally::then);
+        tally = tally.then(batch);
+        if let Some(e) = tally.error.take() {
+            return Err(*e);
         }
         write_batch(topo, &mut tr, &fits, lo);
     }
-    if let Some((res, tol, s, f)) = failed {
+    rep.max_residual = tally.worst.map_or(0.0, |w| 0.0f64.max(w.0));
+    rep.worst_facet = tally.worst.map(|w| (w.1, w.2));
+    rep.snapped = tally.snapped;
+    if let Some((res, tol, s, f)) = tally.failed {
         let n = topo.adj[s][f];
         return Err(MapError::NonIntegralTransition {
             simplex: ElementKind::simplex(N).at(s),
@@ -146,6 +124,7 @@ pub(crate) fn derive<const N: usize, const D: usize>(
         }
         .into());
     }
+    let (ambiguous, mut non_identity) = (tally.ambiguous, tally.non_identity);
     rep.ambiguous_facets = ambiguous.len();
     // the ambiguous facets' rotations may change: counted again after
     let changing = |tr: &Transitions<N, D>| {
@@ -168,17 +147,13 @@ pub(crate) fn derive<const N: usize, const D: usize>(
 fn write_batch<const N: usize, const D: usize>(
     topo: &Topology<N>,
     tr: &mut Transitions<N, D>,
-    fits: &[[Option<FitResult<D>>; N]],
+    fits: &[Owned<N, D>],
     lo: usize,
 ) {
     let hi = lo + fits.len();
     let (done_rot, rot) = tr.rot.split_at_mut(lo);
     let (done_trans, trans) = tr.trans.split_at_mut(lo);
     let (done_rot, done_trans) = (&*done_rot, &*done_trans);
-    let fit_of = |s: usize, f: usize| match &fits[s - lo][f] {
-        Some(Ok(fit)) => (fit.rot, fit.rounded),
-        _ => panic!("bug: no fit across facet {f} of simplex {s}"),
-    };
     rot[..hi - lo]
         .par_iter_mut()
         .zip(&mut trans[..hi - lo])
@@ -190,9 +165,9 @@ fn write_batch<const N: usize, const D: usize>(
                     continue;
                 };
                 (rot[f], trans[f]) = if (n, g) > (s, f) {
-                    fit_of(s, f)
+                    fits[i][f]
                 } else if n >= lo {
-                    inverse(fit_of(n, g))
+                    inverse(fits[n - lo][g])
                 } else {
                     inverse((done_rot[n][g], done_trans[n][g]))
                 };

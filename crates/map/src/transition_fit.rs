@@ -54,6 +54,32 @@ fn rounded_with_residual<const D: usize>(t: &[f64; D]) -> ([i64; D], f64) {
 /// Size of the largest rotation group (24 in 3D).
 const MAX_ROTATIONS: usize = 24;
 
+/// The rotation group in [`Rot::all`] order (identity first) and, per
+/// axis `j` and direction `d`, the set of its rotations sending `j` to
+/// `d` as bits (bit `r` for `all[r]`): the rotations whose every axis goes
+/// to an allowed direction are the AND over the axes of the OR of their
+/// allowed directions' sets, with no scan of the group.
+pub(crate) struct Group<const D: usize> {
+    /// The rotations, identity first.
+    pub(crate) all: Vec<Rot<D>>,
+    /// `by_dir[j][d]`: the rotations sending axis `j` to direction `d`.
+    by_dir: [[u32; 6]; D],
+}
+
+impl<const D: usize> Group<D> {
+    /// The group of dimension `D` and its direction sets.
+    pub(crate) fn new() -> Self {
+        let all = Rot::<D>::all();
+        let mut by_dir = [[0u32; 6]; D];
+        for (r, rot) in all.iter().enumerate() {
+            for (j, &d) in rot.images().iter().enumerate() {
+                by_dir[j][d as usize] |= 1 << r;
+            }
+        }
+        Group { all, by_dir }
+    }
+}
+
 /// Fits the rotation and translation of one interior facet (steps 1–3 of
 /// the module docs), without heap allocation unless several rotations fit.
 ///
@@ -66,9 +92,10 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     topo: &Topology<N>,
     s: usize,
     f: usize,
-    all: &[Rot<D>],
+    group: &Group<D>,
     opts: &TransitionOptions,
 ) -> Result<Fit<D>, Box<InputError>> {
+    let all = &group.all[..];
     let n = topo.adj[s][f] as usize;
     let m = N - 1;
     // a[i], b[i] for i < m: the facet's corners in the charts of s and n
@@ -92,9 +119,20 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
         }
     }
     let tol = opts.tolerance_at(scale);
-    let table = mismatch_table(&a[..m], &b[..m]);
+    // corners equal bit for bit in both charts (a facet off the seams):
+    // half the table, and the identity's translation is 0.0
+    let same = a[..m]
+        .iter()
+        .flatten()
+        .zip(b[..m].iter().flatten())
+        .all(|(x, y)| x.to_bits() == y.to_bits());
+    let table = if same {
+        mismatch_table_same(&a[..m])
+    } else {
+        mismatch_table(&a[..m], &b[..m])
+    };
     let mut mis = [0.0f64; MAX_ROTATIONS];
-    let fast = match identity_fit::<D>(&table, tol, all) {
+    let fast = match identity_fit::<D>(&table, tol, group) {
         Some(best) => Some((Rot::IDENTITY, best)),
         None => unique_fit::<D>(&table, tol),
     };
@@ -129,14 +167,11 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     }
     let translation = |r: &Rot<D>| -> [f64; D] {
         let mut t = [0.0; D];
+        let identity = r.is_identity();
         for i in 0..m {
             // the identity copies `a[i]`: the same floats without the
             // signed permutation
-            let ra = if r.is_identity() {
-                a[i]
-            } else {
-                r.apply(&a[i])
-            };
+            let ra = if identity { a[i] } else { r.apply(&a[i]) };
             for k in 0..D {
                 t[k] += (b[i][k] - ra[k]) / m as f64;
             }
@@ -153,9 +188,15 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
         },
     };
     if let Some(rot) = single {
-        // the common case: the fit determines the rotation
-        let trans = translation(&rot);
-        let (rounded, residual) = rounded_with_residual(&trans);
+        // the common case: the fit determines the rotation; the identity
+        // between equal corners has the translation 0.0, as computed
+        let same = same && rot.is_identity();
+        let trans = if same { [0.0; D] } else { translation(&rot) };
+        let (rounded, residual) = if same {
+            ([0; D], 0.0)
+        } else {
+            rounded_with_residual(&trans)
+        };
         return Ok(Fit {
             rot,
             #[cfg(test)]
@@ -244,37 +285,29 @@ fn last_image<const D: usize>(img: &[u8; D]) -> Option<u8> {
 /// The fast path of the common case, an identity transition: `Some(best)`
 /// when the identity is the only rotation within `tol` of the best
 /// mismatch, which is then its own, `mis(I)` (what scanning the whole
-/// group finds): when no other rotation of `all` (the group, identity
-/// first) sends every axis `j` to a direction whose entry is within the cut
-/// `mis(I) + tol`. When at most one axis has such a direction other than
-/// `2·j` (a planar facet leaves its normal free) that holds without a
-/// scan, since every other rotation moves two axes. `None` leaves the
-/// facet to [`unique_fit`].
+/// group finds): when no other rotation of the group sends every axis `j`
+/// to a direction whose entry is within the cut `mis(I) + tol` (the
+/// rotations that do are found by their bits, [`Group`]). `None` leaves
+/// the facet to [`unique_fit`].
 #[inline]
-fn identity_fit<const D: usize>(table: &[f64; 18], tol: f64, all: &[Rot<D>]) -> Option<f64> {
+fn identity_fit<const D: usize>(table: &[f64; 18], tol: f64, group: &Group<D>) -> Option<f64> {
     if tol.is_nan() || tol < 0.0 {
         return None;
     }
     let best = mismatch_of(table, &Rot::<D>::IDENTITY.images());
     let cut = best + tol;
-    // per axis, the directions within the cut, as bits
-    let mut within = [0u8; D];
-    for (w, row) in within.iter_mut().zip(table.chunks_exact(6)) {
-        for (d, &x) in row[..2 * D].iter().enumerate() {
-            *w |= u8::from(x <= cut) << d;
+    // the rotations other than the identity (bit 0) that send every axis
+    // within the cut
+    debug_assert!(group.all.first().is_some_and(Rot::is_identity));
+    let mut fits = !1u32;
+    for (row, sets) in table.chunks_exact(6).zip(&group.by_dir) {
+        let mut axis = 0u32;
+        for (&x, &set) in row[..2 * D].iter().zip(sets) {
+            axis |= set & 0u32.wrapping_sub(u32::from(x <= cut));
         }
+        fits &= axis;
     }
-    let free = (0..D).filter(|&j| within[j] != 1 << (2 * j)).count();
-    if free <= 1 {
-        return Some(best);
-    }
-    // the group without its first element, the identity
-    debug_assert!(all.first().is_some_and(Rot::is_identity));
-    let fits = |r: &Rot<D>| {
-        let img = r.images();
-        (0..D).all(|j| within[j] >> img[j] & 1 != 0)
-    };
-    (!all.iter().skip(1).any(fits)).then_some(best)
+    (fits == 0).then_some(best)
 }
 
 /// The best mismatch and the only rotation within `tol` of it, if there is
@@ -370,6 +403,34 @@ fn mismatch_table<const D: usize>(a: &[[f64; D]], b: &[[f64; D]]) -> [f64; 18] {
                 if minus > row[2 * l + 1] {
                     row[2 * l + 1] = minus;
                 }
+            }
+        }
+    }
+    table
+}
+
+/// [`mismatch_table`]`(a, a)`, bit for bit, with half the work: with
+/// `eb = ea` the entry of axis `j` to direction `±l` is
+/// `|±ea[j] − ea[l]|`, the same float as that of `l` to `±j` (`x − y` is
+/// `−(y − x)` and `−x − y` is `−y − x` exactly), and the entry of `j` to
+/// `+j` is 0.0, the table's start.
+fn mismatch_table_same<const D: usize>(a: &[[f64; D]]) -> [f64; 18] {
+    let mut table = [0.0f64; 18];
+    let mut raise = |at: usize, x: f64| {
+        if x > table[at] {
+            table[at] = x;
+        }
+    };
+    for i in 1..a.len() {
+        let ea: [f64; D] = std::array::from_fn(|k| a[i][k] - a[0][k]);
+        for j in 0..D {
+            raise(6 * j + 2 * j + 1, (-ea[j] - ea[j]).abs());
+            for l in j + 1..D {
+                let (plus, minus) = ((ea[j] - ea[l]).abs(), (-ea[j] - ea[l]).abs());
+                raise(6 * j + 2 * l, plus);
+                raise(6 * l + 2 * j, plus);
+                raise(6 * j + 2 * l + 1, minus);
+                raise(6 * l + 2 * j + 1, minus);
             }
         }
     }

@@ -99,8 +99,10 @@ fn coordinate(rng: &mut SplitMix, far: f64) -> f64 {
 }
 
 /// Two simplices sharing facet 0 of simplex 0; simplex 1's chart is a
-/// rotated, translated, perturbed copy, with collapsed corners at times.
-fn compare<const N: usize, const D: usize>(seed: u64, cases: usize) {
+/// rotated, translated, perturbed copy, with collapsed corners at times;
+/// with `same`, the facet's corners are copied as they are (a facet off
+/// the seams).
+fn compare<const N: usize, const D: usize>(seed: u64, cases: usize, same: bool) {
     let all = Rot::<D>::all();
     let mut rng = SplitMix::new(seed);
     let (mut unique, mut several, mut errors) = (0, 0, 0);
@@ -127,6 +129,11 @@ fn compare<const N: usize, const D: usize>(seed: u64, cases: usize) {
                 p[k] + t[k] + coordinate(&mut rng, 0.0) * 0.01 * (rng.below(2) as f64)
             });
         }
+        if same {
+            for c in 0..N - 1 {
+                coords1[c] = coords0[N - 1 - c];
+            }
+        }
         coords1[N - 1] = [7.0; D];
         let mut simplex1 = [0u32; N];
         for (c, v) in simplex1.iter_mut().enumerate() {
@@ -152,7 +159,7 @@ fn compare<const N: usize, const D: usize>(seed: u64, cases: usize) {
                 round_limit,
                 ..Default::default()
             };
-            let got = fit_facet(&map, &topo, 0, 0, &all, &opts);
+            let got = fit_facet(&map, &topo, 0, 0, &Group::new(), &opts);
             let want = reference(&map, &topo, 0, 0, &all, &opts);
             match (got, want) {
                 (Ok(g), Ok(w)) => {
@@ -177,20 +184,23 @@ fn compare<const N: usize, const D: usize>(seed: u64, cases: usize) {
             }
         }
     }
+    // equal charts fit the identity: no error
     assert!(
-        unique > 0 && several > 0 && errors > 0,
+        unique > 0 && several > 0 && (errors > 0) != same,
         "{unique} {several} {errors}"
     );
 }
 
 #[test]
 fn fit_matches_the_full_scan_2d() {
-    compare::<3, 2>(1, 20000);
+    compare::<3, 2>(1, 20000, false);
+    compare::<3, 2>(3, 20000, true);
 }
 
 #[test]
 fn fit_matches_the_full_scan_3d() {
-    compare::<4, 3>(2, 20000);
+    compare::<4, 3>(2, 20000, false);
+    compare::<4, 3>(4, 20000, true);
 }
 
 /// Wherever the identity fast path answers, scanning the whole group
@@ -198,7 +208,8 @@ fn fit_matches_the_full_scan_3d() {
 /// rotation within `tol` of it (random tables: small diagonal entries,
 /// other entries near the cut, ties and free axes included).
 fn identity_fast_path_agrees<const D: usize>(seed: u64) {
-    let all = Rot::<D>::all();
+    let group = Group::<D>::new();
+    let all = &group.all;
     let mut rng = SplitMix::new(seed);
     let mut hits = 0;
     for _ in 0..20_000 {
@@ -213,7 +224,7 @@ fn identity_fast_path_agrees<const D: usize>(seed: u64) {
             };
         }
         for tol in [0.0, 1e-3, 0.05] {
-            let Some(best) = identity_fit::<D>(&table, tol, &all) else {
+            let Some(best) = identity_fit::<D>(&table, tol, &group) else {
                 continue;
             };
             hits += 1;
@@ -239,4 +250,31 @@ fn identity_fast_path_agrees<const D: usize>(seed: u64) {
 fn identity_fast_path_agrees_2d_3d() {
     identity_fast_path_agrees::<2>(5);
     identity_fast_path_agrees::<3>(6);
+}
+
+/// The table of equal charts is the general one, bit for bit (signed
+/// zeros, halves, noise, far coordinates, collapsed corners).
+fn same_table_agrees<const N: usize, const D: usize>(seed: u64) {
+    let mut rng = SplitMix::new(seed);
+    for _ in 0..20_000 {
+        let far = if rng.below(8) == 0 { -1e9 } else { 0.0 };
+        let mut a = [[0.0f64; D]; N];
+        for x in a.iter_mut().flatten() {
+            *x = match rng.below(10) {
+                0 => -0.0,
+                _ => coordinate(&mut rng, far),
+            };
+        }
+        if rng.below(3) == 0 {
+            a[N - 1] = a[0];
+        }
+        let (want, got) = (mismatch_table(&a, &a), mismatch_table_same(&a));
+        assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{a:?}");
+    }
+}
+
+#[test]
+fn same_table_agrees_2d_3d() {
+    same_table_agrees::<3, 2>(8);
+    same_table_agrees::<4, 3>(9);
 }

@@ -65,6 +65,10 @@ pub fn local_transition<const D: usize>(
     on: &[i64; D],
     h: f64,
 ) -> [i64; D] {
+    // the identity: `R·os = os` and no shift defect (the same integers)
+    if r.is_identity() {
+        return std::array::from_fn(|k| os[k] + t[k] - on[k]);
+    }
     let ro = r.apply_i(os);
     let d = if h == 0.0 { [0; D] } else { shift_defect(r) };
     std::array::from_fn(|k| ro[k] + t[k] - on[k] + d[k])

@@ -218,14 +218,22 @@ pub fn model<const N: usize, const D: usize>(
     opts: &TransitionOptions,
     st: &mut SegmentStats,
 ) -> Result<Model<N, D>, InputError> {
-    // the corner lists, built once for the topology's vertex check and
-    // the stars
+    // the corner lists, built once for the topology and the stars
     let corners = VertexCorners::build(&map.simplices, map.positions.len(), true);
-    let topo = Topology::build_with(map, &corners)?;
-    let (trans, trep) = Transitions::derive(map, &topo, opts)?;
+    // the topology's vertex check is made by the stars' walk (no walk of
+    // its own); errors keep their order: a transition's error comes after
+    // a vertex's
+    let topo = Topology::glue_with(map, &corners)?;
+    let (trans, trep) = match Transitions::derive(map, &topo, opts) {
+        Ok(derived) => derived,
+        Err(e) => {
+            topo.check_vertices(map, &corners)?;
+            return Err(e);
+        }
+    };
     st.max_transition_residual = trep.max_residual;
     st.snapped_transitions = trep.snapped;
-    let stars = Stars::build_with(map, &topo, &trans, &corners);
+    let stars = Stars::build_checked(map, &topo, &trans, &corners)?;
     st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
     Ok(Model { topo, trans, stars })
 }
@@ -365,4 +373,39 @@ pub fn link<const N: usize, const D: usize>(
     st.label_violations = graph.label_violations();
     laps.lap("trace");
     graph
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The vertex check made by the stars' walk keeps the errors' order:
+    /// a pinched vertex is named before a transition's error, as by
+    /// [`Topology::build`].
+    #[test]
+    fn a_pinched_vertex_comes_before_a_reflection() {
+        // triangles 0 and 1 differ by a reflection; triangle 2 touches
+        // them at vertex 0 only
+        let map = SimplexMap::<3, 2> {
+            positions: vec![[0.0; 3]; 6],
+            simplices: vec![[0, 1, 2], [2, 1, 3], [0, 4, 5]],
+            coords: vec![
+                [[0.0, 0.0], [2.0, 0.0], [0.0, 1.0]],
+                [[1.0, 0.0], [0.0, 2.0], [2.0, 1.0]],
+                [[5.0, 5.0], [6.0, 5.0], [5.0, 6.0]],
+            ],
+        };
+        let want = Topology::build(&map).expect_err("pinched").to_string();
+        assert!(want.contains("vertex 0 is non-manifold"), "{want}");
+        let opts = TransitionOptions::default();
+        let got = model(&map, &opts, &mut SegmentStats::default());
+        assert_eq!(got.err().map(|e| e.to_string()), Some(want));
+        // without the pinch, the reflection
+        let mut map = map;
+        map.simplices[2] = [6, 4, 5];
+        map.positions.push([0.0; 3]);
+        let got = model(&map, &opts, &mut SegmentStats::default());
+        let e = got.err().map(|e| e.to_string()).unwrap_or_default();
+        assert!(e.contains("reflection"), "{e}");
+    }
 }
