@@ -100,15 +100,30 @@ impl<const D: usize> Clusters<D> {
         self.sets.root(v as usize) as u32
     }
 
-    /// Members of the cluster with their rotation from the root's chart;
-    /// `None` if the cluster cannot move consistently.
-    pub fn members_rot(&self, root: u32) -> Option<Vec<(u32, Rot<D>)>> {
-        match self.members.get(&root) {
-            None => Some(vec![(root, Rot::IDENTITY)]),
-            Some(m) => m
-                .iter()
-                .map(|&v| self.rot_from_root[v as usize].map(|r| (v, r)))
-                .collect(),
+    /// Whether the cluster of `root` can move consistently (every member
+    /// has a rotation from the root's chart: all or none of them have).
+    pub fn movable(&self, root: u32) -> bool {
+        self.rot_from_root[root as usize].is_some()
+    }
+
+    /// Calls `f` with every member of the cluster of `root` (which
+    /// [`Self::movable`]) and its rotation from the root's chart; a lone
+    /// vertex is its own cluster, without a look-up.
+    pub fn for_each_member(&self, root: u32, mut f: impl FnMut(u32, Rot<D>)) {
+        let members = if self.members.is_empty() {
+            None
+        } else {
+            self.members.get(&root)
+        };
+        match members {
+            None => f(root, Rot::IDENTITY),
+            Some(m) => {
+                for &v in m {
+                    if let Some(r) = self.rot_from_root[v as usize] {
+                        f(v, r);
+                    }
+                }
+            }
         }
     }
 }

@@ -82,6 +82,7 @@ pub mod place;
 pub mod relax;
 pub mod sanitize;
 pub mod sanitize_report;
+pub mod scatter;
 pub mod simplex;
 pub mod singular_snap;
 pub mod split;

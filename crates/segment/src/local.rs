@@ -16,6 +16,7 @@
 //! every grid rotation), up to the map's own GP residual.
 
 use crate::grid_offset::GridOffset;
+use crate::scatter::{self, Buckets};
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
@@ -163,38 +164,37 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
     ///
     /// Each corner belongs to one star and a vertex's new corners depend on
     /// its own old corners only, so blocks of vertices are snapped in
-    /// parallel into buffers (in star order), then written back in order;
+    /// parallel into [`Buckets`] (only the corners whose bits change), then
+    /// written back in parallel by range of simplices ([`scatter::apply`]);
     /// the count and the maximum do not depend on the split.
     pub fn snap(&mut self, stars: &Stars<D>) -> (usize, f64) {
-        use rayon::prelude::*;
         /// Vertices per parallel task, and per wave (bounds the buffers).
         const TASK: usize = 1024;
         const WAVE: usize = 8 * TASK;
         let nv = stars.singular.len();
+        let ranges = scatter::ranges(self.coords.len());
         let (mut count, mut max_move) = (0, 0.0f64);
+        // the blocks' buffers, kept from wave to wave
+        let mut blocks: Vec<Buckets<D>> = Vec::new();
+        blocks.resize_with(WAVE / TASK, || Buckets::new(ranges));
         for wave in (0..nv).step_by(WAVE) {
             let end = (wave + WAVE).min(nv);
             let coords = &self.coords;
-            let blocks: Vec<Snapped<D>> = (wave..end)
-                .step_by(TASK)
-                .collect::<Vec<_>>()
-                .into_par_iter()
-                .map(|v0| snap_block(coords, stars, v0..(v0 + TASK).min(end)))
+            let found: Vec<(usize, f64)> = blocks
+                .par_iter_mut()
+                .enumerate()
+                .map(|(i, out)| {
+                    let v0 = (wave + i * TASK).min(end);
+                    snap_block(coords, stars, v0..(v0 + TASK).min(end), out)
+                })
                 .collect();
-            let mut at = stars.offsets[wave] as usize;
-            for b in blocks {
-                for (e, x) in stars.entries[at..at + b.corners.len()]
-                    .iter()
-                    .zip(&b.corners)
-                {
-                    self.coords[e.simplex as usize][e.corner as usize] = *x;
-                }
-                at += b.corners.len();
-                count += b.count;
-                if b.max_move > max_move {
-                    max_move = b.max_move;
+            for (c, m) in found {
+                count += c;
+                if m > max_move {
+                    max_move = m;
                 }
             }
+            scatter::apply(&mut self.coords, &blocks, |x, y| *x = *y);
         }
         (count, max_move)
     }
@@ -218,55 +218,44 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
     }
 }
 
-/// The snapped corners of a block of vertices, in star order (singular
-/// vertices' corners unchanged), with the number of vertices snapped and
-/// the largest move.
-struct Snapped<const D: usize> {
-    corners: Vec<[f64; D]>,
-    count: usize,
-    max_move: f64,
-}
-
-/// [`LocalMap::snap`] of the vertices `vs`, reading `coords`.
+/// [`LocalMap::snap`] of the vertices `vs`, reading `coords`: the
+/// corners whose bits change, into `out` (cleared first); returns the
+/// number of vertices snapped and the largest move.
 fn snap_block<const N: usize, const D: usize>(
     coords: &[[[f64; D]; N]],
     stars: &Stars<D>,
     vs: std::ops::Range<usize>,
-) -> Snapped<D> {
-    let range = stars.offsets[vs.start] as usize..stars.offsets[vs.end] as usize;
-    let mut out = Snapped {
-        corners: Vec::with_capacity(range.len()),
-        count: 0,
-        max_move: 0.0,
-    };
+    out: &mut Buckets<D>,
+) -> (usize, f64) {
+    out.clear();
+    let (mut count, mut max_move) = (0, 0.0f64);
     for v in vs {
         let star = stars.of(v);
         let Some(first) = star.first() else { continue };
         if stars.singular[v] {
-            let old = star
-                .iter()
-                .map(|e| coords[e.simplex as usize][e.corner as usize]);
-            out.corners.extend(old);
             continue;
         }
         let x_ref = coords[first.simplex as usize][first.corner as usize];
         for e in star {
             let y = e.rot.apply(&x_ref);
-            let mut x = coords[e.simplex as usize][e.corner as usize];
+            let old = coords[e.simplex as usize][e.corner as usize];
+            let mut x = old;
             for (xk, yk) in x.iter_mut().zip(y) {
                 let snapped = yk + dualex_util::round::round(*xk - yk);
                 // not NaN (validated input): as `f64::max`
                 let m = (snapped - *xk).abs();
-                if m > out.max_move {
-                    out.max_move = m;
+                if m > max_move {
+                    max_move = m;
                 }
                 *xk = snapped;
             }
-            out.corners.push(x);
+            if x.iter().zip(&old).any(|(a, b)| a.to_bits() != b.to_bits()) {
+                out.push(e.simplex, e.corner, x);
+            }
         }
-        out.count += 1;
+        count += 1;
     }
-    out
+    (count, max_move)
 }
 
 /// The input-chart coordinates of corner `code` (bit `a` set: the + side

@@ -212,8 +212,8 @@ impl<const D: usize> Mover<'_, D> {
                 continue;
             }
             let root = self.clusters.root(v);
-            let members = self.clusters.members_rot(root);
-            if members.is_none() && last_resort {
+            let movable = self.clusters.movable(root);
+            if !movable && last_resort {
                 self.apart.insert(root);
                 let d = step(&mut self.rng, amp);
                 self.moved[v as usize] = true;
@@ -226,15 +226,16 @@ impl<const D: usize> Mover<'_, D> {
             }
             self.done_epoch[root as usize] = self.epoch;
             let delta = step(&mut self.rng, amp);
-            let Some(members) = members else {
+            if !movable {
                 self.stuck.insert(root);
                 continue;
-            };
-            for (w, r) in members {
-                self.moved[w as usize] = true;
-                self.touched.push(w);
-                self.deltas.push(r.apply(&delta));
             }
+            let (moved, touched, deltas) = (&mut self.moved, &mut self.touched, &mut self.deltas);
+            self.clusters.for_each_member(root, |w, r| {
+                moved[w as usize] = true;
+                touched.push(w);
+                deltas.push(r.apply(&delta));
+            });
         }
     }
 }
