@@ -11,15 +11,19 @@
 //! - [`hex`]: [`check_hex_mesh`] → [`HexReport`] (its boundary surface is
 //!   checked as a quad mesh);
 //! - [`topology`]: the output's topology against the input's (components,
-//!   Euler characteristic, boundary components).
+//!   Euler characteristic, boundary components);
+//! - [`handover`]: a report kept with a print of its mesh ([`Checked`]),
+//!   read again instead of checking the same mesh twice.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod handover;
 pub mod hex;
 pub mod quad;
 #[cfg(test)]
 mod test_meshes;
 pub mod topology;
 
+pub use handover::Checked;
 pub use hex::{check_hex_mesh, HexReport};
 pub use quad::{check_quad_mesh, QuadReport};

@@ -198,7 +198,7 @@ where
     laps.lap("extract");
     let input = steps::input_shape(map);
     laps.lap("input_shape");
-    let check = steps::check(map, &input, &ex.mesh);
+    let check = steps::check(map, &input, &ex);
     laps.lap("check");
     let out = verify::Output {
         cell: A::CELLS.one,

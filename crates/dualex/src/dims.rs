@@ -15,8 +15,8 @@ use crate::stats::{Repairs, Stats, TopologyComparison};
 use crate::steps::{Check, Dimension, InputShape, Report, SegmentStats};
 use crate::steps::{HexExtraction, HexReport, QuadExtraction, QuadReport};
 use crate::{GeometryOptions, GeometryReport, InputError, Options, TetMap, TriMap};
-use dualex_cells::CellMesh;
 use dualex_check::topology as topo;
+use dualex_check::Checked;
 use dualex_map::TransitionOptions;
 
 #[cfg(doc)]
@@ -52,8 +52,11 @@ impl Dimension<4, 2> for TriMap {
         dualex_quad::extract_full(self, &inner)
     }
 
-    fn check(&self, input: &InputShape<()>, mesh: &CellMesh<4>) -> Check {
-        let rep = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+    fn check(&self, input: &InputShape<()>, x: &QuadExtraction) -> Check {
+        let (n, cells) = (x.mesh.positions.len(), &x.mesh.cells);
+        let rep = Checked::or_check(x.stats.checked.as_ref(), n, cells, || {
+            dualex_check::check_quad_mesh(n, cells)
+        });
         let (input, output) = (input.shape, topo::quad_shape(&rep));
         Check::new(rep.errors(), (input, output), rep.boundary_edges)
     }
@@ -103,8 +106,11 @@ impl Dimension<8, 3> for TetMap {
 
     /// Combinatorial validity only: hexes of a messy map may be inverted
     /// (the geometric stage measures them).
-    fn check(&self, input: &InputShape<Vec<usize>>, mesh: &CellMesh<8>) -> Check {
-        let rep = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
+    fn check(&self, input: &InputShape<Vec<usize>>, x: &HexExtraction) -> Check {
+        let (n, cells) = (x.mesh.positions.len(), &x.mesh.cells);
+        let rep = Checked::or_check(x.stats.checked.as_ref(), n, cells, || {
+            dualex_check::check_hex_mesh(n, cells, None)
+        });
         let input = input.shape;
         let output = topo::hex_shape(&rep);
         Check::new(rep.errors(), (input, output), rep.boundary_faces)

@@ -172,7 +172,7 @@ pub(crate) fn finish<M: Dimension<K, D>, const K: usize, const D: usize>(
     input: Option<InputShape<M::Boundary>>,
 ) -> Result<Output<K, D>, Error> {
     let input = input.unwrap_or_else(|| steps::input_shape(map));
-    let check = steps::check(map, &input, &x.mesh);
+    let check = steps::check(map, &input, &x);
     let mut stats = x.stats.stats(&check);
     checked(&check.errors, &stats.topology, opts.strict)?;
     let geometry = match staged {

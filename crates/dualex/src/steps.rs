@@ -37,7 +37,6 @@
 //! [`TetMap`]: crate::TetMap
 
 use crate::{GeometryOptions, GeometryReport, InputError, Options, Stats};
-use dualex_cells::CellMesh;
 use dualex_check::topology::{Comparison, Shape};
 use dualex_map::SimplexMap;
 
@@ -124,7 +123,11 @@ pub trait Dimension<const K: usize, const D: usize> {
         singularities: bool,
     ) -> Result<Extraction<K, D, Self::Report>, InputError>;
     /// The last check (see [`check`]).
-    fn check(&self, input: &InputShape<Self::Boundary>, mesh: &CellMesh<K>) -> Check;
+    fn check(
+        &self,
+        input: &InputShape<Self::Boundary>,
+        x: &Extraction<K, D, Self::Report>,
+    ) -> Check;
     /// Step 12 (see [`geometry`]).
     fn geometry(
         &self,
@@ -184,15 +187,18 @@ pub fn input_shape<M: Dimension<K, D>, const K: usize, const D: usize>(
     Dimension::input_shape(map)
 }
 
-/// The last check: the output `mesh` of `map` checked (quads: manifold, oriented;
-/// hexes: combinatorially valid) and its topology compared with the
-/// map's (`input`: [`input_shape`]'s).
+/// The last check: the output mesh of `x`, extracted from `map`, checked
+/// (quads: manifold, oriented; hexes: combinatorially valid) and its
+/// topology compared with the map's (`input`: [`input_shape`]'s). The
+/// extraction's own checker report of its output is read instead of a
+/// new check while `x.mesh` is the mesh it was made of (its vertex count
+/// and cells: [`dualex_check::Checked`]).
 pub fn check<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
     input: &InputShape<M::Boundary>,
-    mesh: &CellMesh<K>,
+    x: &Extraction<K, D, M::Report>,
 ) -> Check {
-    Dimension::check(map, input, mesh)
+    Dimension::check(map, input, x)
 }
 
 /// Step 12: the geometric stage on the cells of `x` (their positions moved

@@ -91,16 +91,19 @@ pub struct LiftUndo {
     rho_ab: Rot2,
 }
 
-/// Mesh vertices of a glued 2D graph: corners, interior flag, adjacency.
+/// Mesh vertices of a glued 2D graph: corners, interior flag (their
+/// adjacency apart: [`Adjacency`]).
 struct Vertices {
     glued: Glued<2>,
     first: Vec<(Node, usize)>,
     corners: Vec<usize>,
     interior: Vec<bool>,
-    /// Neighbours of vertex `v`: `adj[adj_at[v]..adj_at[v + 1]]`, ascending.
-    adj_at: Vec<u32>,
-    adj: Vec<u32>,
 }
+
+/// Neighbours of vertex `v`: `adj[adj_at[v]..adj_at[v + 1]]`, ascending
+/// (`(adj_at, adj)`; built by [`adjacency`] only where a path is sought,
+/// not for the counts).
+type Adjacency<'a> = (&'a [u32], &'a [u32]);
 
 /// Mesh-edge neighbours of every vertex as CSR, each list ascending and
 /// without repeats (the adjacency of [`Glued::edges`], built per vertex
@@ -172,14 +175,11 @@ impl Vertices {
                 }
             }
         }
-        let (adj_at, adj) = adjacency(&glued);
         Vertices {
             glued,
             first,
             corners,
             interior,
-            adj_at,
-            adj,
         }
     }
 
@@ -196,7 +196,7 @@ impl Vertices {
     /// Edges from p to the nearest interior vertex of valence ≥ 7 through
     /// interior vertices, if at most `max` (breadth-first; the length does
     /// not depend on the visiting order).
-    fn distance(&self, p: usize, max: usize) -> Option<usize> {
+    fn distance(&self, (adj_at, adj): Adjacency, p: usize, max: usize) -> Option<usize> {
         let mut seen = vec![false; self.corners.len()];
         let mut queue = VecDeque::from([(p, 0usize)]);
         seen[p] = true;
@@ -207,7 +207,7 @@ impl Vertices {
             if d == max {
                 continue;
             }
-            for &w in &self.adj[self.adj_at[v] as usize..self.adj_at[v + 1] as usize] {
+            for &w in &adj[adj_at[v] as usize..adj_at[v + 1] as usize] {
                 let w = w as usize;
                 if !seen[w] && self.interior[w] {
                     seen[w] = true;
@@ -309,13 +309,14 @@ impl NodeGraph<2> {
         max_path: usize,
     ) -> Option<((Node, usize), usize)> {
         let v = Vertices::new(self);
+        let (adj_at, adj) = adjacency(&v.glued);
         let skip: Vec<u32> = given_up
             .iter()
             .map(|&(n, c)| v.glued.vertex(n, c))
             .collect();
         let near: Vec<(usize, usize)> = (0..v.corners.len())
             .filter(|&p| v.valence(p) == Some(target) && !skip.contains(&(p as u32)))
-            .filter_map(|p| v.distance(p, max_path).map(|d| (d, p)))
+            .filter_map(|p| v.distance((&adj_at, &adj), p, max_path).map(|d| (d, p)))
             .collect();
         let dist = near.iter().map(|&(d, _)| d).min()?;
         let nearest: Vec<(Node, usize)> = near

@@ -59,6 +59,10 @@ pub struct HexStats {
     /// Output: valid by the checker without positions (the driver's
     /// trigger of the relaxed retry; not in the JSON).
     pub mesh_valid: bool,
+    /// The checker's report of the output as last counted, handed over to
+    /// the facade's last check (read there while the mesh is unchanged;
+    /// not in the JSON).
+    pub checked: Option<dualex_check::Checked<dualex_check::HexReport>>,
 }
 
 impl AsMut<SegmentStats> for HexStats {
@@ -76,15 +80,7 @@ impl HexStats {
         self.boundary_surfaces = glued.boundary_loops;
         self.components = glued.components;
         self.corner_mismatches = glued.corner_mismatches;
-        // the counts of the validity checker (one piece of code for both)
-        let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
-        self.euler = c.euler;
-        self.mesh_valid = c.is_valid();
-        self.edge_valence_interior = c
-            .interior_edge_valence
-            .iter()
-            .map(|(&k, &v)| (k as usize, v))
-            .collect();
+        self.count_checked(mesh);
     }
 
     /// Recounts the output after a change of the mesh alone (holes through
@@ -94,18 +90,32 @@ impl HexStats {
     pub fn finish_mesh(&mut self, mesh: &HexMesh) {
         self.hexes = mesh.cells.len();
         self.vertices = mesh.positions.len();
+        let c = self.count_checked(mesh);
+        let counts = (c.boundary_faces, c.boundary.components, c.components);
+        // the repairs close holes and may split the boundary surface
+        (
+            self.unmatched_sides,
+            self.boundary_surfaces,
+            self.components,
+        ) = counts;
+    }
+
+    /// The counts of the validity checker (one piece of code for both):
+    /// Euler characteristic, validity, edge valences; its report kept
+    /// ([`HexStats::checked`]) and returned.
+    fn count_checked(&mut self, mesh: &HexMesh) -> &dualex_check::HexReport {
         let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
         self.euler = c.euler;
         self.mesh_valid = c.is_valid();
-        self.unmatched_sides = c.boundary_faces;
-        // the repairs close holes and may split the boundary surface
-        self.boundary_surfaces = c.boundary.components;
-        self.components = c.components;
         self.edge_valence_interior = c
             .interior_edge_valence
             .iter()
             .map(|(&k, &v)| (k as usize, v))
             .collect();
+        let n = mesh.positions.len();
+        self.checked
+            .insert(dualex_check::Checked::new(c, n, &mesh.cells))
+            .report()
     }
 
     /// The stats as one JSON object.

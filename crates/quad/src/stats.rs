@@ -84,6 +84,10 @@ pub struct QuadStats {
     /// Output: valid by the checker (the relaxed retry's condition; not
     /// in the JSON).
     pub mesh_valid: bool,
+    /// The checker's report of the output as last counted, handed over to
+    /// the facade's last check (read there while the mesh is unchanged;
+    /// not in the JSON).
+    pub checked: Option<dualex_check::Checked<dualex_check::QuadReport>>,
 }
 
 impl AsMut<SegmentStats> for QuadStats {
@@ -112,6 +116,8 @@ impl QuadStats {
         self.valence_boundary = hist(&c.boundary_valence);
         self.euler = c.euler;
         self.mesh_valid = c.is_valid();
+        let n = mesh.positions.len();
+        self.checked = Some(dualex_check::Checked::new(c, n, &mesh.cells));
     }
 
     /// The stats as one JSON object.

@@ -83,11 +83,16 @@ impl UnionFind {
     }
 
     /// Number of distinct sets among the given elements.
+    /// (Each root met is marked once: no sort of the elements' roots.)
     pub fn count_sets(&mut self, elements: impl Iterator<Item = usize>) -> usize {
-        let mut roots: Vec<usize> = elements.map(|x| self.find(x)).collect();
-        roots.sort_unstable();
-        roots.dedup();
-        roots.len()
+        let mut seen = vec![false; self.parent.len()];
+        let mut count = 0;
+        for x in elements {
+            let r = self.find(x);
+            count += usize::from(!seen[r]);
+            seen[r] = true;
+        }
+        count
     }
 
     /// Dense labels `0..count` per element, in order of first appearance;

@@ -9,6 +9,7 @@ use crate::testgrid::singular_disk;
 /// distance, along cell edges, through interior vertices.
 fn local_matches_global(g: &NodeGraph<2>, start: (Node, usize)) {
     let global = Vertices::new(g);
+    let (adj_at, adj) = adjacency(&global.glued);
     let mut corners_of = vec![Vec::new(); global.corners.len()];
     for n in g.alive_nodes() {
         for c in 0..4 {
@@ -39,13 +40,13 @@ fn local_matches_global(g: &NodeGraph<2>, start: (Node, usize)) {
             for max in [1, 3, 10] {
                 let lp = local.path(lv, max);
                 let lp = lp.map(|p| p.iter().map(|&v| to_global(&local, v)).collect::<Vec<_>>());
-                let want = global.distance(gv, max);
+                let want = global.distance((&adj_at, &adj), gv, max);
                 assert_eq!(lp.as_ref().map(|p| p.len() - 1), want, "from {n:?}/{c}");
                 let Some(lp) = lp else { continue };
                 assert_eq!(lp[0], gv);
                 let adjacent = |a: usize, b: usize| {
-                    let at = global.adj_at[a] as usize..global.adj_at[a + 1] as usize;
-                    global.adj[at].contains(&(b as u32))
+                    let at = adj_at[a] as usize..adj_at[a + 1] as usize;
+                    adj[at].contains(&(b as u32))
                 };
                 assert!(lp.windows(2).all(|w| adjacent(w[0], w[1])), "{lp:?}");
                 assert!(lp[1..].iter().all(|&w| global.interior[w]));
