@@ -81,13 +81,15 @@ pub type Bounds = [[[f64; 2]; 3]; 4];
 /// [`edge_spans`] (none) and empty [`edge_range`]s, as the bounds would.
 #[inline]
 pub fn corner_bounds(c: &[[f64; 3]; 4], axes: u8) -> Bounds {
-    let mut b = [[[f64::INFINITY, f64::NEG_INFINITY]; 3]; 4];
-    for a in (0..3).filter(|a| axes >> a & 1 == 1) {
-        for (bk, ck) in b.iter_mut().zip(c) {
-            bk[a] = box_bounds(ck[a]);
-        }
-    }
-    b
+    std::array::from_fn(|k| {
+        std::array::from_fn(|a| {
+            if axes >> a & 1 == 1 {
+                box_bounds(c[k][a])
+            } else {
+                [f64::INFINITY, f64::NEG_INFINITY]
+            }
+        })
+    })
 }
 
 /// Per edge of a tet: bit `a` set when the edge's box, grown by `2·EPS`,

@@ -17,7 +17,8 @@ impl Predicates<3, 2> for Dim<3, 2> {
 
     /// An edge is skipped unless its box, grown by `2·EPS`, holds an
     /// integer on both axes ([`box_spans`]) and one of those integer points
-    /// is near its line ([`segment_clear_of_grid`]).
+    /// is near its line ([`segment_clear_of_grid`]), or when both its ends
+    /// are already bad (it cannot add a bit: the mask is the same).
     ///
     /// A triangle whose range spans at most one axis ([`spanned_axes`]:
     /// then no edge spans both) makes bad only its corners on that axis'
@@ -42,7 +43,14 @@ impl Predicates<3, 2> for Dim<3, 2> {
             if near_int_in(c[k][0], b[k][0]) || near_int_in(c[k][1], b[k][1]) {
                 mask |= 1 << k;
             }
+        }
+        for k in 0..3 {
             let l = (k + 1) % 3;
+            // both ends already bad: the edge cannot add a bit
+            let ends = 1 << k | 1 << l;
+            if mask & ends == ends {
+                continue;
+            }
             if !(box_spans(b[k][0], b[l][0]) && box_spans(b[k][1], b[l][1])) {
                 continue;
             }

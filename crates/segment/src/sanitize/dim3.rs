@@ -10,6 +10,9 @@ use crate::near::{
 };
 use dualex_util::rng::SplitMix;
 
+/// Every corner of a tet bad.
+const FULL: u8 = 0b1111;
+
 impl Predicates<4, 3> for Dim<4, 3> {
     const MIN_TASK: usize = 512;
     const COUNT_ROUND_PAST_SCHEDULE: bool = false;
@@ -17,6 +20,10 @@ impl Predicates<4, 3> for Dim<4, 3> {
     /// The tests of [`crate::near::bad_vertices`]; edges whose box holds
     /// an integer on fewer than two axes, and faces whose box misses one,
     /// are skipped: they cannot be near an iso-line or a grid point.
+    ///
+    /// A test that can only set bits already set is skipped (an edge
+    /// whose ends, a face whose corners are already bad; everything once
+    /// all four are): the mask is the same.
     ///
     /// A tet whose range spans at most one axis ([`spanned_axes`]: then no
     /// edge spans two, no face three) makes bad only its corners on that
@@ -38,10 +45,14 @@ impl Predicates<4, 3> for Dim<4, 3> {
                 mask |= 1 << k;
             }
         }
+        if mask == FULL {
+            return mask;
+        }
         let span = edge_spans(&bounds);
         for (&[k, l], &bits) in EDGES.iter().zip(&span) {
-            // fewer than two axes
-            if bits & bits.wrapping_sub(1) == 0 {
+            // fewer than two axes, or both ends already bad
+            let ends = 1 << k | 1 << l;
+            if bits & bits.wrapping_sub(1) == 0 || mask & ends == ends {
                 continue;
             }
             let range = edge_range(&bounds, k, l);
@@ -49,11 +60,13 @@ impl Predicates<4, 3> for Dim<4, 3> {
                 mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
             }
         }
-        if axes != 0b111 {
+        if axes != 0b111 || mask == FULL {
             return mask;
         }
         for (f, [e0, e1, e2]) in FACE_EDGES.into_iter().enumerate() {
-            if span[e0] | span[e1] | span[e2] != 0b111 {
+            // the face's corners are all but corner `f`
+            let corners = FULL & !(1 << f);
+            if span[e0] | span[e1] | span[e2] != 0b111 || mask & corners == corners {
                 continue;
             }
             let [i, j, k] = face_corners(f);
