@@ -36,21 +36,33 @@ impl Shape {
 }
 
 /// Components of cells joined through shared vertices (indices
-/// `>= n_vertices` ignored).
+/// `>= n_vertices` ignored): per cell, each corner's root joined to the
+/// cell's (one find per corner); the components are the used roots.
 pub fn cell_components<const K: usize>(n_vertices: usize, cells: &[[u32; K]]) -> usize {
-    let mut uf = UnionFind::new(n_vertices);
+    use dualex_util::union_find::find;
+    let mut parent: Vec<u32> = (0..n_vertices as u32).collect();
     let mut used = vec![false; n_vertices];
     for c in cells
         .iter()
         .filter(|c| c.iter().all(|&v| (v as usize) < n_vertices))
     {
+        // the cell's root so far, each corner's root joined to it (the
+        // smaller root wins, as in `UnionFind::union`)
         used[c[0] as usize] = true;
+        let mut root = find(&mut parent, c[0]);
         for &v in &c[1..] {
             used[v as usize] = true;
-            uf.union(c[0] as usize, v as usize);
+            let r = find(&mut parent, v);
+            if r != root {
+                parent[r.max(root) as usize] = r.min(root);
+                root = r.min(root);
+            }
         }
     }
-    uf.count_sets((0..n_vertices).filter(|&v| used[v]))
+    // a set joins used vertices only, its root among them
+    (0..n_vertices)
+        .filter(|&v| used[v] && parent[v] == v as u32)
+        .count()
 }
 
 /// An undirected edge as one key, `lo << 32 | hi` (the checkers' edge
@@ -137,10 +149,10 @@ pub fn surface_shape<const K: usize>(n_vertices: usize, faces: &[[u32; K]]) -> S
 /// Every face, its corners sorted `a ≤ b ≤ c`, is bucketed by `a` (a
 /// counting sort in tet order, into parallel arrays: the key `b << 32 |
 /// c`, the place). A bucket holds one vertex's few faces: its keys are
-/// sorted (plain `u64`s), a key met once is a boundary face, whose place
-/// is then looked up in the bucket. Buckets are read in parallel blocks,
-/// the places collected in bucket order: the result depends only on the
-/// tets, not on the threads.
+/// counted in a small hash table ([`LoneTable`], no sort), a key met once
+/// is a boundary face. Buckets are read in parallel blocks, the places
+/// collected in bucket order, each bucket's in tet order: the result
+/// depends only on the tets, not on the threads.
 pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
     use rayon::prelude::*;
     let nb = tets.len().max(1);
@@ -172,8 +184,7 @@ pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
     let mut least = vec![0u32; if folded { n } else { 0 }];
     let mut next = start[..nb].to_vec();
     for (i, t) in tets.iter().enumerate() {
-        for f in 0..4 {
-            let (a, bc) = sorted_face(t, f);
+        for (a, bc, f) in sorted_faces(t) {
             let j = &mut next[bucket(a)];
             (keys[*j], places[*j]) = (bc, 4 * i + f);
             if folded {
@@ -183,7 +194,7 @@ pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
         }
     }
     drop(next);
-    let lone_in = |s: usize, e: usize, out: &mut Vec<usize>, sorted: &mut Vec<u64>| {
+    let lone_in = |s: usize, e: usize, out: &mut Vec<usize>, table: &mut LoneTable| {
         if folded {
             let mut run: Vec<(u64, u32, usize)> =
                 (s..e).map(|j| (keys[j], least[j], places[j])).collect();
@@ -194,28 +205,61 @@ pub fn lone_tet_faces(tets: &[[u32; 4]]) -> Vec<usize> {
             );
             return;
         }
-        sorted.clear();
-        sorted.extend_from_slice(&keys[s..e]);
-        sorted.sort_unstable();
-        for run in sorted.chunk_by(|x, y| x == y) {
-            if let [key] = run {
-                let at = keys[s..e].iter().position(|k| k == key);
-                out.extend(at.map(|j| places[s + j]));
-            }
-        }
+        table.lone_keys(&keys[s..e], s + 1);
+        out.extend((s..e).filter(|&j| table.met[j - s] == 1).map(|j| places[j]));
     };
     (0..nb.div_ceil(LONE_FACE_BLOCK))
         .into_par_iter()
         .flat_map_iter(|blk| {
             let b0 = blk * LONE_FACE_BLOCK;
             let b1 = (b0 + LONE_FACE_BLOCK).min(nb);
-            let (mut out, mut sorted) = (Vec::new(), Vec::new());
+            let (mut out, mut table) = (Vec::new(), LoneTable::default());
             for b in b0..b1 {
-                lone_in(start[b], start[b + 1], &mut out, &mut sorted);
+                lone_in(start[b], start[b + 1], &mut out, &mut table);
             }
             out
         })
         .collect()
+}
+
+/// One bucket's faces counted by key, with no sort: an open-addressing
+/// table of `(stamp, first face)` (a stamp other than the bucket's marks
+/// an empty slot, so the table is never cleared) and per face how often
+/// its key was met (0 for a face whose key met an earlier face).
+#[derive(Default)]
+struct LoneTable {
+    slots: Vec<(usize, u32)>,
+    met: Vec<u32>,
+}
+
+impl LoneTable {
+    /// Counts the keys of one bucket (`mark`: unique per non-empty bucket,
+    /// never 0) into `met[j]` of its first face `j` with that key.
+    fn lone_keys(&mut self, keys: &[u64], mark: usize) {
+        let size = (2 * keys.len()).next_power_of_two().max(8);
+        if self.slots.len() < size {
+            self.slots.resize(size, (0, 0));
+        }
+        if self.met.len() < keys.len() {
+            self.met.resize(keys.len(), 0);
+        }
+        let mask = size - 1;
+        for (j, &key) in keys.iter().enumerate() {
+            let mut h = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 32) as usize & mask;
+            loop {
+                let (stamp, first) = self.slots[h];
+                if stamp != mark {
+                    (self.slots[h], self.met[j]) = ((mark, j as u32), 1);
+                    break;
+                }
+                if keys[first as usize] == key {
+                    (self.met[first as usize], self.met[j]) = (self.met[first as usize] + 1, 0);
+                    break;
+                }
+                h = (h + 1) & mask;
+            }
+        }
+    }
 }
 
 /// Buckets per parallel block of [`lone_tet_faces`].
@@ -230,15 +274,24 @@ fn least_two_greatest(t: &[u32; 4]) -> (u32, u32, u32) {
     (a.min(c), a.max(c).min(b.min(d)), b.max(d))
 }
 
-/// The face of `t` opposite corner `f`, its corners sorted `a ≤ b ≤ c`, as
-/// `(a, b << 32 | c)`.
+/// The four faces of `t`, each as `(a, b << 32 | c, f)`: its corners
+/// sorted `a ≤ b ≤ c`, and the corner `f` it is opposite. The tet's
+/// corners are sorted once (a network of five exchanges on `v << 2 |
+/// corner`); a face leaves one of them out.
 #[inline]
-fn sorted_face(t: &[u32; 4], f: usize) -> (u32, u64) {
-    let [x, y, z] = opposite_face(t, f);
-    let (lo, hi) = (x.min(y).min(z), x.max(y).max(z));
-    // the middle one: the three's xor without the least and the greatest
-    let mid = x ^ y ^ z ^ lo ^ hi;
-    (lo, u64::from(mid) << 32 | u64::from(hi))
+fn sorted_faces(t: &[u32; 4]) -> [(u32, u64, usize); 4] {
+    let mut s: [u64; 4] = std::array::from_fn(|k| u64::from(t[k]) << 2 | k as u64);
+    for (i, j) in [(0, 1), (2, 3), (0, 2), (1, 3), (1, 2)] {
+        (s[i], s[j]) = (s[i].min(s[j]), s[i].max(s[j]));
+    }
+    let v = s.map(|x| x >> 2);
+    let face = |a: u64, b: u64, c: u64, out: u64| (a as u32, b << 32 | c, (out & 3) as usize);
+    [
+        face(v[1], v[2], v[3], s[0]),
+        face(v[0], v[2], v[3], s[1]),
+        face(v[0], v[1], v[3], s[2]),
+        face(v[0], v[1], v[2], s[3]),
+    ]
 }
 
 /// The boundary triangles of a tet mesh (faces of exactly one tet), each
@@ -270,10 +323,27 @@ pub fn tet_shape_of(n_vertices: usize, tets: &[[u32; 4]], lone: &[usize]) -> Sha
         || cell_components(n_vertices, tets),
         || surface_shape(n_vertices, &tet_boundary_of(tets, lone)),
     );
+    volume_shape(components, b)
+}
+
+/// [`tet_shape`] and the boundary faces ([`lone_tet_faces`]) it found:
+/// the faces and the components in parallel, then the boundary surface.
+pub fn tet_shape_and_boundary(n_vertices: usize, tets: &[[u32; 4]]) -> (Shape, Vec<usize>) {
+    let (lone, components) = rayon::join(
+        || lone_tet_faces(tets),
+        || cell_components(n_vertices, tets),
+    );
+    let b = surface_shape(n_vertices, &tet_boundary_of(tets, &lone));
+    (volume_shape(components, b), lone)
+}
+
+/// A volume's shape: its cell components and its boundary surface's
+/// Euler characteristic and components (`boundary`).
+fn volume_shape(components: usize, boundary: Shape) -> Shape {
     Shape {
         components,
-        euler: b.euler,
-        boundary_components: b.components,
+        euler: boundary.euler,
+        boundary_components: boundary.components,
     }
 }
 

@@ -86,11 +86,8 @@ impl Dimension<8, 3> for TetMap {
     type Boundary = Vec<usize>;
 
     fn input_shape(&self) -> InputShape<Vec<usize>> {
-        let lone = topo::lone_tet_faces(&self.simplices);
-        InputShape {
-            shape: topo::tet_shape_of(self.positions.len(), &self.simplices, &lone),
-            boundary: lone,
-        }
+        let (shape, boundary) = topo::tet_shape_and_boundary(self.positions.len(), &self.simplices);
+        InputShape { shape, boundary }
     }
 
     /// (3D always counts its singular edges: no `singularities` switch.)

@@ -90,6 +90,7 @@ fn block_boundary() {
         (shape.components, shape.euler, shape.boundary_components),
         (1, 2, 1)
     );
+    assert_eq!(tet_shape_and_boundary(nv, &tets), (shape, lone));
 }
 
 /// A torus of `m × (m − 1)` squares cut in two triangles each
@@ -159,6 +160,18 @@ fn bucketed_counts_equal_hash_maps() {
         let once = edges.values().filter(|&&c| c == 1).count();
         (edges.len() as i64, once)
     }
+    fn reference_components(n: usize, tets: &[[u32; 4]]) -> usize {
+        let mut uf = UnionFind::new(n);
+        let good = tets.iter().filter(|t| t.iter().all(|&v| (v as usize) < n));
+        let used: Vec<usize> = good.flatten().map(|&v| v as usize).collect();
+        for (a, b) in used
+            .chunks(4)
+            .flat_map(|t| t[1..].iter().map(|&b| (t[0], b)))
+        {
+            uf.union(a, b);
+        }
+        uf.count_sets(used.into_iter())
+    }
     let mut z = 5u64;
     let mut next = |m: u64| {
         z = z
@@ -172,6 +185,8 @@ fn bucketed_counts_equal_hash_maps() {
             .map(|_| [0; 4].map(|_| next(n as u64 + 1)))
             .collect();
         assert_eq!(tet_boundary(&tets), reference_boundary(&tets), "{tets:?}");
+        let components = reference_components(n, &tets);
+        assert_eq!(cell_components(n, &tets), components, "{tets:?}");
         let tris = reference_boundary(&tets);
         let shape = surface_shape(n, &tris);
         let (e, once) = reference_edges(n, &tris);
