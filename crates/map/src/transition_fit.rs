@@ -119,18 +119,7 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
         }
     }
     let tol = opts.tolerance_at(scale);
-    // corners equal bit for bit in both charts (a facet off the seams):
-    // half the table, and the identity's translation is 0.0
-    let same = a[..m]
-        .iter()
-        .flatten()
-        .zip(b[..m].iter().flatten())
-        .all(|(x, y)| x.to_bits() == y.to_bits());
-    let table = if same {
-        mismatch_table_same(&a[..m])
-    } else {
-        mismatch_table(&a[..m], &b[..m])
-    };
+    let table = mismatch_table(&a[..m], &b[..m]);
     let mut mis = [0.0f64; MAX_ROTATIONS];
     let fast = match identity_fit::<D>(&table, tol, group) {
         Some(best) => Some((Rot::IDENTITY, best)),
@@ -188,15 +177,9 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
         },
     };
     if let Some(rot) = single {
-        // the common case: the fit determines the rotation; the identity
-        // between equal corners has the translation 0.0, as computed
-        let same = same && rot.is_identity();
-        let trans = if same { [0.0; D] } else { translation(&rot) };
-        let (rounded, residual) = if same {
-            ([0; D], 0.0)
-        } else {
-            rounded_with_residual(&trans)
-        };
+        // the common case: the fit determines the rotation
+        let trans = translation(&rot);
+        let (rounded, residual) = rounded_with_residual(&trans);
         return Ok(Fit {
             rot,
             #[cfg(test)]
@@ -403,34 +386,6 @@ fn mismatch_table<const D: usize>(a: &[[f64; D]], b: &[[f64; D]]) -> [f64; 18] {
                 if minus > row[2 * l + 1] {
                     row[2 * l + 1] = minus;
                 }
-            }
-        }
-    }
-    table
-}
-
-/// [`mismatch_table`]`(a, a)`, bit for bit, with half the work: with
-/// `eb = ea` the entry of axis `j` to direction `±l` is
-/// `|±ea[j] − ea[l]|`, the same float as that of `l` to `±j` (`x − y` is
-/// `−(y − x)` and `−x − y` is `−y − x` exactly), and the entry of `j` to
-/// `+j` is 0.0, the table's start.
-fn mismatch_table_same<const D: usize>(a: &[[f64; D]]) -> [f64; 18] {
-    let mut table = [0.0f64; 18];
-    let mut raise = |at: usize, x: f64| {
-        if x > table[at] {
-            table[at] = x;
-        }
-    };
-    for i in 1..a.len() {
-        let ea: [f64; D] = std::array::from_fn(|k| a[i][k] - a[0][k]);
-        for j in 0..D {
-            raise(6 * j + 2 * j + 1, (-ea[j] - ea[j]).abs());
-            for l in j + 1..D {
-                let (plus, minus) = ((ea[j] - ea[l]).abs(), (-ea[j] - ea[l]).abs());
-                raise(6 * j + 2 * l, plus);
-                raise(6 * l + 2 * j, plus);
-                raise(6 * j + 2 * l + 1, minus);
-                raise(6 * l + 2 * j + 1, minus);
             }
         }
     }

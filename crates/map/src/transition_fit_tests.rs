@@ -251,30 +251,3 @@ fn identity_fast_path_agrees_2d_3d() {
     identity_fast_path_agrees::<2>(5);
     identity_fast_path_agrees::<3>(6);
 }
-
-/// The table of equal charts is the general one, bit for bit (signed
-/// zeros, halves, noise, far coordinates, collapsed corners).
-fn same_table_agrees<const N: usize, const D: usize>(seed: u64) {
-    let mut rng = SplitMix::new(seed);
-    for _ in 0..20_000 {
-        let far = if rng.below(8) == 0 { -1e9 } else { 0.0 };
-        let mut a = [[0.0f64; D]; N];
-        for x in a.iter_mut().flatten() {
-            *x = match rng.below(10) {
-                0 => -0.0,
-                _ => coordinate(&mut rng, far),
-            };
-        }
-        if rng.below(3) == 0 {
-            a[N - 1] = a[0];
-        }
-        let (want, got) = (mismatch_table(&a, &a), mismatch_table_same(&a));
-        assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{a:?}");
-    }
-}
-
-#[test]
-fn same_table_agrees_2d_3d() {
-    same_table_agrees::<3, 2>(8);
-    same_table_agrees::<4, 3>(9);
-}
