@@ -12,11 +12,16 @@
 //!   checked as a quad mesh);
 //! - [`topology`]: the output's topology against the input's (components,
 //!   Euler characteristic, boundary components);
+//! - [`glued`]: the input's shape read off the facet adjacency of a map
+//!   its extraction accepted (the same as [`topology`]'s);
 //! - [`handover`]: a report kept with a print of its mesh ([`Checked`]),
 //!   read again instead of checking the same mesh twice.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod glued;
+#[cfg(test)]
+mod glued_tests;
 pub mod handover;
 pub mod hex;
 pub mod quad;

@@ -25,6 +25,19 @@ pub struct Shape {
     pub boundary_components: usize,
 }
 
+/// What the last check and the geometric stage read of an input map:
+/// its [`Shape`] and its boundary as the stage reads it (of a tet map,
+/// its faces of one tet: their places `4·tet + f`, in no order; of a
+/// triangle map, nothing: `()`).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct InputShape<B> {
+    /// Its components, Euler characteristic and boundary components, as
+    /// the check compares them with the output's.
+    pub shape: Shape,
+    /// Its boundary (see above).
+    pub boundary: B,
+}
+
 impl Shape {
     fn to_json(self) -> Value {
         json!({
@@ -339,7 +352,7 @@ pub fn tet_shape_and_boundary(n_vertices: usize, tets: &[[u32; 4]]) -> (Shape, V
 
 /// A volume's shape: its cell components and its boundary surface's
 /// Euler characteristic and components (`boundary`).
-fn volume_shape(components: usize, boundary: Shape) -> Shape {
+pub(crate) fn volume_shape(components: usize, boundary: Shape) -> Shape {
     Shape {
         components,
         euler: boundary.euler,

@@ -173,8 +173,8 @@ where
 /// here), its validity (hexes combinatorially: those of a messy map may
 /// be geometrically inverted) and the last checks ([`crate::verify`]),
 /// with the topology compared; also the input's shape and boundary
-/// ([`steps::input_shape`], found after the extraction; for the
-/// geometric stage too).
+/// ([`steps::input_shape_of`]: as the extraction found it on its first
+/// pass; for the geometric stage too).
 fn extract_checked<A, const N: usize, const D: usize, const K: usize>(
     map: &SimplexMap<N, D>,
     name: &str,
@@ -196,7 +196,7 @@ where
         }
     };
     laps.lap("extract");
-    let input = steps::input_shape(map);
+    let input = steps::input_shape_of(map, &ex);
     laps.lap("input_shape");
     let check = steps::check(map, &input, &ex);
     laps.lap("check");

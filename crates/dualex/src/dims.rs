@@ -15,6 +15,7 @@ use crate::stats::{Repairs, Stats, TopologyComparison};
 use crate::steps::{Check, Dimension, InputShape, Report, SegmentStats};
 use crate::steps::{HexExtraction, HexReport, QuadExtraction, QuadReport};
 use crate::{GeometryOptions, GeometryReport, InputError, Options, TetMap, TriMap};
+use dualex_check::glued;
 use dualex_check::topology as topo;
 use dualex_check::Checked;
 use dualex_map::TransitionOptions;
@@ -39,6 +40,10 @@ impl Dimension<4, 2> for TriMap {
             shape: topo::surface_shape(self.positions.len(), &self.simplices),
             boundary: (),
         }
+    }
+
+    fn carried(&self, x: &QuadExtraction) -> Option<InputShape<()>> {
+        x.stats.input.clone()
     }
 
     fn extract(&self, opts: &Options, singularities: bool) -> Result<QuadExtraction, InputError> {
@@ -88,6 +93,16 @@ impl Dimension<8, 3> for TetMap {
     fn input_shape(&self) -> InputShape<Vec<usize>> {
         let (shape, boundary) = topo::tet_shape_and_boundary(self.positions.len(), &self.simplices);
         InputShape { shape, boundary }
+    }
+
+    /// The boundary surface's shape found here, from the faces of one
+    /// tet carried (`dualex_check::glued::tet_shape`).
+    fn carried(&self, x: &HexExtraction) -> Option<InputShape<Vec<usize>>> {
+        let g = x.stats.input.as_ref()?;
+        Some(InputShape {
+            shape: glued::tet_shape(self.positions.len(), &self.simplices, g),
+            boundary: g.lone.clone(),
+        })
     }
 
     /// (3D always counts its singular edges: no `singularities` switch.)

@@ -154,7 +154,7 @@ where
 {
     let (map, welded) = welded(map, opts.weld);
     let x = steps::extract(&*map, opts, true)?;
-    let input = steps::input_shape(&*map);
+    let input = steps::input_shape_of(&*map, &x);
     finish(&*map, x, welded, opts, None, Some(input))
 }
 
@@ -171,7 +171,7 @@ pub(crate) fn finish<M: Dimension<K, D>, const K: usize, const D: usize>(
     staged: Option<GeometryReport>,
     input: Option<InputShape<M::Boundary>>,
 ) -> Result<Output<K, D>, Error> {
-    let input = input.unwrap_or_else(|| steps::input_shape(map));
+    let input = input.unwrap_or_else(|| steps::input_shape_of(map, &x));
     let check = steps::check(map, &input, &x);
     let mut stats = x.stats.stats(&check);
     checked(&check.errors, &stats.topology, opts.strict)?;

@@ -260,3 +260,5 @@ pub fn write_tet_map(path: impl AsRef<Path>, map: &TetMap) -> Result<(), Error> 
 mod tests;
 #[cfg(test)]
 mod tests_geometry;
+#[cfg(test)]
+mod tests_input_shape;

@@ -18,9 +18,10 @@
 //! What the check and the geometric stage read of the input map, its
 //! [`InputShape`] (the topology the check compares with the output's; a
 //! tet map's faces of one tet, the geometric stage's reference too), is
-//! found once ([`input_shape`], which depends on the map only; callers
-//! find it after the extraction) and handed to both. The check's judgement of the output stays its own (the output's
-//! faces and edges are counted by the checker itself).
+//! found once and handed to both: by [`input_shape`] (of the map only), or
+//! as the extraction found it on its first pass ([`input_shape_of`]). The
+//! check's judgement of the output stays its own (the output's faces and
+//! edges are counted by the checker itself).
 //!
 //! What differs by dimension (which extraction, checker, topology and
 //! geometric stage runs) is the map's [`Dimension`], one impl for
@@ -37,6 +38,13 @@
 //! [`TetMap`]: crate::TetMap
 
 use crate::{GeometryOptions, GeometryReport, InputError, Options, Stats};
+/// What [`check`] and [`geometry`] read of the input map (see the module
+/// docs), found once: by [`input_shape`], or carried by the extraction
+/// ([`input_shape_of`]). Its `boundary`: of a tet map, its faces of one
+/// tet (places `4·tet + f`, in no order); of a triangle map, nothing
+/// (`()`: the geometric stage's curves find its boundary edges among all
+/// the edges they visit anyway).
+pub use dualex_check::topology::InputShape;
 use dualex_check::topology::{Comparison, Shape};
 use dualex_map::SimplexMap;
 
@@ -107,7 +115,8 @@ impl Check {
 /// The per-dimension parts of steps 2–4, one impl per map type:
 /// [`TriMap`](crate::TriMap) → quads (`K` = 4, `D` = 2) and
 /// [`TetMap`](crate::TetMap) → hexes (8, 3), in `dims.rs`. Call them
-/// through [`extract`], [`input_shape`], [`check`] and [`geometry`].
+/// through [`extract`], [`input_shape`] (or [`input_shape_of`]),
+/// [`check`] and [`geometry`].
 pub trait Dimension<const K: usize, const D: usize> {
     /// The extraction's own report: [`QuadReport`] or [`HexReport`].
     type Report: Report + Send;
@@ -116,6 +125,9 @@ pub trait Dimension<const K: usize, const D: usize> {
     type Boundary: Send;
     /// The input's shape (see [`input_shape`]).
     fn input_shape(&self) -> InputShape<Self::Boundary>;
+    /// The input's shape as the extraction `x` found it on its first
+    /// pass (see [`input_shape_of`]).
+    fn carried(&self, x: &Extraction<K, D, Self::Report>) -> Option<InputShape<Self::Boundary>>;
     /// Steps 1–11 (see [`extract`]).
     fn extract(
         &self,
@@ -164,20 +176,6 @@ pub fn extract<M: Dimension<K, D>, const K: usize, const D: usize>(
     Dimension::extract(map, opts, singularities)
 }
 
-/// What [`check`] and [`geometry`] read of the input map (see the
-/// module docs), found once by [`input_shape`].
-#[derive(Clone, Debug)]
-pub struct InputShape<B> {
-    /// Its components, Euler characteristic and boundary components, as
-    /// the check compares them with the output's.
-    pub shape: Shape,
-    /// Of a tet map, its faces of one tet (their places `4·tet + f`, in no
-    /// order: `dualex_check::topology::lone_tet_faces`); of a triangle
-    /// map, nothing (`()`: the geometric stage's curves find its boundary
-    /// edges among all the edges they visit anyway).
-    pub boundary: B,
-}
-
 /// The input's shape and boundary ([`InputShape`]), read by [`check`] and
 /// [`geometry`]: of the map only (found after the extraction: beside it,
 /// the peak memory grew, BENCHMARKS.md).
@@ -185,6 +183,16 @@ pub fn input_shape<M: Dimension<K, D>, const K: usize, const D: usize>(
     map: &M,
 ) -> InputShape<M::Boundary> {
     Dimension::input_shape(map)
+}
+
+/// [`input_shape`] of `map` as its extraction `x` found it (from the
+/// adjacency of its first pass: `dualex_check::glued`), or found afresh
+/// when `x` carries none; `x` must be the extraction of `map`.
+pub fn input_shape_of<M: Dimension<K, D>, const K: usize, const D: usize>(
+    map: &M,
+    x: &Extraction<K, D, M::Report>,
+) -> InputShape<M::Boundary> {
+    map.carried(x).unwrap_or_else(|| map.input_shape())
 }
 
 /// The last check: the output mesh of `x`, extracted from `map`, checked

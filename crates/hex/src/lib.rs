@@ -45,7 +45,7 @@ use dualex_map::{InputError, TetMap, TransitionOptions};
 pub use dualex_segment::grid_offset::GridOffset;
 use dualex_segment::place::{place, Placed};
 use dualex_segment::relax;
-use dualex_segment::steps::{self, Segmented};
+use dualex_segment::steps::{self, Model, Segmented};
 use dualex_util::timing::Laps;
 pub use stats::HexStats;
 
@@ -108,14 +108,15 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     let mut st = HexStats::default();
     let mut laps = Laps::start();
     // 1–7: the segmentation (1: reflected charts refused; 3: stuck edges
-    // and faces split), the input's own counts (not those of the split
-    // map) read on the first pass
+    // and faces split), the input's own counts and shape (not those of
+    // the split map) read on the first pass
     let o = steps::Options::new(&opts.transitions, opts.grid_offset, opts.seed);
-    let first_pass = |m: &TetMap, _: &_, singular: &Vec<_>| {
+    let first_pass = |m: &TetMap, model: &Model<4, 3>, singular: &Vec<_>| {
         st.input_tets = m.len();
         st.singular_edges = singular.len();
         st.singular_edge_angles = dualex_map::report::singular_edge_histogram(singular);
         (st.reverted_tets, st.degenerate_tets) = dualex_map::singularity::quality(m);
+        st.input = Some(dualex_check::glued::tet_glued(&model.topo.adj));
     };
     let seg = steps::segment(map, &o, &mut st.segment, &mut laps, first_pass)?;
     let before = st.clone();

@@ -63,6 +63,10 @@ pub struct HexStats {
     /// the facade's last check (read there while the mesh is unchanged;
     /// not in the JSON).
     pub checked: Option<dualex_check::Checked<dualex_check::HexReport>>,
+    /// The input's components and faces of one tet, read off the first
+    /// pass's adjacency (`dualex_check::glued::tet_glued`), for the
+    /// facade's input shape (not in the JSON).
+    pub input: Option<dualex_check::glued::TetGlued>,
 }
 
 impl AsMut<SegmentStats> for HexStats {

@@ -53,6 +53,7 @@ mod slots;
 pub mod stats;
 
 use dualex_cells::QuadMesh;
+use dualex_check::{glued, topology::InputShape};
 use dualex_map::{InputError, TransitionOptions, TriMap};
 pub use dualex_segment::grid_offset::GridOffset;
 use dualex_segment::place::Placed;
@@ -122,7 +123,7 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     let mut st = QuadStats::default();
     let mut laps = Laps::start();
     // 1–7: the segmentation (3: edges between singular vertices split),
-    // the input's own counts read on the first pass
+    // the input's own counts and shape read on the first pass
     let o = steps::Options::new(&opts.transitions, opts.grid_offset, opts.seed);
     let seg = steps::segment(map, &o, &mut st.segment, &mut laps, |m, model, ()| {
         st.input_triangles = m.len();
@@ -130,6 +131,11 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
         if opts.singularity_stats {
             st.singularities = stats::input_singularities(m, model);
         }
+        let shape = glued::surface_shape(m.positions.len(), &m.simplices, &model.topo.adj);
+        st.input = Some(InputShape {
+            shape,
+            boundary: (),
+        });
     })?;
     let before = st.clone();
     let out = graph_and_mesh(seg, opts, (&mut st, &mut laps));

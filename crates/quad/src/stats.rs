@@ -88,6 +88,10 @@ pub struct QuadStats {
     /// the facade's last check (read there while the mesh is unchanged;
     /// not in the JSON).
     pub checked: Option<dualex_check::Checked<dualex_check::QuadReport>>,
+    /// The input's shape, read off the first pass's adjacency
+    /// (`dualex_check::glued`), for the facade's last check (not in the
+    /// JSON).
+    pub input: Option<dualex_check::topology::InputShape<()>>,
 }
 
 impl AsMut<SegmentStats> for QuadStats {

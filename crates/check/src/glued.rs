@@ -1,0 +1,130 @@
+//! The input's [`Shape`] read off the facet adjacency its extraction built
+//! anyway (the map's `Topology`), instead of a pass of its own over the
+//! simplices ([`topology::surface_shape`], [`topology::tet_shape_and_boundary`]);
+//! of tets in two parts ([`tet_glued`] on the first pass, then [`tet_shape`]).
+//!
+//! Input: the simplices and their adjacency `adj[s][f]`: the simplex
+//! across the facet opposite corner `f` of `s`, or [`NONE`]. Output: the
+//! same [`Shape`] (and, of tets, the same faces of one tet, in another
+//! order) as the functions above, provided that the adjacency is that of
+//! a map the extraction accepted:
+//! - facets are glued when their vertex sets are equal, never three at a
+//!   time (a facet of one simplex is [`NONE`]): the faces of one tet are
+//!   the unglued facets, and a triangle surface's edges are its glued
+//!   pairs plus its unglued sides;
+//! - the simplices around every vertex are connected through their
+//!   facets: the components through shared vertices are those across
+//!   facets.
+//!
+//! Tests (`glued_tests.rs`, and the facade's on whole extractions) compare
+//! both ways on maps with boundaries, several components and pinched
+//! vertices.
+
+use crate::topology::{self, Shape};
+use dualex_util::union_find::UnionFind;
+
+/// No neighbour across a facet (a facet of one simplex).
+pub const NONE: u32 = u32::MAX;
+
+/// Components of the simplices joined across their glued facets: a flood
+/// fill (each simplex pushed once).
+pub fn facet_components<const N: usize>(adj: &[[u32; N]]) -> usize {
+    let mut seen = vec![false; adj.len()];
+    let (mut stack, mut count) = (Vec::new(), 0);
+    for s in 0..adj.len() {
+        if seen[s] {
+            continue;
+        }
+        (seen[s], count) = (true, count + 1);
+        stack.push(s as u32);
+        while let Some(t) = stack.pop() {
+            for &n in &adj[t as usize] {
+                if n != NONE && !seen[n as usize] {
+                    seen[n as usize] = true;
+                    stack.push(n);
+                }
+            }
+        }
+    }
+    count
+}
+
+/// The unglued facets, as places `N·s + f` (the facet opposite corner
+/// `f` of `s`), in that order.
+pub fn lone_facets<const N: usize>(adj: &[[u32; N]]) -> Vec<usize> {
+    let mut out = Vec::new();
+    for (s, a) in adj.iter().enumerate() {
+        for (f, &n) in a.iter().enumerate() {
+            if n == NONE {
+                out.push(N * s + f);
+            }
+        }
+    }
+    out
+}
+
+/// [`topology::surface_shape`] of an accepted triangle map (module docs):
+/// `E = (3F + B) / 2` edges for `B` unglued sides, the vertices used
+/// counted, the boundary loops joined along the unglued sides.
+pub fn surface_shape(n_vertices: usize, triangles: &[[u32; 3]], adj: &[[u32; 3]]) -> Shape {
+    let mut used = vec![false; n_vertices];
+    for t in triangles {
+        for &v in t {
+            used[v as usize] = true;
+        }
+    }
+    let n_used = used.iter().filter(|&&u| u).count() as i64;
+    let lone = lone_facets(adj);
+    let n_faces = triangles.len() as i64;
+    let n_edges = (3 * n_faces + lone.len() as i64) / 2;
+    Shape {
+        components: facet_components(adj),
+        euler: n_used - n_edges + n_faces,
+        boundary_components: boundary_loops(n_vertices, triangles, &lone),
+    }
+}
+
+/// Components of the sides `lone` (places `3·t + f`, the side opposite
+/// corner `f`) through their ends; 0 without any.
+fn boundary_loops(n_vertices: usize, triangles: &[[u32; 3]], lone: &[usize]) -> usize {
+    if lone.is_empty() {
+        return 0;
+    }
+    let mut loops = UnionFind::new(n_vertices);
+    let mut on_boundary = vec![false; n_vertices];
+    for &p in lone {
+        let t = &triangles[p / 3];
+        let (a, b) = (t[(p + 1) % 3] as usize, t[(p + 2) % 3] as usize);
+        loops.union(a, b);
+        (on_boundary[a], on_boundary[b]) = (true, true);
+    }
+    loops.count_sets((0..n_vertices).filter(|&v| on_boundary[v]))
+}
+
+/// What a tet map's first pass reads off its adjacency (module docs):
+/// the rest of its shape, the boundary surface's, is found later by
+/// [`tet_shape`], when the pass's model is no longer held (its arrays
+/// are as long as the vertices: found beside the model, they raised the
+/// peak memory).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct TetGlued {
+    /// Components of the tets across their faces.
+    pub components: usize,
+    /// The faces of one tet, places `4·tet + f`, in tet order.
+    pub lone: Vec<usize>,
+}
+
+/// [`TetGlued`] of an accepted tet map: the components and the faces of
+/// one tet, in parallel.
+pub fn tet_glued(adj: &[[u32; 4]]) -> TetGlued {
+    let (components, lone) = rayon::join(|| facet_components(adj), || lone_facets(adj));
+    TetGlued { components, lone }
+}
+
+/// [`topology::tet_shape_and_boundary`]'s shape of an accepted tet map
+/// from its [`TetGlued`] `g`: the components across faces, the boundary
+/// surface's shape as there.
+pub fn tet_shape(n_vertices: usize, tets: &[[u32; 4]], g: &TetGlued) -> Shape {
+    let b = topology::surface_shape(n_vertices, &topology::tet_boundary_of(tets, &g.lone));
+    topology::volume_shape(g.components, b)
+}
