@@ -1,8 +1,8 @@
 //! Rotations of the integer grid: the 4 quarter turns of ℤ² and the 24
 //! chiral cube rotations of ℤ³, as one const-generic type.
 //!
-//! A rotation is a signed permutation matrix with determinant +1. It is stored
-//! as the image of each positive axis as a **direction** index:
+//! A rotation is a signed permutation matrix with determinant +1. It is
+//! described by the image of each positive axis as a **direction** index:
 //!
 //! ```text
 //!   direction d = 2·axis + neg        D = 2:  0:+u 1:-u 2:+v 3:-v
@@ -14,13 +14,20 @@
 //! `b`" (`b·a` as matrices), which is the order in which transitions are
 //! crossed while walking from chart to chart.
 //!
-//! Invariants: `img` is a signed permutation (each axis appears once) and its
-//! determinant is +1. [`Rot::all`] enumerates the group (4 resp. 24 elements).
+//! Stored as one byte, the rank of `img` among the group's image arrays in
+//! lexicographic order (the identity, `[0, 2, 4]`, is rank 0), so that
+//! the identity test is one comparison, composition and inverse are
+//! table lookups (tables built at compile time), and the derived
+//! order is the order of the image arrays.
+//!
+//! Invariants: the rank is below the group's size; its `img` is a signed
+//! permutation with determinant +1. [`Rot::all`] enumerates the group (4
+//! resp. 24 elements), identity first.
 
 /// A grid rotation in dimension `D` (see the module docs for the encoding).
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Rot<const D: usize> {
-    img: [u8; D],
+    rank: u8,
 }
 
 /// A 2D rotation (one of 4 quarter turns).
@@ -28,11 +35,130 @@ pub type Rot2 = Rot<2>;
 /// A 3D rotation (one of the 24 chiral cube rotations).
 pub type Rot3 = Rot<3>;
 
+/// Size of the largest group (3D).
+const MOST: usize = 24;
+
+/// The group of one dimension, by rank.
+struct Tables {
+    /// Number of rotations.
+    len: usize,
+    /// `img[r]`: the images of the axes (entries past `D` unused).
+    img: [[u8; 3]; MOST],
+    /// `then[a][b]`: the rank of `a` then `b`.
+    then: [[u8; MOST]; MOST],
+    /// `inverse[a]`: the rank of the inverse of `a`.
+    inverse: [u8; MOST],
+    /// `rank[code]` for `code = Σ img[i]·6^i`, or `u8::MAX` for a
+    /// non-rotation.
+    rank: [u8; 216],
+}
+
+/// Whether `img[..d]` is a signed permutation with determinant +1.
+const fn is_rotation(img: &[u8; 3], d: usize) -> bool {
+    let mut seen = [false; 3];
+    let mut sign = 1;
+    let mut i = 0;
+    while i < d {
+        let a = (img[i] >> 1) as usize;
+        if a >= d || seen[a] {
+            return false;
+        }
+        seen[a] = true;
+        if img[i] & 1 == 1 {
+            sign = -sign;
+        }
+        let mut j = i + 1;
+        while j < d {
+            if img[i] >> 1 > img[j] >> 1 {
+                sign = -sign;
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    sign == 1
+}
+
+/// `Σ img[i]·6^i` over the first `d` axes.
+const fn code(img: &[u8; 3], d: usize) -> usize {
+    let (mut c, mut i) = (0, d);
+    while i > 0 {
+        i -= 1;
+        c = 6 * c + img[i] as usize;
+    }
+    c
+}
+
+/// The tables of dimension `d` (2 or 3).
+const fn tables(d: usize) -> Tables {
+    let mut t = Tables {
+        len: 0,
+        img: [[0; 3]; MOST],
+        then: [[0; MOST]; MOST],
+        inverse: [0; MOST],
+        rank: [u8::MAX; 216],
+    };
+    // the image arrays in lexicographic order: the first axis's image
+    // varies slowest
+    let n = 2 * d as u8;
+    let mut img = [0u8; 3];
+    loop {
+        if is_rotation(&img, d) {
+            t.img[t.len] = img;
+            t.rank[code(&img, d)] = t.len as u8;
+            t.len += 1;
+        }
+        // next array: the last axis's image varies fastest
+        let mut i = d;
+        while i > 0 {
+            i -= 1;
+            img[i] += 1;
+            if img[i] < n {
+                break;
+            }
+            img[i] = 0;
+        }
+        if code(&img, d) == 0 {
+            break;
+        }
+    }
+    let mut a = 0;
+    while a < t.len {
+        let mut b = 0;
+        while b < t.len {
+            let mut ab = [0u8; 3];
+            let mut i = 0;
+            while i < d {
+                let x = t.img[a][i];
+                ab[i] = t.img[b][(x >> 1) as usize] ^ (x & 1);
+                i += 1;
+            }
+            t.then[a][b] = t.rank[code(&ab, d)];
+            b += 1;
+        }
+        let mut inv = [0u8; 3];
+        let mut i = 0;
+        while i < d {
+            let x = t.img[a][i];
+            inv[(x >> 1) as usize] = (2 * i) as u8 | (x & 1);
+            i += 1;
+        }
+        t.inverse[a] = t.rank[code(&inv, d)];
+        a += 1;
+    }
+    t
+}
+
+/// The tables of 2D.
+static TABLES_2: Tables = tables(2);
+/// The tables of 3D.
+static TABLES_3: Tables = tables(3);
+
 impl<const D: usize> std::fmt::Debug for Rot<D> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         const NAMES: [&str; 6] = ["+u", "-u", "+v", "-v", "+w", "-w"];
         write!(f, "Rot[")?;
-        for (i, d) in self.img.iter().enumerate() {
+        for (i, d) in self.images().iter().enumerate() {
             if i > 0 {
                 write!(f, ",")?;
             }
@@ -49,54 +175,43 @@ impl<const D: usize> Default for Rot<D> {
 }
 
 impl<const D: usize> Rot<D> {
-    /// The identity rotation.
-    pub const IDENTITY: Self = {
-        let mut img = [0u8; D];
-        let mut i = 0;
-        while i < D {
-            img[i] = (2 * i) as u8;
-            i += 1;
+    /// The identity rotation (rank 0: `[0, 2, 4]` comes first).
+    pub const IDENTITY: Self = Rot { rank: 0 };
+
+    /// The tables of dimension `D`.
+    #[inline]
+    fn tables() -> &'static Tables {
+        const { assert!(D == 2 || D == 3, "grid rotations are 2D or 3D") };
+        if D == 2 {
+            &TABLES_2
+        } else {
+            &TABLES_3
         }
-        Rot { img }
-    };
+    }
 
     /// Builds a rotation from the directions of the images of the axes;
     /// `None` unless it is a signed permutation with determinant +1.
     pub fn from_images(img: [u8; D]) -> Option<Self> {
-        let mut seen = [false; 3];
-        for &d in &img {
-            let a = (d >> 1) as usize;
-            if a >= D || seen[a] {
+        let mut padded = [0u8; 3];
+        for (p, &d) in padded.iter_mut().zip(&img) {
+            if d as usize >= 2 * D {
                 return None;
             }
-            seen[a] = true;
+            *p = d;
         }
-        let r = Rot { img };
-        (r.det() == 1).then_some(r)
+        let rank = Self::tables().rank[code(&padded, D)];
+        (rank != u8::MAX).then_some(Rot { rank })
     }
 
     /// Images of the positive axes, as directions.
+    #[inline]
     pub fn images(&self) -> [u8; D] {
-        self.img
+        let img = &Self::tables().img[self.rank as usize];
+        std::array::from_fn(|i| img[i])
     }
 
-    /// Determinant (±1) of the signed permutation.
-    fn det(&self) -> i32 {
-        let mut sign = 1;
-        for i in 0..D {
-            if self.img[i] & 1 == 1 {
-                sign = -sign;
-            }
-            for j in (i + 1)..D {
-                if self.img[i] >> 1 > self.img[j] >> 1 {
-                    sign = -sign;
-                }
-            }
-        }
-        sign
-    }
-
-    /// All rotations of the group, identity first (4 for D = 2, 24 for D = 3).
+    /// All rotations of the group, identity first (4 for D = 2, 24 for
+    /// D = 3), the others in the order of `Σ img[i]·(2D)^i`.
     pub fn all() -> Vec<Self> {
         let mut out = vec![Self::IDENTITY];
         let n = (2 * D) as u32;
@@ -120,36 +235,32 @@ impl<const D: usize> Rot<D> {
     /// Image of a direction index.
     #[inline]
     pub fn apply_dir(&self, d: usize) -> usize {
-        (self.img[d >> 1] ^ (d as u8 & 1)) as usize
+        (Self::tables().img[self.rank as usize][d >> 1] ^ (d as u8 & 1)) as usize
     }
 
     /// `self` then `next`: the rotation `next · self`.
     #[inline]
     pub fn then(&self, next: &Self) -> Self {
-        let mut img = [0u8; D];
-        for (i, slot) in img.iter_mut().enumerate() {
-            *slot = next.apply_dir(self.img[i] as usize) as u8;
+        Rot {
+            rank: Self::tables().then[self.rank as usize][next.rank as usize],
         }
-        Rot { img }
     }
 
     /// The inverse rotation.
     #[inline]
     pub fn inverse(&self) -> Self {
-        let mut img = [0u8; D];
-        for i in 0..D {
-            let d = self.img[i];
-            img[(d >> 1) as usize] = (2 * i) as u8 | (d & 1);
+        Rot {
+            rank: Self::tables().inverse[self.rank as usize],
         }
-        Rot { img }
     }
 
     /// `R · x` for a real vector.
     #[inline]
     pub fn apply(&self, x: &[f64; D]) -> [f64; D] {
+        let img = &Self::tables().img[self.rank as usize];
         let mut out = [0.0; D];
         for i in 0..D {
-            let d = self.img[i];
+            let d = img[i];
             let v = if d & 1 == 1 { -x[i] } else { x[i] };
             out[(d >> 1) as usize] = v;
         }
@@ -159,9 +270,10 @@ impl<const D: usize> Rot<D> {
     /// `R · x` for an integer vector.
     #[inline]
     pub fn apply_i(&self, x: &[i64; D]) -> [i64; D] {
+        let img = &Self::tables().img[self.rank as usize];
         let mut out = [0i64; D];
         for i in 0..D {
-            let d = self.img[i];
+            let d = img[i];
             let v = if d & 1 == 1 { -x[i] } else { x[i] };
             out[(d >> 1) as usize] = v;
         }
@@ -171,13 +283,7 @@ impl<const D: usize> Rot<D> {
     /// Whether this is the identity.
     #[inline]
     pub fn is_identity(&self) -> bool {
-        // each axis sent to its own positive direction (no early exit: a
-        // few branch-free byte operations)
-        let mut differ = 0u8;
-        for (i, &d) in self.img.iter().enumerate() {
-            differ |= d ^ (2 * i) as u8;
-        }
-        differ == 0
+        self.rank == 0
     }
 
     /// A compact index of this rotation in [`Rot::all`] order.
@@ -192,14 +298,15 @@ impl Rot<2> {
         // +u → +v → -u → -v
         const CYCLE: [u8; 4] = [0, 2, 1, 3];
         let k = k.rem_euclid(4) as usize;
-        Rot {
-            img: [CYCLE[k], CYCLE[(k + 1) % 4]],
-        }
+        let Some(r) = Self::from_images([CYCLE[k], CYCLE[(k + 1) % 4]]) else {
+            panic!("bug: a quarter turn is a rotation");
+        };
+        r
     }
 
     /// Number of counter-clockwise quarter turns, in `0..4`.
     pub fn turns(&self) -> i64 {
-        match self.img[0] {
+        match self.images()[0] {
             0 => 0,
             2 => 1,
             1 => 2,
@@ -233,6 +340,38 @@ mod tests {
                 assert_eq!(a.inverse().apply_dir(a.apply_dir(d)), d);
             }
         }
+    }
+
+    /// The tables against the images: composition and inverse as first
+    /// written (on the image arrays), ranks in the order of the arrays.
+    fn tables_agree<const D: usize>() {
+        let all = Rot::<D>::all();
+        let mut by_images: Vec<([u8; D], Rot<D>)> = all.iter().map(|r| (r.images(), *r)).collect();
+        by_images.sort();
+        for (w, pair) in by_images.windows(2).enumerate() {
+            assert!(pair[0].1 < pair[1].1, "rank order at {w}");
+        }
+        assert_eq!(by_images[0].1, Rot::IDENTITY);
+        for a in &all {
+            let img = a.images();
+            assert_eq!(Rot::from_images(img), Some(*a));
+            let mut inv = [0u8; D];
+            for (i, &d) in img.iter().enumerate() {
+                inv[(d >> 1) as usize] = (2 * i) as u8 | (d & 1);
+            }
+            assert_eq!(a.inverse().images(), inv, "{a:?}");
+            assert_eq!(a.is_identity(), img == Rot::<D>::IDENTITY.images());
+            for b in &all {
+                let ab: [u8; D] = std::array::from_fn(|i| b.apply_dir(img[i] as usize) as u8);
+                assert_eq!(a.then(b).images(), ab, "{a:?} {b:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn tables_agree_2d_3d() {
+        tables_agree::<2>();
+        tables_agree::<3>();
     }
 
     #[test]

@@ -1,4 +1,4 @@
-//! Construction of [`Topology`]: facet adjacency by sorting facet keys.
+//! Construction of [`Topology`]: facet adjacency by pairing facet keys.
 //!
 //! Input: a validated [`SimplexMap`] (indices in range, no repeated vertex in
 //! a simplex). Output: [`Topology`] with `adj`, `adj_facet`, `nbr_corner`,
@@ -10,16 +10,17 @@
 //!    out by [`glue_with`] for a caller whose stars' walk makes it.
 //!
 //! Key of a facet: its sorted vertex ids (the unused last slot holds
-//! `u32::MAX`). The half-facets `(key, s·N + f)` are visited in sorted
-//! order (so the first error is the one of the least key): bucketed by
-//! their least vertex, found through that vertex's corners
-//! ([`VertexCorners`]), each bucket sorted by the other vertices and the
-//! half-facet id, which is the order of one global sort. Blocks of
-//! vertices are bucketed and glued in parallel: a glued pair writes the
-//! other half-facet's id into a per-half-facet `mate` (each half-facet
-//! is in one bucket), each block stops at its first error and the first
-//! block's error is returned; the adjacency is then read off `mate` per
-//! simplex, in parallel.
+//! `u32::MAX`). The half-facets `(key, s·N + f)` are bucketed by their
+//! least vertex, found through that vertex's corners ([`VertexCorners`]),
+//! and each bucket's equal keys are paired through a small hash table
+//! ([`pair_bucket`]); a small bucket, or one with an error, is sorted by
+//! the other vertices and the half-facet id and glued in that order, the
+//! order of one global sort, so the first error is the one of the least
+//! key. Blocks of vertices are bucketed and glued in parallel: a glued
+//! pair writes the other half-facet's id into a per-half-facet `mate`
+//! (each half-facet is in one bucket), each block stops at its first
+//! error and the first block's error is returned; the adjacency is then
+//! read off `mate` per simplex, in parallel.
 
 use crate::corners::{split, VertexCorners};
 use crate::error::{ElementKind, MapError};
@@ -33,6 +34,11 @@ const UNGLUED: u64 = u64::MAX;
 
 /// Vertices whose facet buckets are sorted by one parallel task.
 const SORT_BLOCK: usize = 4096;
+
+/// Most half-facets of a bucket sorted rather than hashed (a few
+/// comparisons cost less than clearing a table: the buckets of a triangle
+/// mesh hold 3 on average, those of a tet mesh about 20).
+const SMALL_BUCKET: usize = 8;
 
 /// Sorted vertex ids of facet `f` of `simplex` (last slot `u32::MAX`).
 pub(crate) fn facet_key<const N: usize>(simplex: &[u32; N], f: usize) -> [u32; N] {
@@ -100,11 +106,22 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
     let blocks: Vec<Result<usize, InputError>> = (0..nv.div_ceil(SORT_BLOCK))
         .into_par_iter()
         .map(|b| {
-            let mut bucket = Vec::new();
+            let (mut bucket, mut table) = (Vec::new(), Vec::new());
             let mut boundary = 0;
             for v in b * SORT_BLOCK..nv.min((b + 1) * SORT_BLOCK) {
                 facets_from(map, corners.of(v), v as u32, &mut bucket);
-                boundary += glue_bucket(map, &bucket, &mate)?;
+                let paired = (bucket.len() > SMALL_BUCKET)
+                    .then(|| pair_bucket(map, &bucket, &mate, &mut table))
+                    .flatten();
+                boundary += match paired {
+                    Some(boundary) => boundary,
+                    None => {
+                        // small, or an error (the sorted bucket names the
+                        // first)
+                        bucket.sort_unstable();
+                        glue_bucket(map, &bucket, &mate)?
+                    }
+                };
             }
             Ok(boundary)
         })
@@ -140,7 +157,7 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
 }
 
 /// The half-facets `(rest, s·N + f)` ([`rest_without`]) whose least vertex is `v`,
-/// found through `v`'s corners `star`, sorted: the bucket of `v`.
+/// found through `v`'s corners `star`, in corner order: the bucket of `v`.
 fn facets_from<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     star: &[u32],
@@ -171,7 +188,6 @@ fn facets_from<const N: usize, const D: usize>(
             _ => {}
         }
     }
-    bucket.sort_unstable();
 }
 
 /// The other vertices of the key of facet `f` of `simplex` (all but its
@@ -198,6 +214,71 @@ fn rest_without<const N: usize>(simplex: &[u32; N], f: usize, c: usize) -> u64 {
     }
 }
 
+/// Marks a key of [`pair_bucket`]'s table whose two half-facets are glued.
+const PAIRED: u32 = 1 << 31;
+
+/// Glues the pairs of a bucket in any order (writes `mate`) through a
+/// hash table of its keys (`table[slot]`: 1 + the bucket index of the
+/// key's first half-facet, [`PAIRED`] once its second came, 0 for none;
+/// open addressing, at most half full); returns the number of boundary
+/// facets, or `None` when a key comes a third time or a pair is
+/// misoriented, for [`glue_bucket`] to name the bucket's first error in
+/// key order (its writes are those of this one).
+fn pair_bucket<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    bucket: &[(u64, u32)],
+    mate: &[AtomicU64],
+    table: &mut Vec<u32>,
+) -> Option<usize> {
+    let size = (2 * bucket.len()).next_power_of_two().max(8);
+    let shift = 64 - size.trailing_zeros();
+    table.clear();
+    table.resize(size, 0);
+    let mut pairs = 0;
+    for (i, &(key, h)) in bucket.iter().enumerate() {
+        // Fibonacci hashing: the top bits of the key times 2^64/φ
+        let mut at = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> shift) as usize;
+        loop {
+            let slot = table[at];
+            if slot == 0 {
+                table[at] = i as u32 + 1;
+                break;
+            }
+            let (first_key, first) = bucket[(slot & !PAIRED) as usize - 1];
+            if first_key == key {
+                if slot & PAIRED != 0 {
+                    return None;
+                }
+                table[at] = slot | PAIRED;
+                glue_pair(map, first.min(h), first.max(h), mate).ok()?;
+                pairs += 1;
+                break;
+            }
+            at = (at + 1) & (size - 1);
+        }
+    }
+    Some(bucket.len() - 2 * pairs)
+}
+
+/// Glues half-facets `h1 < h2` of the same key (writes both `mate`s), or
+/// the error of a misoriented pair.
+#[inline]
+fn glue_pair<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    h1: u32,
+    h2: u32,
+    mate: &[AtomicU64],
+) -> Result<(), InputError> {
+    let there = check_orientation(map, h1, h2)?;
+    let mut back = [0u8; N];
+    for (c, &cn) in there.iter().enumerate() {
+        back[cn as usize] = c as u8;
+    }
+    mate[h1 as usize].store(pack(h2, &there), Relaxed);
+    mate[h2 as usize].store(pack(h1, &back), Relaxed);
+    Ok(())
+}
+
 /// Glues the pairs of a sorted bucket (writes `mate`), checking that each
 /// pair is consistently oriented; returns the number of boundary facets,
 /// or the bucket's first error in key order.
@@ -215,16 +296,7 @@ fn glue_bucket<const N: usize, const D: usize>(
         }
         match j - i {
             1 => boundary += 1,
-            2 => {
-                let (h1, h2) = (bucket[i].1, bucket[i + 1].1);
-                let there = check_orientation(map, h1, h2)?;
-                let mut back = [0u8; N];
-                for (c, &cn) in there.iter().enumerate() {
-                    back[cn as usize] = c as u8;
-                }
-                mate[h1 as usize].store(pack(h2, &there), Relaxed);
-                mate[h2 as usize].store(pack(h1, &back), Relaxed);
-            }
+            2 => glue_pair(map, bucket[i].1, bucket[i + 1].1, mate)?,
             n => {
                 let (s, f) = split::<N>(bucket[i].1);
                 let key = facet_key(&map.simplices[s], f);

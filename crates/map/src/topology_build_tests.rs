@@ -118,6 +118,10 @@ fn same_as_sorted<const N: usize, const D: usize>(m: &SimplexMap<N, D>) {
 fn same_adjacency_as_one_global_sort() {
     same_as_sorted(&crate::test_maps::grid(90));
     same_as_sorted(&crate::test_maps::tet_cube(6));
+    // buckets above SMALL_BUCKET: the apex's 300 triangles, the axis'
+    // 40 tets
+    same_as_sorted(&crate::test_maps::cone(300));
+    same_as_sorted(&crate::test_maps::edge_fan(40));
 }
 
 #[test]
@@ -195,4 +199,29 @@ fn the_stars_walk_names_the_same_pinched_vertex() {
     }
     same(&pinched);
     same(&touching);
+}
+
+#[test]
+fn the_first_error_in_key_order_within_a_bucket() {
+    // at vertex 0: a misoriented pair across edge 0-5 (triangles 0, 1,
+    // met first), then edge 0-2 in three triangles (the least key)
+    let e = Topology::build(&tri(
+        vec![[0, 5, 6], [0, 5, 7], [0, 2, 8], [2, 0, 9], [0, 2, 10]],
+        11,
+    ))
+    .expect_err("two errors");
+    assert_eq!(
+        e.to_string(),
+        "edge 0-2 is shared by 3 triangles (2, 3, 4): non-manifold"
+    );
+    // four tets on one face (two pairs, each consistently oriented)
+    let e = Topology::build(&tets(
+        vec![[0, 1, 2, 3], [1, 0, 2, 4], [0, 1, 2, 5], [1, 0, 2, 6]],
+        7,
+    ))
+    .expect_err("non-manifold face");
+    assert_eq!(
+        e.to_string(),
+        "face 0-1-2 is shared by 4 tets (0, 1, 2, 3): non-manifold"
+    );
 }

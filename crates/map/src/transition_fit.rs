@@ -103,6 +103,8 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     let mut a = [[0.0f64; D]; N];
     let mut b = [[0.0f64; D]; N];
     let mut scale = 0.0f64;
+    // any bit where the two charts' corners differ
+    let mut differ = 0u64;
     for i in 0..m {
         let c = (f + 1 + i) % N;
         a[i] = cs[c];
@@ -116,9 +118,15 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
             if y > scale {
                 scale = y;
             }
+            differ |= a[i][k].to_bits() ^ b[i][k].to_bits();
         }
     }
     let tol = opts.tolerance_at(scale);
+    if differ == 0 && scale <= SAME_LIMIT {
+        if let Some(fit) = same_charts_fit(&a[..m], tol, group) {
+            return Ok(fit);
+        }
+    }
     let table = mismatch_table(&a[..m], &b[..m]);
     let mut mis = [0.0f64; MAX_ROTATIONS];
     let fast = match identity_fit::<D>(&table, tol, group) {
@@ -225,6 +233,60 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
         tol,
         ambiguous,
     })
+}
+
+/// Largest coordinate of a facet taken by [`same_charts_fit`]: its edge
+/// vectors and their sums stay finite (no NaN in the table).
+const SAME_LIMIT: f64 = 1e300;
+
+/// The fit of a facet whose corners are the same floats in both charts
+/// (a facet off the seams) when the identity is the only rotation within
+/// `tol` of the best, which [`identity_fit`] proves on the table of
+/// [`mismatch_table_same`]: the identity with mismatch, translation and
+/// residual 0 (what the whole fit finds: `b − a` is 0 bit for bit).
+/// `None`: another rotation fits, left to the whole fit.
+#[inline]
+fn same_charts_fit<const D: usize>(a: &[[f64; D]], tol: f64, group: &Group<D>) -> Option<Fit<D>> {
+    let best = identity_fit::<D>(&mismatch_table_same(a), tol, group)?;
+    debug_assert_eq!(best, 0.0);
+    Some(Fit {
+        rot: Rot::IDENTITY,
+        #[cfg(test)]
+        trans: [0.0; D],
+        rounded: [0; D],
+        residual: 0.0,
+        tol,
+        ambiguous: None,
+    })
+}
+
+/// [`mismatch_table`]`(a, a)`, bit for bit, from half the terms: with
+/// `ea = eb = e`, the entry of axis `j` to direction `2l` is
+/// `|e[j] − e[l]|` and to `2l + 1` is `|−e[j] − e[l]|`, both symmetric in
+/// `j, l` (the same floats: `x − y = −(y − x)` and `−x − y = −y − x`
+/// exactly), and 0 for `l = j`.
+fn mismatch_table_same<const D: usize>(a: &[[f64; D]]) -> [f64; 18] {
+    let mut table = [0.0f64; 18];
+    let mut raise = |at: usize, x: f64| {
+        // `max` without its NaN branch (an entry is never NaN)
+        if x > table[at] {
+            table[at] = x;
+        }
+    };
+    for i in 1..a.len() {
+        let e: [f64; D] = std::array::from_fn(|k| a[i][k] - a[0][k]);
+        for j in 0..D {
+            raise(6 * j + 2 * j + 1, (-e[j] - e[j]).abs());
+            for l in j + 1..D {
+                let (plus, minus) = ((e[j] - e[l]).abs(), (-e[j] - e[l]).abs());
+                raise(6 * j + 2 * l, plus);
+                raise(6 * l + 2 * j, plus);
+                raise(6 * j + 2 * l + 1, minus);
+                raise(6 * l + 2 * j + 1, minus);
+            }
+        }
+    }
+    table
 }
 
 /// Mismatch of the rotation with images `img` (see [`mismatch_table`]).
