@@ -38,20 +38,33 @@ pub fn near_int_in(x: f64, b: [f64; 2]) -> bool {
     b[0] <= b[1] && near_int(x)
 }
 
+/// `floor(x + 2·EPS)` up to the sign of zero: the greatest integer that
+/// `x`'s range grown by `2·EPS` can hold (the `hi` of [`box_bounds`]).
+#[inline]
+pub fn floor_above(x: f64) -> f64 {
+    let z = x + 2.0 * EPS;
+    if x.abs() < 0.5 * FAST {
+        let rz = nearest_even(z);
+        if rz > z {
+            rz - 1.0
+        } else {
+            rz
+        }
+    } else {
+        z.floor()
+    }
+}
+
 /// `[ceil(x − 2·EPS), floor(x + 2·EPS)]` up to the sign of zero: the
 /// integer bounds of `x`'s range grown by `2·EPS`, for [`box_spans`].
+///
+/// One rounding: with `hi` = [`floor_above`], the range (narrower than 1)
+/// holds at most the integer `hi`, so `ceil(x − 2·EPS)` is `hi` when
+/// `x − 2·EPS ≤ hi` and `hi + 1` otherwise.
 #[inline]
 pub fn box_bounds(x: f64) -> [f64; 2] {
-    let (y, z) = (x - 2.0 * EPS, x + 2.0 * EPS);
-    if x.abs() < 0.5 * FAST {
-        let (ry, rz) = (nearest_even(y), nearest_even(z));
-        [
-            if ry < y { ry + 1.0 } else { ry },
-            if rz > z { rz - 1.0 } else { rz },
-        ]
-    } else {
-        [y.ceil(), z.floor()]
-    }
+    let (y, hi) = (x - 2.0 * EPS, floor_above(x));
+    [if y > hi { hi + 1.0 } else { hi }, hi]
 }
 
 /// Whether the range of two values (their [`box_bounds`] `p`, `q`), grown
@@ -71,7 +84,8 @@ pub fn box_spans(p: [f64; 2], q: [f64; 2]) -> bool {
 /// simplex, some edge), from the least and greatest value alone: `lo` and
 /// `hi` of [`box_bounds`] are monotone, so the pairs' `lo_p ≤ hi_q` holds
 /// for some pair iff `lo(min) ≤ hi(max)` (a corner with `lo ≤ hi` spans
-/// with every other corner; at least two corners). A corner
+/// with every other corner; at least two corners), that is (`hi` being an
+/// integer) `min − 2·EPS ≤ hi(max)`: one rounding per axis. A corner
 /// [`near_int`] on axis `a` sets the bit. Not NaN (validated input); a
 /// NaN first corner sets every bit (the caller then tests everything).
 #[inline]
@@ -84,7 +98,7 @@ pub fn spanned_axes<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
             lo = if x < lo { x } else { lo };
             hi = if x > hi { x } else { hi };
         }
-        let (l, h) = (box_bounds(lo)[0], box_bounds(hi)[1]);
+        let (l, h) = (lo - 2.0 * EPS, floor_above(hi));
         bits |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
     }
     bits
@@ -221,8 +235,9 @@ pub fn grid_point_near_segment(a: &[f64; 2], b: &[f64; 2]) -> Option<[f64; 2]> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+    use crate::boxes::Boxes;
 
     #[test]
     fn segments_through_grid_points() {
@@ -266,6 +281,23 @@ mod tests {
         out
     }
 
+    /// [`box_bounds`] (one rounding) equals `ceil` and `floor` of the
+    /// grown range, as values, on probes and next to integers.
+    #[test]
+    fn box_bounds_equal_ceil_floor() {
+        let mut vals = probes();
+        for k in -4..=4 {
+            for n in [-2.0, 0.0, 1.0, 7.0, 1e6, 2f64.powi(50)] {
+                vals.push(n + f64::from(k) * EPS);
+                vals.push(n + f64::from(k) * 0.5 * EPS);
+            }
+        }
+        for x in vals.into_iter().filter(|x| !x.is_nan()) {
+            let want = [(x - 2.0 * EPS).ceil(), (x + 2.0 * EPS).floor()];
+            assert_eq!(box_bounds(x), want, "{x:e}");
+        }
+    }
+
     #[test]
     fn rounding_is_bit_identical_to_std() {
         for x in probes() {
@@ -299,10 +331,9 @@ mod tests {
         }
     }
 
-    /// [`spanned_axes`] equals "some pair spans" by [`box_spans`], on
-    /// triangles and tets of probes and of values near integers and ties.
-    #[test]
-    fn spanned_axes_equal_pairs() {
+    /// The probes without NaN, and values within a few `EPS` of integers
+    /// and of ties.
+    pub(crate) fn near_values() -> Vec<f64> {
         let mut vals: Vec<f64> = probes().into_iter().filter(|x| !x.is_nan()).collect();
         for k in -5..=5 {
             for n in [-3.0, 0.0, 1.0, 2.0, 1e6] {
@@ -310,32 +341,51 @@ mod tests {
                 vals.push(n + 0.5 + f64::from(k) * EPS);
             }
         }
-        for &x in &vals {
-            assert_eq!(near_int_in(x, box_bounds(x)), near_int(x), "{x:e}");
-        }
-        fn pairs<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
-            let mut bits = 0u8;
-            for k in 0..N {
-                for l in k + 1..N {
-                    for (a, (&x, &y)) in c[k].iter().zip(&c[l]).enumerate() {
-                        bits |= u8::from(box_spans(box_bounds(x), box_bounds(y))) << a;
-                    }
-                }
-            }
-            bits
-        }
-        let mut z = 5u64;
-        let mut pick = || {
+        vals
+    }
+
+    /// A pseudo-random pick among `vals` per call (an LCG from `seed`).
+    pub(crate) fn picker(vals: &[f64], seed: u64) -> impl FnMut() -> f64 + '_ {
+        let mut z = seed;
+        move || {
             z = z
                 .wrapping_mul(6364136223846793005)
                 .wrapping_add(1442695040888963407);
             vals[(z >> 33) as usize % vals.len()]
-        };
+        }
+    }
+
+    /// Per axis, whether some pair of corners of `c` spans an integer by
+    /// [`box_spans`] (the reference of [`spanned_axes`]).
+    pub(crate) fn pairs<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
+        let mut bits = 0u8;
+        for k in 0..N {
+            for l in k + 1..N {
+                for (a, (&x, &y)) in c[k].iter().zip(&c[l]).enumerate() {
+                    bits |= u8::from(box_spans(box_bounds(x), box_bounds(y))) << a;
+                }
+            }
+        }
+        bits
+    }
+
+    /// [`spanned_axes`] and [`Boxes::spanned`] equal "some pair spans" by
+    /// [`box_spans`], on triangles and tets of probes and of values near
+    /// integers and ties.
+    #[test]
+    fn spanned_axes_equal_pairs() {
+        let vals = near_values();
+        for &x in &vals {
+            assert_eq!(near_int_in(x, box_bounds(x)), near_int(x), "{x:e}");
+        }
+        let mut pick = picker(&vals, 5);
         for _ in 0..100000 {
             let t: [[f64; 2]; 3] = std::array::from_fn(|_| [pick(), pick()]);
             assert_eq!(spanned_axes(&t), pairs(&t), "{t:?}");
+            assert_eq!(Boxes::of(&t).spanned(), pairs(&t), "{t:?}");
             let t: [[f64; 3]; 4] = std::array::from_fn(|_| [pick(), pick(), pick()]);
             assert_eq!(spanned_axes(&t), pairs(&t), "{t:?}");
+            assert_eq!(Boxes::of(&t).spanned(), pairs(&t), "{t:?}");
             for a in 0..3 {
                 let on = near_int_on(&t, a);
                 assert!(on == 0 || spanned_axes(&t) >> a & 1 == 1, "{t:?}");

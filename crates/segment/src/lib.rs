@@ -52,6 +52,8 @@
 //! - [`cluster`]: collapsed clusters (vertices joined by zero-length map
 //!   edges), moved as one by sanitization;
 //! - [`bad_scan`]: the incremental bad-vertex scan of sanitization;
+//! - [`boxes`]: the integer boxes of a simplex's corners, the scan's
+//!   prefilters;
 //! - [`near`]: closeness of a tet's vertices, edges and faces to the dual
 //!   grid (D = 3; D = 2 in [`grid`]);
 //! - [`sanitize`]: one sanitization for both dimensions (snap, then rounds
@@ -71,6 +73,7 @@
 #![warn(missing_docs)]
 
 pub mod bad_scan;
+pub mod boxes;
 pub mod cluster;
 pub mod diagonal;
 pub mod grid;

@@ -14,17 +14,17 @@
 //! [`bad_vertices`] turns these into the vertices to move; a grid point at
 //! (or next to) an endpoint is that endpoint's problem only, so a vertex
 //! that cannot move (singular) does not keep its neighbours moving.
-//! [`corner_bounds`], [`edge_spans`], [`edge_range`] and
-//! [`segment_near_iso_line_in_box`] are the exact box prefilters of the
-//! incremental scan ([`crate::sanitize`]): same answers, fewer tests.
+//! [`segment_near_iso_line_in_box`] and the boxes of [`crate::boxes`] are
+//! the exact prefilters of the incremental scan ([`crate::sanitize`]):
+//! same answers, fewer tests.
 //!
 //! Numbering (as in `dualex_map::mesh`): face `f` of a tet is opposite
 //! corner `f`; its corners are `(f+1, f+2, f+3) mod 4` ([`face_corners`]).
 
 use dualex_map::TetMap;
 
-use crate::grid::{box_bounds, box_spans, dist2d_below_eps, segment_clear_of_grid};
 pub use crate::grid::{dist2d, grid_point_near_segment, near_int, EPS};
+use crate::grid::{dist2d_below_eps, segment_clear_of_grid};
 use dualex_util::round::{ceil, floor, round};
 
 /// For the 3D segment `a`–`b` near an iso-line: whether the grid point is
@@ -71,50 +71,6 @@ pub use crate::simplex::face_corners;
 pub const EDGES: [[usize; 2]; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
 /// The edges (indices into [`EDGES`]) of face `f` (opposite corner `f`).
 pub const FACE_EDGES: [[usize; 3]; 4] = [[3, 4, 5], [1, 2, 5], [0, 2, 4], [0, 1, 3]];
-
-/// Per corner and axis of a tet: its [`box_bounds`].
-pub type Bounds = [[[f64; 2]; 3]; 4];
-
-/// The [`box_bounds`] of every coordinate of a tet on the axes `a` with
-/// bit `a` of `axes` set; `[∞, −∞]` on the others. For the axes that no
-/// edge spans ([`crate::grid::spanned_axes`]) that gives the same
-/// [`edge_spans`] (none) and empty [`edge_range`]s, as the bounds would.
-#[inline]
-pub fn corner_bounds(c: &[[f64; 3]; 4], axes: u8) -> Bounds {
-    std::array::from_fn(|k| {
-        std::array::from_fn(|a| {
-            if axes >> a & 1 == 1 {
-                box_bounds(c[k][a])
-            } else {
-                [f64::INFINITY, f64::NEG_INFINITY]
-            }
-        })
-    })
-}
-
-/// Per edge of a tet: bit `a` set when the edge's box, grown by `2·EPS`,
-/// holds an integer on axis `a` (no iso-line or grid point within `EPS` of
-/// the edge otherwise; see [`box_spans`], also for faces).
-#[inline]
-pub fn edge_spans(b: &Bounds) -> [u8; 6] {
-    let mut span = [0u8; 6];
-    for (bits, &[k, l]) in span.iter_mut().zip(&EDGES) {
-        for (a, (&bk, &bl)) in b[k].iter().zip(&b[l]).enumerate() {
-            *bits |= u8::from(box_spans(bk, bl)) << a;
-        }
-    }
-    span
-}
-
-/// The integer range of edge `k`–`l`'s box (grown by `2·EPS`) per axis.
-#[inline]
-pub fn edge_range(b: &Bounds, k: usize, l: usize) -> [[f64; 2]; 3] {
-    // not NaN (validated input): plain comparisons, cheaper than f64::min
-    std::array::from_fn(|a| {
-        let ([lk, hk], [ll, hl]) = (b[k][a], b[l][a]);
-        [if ll < lk { ll } else { lk }, if hl > hk { hl } else { hk }]
-    })
-}
 
 fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]

@@ -2,9 +2,10 @@
 //! the random step, the kinds of the singular vertices left on isos.
 
 use super::{Dim, Predicates};
+use crate::boxes::Boxes;
 use crate::grid::{
-    box_bounds, box_spans, dist2d_below_eps as below_eps, grid_point_near_segment, near_int,
-    near_int_in, near_int_on, segment_clear_of_grid, spanned_axes,
+    dist2d_below_eps as below_eps, grid_point_near_segment, near_int, near_int_on,
+    segment_clear_of_grid, spanned_axes,
 };
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology};
@@ -16,13 +17,13 @@ impl Predicates<3, 2> for Dim<3, 2> {
     const COUNT_ROUND_PAST_SCHEDULE: bool = true;
 
     /// An edge is skipped unless its box, grown by `2·EPS`, holds an
-    /// integer on both axes ([`box_spans`]) and one of those integer points
+    /// integer on both axes ([`Boxes::spans`]) and one of those integer points
     /// is near its line ([`segment_clear_of_grid`]), or when both its ends
     /// are already bad (it cannot add a bit: the mask is the same).
     ///
     /// A triangle whose range spans at most one axis ([`spanned_axes`]:
     /// then no edge spans both) makes bad only its corners on that axis'
-    /// isos.
+    /// isos. The boxes of the corners are computed once ([`Boxes`]).
     fn mask(c: &[[f64; 2]; 3]) -> u8 {
         let axes = spanned_axes(c);
         if axes != 0b11 {
@@ -32,35 +33,18 @@ impl Predicates<3, 2> for Dim<3, 2> {
                 near_int_on(c, axes.trailing_zeros() as usize)
             };
         }
-        let mut b = [[[0.0; 2]; 2]; 3];
-        for k in 0..3 {
-            for a in 0..2 {
-                b[k][a] = box_bounds(c[k][a]);
-            }
-        }
-        let mut mask = 0u8;
-        for k in 0..3 {
-            if near_int_in(c[k][0], b[k][0]) || near_int_in(c[k][1], b[k][1]) {
-                mask |= 1 << k;
-            }
-        }
+        let boxes = Boxes::of(c);
+        let mut mask = boxes.near_any(c);
         for k in 0..3 {
             let l = (k + 1) % 3;
             // both ends already bad: the edge cannot add a bit
             let ends = 1 << k | 1 << l;
-            if mask & ends == ends {
-                continue;
-            }
-            if !(box_spans(b[k][0], b[l][0]) && box_spans(b[k][1], b[l][1])) {
+            if mask & ends == ends || boxes.spans(k, l) != 0b11 {
                 continue;
             }
             // the integer range of the edge's grown box per axis
-            let (mut lo, mut hi) = ([0.0; 2], [0.0; 2]);
-            for a in 0..2 {
-                let (bk, bl) = (b[k][a], b[l][a]);
-                lo[a] = if bl[0] < bk[0] { bl[0] } else { bk[0] };
-                hi[a] = if bl[1] > bk[1] { bl[1] } else { bk[1] };
-            }
+            let range = boxes.range(k, l);
+            let (lo, hi) = (range.map(|r| r[0]), range.map(|r| r[1]));
             if segment_clear_of_grid(&c[k], &c[l], lo, hi) {
                 continue;
             }

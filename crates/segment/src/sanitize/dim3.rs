@@ -3,10 +3,10 @@
 //! singular vertices (the 3D report counts them only).
 
 use super::{Dim, Predicates};
-use crate::grid::{near_int_in, near_int_on, spanned_axes};
+use crate::boxes::Boxes;
+use crate::grid::{near_int_on, spanned_axes};
 use crate::near::{
-    corner_bounds, edge_range, edge_spans, face_corners, segment_near_iso_line_in_box,
-    triangle_near_grid_point, EDGES, FACE_EDGES,
+    face_corners, segment_near_iso_line_in_box, triangle_near_grid_point, EDGES, FACE_EDGES,
 };
 use dualex_util::rng::SplitMix;
 
@@ -25,9 +25,10 @@ impl Predicates<4, 3> for Dim<4, 3> {
     /// whose ends, a face whose corners are already bad; everything once
     /// all four are): the mask is the same.
     ///
-    /// A tet whose range spans at most one axis ([`spanned_axes`]: then no
-    /// edge spans two, no face three) makes bad only its corners on that
-    /// axis' isos.
+    /// A tet whose range spans at most one axis ([`spanned_axes`]: then
+    /// no edge spans two, no face three) makes bad only its corners on
+    /// that axis' isos. The boxes of the corners are computed once
+    /// ([`Boxes`]).
     fn mask(c: &[[f64; 3]; 4]) -> u8 {
         let axes = spanned_axes(c);
         if axes & axes.wrapping_sub(1) == 0 {
@@ -37,25 +38,21 @@ impl Predicates<4, 3> for Dim<4, 3> {
                 near_int_on(c, axes.trailing_zeros() as usize)
             };
         }
-        // the other axis (if any): no corner on its isos, no span
-        let bounds = corner_bounds(c, axes);
-        let mut mask = 0u8;
-        for (k, (p, b)) in c.iter().zip(&bounds).enumerate() {
-            if p.iter().zip(b).any(|(&x, &bx)| near_int_in(x, bx)) {
-                mask |= 1 << k;
-            }
-        }
+        // the other axis (if any): no corner on its isos, no span, empty
+        // edge ranges
+        let boxes = Boxes::of(c);
+        let mut mask = boxes.near_any(c);
         if mask == FULL {
             return mask;
         }
-        let span = edge_spans(&bounds);
+        let span = boxes.edge_spans(&EDGES);
         for (&[k, l], &bits) in EDGES.iter().zip(&span) {
             // fewer than two axes, or both ends already bad
             let ends = 1 << k | 1 << l;
             if bits & bits.wrapping_sub(1) == 0 || mask & ends == ends {
                 continue;
             }
-            let range = edge_range(&bounds, k, l);
+            let range = boxes.range(k, l);
             if let Some((at_k, at_l)) = segment_near_iso_line_in_box(&c[k], &c[l], &range) {
                 mask |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
             }

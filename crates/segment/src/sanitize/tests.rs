@@ -200,15 +200,15 @@ mod dim3 {
     /// The local map at D = 3.
     type LocalMap = crate::local::LocalMap<4, 3>;
     use crate::near::{
-        corner_bounds, edge_spans, face_corners, near_int, segment_near_iso_line,
-        triangle_near_grid_point, EDGES, EPS, FACE_EDGES,
+        face_corners, near_int, segment_near_iso_line, triangle_near_grid_point, EDGES, EPS,
+        FACE_EDGES,
     };
     use crate::sanitize::{free_axes, sanitize, singular_free_axis};
     use dualex_map::{Stars, TetMap, Topology, Transitions};
     use dualex_util::rng::SplitMix;
 
     /// Whether the box of `pts` (grown by `2·EPS`) holds an integer on `axis`
-    /// (the reference formulation of [`edge_spans`]).
+    /// (the reference formulation of [`crate::boxes::Boxes::spans`]).
     fn spans_integer(pts: &[&[f64; 3]], axis: usize) -> bool {
         let x = pts.iter().map(|p| p[axis]);
         let (lo, hi) = (
@@ -246,7 +246,7 @@ mod dim3 {
         assert!(edges >= 5000 && faces >= 1000, "{edges} {faces}");
     }
 
-    /// [`edge_spans`] equals [`spans_integer`] on every edge, and so does
+    /// [`crate::boxes::Boxes::spans`] equals [`spans_integer`] on every edge, and so does
     /// the union over its edges on every face, also for corners within a
     /// few `EPS` of integers; [`FACE_EDGES`] are the edges of each face.
     #[test]
@@ -274,7 +274,8 @@ mod dim3 {
                     }
                 })
             });
-            let span = edge_spans(&corner_bounds(&c, 0b111));
+            let boxes = crate::boxes::Boxes::of(&c);
+            let span = boxes.edge_spans(&EDGES);
             for a in 0..3 {
                 for (e, &[k, l]) in EDGES.iter().enumerate() {
                     let want = spans_integer(&[&c[k], &c[l]], a);
@@ -328,7 +329,8 @@ mod dim3 {
                 }
             }
             assert_eq!(<Dim<4, 3>>::mask(&c), want, "{c:?}");
-            kinds[crate::grid::spanned_axes(&c).count_ones() as usize] += 1;
+            let axes = crate::boxes::Boxes::of(&c).spanned();
+            kinds[axes.count_ones() as usize] += 1;
         }
         assert!(kinds.iter().all(|&n| n > 500), "{kinds:?}");
     }
