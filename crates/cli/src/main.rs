@@ -28,6 +28,11 @@ mod verify;
 mod warnings;
 
 use args::{Cli, Command, Global, WeldArgs};
+
+/// The system allocator, large arrays advised as transparent huge pages
+/// (`dualex_alloc`: fewer page faults, BENCHMARKS.md).
+#[global_allocator]
+static ALLOC: dualex_alloc::HugePages = dualex_alloc::HugePages;
 use clap::Parser;
 use error::CliError;
 use std::path::Path;
