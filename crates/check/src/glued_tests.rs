@@ -6,6 +6,7 @@
 
 use crate::glued::{self, NONE};
 use crate::topology;
+use dualex_util::rng::SplitMix;
 use std::collections::HashMap;
 
 /// The facet adjacency of `simplices` by equal vertex sets (`None`: a
@@ -59,23 +60,15 @@ fn stars_connected<const N: usize>(n: usize, simplices: &[[u32; N]], adj: &[[u32
     })
 }
 
-/// A small generator (xorshift).
-fn next(state: &mut u64) -> u64 {
-    *state ^= *state << 13;
-    *state ^= *state >> 7;
-    *state ^= *state << 17;
-    *state
-}
-
 /// Two triangles per cell of a `k × k` grid, each cell kept with
 /// probability `keep` in 1/8, the grid repeated `copies` times apart.
-fn grid_piece(k: u32, keep: u64, copies: u32, state: &mut u64) -> (usize, Vec<[u32; 3]>) {
+fn grid_piece(k: u32, keep: usize, copies: u32, rng: &mut SplitMix) -> (usize, Vec<[u32; 3]>) {
     let n = (k + 1) * (k + 1);
     let at = |i: u32, j: u32, c: u32| c * n + j * (k + 1) + i;
     let mut tris = Vec::new();
     for c in 0..copies {
         for (i, j) in (0..k).flat_map(|i| (0..k).map(move |j| (i, j))) {
-            if next(state) % 8 < keep {
+            if rng.below(8) < keep {
                 let [a, b, d, e] = [
                     at(i, j, c),
                     at(i + 1, j, c),
@@ -91,7 +84,7 @@ fn grid_piece(k: u32, keep: u64, copies: u32, state: &mut u64) -> (usize, Vec<[u
 
 /// Six tets per cube of a `k³` block, each cube kept with probability
 /// `keep` in 1/8, the block repeated `copies` times apart.
-fn block_piece(k: u32, keep: u64, copies: u32, state: &mut u64) -> (usize, Vec<[u32; 4]>) {
+fn block_piece(k: u32, keep: usize, copies: u32, rng: &mut SplitMix) -> (usize, Vec<[u32; 4]>) {
     let m = k + 1;
     let n = m * m * m;
     let at = |x: u32, y: u32, z: u32, c: u32| c * n + (z * m + y) * m + x;
@@ -99,7 +92,7 @@ fn block_piece(k: u32, keep: u64, copies: u32, state: &mut u64) -> (usize, Vec<[
     for c in 0..copies {
         for z in 0..k {
             for (x, y) in (0..k).flat_map(|x| (0..k).map(move |y| (x, y))) {
-                if next(state) % 8 >= keep {
+                if rng.below(8) >= keep {
                     continue;
                 }
                 let v = |b: u32| at(x + (b & 1), y + (b >> 1 & 1), z + (b >> 2), c);
@@ -115,13 +108,13 @@ fn block_piece(k: u32, keep: u64, copies: u32, state: &mut u64) -> (usize, Vec<[
 
 #[test]
 fn surface_shape_equals_the_checkers() {
-    let (mut state, mut compared, mut most) = (0x9e37_79b9_7f4a_7c15u64, 0, (0, 0));
-    for case in 0..400u64 {
+    let (mut rng, mut compared, mut most) = (SplitMix::new(1), 0, (0, 0));
+    for case in 0..400usize {
         let (n, tris) = grid_piece(
             2 + (case % 5) as u32,
             3 + case % 6,
             1 + (case % 3) as u32,
-            &mut state,
+            &mut rng,
         );
         let Some(adj) = adjacency(&tris) else {
             continue;
@@ -147,13 +140,13 @@ fn surface_shape_equals_the_checkers() {
 
 #[test]
 fn tet_shape_equals_the_checkers() {
-    let (mut state, mut compared, mut most) = (0x2545_f491_4f6c_dd1du64, 0, (0, 0));
-    for case in 0..300u64 {
+    let (mut rng, mut compared, mut most) = (SplitMix::new(2), 0, (0, 0));
+    for case in 0..300usize {
         let (n, tets) = block_piece(
             1 + (case % 3) as u32,
             3 + case % 6,
             1 + (case % 2) as u32,
-            &mut state,
+            &mut rng,
         );
         let Some(adj) = adjacency(&tets) else {
             continue;
