@@ -21,32 +21,15 @@
 //! vertices.
 
 use crate::topology::{self, Shape};
-use dualex_util::union_find::UnionFind;
+use dualex_util::union_find::{count_components, UnionFind};
 
 /// No neighbour across a facet (a facet of one simplex).
 pub const NONE: u32 = u32::MAX;
 
-/// Components of the simplices joined across their glued facets: a flood
-/// fill (each simplex pushed once).
+/// Components of the simplices joined across their glued facets
+/// ([`count_components`]: in parallel).
 pub fn facet_components<const N: usize>(adj: &[[u32; N]]) -> usize {
-    let mut seen = vec![false; adj.len()];
-    let (mut stack, mut count) = (Vec::new(), 0);
-    for s in 0..adj.len() {
-        if seen[s] {
-            continue;
-        }
-        (seen[s], count) = (true, count + 1);
-        stack.push(s as u32);
-        while let Some(t) = stack.pop() {
-            for &n in &adj[t as usize] {
-                if n != NONE && !seen[n as usize] {
-                    seen[n as usize] = true;
-                    stack.push(n);
-                }
-            }
-        }
-    }
-    count
+    count_components(adj.len(), |s| adj[s].map(|n| n as usize))
 }
 
 /// The unglued facets, as places `N·s + f` (the facet opposite corner
@@ -65,23 +48,35 @@ pub fn lone_facets<const N: usize>(adj: &[[u32; N]]) -> Vec<usize> {
 
 /// [`topology::surface_shape`] of an accepted triangle map (module docs):
 /// `E = (3F + B) / 2` edges for `B` unglued sides, the vertices used
-/// counted, the boundary loops joined along the unglued sides.
+/// counted, the boundary loops joined along the unglued sides; the
+/// components are counted beside the rest.
 pub fn surface_shape(n_vertices: usize, triangles: &[[u32; 3]], adj: &[[u32; 3]]) -> Shape {
+    let (components, (n_used, lone, loops)) = rayon::join(
+        || facet_components(adj),
+        || {
+            let lone = lone_facets(adj);
+            let loops = boundary_loops(n_vertices, triangles, &lone);
+            (used_vertices(n_vertices, triangles), lone, loops)
+        },
+    );
+    let n_faces = triangles.len() as i64;
+    let n_edges = (3 * n_faces + lone.len() as i64) / 2;
+    Shape {
+        components,
+        euler: n_used as i64 - n_edges + n_faces,
+        boundary_components: loops,
+    }
+}
+
+/// How many of the `n_vertices` vertices `simplices` use.
+fn used_vertices<const N: usize>(n_vertices: usize, simplices: &[[u32; N]]) -> usize {
     let mut used = vec![false; n_vertices];
-    for t in triangles {
+    for t in simplices {
         for &v in t {
             used[v as usize] = true;
         }
     }
-    let n_used = used.iter().filter(|&&u| u).count() as i64;
-    let lone = lone_facets(adj);
-    let n_faces = triangles.len() as i64;
-    let n_edges = (3 * n_faces + lone.len() as i64) / 2;
-    Shape {
-        components: facet_components(adj),
-        euler: n_used - n_edges + n_faces,
-        boundary_components: boundary_loops(n_vertices, triangles, &lone),
-    }
+    used.iter().filter(|&&u| u).count()
 }
 
 /// Components of the sides `lone` (places `3·t + f`, the side opposite

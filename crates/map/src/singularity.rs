@@ -117,40 +117,45 @@ pub fn vertex_singularities(
     trans: &Transitions<3, 2>,
 ) -> Vec<VertexSingularity> {
     let lists = VertexCorners::build(&map.simplices, map.positions.len(), false);
-    let mut out = Vec::new();
-    for v in 0..map.positions.len() {
-        let ring = lists.of(v);
-        let Some(&first) = ring.first() else {
-            continue;
-        };
-        let (s0, c0) = split::<3>(first);
-        let Some(rot) = ridge_rotation(topo, trans, s0, &[c0]) else {
-            continue; // boundary vertex
-        };
-        let turns = rot.turns();
-        let fold_free = ring.iter().all(|&id| {
-            let p = &map.coords[split::<3>(id).0];
-            det_of::<3, 2>(p) > 0.0 && !is_degenerate(p)
-        });
-        let angles: f64 = ring
-            .iter()
-            .map(|&id| {
-                let (s, c) = split::<3>(id);
-                corner_angle(&map.coords[s], c)
-            })
-            .sum();
-        let tau = std::f64::consts::TAU;
-        let q = (4.0 * (tau - angles) / tau).round() as i64;
-        let index_quarters = (fold_free && q.rem_euclid(4) == turns).then_some(q);
-        if turns != 0 || index_quarters.is_some_and(|q| q != 0) {
-            out.push(VertexSingularity {
-                vertex: v as u32,
-                turns,
-                index_quarters,
-            });
-        }
-    }
-    out
+    // per vertex in parallel, collected in vertex order
+    (0..map.positions.len())
+        .into_par_iter()
+        .filter_map(|v| vertex_singularity(map, topo, trans, v as u32, lists.of(v)))
+        .collect()
+}
+
+/// Vertex `v`'s singularity (module docs) from its corners `ring`; `None`
+/// for a boundary, unused or regular vertex.
+fn vertex_singularity(
+    map: &TriMap,
+    topo: &Topology<3>,
+    trans: &Transitions<3, 2>,
+    v: u32,
+    ring: &[u32],
+) -> Option<VertexSingularity> {
+    let (s0, c0) = split::<3>(*ring.first()?);
+    // `None`: a boundary vertex
+    let rot = ridge_rotation(topo, trans, s0, &[c0])?;
+    let turns = rot.turns();
+    let fold_free = ring.iter().all(|&id| {
+        let p = &map.coords[split::<3>(id).0];
+        det_of::<3, 2>(p) > 0.0 && !is_degenerate(p)
+    });
+    let angles: f64 = ring
+        .iter()
+        .map(|&id| {
+            let (s, c) = split::<3>(id);
+            corner_angle(&map.coords[s], c)
+        })
+        .sum();
+    let tau = std::f64::consts::TAU;
+    let q = (4.0 * (tau - angles) / tau).round() as i64;
+    let index_quarters = (fold_free && q.rem_euclid(4) == turns).then_some(q);
+    (turns != 0 || index_quarters.is_some_and(|q| q != 0)).then_some(VertexSingularity {
+        vertex: v,
+        turns,
+        index_quarters,
+    })
 }
 
 /// Angle class of a rotation `r` around an edge with map direction `dir`.

@@ -139,9 +139,97 @@ pub fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
     true
 }
 
+/// Elements per block of [`count_components`].
+const BLOCK: usize = 1 << 15;
+
+/// The number of components of the graph on `0..n` whose edges
+/// `neighbours(x)` lists (each edge from one end or both; ends `≥ n` are
+/// no edge), in parallel: blocks of elements are joined along their inner
+/// edges, each on its own slice of one parent array (local indices), and
+/// keep their edges to other blocks (from either end: an edge listed from
+/// both is joined once, the second union failing); those are joined
+/// after, in order.
+/// The count is `n` less the successful unions, whatever the blocks and
+/// the threads.
+pub fn count_components<I>(n: usize, neighbours: impl Fn(usize) -> I + Sync) -> usize
+where
+    I: IntoIterator<Item = usize>,
+{
+    use rayon::prelude::*;
+    let mut parent: Vec<u32> = (0..n).map(|x| (x % BLOCK) as u32).collect();
+    let blocks: Vec<(usize, Vec<(u32, u32)>)> = parent
+        .par_chunks_mut(BLOCK)
+        .enumerate()
+        .map(|(k, part)| {
+            let first = k * BLOCK;
+            let (mut joined, mut across) = (0, Vec::new());
+            for x in first..first + part.len() {
+                for y in neighbours(x) {
+                    if y >= n || y == x {
+                        continue;
+                    }
+                    if y / BLOCK == k {
+                        joined += usize::from(union(part, (x - first) as u32, (y - first) as u32));
+                    } else {
+                        across.push((x as u32, y as u32));
+                    }
+                }
+            }
+            part.iter_mut().for_each(|p| *p += first as u32);
+            (joined, across)
+        })
+        .collect();
+    let mut joined: usize = blocks.iter().map(|b| b.0).sum();
+    for (x, y) in blocks.iter().flat_map(|b| &b.1) {
+        joined += usize::from(union(&mut parent, *x, *y));
+    }
+    n - joined
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn components_in_blocks_as_in_one() {
+        // a path cut into pieces across block borders, edges from both ends
+        // or one; isolated elements; out-of-range ends
+        let n = 3 * BLOCK + 17;
+        let cut = |x: usize| x % 1000 == 999 || x == BLOCK - 1 || x == 2 * BLOCK + 5;
+        let want = {
+            let mut uf = UnionFind::new(n);
+            for x in 0..n - 1 {
+                if !cut(x) {
+                    uf.union(x, x + 1);
+                }
+            }
+            uf.count_sets(0..n)
+        };
+        let both = |x: usize| {
+            let mut e = Vec::new();
+            if x + 1 < n && !cut(x) {
+                e.push(x + 1);
+            }
+            if x > 0 && !cut(x - 1) {
+                e.push(x - 1);
+            }
+            e.push(usize::MAX);
+            e
+        };
+        assert_eq!(count_components(n, both), want);
+        let down = |x: usize| (x > 0 && !cut(x - 1)).then(|| x - 1);
+        assert_eq!(count_components(n, down), want);
+        let up = |x: usize| (x + 1 < n && !cut(x)).then_some(x + 1);
+        assert_eq!(count_components(n, up), want);
+        // far edges joining the blocks' pieces in any order
+        let far = |x: usize| [(x * 7919) % n, x];
+        let mut uf = UnionFind::new(n);
+        (0..n).for_each(|x| {
+            uf.union(x, (x * 7919) % n);
+        });
+        assert_eq!(count_components(n, far), uf.count_sets(0..n));
+        assert_eq!(count_components(0, |_| None), 0);
+    }
 
     #[test]
     fn smaller_root_wins_whatever_the_order() {
