@@ -57,22 +57,40 @@ pub fn weld_owned<const N: usize, const D: usize>(
 }
 
 /// Pairs of boundary vertices at exactly the same position (consecutive
-/// in position order).
+/// in position order). The vertices sharing a position are found first,
+/// over all vertices (a parallel sort): the boundary, a walk over the
+/// simplices, is found only when some exist (none in a mesh whose seams
+/// are in its texture coordinates only, as OBJ's `v/vt`).
 fn coincident_boundary_pairs<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> Vec<(u32, u32)> {
+    use rayon::prelude::*;
     let nv = map.positions.len();
-    let boundary = boundary_vertices(&map.simplices, nv);
     let mut by_pos: Vec<([u64; 3], u32)> = (0..nv)
-        .filter(|&v| boundary[v])
+        .into_par_iter()
         .map(|v| (position_key(&map.positions[v]), v as u32))
         .collect();
-    by_pos.sort_unstable();
-    by_pos
-        .windows(2)
-        .filter(|w| w[0].0 == w[1].0)
-        .map(|w| (w[0].1, w[1].1))
-        .collect()
+    by_pos.par_sort_unstable();
+    let shared: Vec<&[([u64; 3], u32)]> = by_pos
+        .chunk_by(|a, b| a.0 == b.0)
+        .filter(|g| g.len() > 1)
+        .collect();
+    if shared.is_empty() {
+        return Vec::new();
+    }
+    let boundary = boundary_vertices(&map.simplices, nv);
+    let mut pairs = Vec::new();
+    for group in shared {
+        let mut on = group.iter().filter(|x| boundary[x.1 as usize]);
+        let Some(mut last) = on.next() else {
+            continue;
+        };
+        for x in on {
+            pairs.push((last.1, x.1));
+            last = x;
+        }
+    }
+    pairs
 }
 
 /// Merges the classes of `pairs` (see the module docs).
@@ -259,6 +277,41 @@ mod tests {
                 boundary_vertices(&m.simplices, nv),
                 boundary_by_sort(&m.simplices, nv)
             );
+        }
+    }
+
+    /// The pairs as first found: the boundary vertices sorted by position,
+    /// consecutive equal ones paired.
+    fn pairs_by_boundary_sort(m: &TriMap) -> Vec<(u32, u32)> {
+        let boundary = boundary_vertices(&m.simplices, m.positions.len());
+        let mut by_pos: Vec<([u64; 3], u32)> = (0..m.positions.len())
+            .filter(|&v| boundary[v])
+            .map(|v| (position_key(&m.positions[v]), v as u32))
+            .collect();
+        by_pos.sort_unstable();
+        by_pos
+            .windows(2)
+            .filter(|w| w[0].0 == w[1].0)
+            .map(|w| (w[0].1, w[1].1))
+            .collect()
+    }
+
+    #[test]
+    fn pairs_as_the_boundary_sort_finds_them() {
+        use crate::test_maps::{cube_surface, grid};
+        // an interior vertex at a boundary pair's position (not merged), a
+        // third copy on the boundary, `-0.0` beside `0.0`, and none at all
+        let mut m = cut_square();
+        m.positions[0][0] = -0.0;
+        m.positions.push([1.0, 0.0, 0.0]);
+        let extra = m.positions.len() as u32 - 1;
+        m.simplices.push([extra, 2, 6]);
+        m.coords.push([[0.0; 2]; 3]);
+        let mut inner = grid(4);
+        let p = inner.positions[0];
+        inner.positions[6] = p; // grid(4)'s vertex 6 is interior
+        for m in [cut_square(), m, inner, grid(4), cube_surface(3)] {
+            assert_eq!(coincident_boundary_pairs(&m), pairs_by_boundary_sort(&m));
         }
     }
 
