@@ -112,8 +112,27 @@ fn skippable(kw: &[u8]) -> bool {
             && kw.iter().all(|&b| b.is_ascii_alphanumeric() || b == b'_')
 }
 
-fn obj_chunk(text: &str) -> Option<ObjChunk> {
+/// An empty [`ObjChunk`] with room for as many elements as `text` has
+/// lines, of the kind its first line is (writers list the vertices, then
+/// the texture coordinates, then the faces: most chunks hold one kind, and
+/// their vectors then grow without a copy; the others grow as they go).
+fn reserved(text: &[u8]) -> ObjChunk {
     let mut c = ObjChunk::default();
+    let lines = count_lines(text);
+    match Cursor::new(text).field() {
+        b"v" => c.positions.reserve_exact(lines),
+        b"vt" => c.uvs.reserve_exact(lines),
+        b"f" => {
+            c.v.reserve_exact(lines);
+            c.vt.reserve_exact(lines);
+        }
+        _ => {}
+    }
+    c
+}
+
+fn obj_chunk(text: &str) -> Option<ObjChunk> {
+    let mut c = reserved(text.as_bytes());
     let mut t = Cursor::new(text.as_bytes());
     while !t.rest().is_empty() {
         match t.field() {
@@ -155,26 +174,57 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
         positions.extend_from_slice(&c.positions);
         uvs.extend_from_slice(&c.uvs);
     }
-    let (nv, nvt) = (positions.len(), uvs.len());
-    let in_range = parts.par_iter().all(|c| {
-        c.v.iter().flatten().all(|&i| (i as usize) < nv)
-            && c.vt.iter().flatten().all(|&i| (i as usize) < nvt)
-    });
+    let nv = positions.len();
+    // every chunk's triangles into their own slices, in parallel: indices
+    // checked, texture coordinates looked up
+    let mut simplices = vec![[0u32; 3]; nt];
+    let mut coords = vec![[[0.0f64; 2]; 3]; nt];
+    let mut jobs = Vec::with_capacity(parts.len());
+    let (mut rest_s, mut rest_c) = (&mut simplices[..], &mut coords[..]);
+    for c in &parts {
+        let (s, rs) = rest_s.split_at_mut(c.v.len());
+        let (k, rc) = rest_c.split_at_mut(c.v.len());
+        jobs.push((c, s, k));
+        (rest_s, rest_c) = (rs, rc);
+    }
+    let in_range = jobs
+        .into_par_iter()
+        .all(|(c, s, k)| chunk_triangles(c, nv, &uvs, s, k));
     if !in_range {
         return None;
     }
-    let mut map = TriMap {
+    let map = TriMap {
         positions,
-        simplices: Vec::with_capacity(nt),
-        coords: Vec::with_capacity(nt),
+        simplices,
+        coords,
     };
-    for c in &parts {
-        map.simplices.extend_from_slice(&c.v);
-        map.coords
-            .extend(c.vt.iter().map(|t| t.map(|i| uvs[i as usize])));
-    }
     map.validate().ok()?;
     Some(map)
+}
+
+/// Writes chunk `c`'s triangles into `s` and their texture coordinates
+/// (looked up in `uvs`) into `k`; whether every index is in range (below
+/// `nv` and `uvs.len()`).
+fn chunk_triangles(
+    c: &ObjChunk,
+    nv: usize,
+    uvs: &[[f64; 2]],
+    s: &mut [[u32; 3]],
+    k: &mut [[[f64; 2]; 3]],
+) -> bool {
+    if !c.v.iter().flatten().all(|&i| (i as usize) < nv) {
+        return false;
+    }
+    s.copy_from_slice(&c.v);
+    for (slot, t) in k.iter_mut().zip(&c.vt) {
+        for (x, &i) in slot.iter_mut().zip(t) {
+            let Some(uv) = uvs.get(i as usize) else {
+                return false;
+            };
+            *x = *uv;
+        }
+    }
+    true
 }
 
 /// The `.hexex` fast path (see the module docs).

@@ -105,9 +105,13 @@ where
                 in_simplex(s, &local.coords[s], det, out);
             }
         });
+        let len = items.len();
         let mut n = Nodes {
+            simplex: Vec::with_capacity(len),
+            point: Vec::with_capacity(len),
+            bary: Vec::with_capacity(len),
+            reverted: Vec::with_capacity(len),
             offsets,
-            ..Default::default()
         };
         for (s, point, bary, reverted) in items {
             n.simplex.push(s);
