@@ -141,16 +141,26 @@ impl Summary {
                 ..Default::default()
             };
         }
+        // the order statistics by selection (no sort): under the total
+        // order an order statistic is one float, bit for bit
+        let n = values.len();
+        let at = |q: f64| ((q * (n - 1) as f64).round() as usize).min(n - 1);
+        let (i5, i50) = (at(0.05), at(0.5));
         let mut s = values.to_vec();
-        s.sort_by(f64::total_cmp);
-        let at = |q: f64| s[((q * (s.len() - 1) as f64).round() as usize).min(s.len() - 1)];
+        let median = *s.select_nth_unstable_by(i50, f64::total_cmp).1;
+        // the `i50` least values lie before the median now
+        let p5 = if i5 < i50 {
+            *s[..i50].select_nth_unstable_by(i5, f64::total_cmp).1
+        } else {
+            median
+        };
         Summary {
-            elements: s.len(),
-            inverted: s.iter().filter(|&&v| v <= 0.0).count(),
-            degenerate: s.iter().filter(|&&v| v.abs() <= DEGENERATE).count(),
-            min: s[0],
-            p5: at(0.05),
-            median: at(0.5),
+            elements: n,
+            inverted: values.iter().filter(|&&v| v <= 0.0).count(),
+            degenerate: values.iter().filter(|&&v| v.abs() <= DEGENERATE).count(),
+            min: values.iter().copied().min_by(f64::total_cmp).unwrap_or(1.0),
+            p5,
+            median,
         }
     }
 
@@ -188,6 +198,45 @@ pub fn hex_values(positions: &[[f64; 3]], hexes: &[[u32; 8]]) -> Vec<f64> {
 
 #[cfg(test)]
 mod tests {
+    /// [`Summary::of`] as first written: the values sorted.
+    fn summary_by_sort(values: &[f64]) -> Summary {
+        let mut s = values.to_vec();
+        s.sort_by(f64::total_cmp);
+        let at = |q: f64| s[((q * (s.len() - 1) as f64).round() as usize).min(s.len() - 1)];
+        Summary {
+            elements: s.len(),
+            inverted: s.iter().filter(|&&v| v <= 0.0).count(),
+            degenerate: s.iter().filter(|&&v| v.abs() <= DEGENERATE).count(),
+            min: s[0],
+            p5: at(0.05),
+            median: at(0.5),
+        }
+    }
+
+    #[test]
+    fn summary_by_selection_as_by_sort() {
+        let mut rng = dualex_util::rng::SplitMix::new(5);
+        let special = [0.0, -0.0, 1.0, -1.0, DEGENERATE, f64::NAN, -f64::NAN, 0.5];
+        for n in [1, 2, 3, 19, 20, 21, 40, 101, 1000] {
+            for round in 0..20 {
+                let values: Vec<f64> = (0..n)
+                    .map(|_| match rng.below(4) {
+                        0 if round % 2 == 0 => special[rng.below(special.len())],
+                        1 => (rng.unit() * 8.0).round() / 4.0 - 1.0,
+                        _ => 2.0 * rng.unit() - 1.0,
+                    })
+                    .collect();
+                let (got, want) = (Summary::of(&values), summary_by_sort(&values));
+                let bits = |s: &Summary| [s.min, s.p5, s.median].map(f64::to_bits);
+                assert_eq!(bits(&got), bits(&want), "{values:?}");
+                assert_eq!(
+                    (got.elements, got.inverted, got.degenerate),
+                    (want.elements, want.inverted, want.degenerate)
+                );
+            }
+        }
+    }
+
     use super::*;
 
     fn unit_cube() -> [[f64; 3]; 8] {
