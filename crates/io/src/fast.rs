@@ -9,9 +9,11 @@
 //! the shared data, generated maps and the fuzz corpus):
 //! - OBJ: every `f` corner is `v/vt` or `v/vt/vn` with positive indices
 //!   (negative, relative indices send the file to the sequential reader);
-//! - `.hexex`: after the tet count, one tet per line (`a b c d` and 12
-//!   numbers), as every writer we know produces; anything else (several
-//!   tets per line, a tet split over lines) goes to the sequential reader.
+//! - `.hexex`: the vertex count alone on its line, one vertex per line (3
+//!   numbers), the tet count alone on its line, one tet per line (`a b c d`
+//!   and 12 numbers), as every writer we know produces; anything else
+//!   (several vertices or tets per line, one split over lines, a blank line
+//!   among them) goes to the sequential reader.
 //!
 //! The file is cut into chunks of ~[`CHUNK`] bytes at line ends; chunks are
 //! parsed in parallel with rayon, and joined in file order, so the result
@@ -234,47 +236,50 @@ pub(crate) fn hexex(bytes: &[u8]) -> Option<TetMap> {
 
 /// [`hexex`] with chunks of ~`chunk` bytes.
 pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
-    // the header and vertices (a fifth of the file or less): sequential,
-    // as one token stream, up to the tet count
+    // the vertex count alone on its line, then one line per vertex, the
+    // tet count's line and one line per tet: the lines after the first
+    // cut into chunks and counted in parallel, then every chunk parsed in
+    // parallel into the slices of the vertices and tets its lines hold
     let mut t = Cursor::new(bytes);
     t.skip_space();
     let nv = usize::try_from(t.integer(19)?).ok()?;
-    let mut positions = Vec::with_capacity(nv.min(bytes.len() / 6));
-    for _ in 0..nv {
-        let mut p = [0.0; 3];
-        for x in &mut p {
-            t.skip_space();
-            *x = t.float()?;
-        }
-        positions.push(p);
-    }
-    t.skip_space();
-    let nt = usize::try_from(t.integer(19)?).ok()?;
-    // the rest of the tet count's line must be blank
     t.end_line()?;
+    if nv > bytes.len() / 6 {
+        return None;
+    }
+    let chunks = line_chunks(t.rest(), chunk);
+    let lines: Vec<usize> = chunks.par_iter().map(|c| count_lines(c)).collect();
+    let nt = tet_count(&chunks, &lines, nv)?;
     if nt == 0 || nt > bytes.len() / 32 {
         return None;
     }
-    let body_chunks = line_chunks(t.rest(), chunk);
-    let lines: Vec<usize> = body_chunks.par_iter().map(|c| count_lines(c)).collect();
+    let mut positions = vec![[0.0f64; 3]; nv];
     let mut simplices = vec![[0u32; 4]; nt];
     let mut coords = vec![[[0.0f64; 3]; 4]; nt];
-    // per chunk: its bytes, and the slices of the tets its lines fill
-    let mut jobs = Vec::with_capacity(body_chunks.len());
-    let (mut rest_s, mut rest_c) = (&mut simplices[..], &mut coords[..]);
-    for (c, &n) in body_chunks.iter().zip(&lines) {
-        let take = n.min(rest_s.len());
-        let (s, rs) = rest_s.split_at_mut(take);
-        let (k, rc) = rest_c.split_at_mut(take);
-        jobs.push((*c, s, k));
-        (rest_s, rest_c) = (rs, rc);
+    // per chunk: its bytes, its vertices' slice, whether it holds the tet
+    // count's line, its tets' slices
+    let mut jobs = Vec::with_capacity(chunks.len());
+    let (mut rest_p, mut rest_s, mut rest_c) =
+        (&mut positions[..], &mut simplices[..], &mut coords[..]);
+    let mut counted = false;
+    for (c, &n) in chunks.iter().zip(&lines) {
+        let verts = n.min(rest_p.len());
+        let (p, rp) = std::mem::take(&mut rest_p).split_at_mut(verts);
+        // the tet count's line: the first line after the last vertex's
+        let count = !counted && rp.is_empty() && verts < n;
+        counted |= count;
+        let take = (n - verts - usize::from(count)).min(rest_s.len());
+        let (s, rs) = std::mem::take(&mut rest_s).split_at_mut(take);
+        let (k, rc) = std::mem::take(&mut rest_c).split_at_mut(take);
+        jobs.push((*c, p, count, s, k));
+        (rest_p, rest_s, rest_c) = (rp, rs, rc);
     }
     if !rest_s.is_empty() {
         return None; // fewer lines than tets
     }
     let ok = jobs
         .into_par_iter()
-        .all(|(text, s, k)| tet_lines(text, s, k, nv));
+        .all(|(text, p, count, s, k)| body_lines(text, p, count.then_some(nt), s, k, nv));
     if !ok {
         return None;
     }
@@ -287,11 +292,48 @@ pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
     Some(map)
 }
 
-/// Fills `s` and `k` from the first lines of `text`, one tet per line (4
-/// vertex indices below `nv` and 12 finite numbers); the lines after them
-/// must be blank.
-fn tet_lines(text: &[u8], s: &mut [[u32; 4]], k: &mut [[[f64; 3]; 4]], nv: usize) -> bool {
+/// The tet count: line `nv` of the lines after the vertex count (`lines`
+/// per chunk), an integer alone on its line.
+fn tet_count(chunks: &[&[u8]], lines: &[usize], nv: usize) -> Option<usize> {
+    let mut first = 0;
+    for (c, &n) in chunks.iter().zip(lines) {
+        if nv < first + n {
+            let mut t = Cursor::new(c);
+            (first..nv).for_each(|_| t.skip_line());
+            let nt = usize::try_from(t.integer(19)?).ok()?;
+            t.end_line()?;
+            return Some(nt);
+        }
+        first += n;
+    }
+    None
+}
+
+/// Fills `p` from the first lines of `text`, one vertex per line (3 finite
+/// numbers); then, with `count`, reads the tet count's line (that
+/// integer alone); then fills `s` and `k`, one tet per line (4 vertex
+/// indices below `nv` and 12 finite numbers); the lines after them must be
+/// blank.
+fn body_lines(
+    text: &[u8],
+    p: &mut [[f64; 3]],
+    count: Option<usize>,
+    s: &mut [[u32; 4]],
+    k: &mut [[[f64; 3]; 4]],
+    nv: usize,
+) -> bool {
     let mut t = Cursor::new(text);
+    for slot in p.iter_mut() {
+        let Some(v) = vertex_line(&mut t) else {
+            return false;
+        };
+        *slot = v;
+    }
+    if let Some(nt) = count {
+        if t.integer(19) != Some(nt as u64) || t.end_line().is_none() {
+            return false;
+        }
+    }
     for (slot_s, slot_c) in s.iter_mut().zip(k.iter_mut()) {
         let Some((tet, uvw)) = tet_line(&mut t, nv) else {
             return false;
@@ -300,6 +342,17 @@ fn tet_lines(text: &[u8], s: &mut [[u32; 4]], k: &mut [[[f64; 3]; 4]], nv: usize
     }
     t.skip_space();
     t.rest().is_empty()
+}
+
+/// One vertex line: 3 finite numbers, then the line end.
+#[inline]
+fn vertex_line(t: &mut Cursor<'_>) -> Option<[f64; 3]> {
+    let mut p = [0.0; 3];
+    for x in &mut p {
+        *x = t.float()?;
+    }
+    t.end_line()?;
+    Some(p)
 }
 
 /// One tet line: 4 vertex indices below `nv` and 12 finite numbers, then

@@ -115,8 +115,22 @@ fn obj_lines_and_corners_read_as_the_sequential_reader() {
 
 #[test]
 fn hexex_lines_read_as_the_sequential_reader() {
-    let head = "4\n0 0 0\n1 0 0 0\r\n1 0\n0 0 1\n1";
+    let head = "4\n0 0 0\n1 0 0\r\n0 1 0\t\n0 0 1\n1";
     let tet = "0 1 2 3 0 0 0 1 0 0 0 1 0 0 0 1";
+    // vertices not one per line, a blank line before the tet count, the
+    // count on a vertex's line or beside the vertex count: left to the
+    // sequential reader (which reads them as one token stream)
+    for head in [
+        "4\n0 0 0\n1 0 0 0\r\n1 0\n0 0 1\n1\n",
+        "4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n\n1\n",
+        "4\n0 0 0\n1 0 0\n0 1 0\n0 0 1 1\n",
+        "4 0 0 0\n1 0 0\n0 1 0\n0 0 1\n1\n",
+        "\n 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1\n",
+    ] {
+        let text = format!("{head}{tet}\n");
+        let must = head.starts_with('\n');
+        assert_eq!(agree_hexex(text.as_bytes(), 4, false), must, "{head:?}");
+    }
     for (body, must) in [
         (format!("\n{tet}"), true),
         (format!(" \t\r\n{tet}\r\n\n \n"), true),
