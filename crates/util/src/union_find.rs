@@ -144,46 +144,73 @@ const BLOCK: usize = 1 << 15;
 
 /// The number of components of the graph on `0..n` whose edges
 /// `neighbours(x)` lists (each edge from one end or both; ends `≥ n` are
-/// no edge), in parallel: blocks of elements are joined along their inner
-/// edges, each on its own slice of one parent array (local indices), and
-/// keep their edges to other blocks (from either end: an edge listed from
-/// both is joined once, the second union failing); those are joined
-/// after, in order.
-/// The count is `n` less the successful unions, whatever the blocks and
-/// the threads.
+/// no edge), in parallel: blocks of elements are flood-filled along their
+/// inner edges, each labelling its fills on its own slice of one label
+/// array and keeping its edges to other blocks (from either end: an edge
+/// listed from both is joined once, the second union failing) and those
+/// into an earlier fill of its own (an edge listed from one end only);
+/// those join the fills after, in order. The count is the fills less the
+/// successful joins, whatever the blocks and the threads.
 pub fn count_components<I>(n: usize, neighbours: impl Fn(usize) -> I + Sync) -> usize
 where
     I: IntoIterator<Item = usize>,
 {
     use rayon::prelude::*;
-    let mut parent: Vec<u32> = (0..n).map(|x| (x % BLOCK) as u32).collect();
-    let blocks: Vec<(usize, Vec<(u32, u32)>)> = parent
+    const NONE: u32 = u32::MAX;
+    let mut label = vec![NONE; n];
+    let blocks: Vec<(usize, Vec<(u32, u32)>)> = label
         .par_chunks_mut(BLOCK)
         .enumerate()
         .map(|(k, part)| {
             let first = k * BLOCK;
-            let (mut joined, mut across) = (0, Vec::new());
-            for x in first..first + part.len() {
-                for y in neighbours(x) {
-                    if y >= n || y == x {
-                        continue;
-                    }
-                    if y / BLOCK == k {
-                        joined += usize::from(union(part, (x - first) as u32, (y - first) as u32));
-                    } else {
-                        across.push((x as u32, y as u32));
+            let (mut count, mut across, mut stack) = (0, Vec::new(), Vec::new());
+            for x0 in 0..part.len() {
+                if part[x0] != NONE {
+                    continue;
+                }
+                part[x0] = count as u32;
+                stack.push(x0);
+                while let Some(x) = stack.pop() {
+                    for y in neighbours(first + x) {
+                        match y.checked_sub(first).filter(|&l| l < part.len()) {
+                            Some(l) if part[l] == NONE => {
+                                part[l] = count as u32;
+                                stack.push(l);
+                            }
+                            // an edge listed from this end only, into an
+                            // earlier fill of the block
+                            Some(l) if part[l] != count as u32 => {
+                                across.push(((first + x) as u32, y as u32));
+                            }
+                            Some(_) => {}
+                            None if y < n => across.push(((first + x) as u32, y as u32)),
+                            None => {}
+                        }
                     }
                 }
+                count += 1;
             }
-            part.iter_mut().for_each(|p| *p += first as u32);
-            (joined, across)
+            (count, across)
         })
         .collect();
-    let mut joined: usize = blocks.iter().map(|b| b.0).sum();
-    for (x, y) in blocks.iter().flat_map(|b| &b.1) {
-        joined += usize::from(union(&mut parent, *x, *y));
-    }
-    n - joined
+    // each block's components numbered after the earlier blocks'
+    let base: Vec<usize> = blocks
+        .iter()
+        .scan(0, |at, b| {
+            let first = *at;
+            *at += b.0;
+            Some(first)
+        })
+        .collect();
+    let total = blocks.iter().map(|b| b.0).sum::<usize>();
+    let id = |v: u32| base[v as usize / BLOCK] + label[v as usize] as usize;
+    let mut uf = UnionFind::new(total);
+    let joined = blocks
+        .iter()
+        .flat_map(|b| &b.1)
+        .filter(|&&(x, y)| uf.union(id(x), id(y)))
+        .count();
+    total - joined
 }
 
 #[cfg(test)]
