@@ -41,7 +41,7 @@ pub mod stats;
 
 use dualex_cells::HexMesh;
 use dualex_graph::Takeover;
-use dualex_map::{InputError, TetMap, TransitionOptions};
+use dualex_map::{InputCounts, InputError, TetMap, TransitionOptions};
 pub use dualex_segment::grid_offset::GridOffset;
 use dualex_segment::place::{place, Placed};
 use dualex_segment::relax;
@@ -111,11 +111,12 @@ pub fn extract_full(map: &TetMap, opts: &HexOptions) -> Result<Extracted, InputE
     // and faces split), the input's own counts and shape (not those of
     // the split map) read on the first pass
     let o = steps::Options::new(&opts.transitions, opts.grid_offset, opts.seed);
-    let first_pass = |m: &TetMap, model: &Model<4, 3>, singular: &Vec<_>| {
+    let first_pass = |m: &TetMap, model: &Model<4, 3>, singular: &Vec<_>, n: &InputCounts| {
         st.input_tets = m.len();
         st.singular_edges = singular.len();
         st.singular_edge_angles = dualex_map::report::singular_edge_histogram(singular);
-        (st.reverted_tets, st.degenerate_tets) = dualex_map::singularity::quality(m);
+        st.reverted_tets = n.reverted;
+        st.degenerate_tets = n.degenerate.unwrap_or_default();
         st.input = Some(dualex_check::glued::tet_glued(&model.topo.adj));
     };
     let seg = steps::segment(map, &o, &mut st.segment, &mut laps, first_pass)?;

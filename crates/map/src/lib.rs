@@ -18,6 +18,9 @@
 //!
 //! - [`rotation`]: the grid rotation groups (4 in 2D, 24 in 3D);
 //! - [`mesh`]: [`TriMap`] / [`TetMap`], the raw input, and its validation;
+//!   `reflect` (private): the refusal of reflected 3D charts;
+//! - [`scan`]: step 1's input checks (validation, size, reflected charts)
+//!   and counts in one walk;
 //! - [`error`]: [`InputError`], the errors caused by the input: what is
 //!   wrong as a typed [`InputErrorKind`] naming the [`Element`] (vertex,
 //!   triangle, tet, face, …, and its index), the file and the [`Location`];
@@ -48,10 +51,12 @@ pub mod corners;
 pub mod error;
 pub mod holonomy;
 pub mod mesh;
+mod reflect;
 pub mod report;
 // rotation.rs is owned elsewhere; its index loops read clearer than iterators
 #[allow(clippy::needless_range_loop)]
 pub mod rotation;
+pub mod scan;
 pub mod singularity;
 pub mod star;
 mod star_build;
@@ -73,6 +78,7 @@ pub use error::{Element, ElementKind, InputError, InputErrorKind, Location};
 pub use mesh::{SimplexMap, TetMap, TriMap};
 pub use report::{inspect, InspectOptions, MapReport};
 pub use rotation::{Rot, Rot2, Rot3};
+pub use scan::InputCounts;
 pub use star::{StarEntry, Stars};
 pub use topology::{Topology, NONE};
 pub use transition::{TransitionOptions, TransitionReport, Transitions};

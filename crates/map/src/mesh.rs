@@ -15,7 +15,10 @@
 //! repeated vertex in a simplex, every position and map coordinate finite.
 
 use crate::error::{CountError, ElementKind, IndexError, InputError, InputErrorKind, MapError};
+use crate::transition_derive::ulp;
 use rayon::prelude::*;
+
+pub use crate::reflect::{FOLDED_FLAT, FOLDED_SIGNED};
 
 /// A simplicial mesh with per-corner map coordinates.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -50,6 +53,16 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
 
     /// Checks the invariants of the module docs; the error names the element.
     pub fn validate(&self) -> Result<(), InputError> {
+        self.validate_vertices()?;
+        match first_where(self.len(), |s| !self.simplex_ok(s)) {
+            Some(s) => Err(self.simplex_error(s)),
+            None => Ok(()),
+        }
+    }
+
+    /// The checks of [`SimplexMap::validate`] before the simplices': the
+    /// counts agree, there is a simplex, every position is finite.
+    pub(crate) fn validate_vertices(&self) -> Result<(), InputError> {
         let w = ElementKind::simplex(N);
         if self.coords.len() != self.simplices.len() {
             return Err(CountError::MapCoordinates {
@@ -69,22 +82,21 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
         // the first bad element found in parallel, its error as the
         // sequential loops name it
         let bad_position = |i: usize| self.positions[i].iter().any(|x| !x.is_finite());
-        if let Some(i) = first_where(self.positions.len(), bad_position) {
-            let p = self.positions[i];
-            let e = ElementKind::Vertex
-                .at(i)
-                .error(MapError::NonFinitePosition(p));
-            return Err(e.into());
-        }
-        match first_where(self.len(), |s| !self.simplex_ok(s)) {
-            Some(s) => Err(self.simplex_error(s)),
+        match first_where(self.positions.len(), bad_position) {
+            Some(i) => {
+                let p = self.positions[i];
+                let e = ElementKind::Vertex
+                    .at(i)
+                    .error(MapError::NonFinitePosition(p));
+                Err(e.into())
+            }
             None => Ok(()),
         }
     }
 
     /// Whether simplex `s` keeps the invariants of the module docs.
     #[inline]
-    fn simplex_ok(&self, s: usize) -> bool {
+    pub(crate) fn simplex_ok(&self, s: usize) -> bool {
         let simplex = &self.simplices[s];
         let nv = self.positions.len();
         let mut ok = true;
@@ -94,13 +106,19 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
                 ok &= simplex[c] != simplex[d];
             }
         }
-        ok && self.coords[s].iter().flatten().all(|x| x.is_finite())
+        // (no early exit: the tests are branch-free)
+        for c in &self.coords[s] {
+            for x in c {
+                ok &= x.is_finite();
+            }
+        }
+        ok
     }
 
     /// The first invariant simplex `s` breaks (module docs), in corner
     /// order; `s` must break one.
     #[cold]
-    fn simplex_error(&self, s: usize) -> InputError {
+    pub(crate) fn simplex_error(&self, s: usize) -> InputError {
         let w = ElementKind::simplex(N);
         let nv = self.positions.len();
         let simplex = &self.simplices[s];
@@ -142,19 +160,7 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
     /// 10⁹ × 10⁹ map units): absurd maps are refused up front.
     pub fn check_grid_size(&self) -> Result<f64, InputError> {
         // per simplex in parallel, summed in simplex order
-        let points: Vec<f64> = self
-            .coords
-            .par_iter()
-            .map(|p| {
-                let mut n = 1.0;
-                for k in 0..D {
-                    let lo = p.iter().map(|c| c[k]).fold(f64::INFINITY, f64::min);
-                    let hi = p.iter().map(|c| c[k]).fold(f64::NEG_INFINITY, f64::max);
-                    n *= hi - lo + 1.0;
-                }
-                n
-            })
-            .collect();
+        let points: Vec<f64> = self.coords.par_iter().map(grid_points).collect();
         let (mut total, mut largest) = (0.0f64, (0.0f64, 0usize));
         for (s, &n) in points.iter().enumerate() {
             total += n;
@@ -187,6 +193,26 @@ fn first_where(len: usize, bad: impl Fn(usize) -> bool + Sync) -> Option<usize> 
     (block * BLOCK..len.min((block + 1) * BLOCK)).find(|&i| bad(i))
 }
 
+/// Grid points the image `p` of a simplex spans, at most: the product
+/// over the axes of its extent + 1 ([`SimplexMap::check_grid_size`]).
+#[inline]
+pub(crate) fn grid_points<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+    // (`min` and `max` of floats as comparisons: a NaN is skipped as by
+    // `f64::min`, a zero's sign does not change the product)
+    for c in p {
+        for k in 0..D {
+            lo[k] = if c[k] < lo[k] { c[k] } else { lo[k] };
+            hi[k] = if c[k] > hi[k] { c[k] } else { hi[k] };
+        }
+    }
+    let mut n = 1.0;
+    for k in 0..D {
+        n *= hi[k] - lo[k] + 1.0;
+    }
+    n
+}
+
 /// Determinant of the edge vectors `p1-p0, …, pD-p0` of a simplex image.
 pub fn det_of<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> f64 {
     let e = |i: usize, k: usize| p[i][k] - p[0][k];
@@ -201,82 +227,48 @@ pub fn det_of<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> f64 {
     }
 }
 
-/// The least share of the map's unsigned volume (the sum of the map's
-/// |determinants|) its signed volume keeps in a map taken as folded, not
-/// reflected ([`TetMap::check_not_reflected`]).
-pub const FOLDED_SIGNED: f64 = 1e-3;
-
-/// The largest share of the geometric volume flat tets make up in a map
-/// taken as folded, not reflected ([`TetMap::check_not_reflected`]).
-pub const FOLDED_FLAT: f64 = 1e-3;
-
-impl TetMap {
-    /// Refuses a 3D map whose charts are reflected: when tets whose map is
-    /// reverted (orientation opposite to the geometry's) or flat make up at
-    /// least half of the mesh's geometric volume, and some of them are
-    /// reverted (e.g. HexEx's `minimal_invalid_charts`), the map turns the
-    /// volume inside out as a whole rather than folding it locally — unless
-    /// the map is folded: its signed volume (the sum of the map's
-    /// determinants, each tet oriented by the geometry) stays positive
-    /// ([`FOLDED_SIGNED`] of the unsigned sum; moving vertices inside the
-    /// volume does not change it, reflecting the charts makes it negative)
-    /// and almost none of the volume is flat ([`FOLDED_FLAT`]; HexEx's map,
-    /// a third of it flat, stays refused). Issue 22's refined folds on a
-    /// small mesh revert over half its volume. Folds over less than half
-    /// the volume, and collapsed maps (flat tets, none reverted: the
-    /// paper's collapsed stress test), are the messy maps that extraction
-    /// repairs.
-    pub fn check_not_reflected(&self) -> Result<(), InputError> {
-        let geo = |s: usize| {
-            let p: [[f64; 3]; 4] = self.simplices[s].map(|v| self.positions[v as usize]);
-            det_of::<4, 3>(&p)
-        };
-        // "degenerate": |det| below 1e-12 of the cube of the longest edge
-        let scale = |p: &[[f64; 3]; 4]| {
-            let mut l = 0.0f64;
-            for i in 0..4 {
-                for j in 0..i {
-                    l = l.max((0..3).map(|k| (p[i][k] - p[j][k]).powi(2)).sum::<f64>());
-                }
+/// The longest edge of a simplex image `p` (the square root of the
+/// largest squared length: the largest length, as square roots are
+/// monotone and correctly rounded).
+#[inline]
+pub(crate) fn longest_edge<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> f64 {
+    let mut l = 0.0f64;
+    for (i, a) in p.iter().enumerate() {
+        for b in &p[..i] {
+            // (0 + the first square is that square: a sum's rounding)
+            let mut d2 = 0.0;
+            for (x, y) in a.iter().zip(b) {
+                d2 += (x - y).powi(2);
             }
-            l.sqrt().powi(3) * 1e-12
-        };
-        // per tet (in parallel): geometric det, map det, degeneracy bound;
-        // the sums below stay sequential, in tet order
-        let per_tet: Vec<(f64, f64, f64)> = (0..self.len())
-            .into_par_iter()
-            .map(|s| (geo(s), self.map_det(s), scale(&self.coords[s])))
-            .collect();
-        let total: f64 = per_tet.iter().map(|t| t.0).sum();
-        let sign = if total < 0.0 { -1.0 } else { 1.0 };
-        let (mut bad, mut all, mut worst, mut reverted) = (0.0, 0.0, None, 0.0);
-        let (mut signed, mut unsigned) = (0.0, 0.0);
-        for (s, &(geo_s, map_s, tiny)) in per_tet.iter().enumerate() {
-            let g = (geo_s * sign).max(0.0);
-            all += g;
-            let m = map_s * sign;
-            signed += m;
-            unsigned += m.abs();
-            if m <= tiny {
-                bad += g;
-                if m < -tiny {
-                    reverted += g;
-                    worst.get_or_insert(s);
-                }
-            }
-        }
-        // a fold inside the volume keeps the map's signed volume: positive,
-        // where reflected charts make it negative; flat tets are no fold
-        let folded = signed > FOLDED_SIGNED * unsigned && bad - reverted < FOLDED_FLAT * all;
-        match worst {
-            Some(s) if all > 0.0 && bad >= 0.5 * all && reverted > 0.0 && !folded => {
-                let percent = 100.0 * bad / all;
-                let e = ElementKind::Tet
-                    .at(s)
-                    .error(MapError::Reflected { percent });
-                Err(e.into())
-            }
-            _ => Ok(()),
+            l = if d2 > l { d2 } else { l }; // as `l.max(d2)`
         }
     }
+    l.sqrt()
+}
+
+/// `1e-12·L^D`: a determinant of at most this size is flat for a simplex
+/// of longest edge `L` ([`crate::singularity::is_degenerate`],
+/// [`TetMap::check_not_reflected`]).
+#[inline]
+pub(crate) fn flat_bound<const D: usize>(len: f64) -> f64 {
+    1e-12 * len.powi(D as i32)
+}
+
+/// Whether simplex image `p` of determinant `det` and longest edge `len`
+/// is degenerate ([`crate::singularity::is_degenerate`]).
+#[inline]
+pub(crate) fn degenerate_with<const N: usize, const D: usize>(
+    p: &[[f64; D]; N],
+    det: f64,
+    len: f64,
+) -> bool {
+    let mut scale = 0.0f64;
+    for c in p {
+        for x in c {
+            // as `scale.max(x.abs())`
+            scale = if x.abs() > scale { x.abs() } else { scale };
+        }
+    }
+    let tol = flat_bound::<D>(len).max(8.0 * ulp(scale) * len.powi(D as i32 - 1));
+    det.abs() <= tol
 }

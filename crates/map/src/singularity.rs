@@ -22,8 +22,7 @@
 
 use crate::corners::{split, VertexCorners};
 use crate::holonomy::ridge_rotation;
-use crate::mesh::det_of;
-use crate::transition_derive::ulp;
+use crate::mesh::{degenerate_with, det_of, longest_edge};
 use crate::{Rot3, SimplexMap, TetMap, Topology, Transitions, TriMap};
 use rayon::prelude::*;
 
@@ -79,17 +78,7 @@ pub struct EdgeSingularity {
 
 /// Whether simplex `p` is degenerate (see the module docs).
 pub fn is_degenerate<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> bool {
-    let mut len = 0.0f64;
-    let mut scale = 0.0f64;
-    for i in 0..N {
-        scale = p[i].iter().fold(scale, |acc, x| acc.max(x.abs()));
-        for j in i + 1..N {
-            let d2: f64 = (0..D).map(|k| (p[j][k] - p[i][k]).powi(2)).sum();
-            len = len.max(d2.sqrt());
-        }
-    }
-    let tol = (1e-12 * len.powi(D as i32)).max(8.0 * ulp(scale) * len.powi(D as i32 - 1));
-    det_of::<N, D>(p).abs() <= tol
+    degenerate_with(p, det_of::<N, D>(p), longest_edge(p))
 }
 
 /// `(reverted, degenerate)` simplex counts: `det < 0`, and [`is_degenerate`].

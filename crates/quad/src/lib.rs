@@ -125,9 +125,9 @@ pub fn extract_full(map: &TriMap, opts: &QuadOptions) -> Result<Extracted, Input
     // 1–7: the segmentation (3: edges between singular vertices split),
     // the input's own counts and shape read on the first pass
     let o = steps::Options::new(&opts.transitions, opts.grid_offset, opts.seed);
-    let seg = steps::segment(map, &o, &mut st.segment, &mut laps, |m, model, ()| {
+    let seg = steps::segment(map, &o, &mut st.segment, &mut laps, |m, model, (), n| {
         st.input_triangles = m.len();
-        st.reverted_triangles = (0..m.len()).filter(|&s| m.map_det(s) < 0.0).count();
+        st.reverted_triangles = n.reverted;
         if opts.singularity_stats {
             st.singularities = stats::input_singularities(m, model);
         }

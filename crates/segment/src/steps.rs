@@ -5,7 +5,8 @@
 //! repairs (10–11). The numbering is the pipeline's (ARCHITECTURE.md).
 //!
 //! 1. [`check`], then per pass [`model`]: the map's validity and size
-//!    (3D: reflected charts refused, [`InputCheck`]), its topology,
+//!    (3D: reflected charts refused, [`InputCheck`]; one walk, which
+//!    counts the reverted simplices on the way), its topology,
 //!    transitions and vertex stars (`dualex-map`);
 //! 2. per pass, in [`prepare`]: the grid offset chosen once and the local
 //!    map built with it, its singular vertices snapped
@@ -46,7 +47,9 @@ use crate::stats::SegmentStats;
 use crate::trace::End;
 use dualex_graph::NodeGraph;
 use dualex_map::corners::VertexCorners;
-use dualex_map::{InputError, SimplexMap, Stars, Topology, TransitionOptions, Transitions};
+use dualex_map::{
+    InputCounts, InputError, SimplexMap, Stars, Topology, TransitionOptions, Transitions,
+};
 use dualex_util::timing::Laps;
 use std::borrow::Cow;
 
@@ -64,23 +67,24 @@ impl<T, const N: usize, const D: usize> Dimension<N, D> for T where
 {
 }
 
-/// Step 1's refusal of a valid map that one dimension cannot extract.
+/// Step 1's input checks: validity, size and what the dimension refuses,
+/// in one walk (`dualex_map::scan`).
 pub trait InputCheck<const N: usize, const D: usize> {
-    /// `Err` for a map to refuse (after validation and the size check).
-    fn refuse(map: &SimplexMap<N, D>) -> Result<(), InputError>;
+    /// The first error, in the order of the checks, or the input's counts.
+    fn check(map: &SimplexMap<N, D>) -> Result<InputCounts, InputError>;
 }
 
 impl InputCheck<3, 2> for Dim<3, 2> {
-    /// D = 2: nothing more.
-    fn refuse(_: &SimplexMap<3, 2>) -> Result<(), InputError> {
-        Ok(())
+    /// D = 2: validity and size (`TriMap::checked`).
+    fn check(map: &SimplexMap<3, 2>) -> Result<InputCounts, InputError> {
+        map.checked()
     }
 }
 
 impl InputCheck<4, 3> for Dim<4, 3> {
-    /// D = 3: charts reflected as a whole (`TetMap::check_not_reflected`).
-    fn refuse(map: &SimplexMap<4, 3>) -> Result<(), InputError> {
-        map.check_not_reflected()
+    /// D = 3: also charts reflected as a whole (`TetMap::checked`).
+    fn check(map: &SimplexMap<4, 3>) -> Result<InputCounts, InputError> {
+        map.checked()
     }
 }
 
@@ -119,19 +123,26 @@ pub struct Segmented<'a, const N: usize, const D: usize> {
     pub graph: NodeGraph<D>,
 }
 
-/// Steps 1–7 in order (module docs), `first_pass` as in [`prepare`].
+/// Steps 1–7 in order (module docs), `first_pass` as in [`prepare`],
+/// also given the input's counts from [`check`].
 pub fn segment<'a, const N: usize, const D: usize>(
     map: &'a SimplexMap<N, D>,
     opts: &Options<'_>,
     st: &mut SegmentStats,
     laps: &mut Laps,
-    first_pass: impl FnOnce(&SimplexMap<N, D>, &Model<N, D>, &<Dim<N, D> as ToSplit<N, D>>::Singular),
+    first_pass: impl FnOnce(
+        &SimplexMap<N, D>,
+        &Model<N, D>,
+        &<Dim<N, D> as ToSplit<N, D>>::Singular,
+        &InputCounts,
+    ),
 ) -> Result<Segmented<'a, N, D>, InputError>
 where
     Dim<N, D>: Dimension<N, D>,
 {
-    check(map)?;
-    let prepared = prepare(map, opts, st, first_pass)?;
+    let counts = check(map)?;
+    let read = |m: &_, model: &_, singular: &_| first_pass(m, model, singular, &counts);
+    let prepared = prepare(map, opts, st, read)?;
     laps.lap("map");
     Ok(segment_prepared(prepared, opts.seed, st, laps))
 }
@@ -200,15 +211,16 @@ pub struct Sanitized<'a, const N: usize, const D: usize> {
 }
 
 /// Step 1, once: refuses an invalid map, one whose images span absurdly
-/// many grid points (before any allocation), and what the dimension
-/// refuses ([`InputCheck`]).
-pub fn check<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> Result<(), InputError>
+/// many grid points (before any allocation, `crate::nodes::check_size`),
+/// and what the dimension refuses, in one walk ([`InputCheck`]); counts
+/// the input's reverted (3D: and degenerate) simplices.
+pub fn check<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+) -> Result<InputCounts, InputError>
 where
     Dim<N, D>: Dimension<N, D>,
 {
-    map.validate()?;
-    crate::nodes::check_size(map)?;
-    Dim::<N, D>::refuse(map)
+    Dim::<N, D>::check(map)
 }
 
 /// Step 1, per pass: topology, transitions (their residual and roundings
