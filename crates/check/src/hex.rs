@@ -32,7 +32,6 @@
 use crate::quad::{check_quad_mesh, QuadReport};
 use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
-use rayon::slice::ParallelSliceMut;
 use std::collections::BTreeMap;
 
 /// The 6 faces of a hex, oriented outwards for a positive hex (the one
@@ -112,7 +111,16 @@ pub fn check_hex_mesh(
         ..HexReport::default()
     };
     let good = classify_cells(n_vertices, hexes, &mut r);
-    let faces = face_uses(&good);
+    // three independent passes over the good cells, side by side
+    let (faces, (edges, (used, components))) = rayon::join(
+        || face_uses(n_vertices, &good),
+        || {
+            rayon::join(
+                || sorted_edges(n_vertices, &good),
+                || used_and_components(n_vertices, &good),
+            )
+        },
+    );
     let mut boundary_quads = Vec::new();
     for uses in faces.chunk_by(|x, y| x.0 == y.0) {
         r.faces += 1;
@@ -129,17 +137,9 @@ pub fn check_hex_mesh(
     boundary_quads.sort_unstable();
     r.boundary_faces = boundary_quads.len();
     r.boundary = check_quad_mesh(n_vertices, &boundary_quads);
-    edge_stats(&good, &boundary_quads, &mut r);
-    let mut used = vec![false; n_vertices];
-    let mut uf = UnionFind::new(n_vertices);
-    for h in &good {
-        for &v in h {
-            used[v as usize] = true;
-            uf.union(h[0] as usize, v as usize);
-        }
-    }
+    edge_stats(&edges, &boundary_quads, &mut r);
     r.vertices_used = used.iter().filter(|&&u| u).count();
-    r.components = uf.count_sets((0..n_vertices).filter(|&v| used[v]));
+    r.components = components;
     r.euler = r.vertices_used as i64 - r.edges as i64 + r.faces as i64 - good.len() as i64;
     if let Some(p) = positions {
         r.missing_positions = p.len() < n_vertices;
@@ -176,17 +176,18 @@ fn face_key(h: &[u32; 8], f: &[usize; 4]) -> [u32; 4] {
     k
 }
 
-/// Every face of every cell as (sorted vertices, outward cycle), sorted
-/// (in parallel; equal elements are equal values, so the order does not
-/// depend on the threads): one run per vertex set.
-fn face_uses(cells: &[[u32; 8]]) -> Vec<([u32; 4], [u32; 4])> {
-    let mut faces = Vec::with_capacity(6 * cells.len());
-    for h in cells {
-        for f in &HEX_FACES {
-            faces.push((face_key(h, f), f.map(|i| h[i])));
+/// Every face of every cell (vertices below `n`) as (sorted vertices,
+/// outward cycle), sorted (bucketed by the least vertex, each bucket
+/// sorted: no sort of them all): one run per vertex set.
+fn face_uses(n: usize, cells: &[[u32; 8]]) -> Vec<([u32; 4], [u32; 4])> {
+    let (_, faces) = bucket::sorted(n, |emit| {
+        for h in cells {
+            for f in &HEX_FACES {
+                let key = face_key(h, f);
+                emit(key[0] as usize, (key, f.map(|i| h[i])));
+            }
         }
-    }
-    faces.par_sort_unstable();
+    });
     faces
 }
 
@@ -221,15 +222,41 @@ fn opposite(a: &[u32; 4], b: &[u32; 4]) -> bool {
     (0..4).any(|s| (0..4).all(|i| a[i] == b[(s + 4 - i) % 4]))
 }
 
-/// Edge count and the valence histogram of interior edges.
-fn edge_stats(cells: &[[u32; 8]], boundary: &[[u32; 4]], r: &mut HexReport) {
-    // undirected edges, sorted: one run per edge
+/// The undirected edges of the cells (vertices below `n`), one entry per
+/// cell edge, sorted (bucketed by the smaller vertex, each bucket
+/// sorted): one run per edge.
+fn sorted_edges(n: usize, cells: &[[u32; 8]]) -> Vec<u64> {
     let key = crate::topology::edge_key;
-    let mut edges: Vec<u64> = Vec::with_capacity(12 * cells.len());
+    let (_, edges) = bucket::sorted(n, |emit| {
+        for h in cells {
+            for e in &HEX_EDGES {
+                let (a, b) = (h[e[0]], h[e[1]]);
+                emit(a.min(b) as usize, key(a, b));
+            }
+        }
+    });
+    edges
+}
+
+/// The vertices used by the cells, and the cells' connected components
+/// (through shared vertices).
+fn used_and_components(n_vertices: usize, cells: &[[u32; 8]]) -> (Vec<bool>, usize) {
+    let mut used = vec![false; n_vertices];
+    let mut uf = UnionFind::new(n_vertices);
     for h in cells {
-        edges.extend(HEX_EDGES.iter().map(|e| key(h[e[0]], h[e[1]])));
+        for &v in h {
+            used[v as usize] = true;
+            uf.union(h[0] as usize, v as usize);
+        }
     }
-    edges.par_sort_unstable();
+    let components = uf.count_sets((0..n_vertices).filter(|&v| used[v]));
+    (used, components)
+}
+
+/// Edge count and the valence histogram of interior edges, from the
+/// sorted cell edges ([`sorted_edges`]) and the boundary quads.
+fn edge_stats(edges: &[u64], boundary: &[[u32; 4]], r: &mut HexReport) {
+    let key = crate::topology::edge_key;
     let mut on_boundary: Vec<u64> = boundary
         .iter()
         .flat_map(|q| (0..4).map(move |i| key(q[i], q[(i + 1) % 4])))

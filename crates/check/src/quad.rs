@@ -19,8 +19,8 @@
 //!   (number of distinct edges at a vertex) are histogrammed separately for
 //!   interior and boundary vertices.
 
+use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
-use rayon::slice::ParallelSliceMut;
 use std::collections::{BTreeMap, HashMap};
 
 /// What [`check_quad_mesh`] found; see the module docs for definitions.
@@ -81,7 +81,22 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
         ..QuadReport::default()
     };
     let good = classify_faces(n_vertices, quads, &mut r);
-    let edges = edge_uses(&good);
+    let mut used = vec![false; n_vertices];
+    for q in &good {
+        for &v in q {
+            used[v as usize] = true;
+        }
+    }
+    // three independent passes over the good faces, side by side
+    let (edges, (components, non_manifold)) = rayon::join(
+        || edge_uses(n_vertices, &good),
+        || {
+            rayon::join(
+                || components(n_vertices, &good, &used),
+                || non_manifold_vertices(n_vertices, &good),
+            )
+        },
+    );
     r.edges = edges.len();
     let mut on_boundary = vec![false; n_vertices];
     let mut valence = vec![0u32; n_vertices];
@@ -103,12 +118,6 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     }
     r.misoriented_edges.sort_unstable();
     r.non_manifold_edges.sort_unstable();
-    let mut used = vec![false; n_vertices];
-    for q in &good {
-        for &v in q {
-            used[v as usize] = true;
-        }
-    }
     for v in (0..n_vertices).filter(|&v| used[v]) {
         let hist = if on_boundary[v] {
             &mut r.boundary_valence
@@ -120,9 +129,9 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     r.vertices_used = used.iter().filter(|&&u| u).count();
     r.unused_vertices = n_vertices - r.vertices_used;
     r.boundary_loops = boundary_uf.count_sets((0..n_vertices).filter(|&v| on_boundary[v]));
-    r.components = components(n_vertices, &good, &used);
+    r.components = components;
     r.euler = r.vertices_used as i64 - r.edges as i64 + good.len() as i64;
-    r.non_manifold_vertices = non_manifold_vertices(&good);
+    r.non_manifold_vertices = non_manifold;
     r
 }
 
@@ -141,19 +150,20 @@ fn classify_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32;
     good
 }
 
-/// Directed uses of every undirected edge of the faces, by edge.
-fn edge_uses(faces: &[[u32; 4]]) -> Vec<((u32, u32), EdgeUse)> {
-    // (lo, hi, backward) per face side, sorted (in parallel; equal keys are
-    // equal values, so the order does not depend on the threads): one run
-    // per undirected edge
-    let mut sides: Vec<(u32, u32, bool)> = Vec::with_capacity(4 * faces.len());
-    for q in faces {
-        for i in 0..4 {
-            let (a, b) = (q[i], q[(i + 1) % 4]);
-            sides.push((a.min(b), a.max(b), a > b));
+/// Directed uses of every undirected edge of the faces (vertices below
+/// `n`), by edge.
+fn edge_uses(n: usize, faces: &[[u32; 4]]) -> Vec<((u32, u32), EdgeUse)> {
+    // (lo, hi, backward) per face side, bucketed by `lo` and sorted in
+    // each bucket (a vertex's few sides; no sort of them all): one run per
+    // undirected edge, in (lo, hi) order
+    let (_, sides) = bucket::sorted(n, |emit| {
+        for q in faces {
+            for i in 0..4 {
+                let (a, b) = (q[i], q[(i + 1) % 4]);
+                emit(a.min(b) as usize, (a.min(b), a.max(b), a > b));
+            }
         }
-    }
-    sides.par_sort_unstable();
+    });
     sides
         .chunk_by(|x, y| (x.0, x.1) == (y.0, y.1))
         .map(|run| {
@@ -175,16 +185,18 @@ fn components(n: usize, faces: &[[u32; 4]], used: &[bool]) -> usize {
     uf.count_sets((0..n).filter(|&v| used[v]))
 }
 
-/// Vertices whose incident faces form more than one fan.
-fn non_manifold_vertices(faces: &[[u32; 4]]) -> Vec<u32> {
-    // (vertex, previous vertex, next vertex) for every corner of every face
-    let mut corners: Vec<(u32, u32, u32)> = Vec::with_capacity(4 * faces.len());
-    for q in faces {
-        for i in 0..4 {
-            corners.push((q[i], q[(i + 3) % 4], q[(i + 1) % 4]));
+/// Vertices (below `n`) whose incident faces form more than one fan.
+fn non_manifold_vertices(n: usize, faces: &[[u32; 4]]) -> Vec<u32> {
+    // (vertex, previous vertex, next vertex) for every corner of every
+    // face, bucketed by vertex (its few corners sorted; no sort of them
+    // all)
+    let (_, corners) = bucket::sorted(n, |emit| {
+        for q in faces {
+            for i in 0..4 {
+                emit(q[i] as usize, (q[i], q[(i + 3) % 4], q[(i + 1) % 4]));
+            }
         }
-    }
-    corners.par_sort_unstable();
+    });
     let mut out = Vec::new();
     for group in corners.chunk_by(|a, b| a.0 == b.0) {
         if fans(group) > 1 {

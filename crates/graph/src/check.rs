@@ -7,6 +7,7 @@
 
 use crate::graph::{NodeGraph, NONE};
 use crate::ids::Side;
+use rayon::prelude::*;
 use std::fmt;
 
 /// A broken invariant, naming the first offending side.
@@ -108,6 +109,8 @@ impl<const D: usize> NodeGraph<D> {
     /// Number of glued pairs breaking the label rule.
     pub fn label_violations(&self) -> usize {
         (0..self.n_sides() as u32)
+            .into_par_iter()
+            .with_min_len(4096)
             .map(Side)
             .filter(|&s| self.opposite(s).is_some_and(|o| s < o) && !self.label_ok(s))
             .count()

@@ -25,6 +25,8 @@ use crate::graph::NodeGraph;
 use crate::ids::{axis, positive, Node, Side};
 use dualex_map::Rot;
 use dualex_util::union_find::UnionFind;
+use dualex_util::union_find_par::AtomicUnionFind;
+use rayon::prelude::*;
 
 /// Marker for the corners of dead nodes in [`Glued::vertex_of`].
 pub const NO_VERTEX: u32 = u32::MAX;
@@ -106,9 +108,12 @@ pub(crate) fn corners_on<const D: usize>(dir: usize) -> impl Iterator<Item = usi
 impl<const D: usize> NodeGraph<D> {
     /// Glues the alive nodes into a mesh (see the module docs).
     pub fn glue(&self) -> Glued<D> {
-        let mut g = self.glue_vertices();
+        // two independent reads of the graph, side by side (each result is
+        // the same whatever the threads); the boundary after them, so that
+        // its array over all sides is not held at the same time
+        let (mut g, components) = rayon::join(|| self.glue_vertices(), || self.components());
         g.boundary_loops = self.boundary_components();
-        g.components = self.components();
+        g.components = components;
         g
     }
 
@@ -133,47 +138,40 @@ impl<const D: usize> NodeGraph<D> {
     /// (index fairing rebuilds them after every lift).
     pub(crate) fn glue_vertices(&self) -> Glued<D> {
         let k = 1usize << D;
-        let mut uf = UnionFind::new(self.n_nodes() * k);
-        let mut corner_mismatches = 0;
-        for s in (0..self.n_sides() as u32).map(Side) {
-            let Some(t) = self.opposite(s) else { continue };
-            if t < s || !self.is_alive(self.node_of(s)) {
-                continue;
-            }
-            let (x, y) = (self.node_of(s).idx(), self.node_of(t).idx());
-            match self.matched_corners(s, t) {
-                Some((pairs, n)) => pairs[..n].iter().for_each(|&(c, ct)| {
-                    uf.union(x * k + c, y * k + ct);
-                }),
-                None => corner_mismatches += 1,
-            }
-        }
-        let mut vertex_of = vec![NO_VERTEX; self.n_nodes() * k];
-        let mut id_of_root = vec![NO_VERTEX; self.n_nodes() * k];
-        let mut n_vertices = 0u32;
-        let nodes: Vec<Node> = self.alive_nodes().collect();
-        for n in &nodes {
-            for c in 0..k {
-                let i = n.idx() * k + c;
-                let r = uf.find(i);
-                if id_of_root[r] == NO_VERTEX {
-                    id_of_root[r] = n_vertices;
-                    n_vertices += 1;
-                }
-                vertex_of[i] = id_of_root[r];
-            }
-        }
-        let cells = nodes
-            .iter()
-            .flat_map(|n| {
-                let rev = self.is_reverted(*n);
-                let vertex_of = &vertex_of;
-                (0..k).map(move |j| vertex_of[n.idx() * k + cell_code::<D>(j, rev)])
+        // the pairs in parallel, each uniting its corners (the sets, so the
+        // vertices, do not depend on the order of the unions)
+        let uf = AtomicUnionFind::new(self.n_nodes() * k);
+        let corner_mismatches = (0..self.n_sides() as u32)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(Side)
+            .filter_map(|s| {
+                let t = self.opposite(s)?;
+                (t > s && self.is_alive(self.node_of(s))).then_some((s, t))
             })
-            .collect();
+            .map(|(s, t)| {
+                let (x, y) = (self.node_of(s).idx(), self.node_of(t).idx());
+                let Some((pairs, n)) = self.matched_corners(s, t) else {
+                    return 1;
+                };
+                for &(c, ct) in &pairs[..n] {
+                    uf.union(x * k + c, y * k + ct);
+                }
+                0
+            })
+            .sum();
+        let nodes: Vec<Node> = self.alive_nodes().collect();
+        let (vertex_of, n_vertices) = self.number_vertices(&uf, &nodes);
+        let mut cells = vec![0u32; nodes.len() * k];
+        cells.par_chunks_mut(k).zip(&nodes).for_each(|(cell, n)| {
+            let rev = self.is_reverted(*n);
+            for (j, v) in cell.iter_mut().enumerate() {
+                *v = vertex_of[n.idx() * k + cell_code::<D>(j, rev)];
+            }
+        });
         Glued {
             vertex_of,
-            n_vertices: n_vertices as usize,
+            n_vertices,
             unmatched_sides: self.unmatched_sides(),
             boundary_loops: 0,
             components: 0,
@@ -183,15 +181,50 @@ impl<const D: usize> NodeGraph<D> {
         }
     }
 
-    /// Connected components of alive nodes (through glued pairs).
-    pub fn components(&self) -> usize {
-        let mut uf = UnionFind::new(self.n_nodes());
-        for s in (0..self.n_sides() as u32).map(Side) {
-            if let Some(t) = self.opposite(s) {
-                uf.union(self.node_of(s).idx(), self.node_of(t).idx());
+    /// The vertex of every corner of the alive `nodes` (the corners' sets
+    /// in `uf`), numbered by first corner in node order, [`NO_VERTEX`] for
+    /// dead nodes; and the number of vertices. The roots are read in
+    /// parallel (no path is changed), the numbering is one serial pass.
+    fn number_vertices(&self, uf: &AtomicUnionFind, nodes: &[Node]) -> (Vec<u32>, usize) {
+        let k = 1usize << D;
+        let mut vertex_of = vec![NO_VERTEX; self.n_nodes() * k];
+        vertex_of
+            .par_chunks_mut(k)
+            .enumerate()
+            .filter(|(n, _)| self.is_alive(Node(*n as u32)))
+            .for_each(|(n, corners)| {
+                for (c, v) in corners.iter_mut().enumerate() {
+                    *v = uf.root(n * k + c) as u32;
+                }
+            });
+        let mut id_of_root = vec![NO_VERTEX; self.n_nodes() * k];
+        let mut n_vertices = 0u32;
+        for n in nodes {
+            for v in &mut vertex_of[n.idx() * k..(n.idx() + 1) * k] {
+                let id = &mut id_of_root[*v as usize];
+                if *id == NO_VERTEX {
+                    *id = n_vertices;
+                    n_vertices += 1;
+                }
+                *v = *id;
             }
         }
-        let mut roots: Vec<usize> = self.alive_nodes().map(|n| uf.find(n.idx())).collect();
+        (vertex_of, n_vertices as usize)
+    }
+
+    /// Connected components of alive nodes (through glued pairs).
+    pub fn components(&self) -> usize {
+        let uf = AtomicUnionFind::new(self.n_nodes());
+        (0..self.n_sides() as u32)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(Side)
+            .for_each(|s| {
+                if let Some(t) = self.opposite(s) {
+                    uf.union(self.node_of(s).idx(), self.node_of(t).idx());
+                }
+            });
+        let mut roots: Vec<usize> = self.alive_nodes().map(|n| uf.root(n.idx())).collect();
         roots.sort_unstable();
         roots.dedup();
         roots.len()

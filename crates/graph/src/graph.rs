@@ -21,6 +21,7 @@
 use crate::ids::{Node, Side};
 use crate::ops::OpError;
 use dualex_map::Rot;
+use rayon::prelude::*;
 
 /// Marker for an unmatched side in the flat opposite array.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -146,6 +147,8 @@ impl<const D: usize> NodeGraph<D> {
     /// Number of unmatched sides of alive nodes (boundary edges / faces).
     pub fn unmatched_sides(&self) -> usize {
         (0..self.n_sides())
+            .into_par_iter()
+            .with_min_len(4096)
             .filter(|&s| self.opp[s] == NONE && self.alive[s / (2 * D)])
             .count()
     }

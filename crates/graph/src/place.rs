@@ -26,15 +26,16 @@ impl<const D: usize> Glued<D> {
     /// one's corners (a merged doublet: its corners are not where its node
     /// says). The map coordinates of the corners (`--uv`) in both
     /// pipelines.
-    pub fn cell_corners<T, const K: usize>(
+    pub fn cell_corners<T: Send, const K: usize>(
         &self,
         graph: &NodeGraph<D>,
         takeover: &Takeover<D>,
-        corner: impl Fn(Node, usize) -> T,
+        corner: impl Fn(Node, usize) -> T + Sync,
     ) -> Vec<Option<[T; K]>> {
         assert_eq!(K, 1 << D, "bug: a cell of dimension {D} has 2^{D} corners");
+        // cell by cell in parallel, collected in cell order
         self.nodes
-            .iter()
+            .par_iter()
             .map(|&n| {
                 if takeover.is_merged(n) {
                     return None;

@@ -88,23 +88,41 @@ fn folded(cell: &[u32; 4]) -> Option<usize> {
     (0..2).find(|&r| cell[r] == cell[r + 2])
 }
 
+/// The edges to split and the folded cells to cut (module docs), found
+/// before any change.
+#[derive(Clone, Debug, Default)]
+pub struct Marks {
+    /// The edges to split (each its smaller slot) → its new point (filled
+    /// by [`split_marked`]).
+    marked: HashMap<Slot, u32>,
+    /// The folded cells to cut: (cell, position of the first repeated
+    /// corner).
+    cut: Vec<(usize, usize)>,
+    /// Edges that had a parallel edge.
+    parallel_edges: usize,
+}
+
+impl Marks {
+    /// Whether nothing is to split.
+    pub fn is_empty(&self) -> bool {
+        self.marked.is_empty()
+    }
+}
+
 /// Splits the parallel edges and folded cells of `mesh` (module docs).
 /// `partner[s]` is the slot glued to slot `s` (`None`: unmatched);
 /// `holes` the unmatched slots that are holes.
 pub fn split(mesh: &QuadMesh, partner: &[Option<Slot>], holes: &[Slot]) -> Split {
-    let cells = &mesh.cells;
-    let mut out = Split {
-        positions: mesh.positions.clone(),
-        ..Default::default()
-    };
+    split_marked(mesh, partner, holes, marks(&mesh.cells, partner))
+}
+
+/// The edges and cells [`split`] changes (none when `partner` does not
+/// have one entry per cell edge).
+pub fn marks(cells: &[[u32; 4]], partner: &[Option<Slot>]) -> Marks {
+    let mut m = Marks::default();
     if partner.len() != 4 * cells.len() {
-        // a broken invariant of the caller: leave everything as it is
-        debug_assert!(false, "one partner entry per cell edge");
-        return identity(mesh, holes, out);
+        return m;
     }
-    // the edges to split: edge → its new point (filled below)
-    let mut marked: HashMap<Slot, u32> = HashMap::new();
-    let mut cut: Vec<(usize, usize)> = Vec::new();
     for (c, cell) in cells.iter().enumerate() {
         let Some(r) = folded(cell) else { continue };
         let (e1, e2) = (
@@ -112,29 +130,69 @@ pub fn split(mesh: &QuadMesh, partner: &[Option<Slot>], holes: &[Slot]) -> Split
             edge_of(partner, (4 * c + r + 2) as Slot),
         );
         if e1 != e2 {
-            marked.insert(e1, u32::MAX);
-            marked.insert(e2, u32::MAX);
-            cut.push((c, r));
+            m.marked.insert(e1, u32::MAX);
+            m.marked.insert(e2, u32::MAX);
+            m.cut.push((c, r));
         }
     }
-    // parallel edges: the edges sorted by vertex pair, unmarked ones only
-    let mut by_pair: Vec<(u64, Slot)> = (0..4 * cells.len() as Slot)
-        .filter_map(|s| {
-            let (a, b) = ends(cells, s);
-            let skip = a == b || edge_of(partner, s) != s || marked.contains_key(&s);
-            (!skip).then(|| ((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), s))
-        })
-        .collect();
-    by_pair.sort_unstable();
-    for run in by_pair.chunk_by(|x, y| x.0 == y.0).filter(|r| r.len() > 1) {
+    for run in parallel_runs(cells, partner, &m.marked).chunk_by(|x, y| x.0 == y.0) {
+        if run.len() < 2 {
+            continue;
+        }
         // keep a glued edge (a point there changes two cells), else the first
         let mut g: Vec<Slot> = run.iter().map(|&(_, s)| s).collect();
         g.sort_unstable_by_key(|&s| (partner[s as usize].is_none(), s));
         for &s in &g[1..] {
-            marked.insert(s, u32::MAX);
-            out.parallel_edges += 1;
+            m.marked.insert(s, u32::MAX);
+            m.parallel_edges += 1;
         }
     }
+    m
+}
+
+/// The edges not `marked`, keyed by vertex pair (smaller vertex in the
+/// high half), sorted: parallel edges are runs of one key. Bucketed by
+/// the smaller vertex, each bucket sorted (no sort of them all).
+fn parallel_runs(
+    cells: &[[u32; 4]],
+    partner: &[Option<Slot>],
+    marked: &HashMap<Slot, u32>,
+) -> Vec<(u64, Slot)> {
+    let n = cells.iter().flatten().max().map_or(0, |&v| v as usize + 1);
+    let (_, by_pair) = dualex_util::bucket::sorted(n, |emit| {
+        for s in 0..4 * cells.len() as Slot {
+            let (a, b) = ends(cells, s);
+            let skip = a == b || edge_of(partner, s) != s || marked.contains_key(&s);
+            if !skip {
+                let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+                emit(a.min(b) as usize, (key, s));
+            }
+        }
+    });
+    by_pair
+}
+
+/// [`split`] with its [`Marks`] found before.
+pub fn split_marked(
+    mesh: &QuadMesh,
+    partner: &[Option<Slot>],
+    holes: &[Slot],
+    marks: Marks,
+) -> Split {
+    let cells = &mesh.cells;
+    let mut out = Split {
+        positions: mesh.positions.clone(),
+        parallel_edges: marks.parallel_edges,
+        ..Default::default()
+    };
+    if partner.len() != 4 * cells.len() {
+        // a broken invariant of the caller: leave everything as it is
+        debug_assert!(false, "one partner entry per cell edge");
+        return identity(mesh, holes, out);
+    }
+    let Marks {
+        mut marked, cut, ..
+    } = marks;
     if marked.is_empty() {
         return identity(mesh, holes, out);
     }

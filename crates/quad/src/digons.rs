@@ -60,7 +60,8 @@ pub(crate) fn matching_rotation(
 fn ascending(graph: &NodeGraph<2>, glued: &Glued<2>, s: Side) -> Option<bool> {
     let node = graph.node_of(s);
     let [a, b] = side_corners(glued, node, graph.dir_of(s));
-    let cell = glued.cells().find(|(n, _)| *n == node)?.1;
+    // the cells are in node id order
+    let cell = glued.cell(glued.nodes.binary_search(&node).ok()?)?;
     let forward = (0..4).any(|k| cell[k] == a && cell[(k + 1) % 4] == b);
     Some(forward == (a < b))
 }
@@ -76,21 +77,7 @@ pub fn pinch_digons(
     glued: &Glued<2>,
     handles: impl FnOnce(&NodeGraph<2>) -> usize,
 ) -> usize {
-    // one entry per glued pair, keyed by its two vertices, sorted
-    let mut by_edge: Vec<(u64, Side)> = Vec::new();
-    for (node, _) in glued.cells() {
-        for d in 0..4 {
-            let s = graph.side(node, d);
-            let Some(t) = graph.opposite(s) else {
-                continue;
-            };
-            let [a, b] = side_corners(glued, node, d);
-            if s.0 < t.0 && a != b {
-                by_edge.push(((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), s));
-            }
-        }
-    }
-    by_edge.sort_unstable();
+    let by_edge = pairs_by_edge(graph, glued);
     let any = by_edge.windows(2).any(|w| w[0].0 == w[1].0);
     let mut left = if any { handles(graph) } else { 0 };
     let mut pinched = 0;
@@ -133,6 +120,27 @@ pub fn pinch_digons(
         }
     }
     pinched
+}
+
+/// One entry per glued pair between two distinct vertices, keyed by the
+/// two (smaller vertex in the high half), from its smaller side; sorted
+/// (bucketed by the smaller vertex, each bucket sorted: no sort of them
+/// all).
+fn pairs_by_edge(graph: &NodeGraph<2>, glued: &Glued<2>) -> Vec<(u64, Side)> {
+    let (_, by_edge) = dualex_util::bucket::sorted(glued.n_vertices, |emit| {
+        for &node in &glued.nodes {
+            for d in 0..4 {
+                let s = graph.side(node, d);
+                let Some(t) = graph.opposite(s) else { continue };
+                let [a, b] = side_corners(glued, node, d);
+                if s.0 < t.0 && a != b {
+                    let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+                    emit(a.min(b) as usize, (key, s.0));
+                }
+            }
+        }
+    });
+    by_edge.into_iter().map(|(k, s)| (k, Side(s))).collect()
 }
 
 /// The handles the glued surface has beyond a closed connected input of

@@ -21,6 +21,7 @@ use dualex_graph::{Glued, Node, NodeGraph, Side, Takeover};
 use dualex_segment::nodes::Nodes;
 use dualex_segment::place::{place, Placed};
 use dualex_segment::steps::Sanitized;
+use rayon::prelude::*;
 
 /// Step 9 (module docs).
 pub fn glue_and_place(
@@ -72,17 +73,22 @@ pub(crate) fn side_corners(glued: &Glued<2>, node: Node, d: usize) -> [u32; 2] {
 
 /// Step 9a's zip (module docs). Returns the number of pairs glued.
 fn zip_two_side_holes(graph: &mut NodeGraph<2>, glued: &Glued<2>) -> usize {
-    let mut by_ends: std::collections::HashMap<(u32, u32), Vec<Side>> = Default::default();
-    for (node, _) in glued.cells() {
-        for d in 0..4 {
-            let s = graph.side(node, d);
-            if graph.opposite(s).is_none() {
+    // the unmatched sides between two distinct vertices, found in parallel
+    let free: Vec<((u32, u32), Side)> = glued
+        .nodes
+        .par_iter()
+        .flat_map_iter(|&node| {
+            let graph = &*graph;
+            (0..4).filter_map(move |d| {
+                let s = graph.side(node, d);
                 let [a, b] = side_corners(glued, node, d);
-                if a != b {
-                    by_ends.entry((a.min(b), a.max(b))).or_default().push(s);
-                }
-            }
-        }
+                (graph.opposite(s).is_none() && a != b).then_some(((a.min(b), a.max(b)), s))
+            })
+        })
+        .collect();
+    let mut by_ends: std::collections::HashMap<(u32, u32), Vec<Side>> = Default::default();
+    for (ends, s) in free {
+        by_ends.entry(ends).or_default().push(s);
     }
     let mut zipped = 0;
     for sides in by_ends.values() {

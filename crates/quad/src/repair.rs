@@ -57,7 +57,7 @@ pub fn subdivide_if_odd(mesh: &QuadMesh, extra: &[Vec<u32>]) -> Option<Repaired>
 }
 
 /// Whether `p` has four distinct corners.
-fn proper_quad(p: &[u32]) -> bool {
+pub(crate) fn proper_quad(p: &[u32]) -> bool {
     p.len() == 4 && (0..4).all(|i| (i + 1..4).all(|j| p[i] != p[j]))
 }
 

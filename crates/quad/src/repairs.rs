@@ -36,7 +36,16 @@ pub fn repair(
     // 10a
     let slots = slots::cell_slots(graph, glued);
     let holes = slots::hole_slots(graph, glued, &slots, ends, topo.boundary_facets == 0);
-    let amb = ambiguous::split(&out.mesh, &slots.partner, &holes);
+    let marks = ambiguous::marks(&out.mesh.cells, &slots.partner);
+    if nothing_to_repair(&marks, &holes, &out.mesh) {
+        (
+            st.parallel_edges_split,
+            st.folded_cells_cut,
+            st.holes_left_open,
+        ) = (0, 0, 0);
+        return;
+    }
+    let amb = ambiguous::split_marked(&out.mesh, &slots.partner, &holes, marks);
     st.parallel_edges_split = amb.parallel_edges;
     st.folded_cells_cut = amb.folded_cells;
     // 10b
@@ -83,6 +92,14 @@ pub fn repair(
     // 10c
     drop_pockets(topo, out, st);
     st.finish_mesh(&out.mesh);
+}
+
+/// Whether step 10 would leave the mesh as it is: nothing to split, no
+/// hole, every cell a proper quad (the repair's own test, on the cells
+/// before they are made polygons), so the split and the repair need not
+/// be built.
+fn nothing_to_repair(marks: &ambiguous::Marks, holes: &[ambiguous::Slot], mesh: &QuadMesh) -> bool {
+    marks.is_empty() && holes.is_empty() && mesh.cells.iter().all(|c| repair::proper_quad(c))
 }
 
 /// Step 10c's deletion of the pieces beside the surface (module docs).

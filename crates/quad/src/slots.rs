@@ -9,6 +9,7 @@
 
 use dualex_graph::{NodeGraph, Side};
 use dualex_segment::trace::End;
+use rayon::prelude::*;
 
 /// Each cell edge's side in the graph and its glued partner edge
 /// (`crate::ambiguous::Slot`s: `4 · cell + k`, the edge from corner k to k + 1).
@@ -53,21 +54,25 @@ pub(crate) fn cell_slots(graph: &NodeGraph<2>, glued: &dualex_graph::Glued<2>) -
         cell_of[node.idx()] = c as u32;
     }
     let dir_slot = dir_edges();
-    let mut side = Vec::with_capacity(4 * n);
-    let mut partner = Vec::with_capacity(4 * n);
-    for node in &glued.nodes {
-        let rev = graph.is_reverted(*node);
-        for k in 0..4 {
-            let s = graph.side(*node, edge_dir(k, rev));
-            side.push(s);
-            partner.push(graph.opposite(s).and_then(|t| {
-                let y = graph.node_of(t);
-                let c = *cell_of.get(y.idx())?;
-                let k = dir_slot[usize::from(graph.is_reverted(y))][graph.dir_of(t)];
-                (c != u32::MAX).then_some(4 * c + k as u32)
-            }));
-        }
-    }
+    let mut side = vec![Side(0); 4 * n];
+    let mut partner = vec![None; 4 * n];
+    // cell by cell in parallel (each writes its own four slots)
+    side.par_chunks_mut(4)
+        .zip(partner.par_chunks_mut(4))
+        .zip(&glued.nodes)
+        .for_each(|((side, partner), node)| {
+            let rev = graph.is_reverted(*node);
+            for k in 0..4 {
+                let s = graph.side(*node, edge_dir(k, rev));
+                side[k] = s;
+                partner[k] = graph.opposite(s).and_then(|t| {
+                    let y = graph.node_of(t);
+                    let c = *cell_of.get(y.idx())?;
+                    let k = dir_slot[usize::from(graph.is_reverted(y))][graph.dir_of(t)];
+                    (c != u32::MAX).then_some(4 * c + k as u32)
+                });
+            }
+        });
     CellSlots { side, partner }
 }
 
@@ -81,7 +86,6 @@ pub(crate) fn hole_slots(
     ends: &[End<2>],
     closed: bool,
 ) -> Vec<crate::ambiguous::Slot> {
-    let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
     // in the order of the cells, then of the sides' directions
     let dir_slot = dir_edges();
     let order = glued.nodes.iter().enumerate().flat_map(move |(c, node)| {
@@ -99,7 +103,8 @@ pub(crate) fn hole_slots(
             // directly, or handed over by a reconnection during untangling)
             let lost = matches!(ends.get(s.0 as usize), Some(End::Inconsistent | End::Loop));
             let (c, k) = (i / 4, i % 4);
-            (closed || lost) && cells[c][k] != cells[c][(k + 1) % 4]
+            let cell = glued.cell(c).unwrap_or_default();
+            (closed || lost) && cell.get(k) != cell.get((k + 1) % 4)
         })
         .map(|i| i as crate::ambiguous::Slot)
         .collect()

@@ -19,6 +19,7 @@ use crate::steps::{Dimension, Sanitized};
 use dualex_cells::corners::{carry, Corners};
 use dualex_cells::CellMesh;
 use dualex_graph::{Glued, NodeGraph, Takeover, NO_VERTEX};
+use rayon::prelude::*;
 
 /// The output cells (`K = 2^D` corners each) with, per cell, the input
 /// simplex holding its node and its corners' map coordinates.
@@ -54,19 +55,25 @@ where
         },
         |c| c.dist,
     );
+    // each cell, vertex and source on its own, in parallel, collected in
+    // order
     let cells = (0..glued.n_cells())
+        .into_par_iter()
         .map(|i| {
             let c = glued.cell(i).unwrap_or_default();
             std::array::from_fn(|k| c.get(k).copied().unwrap_or(NO_VERTEX))
         })
         .collect();
     let mesh = CellMesh {
-        positions: best.iter().map(|b| b.map_or([0.0; 3], |c| c.pos)).collect(),
+        positions: best
+            .par_iter()
+            .map(|b| b.map_or([0.0; 3], |c| c.pos))
+            .collect(),
         cells,
     };
     let sources = glued
         .nodes
-        .iter()
+        .par_iter()
         .map(|node| s.parent[nodes.simplex[node.idx()] as usize])
         .collect();
     let corners = glued.cell_corners(graph, takeover, |n, code| {

@@ -17,7 +17,9 @@
 //! - [`timing`]: wall-clock laps (the stats' `time_ms`, the CLI's `-v`);
 //! - [`round`]: `f64::round` / `ceil` / `floor` bit for bit without a
 //!   library call;
-//! - [`union_find`]: the one union–find (path halving) of the workspace.
+//! - [`union_find`]: the one union–find (path halving) of the workspace;
+//! - [`union_find_par`]: its twin that threads share (atomic parents,
+//!   the same representatives).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -27,3 +29,4 @@ pub mod rng;
 pub mod round;
 pub mod timing;
 pub mod union_find;
+pub mod union_find_par;
