@@ -111,16 +111,11 @@ pub fn check_hex_mesh(
         ..HexReport::default()
     };
     let good = classify_cells(n_vertices, hexes, &mut r);
-    // three independent passes over the good cells, side by side
-    let (faces, (edges, (used, components))) = rayon::join(
-        || face_uses(n_vertices, &good),
-        || {
-            rayon::join(
-                || sorted_edges(n_vertices, &good),
-                || used_and_components(n_vertices, &good),
-            )
-        },
-    );
+    // three independent passes over the good cells, one after the other
+    // (side by side, their buffers raised block40's peak by 1.3 MB)
+    let faces = face_uses(n_vertices, &good);
+    let edges = sorted_edges(n_vertices, &good);
+    let (used, components) = used_and_components(n_vertices, &good);
     let mut boundary_quads = Vec::new();
     for uses in faces.chunk_by(|x, y| x.0 == y.0) {
         r.faces += 1;
