@@ -1,5 +1,6 @@
-//! The one union–find of the workspace: disjoint sets over `0..n` with
-//! path halving, stored as one flat `u32` parent array.
+//! The serial union–find of the workspace: disjoint sets over `0..n` with
+//! path halving, stored as one flat `u32` parent array (its parallel twin,
+//! with the same representatives: [`crate::union_find_par`]).
 //!
 //! Input: `n` (elements are `0..n`, `n < 2^32`) and unions of pairs.
 //! Output: a representative per element ([`UnionFind::find`]), counts of
