@@ -29,7 +29,7 @@ pub const NONE: u32 = u32::MAX;
 /// Components of the simplices joined across their glued facets: a flood
 /// fill (each simplex pushed once). One thread: a parallel count held an
 /// array of labels (and the edges between blocks) at the first pass's
-/// peak, +6.5 MB on 1M tets, for a few ms; the callers run it beside their
+/// peak, +6 556 KiB on 1M tets, for a few ms; the callers run it beside their
 /// other counts instead.
 pub fn facet_components<const N: usize>(adj: &[[u32; N]]) -> usize {
     let mut seen = vec![false; adj.len()];
