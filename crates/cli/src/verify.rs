@@ -35,15 +35,16 @@ pub fn measure<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> f64 {
 }
 
 /// What the extraction gave, for [`last_check`].
-pub struct Output {
+pub struct Output<'a> {
     /// `"quad"` or `"hex"` (names the cells in messages).
     pub cell: &'static str,
     /// Cells written.
     pub cells: usize,
     /// Nodes the extraction found.
     pub nodes: usize,
-    /// The map's measure in cells ([`measure`]).
-    pub measure: f64,
+    /// The map's measure in cells ([`measure`]), taken when a rule reads
+    /// it: only for an empty output (it walks every simplex).
+    pub measure: Box<dyn Fn() -> f64 + 'a>,
     /// Input and output topology.
     pub topology: Comparison,
 }
@@ -61,17 +62,12 @@ pub fn last_check(name: &str, out: &Output, strict: bool) -> Result<(), CliError
                 },
             ));
         }
-        if out.measure >= 1.0 {
-            return Err(refused(
-                name,
-                Refusal::NoNode {
-                    measure: out.measure,
-                },
-            ));
+        let measure = (out.measure)();
+        if measure >= 1.0 {
+            return Err(refused(name, Refusal::NoNode { measure }));
         }
         eprintln!(
-            "dualex: warning: {name}: the map covers less than one grid cell ({:.3}): no node, empty mesh",
-            out.measure
+            "dualex: warning: {name}: the map covers less than one grid cell ({measure:.3}): no node, empty mesh"
         );
         return Ok(());
     }
@@ -151,12 +147,18 @@ mod tests {
     use super::*;
     use dualex::check::topology::Shape;
 
-    fn out(cells: usize, nodes: usize, measure: f64, input: Shape, output: Shape) -> Output {
+    fn out(
+        cells: usize,
+        nodes: usize,
+        measure: f64,
+        input: Shape,
+        output: Shape,
+    ) -> Output<'static> {
         Output {
             cell: "quad",
             cells,
             nodes,
-            measure,
+            measure: Box::new(move || measure),
             topology: Comparison { input, output },
         }
     }

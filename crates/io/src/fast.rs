@@ -22,6 +22,11 @@
 //! OBJ chunks are first checked to be text (UTF-8, no NUL: skipped lines
 //! may hold anything); a `.hexex` file needs no such check, as every byte
 //! of an accepted file is whitespace or in an accepted (ASCII) number.
+//!
+//! The map's invariants (`SimplexMap::validate`: a simplex at least,
+//! finite positions and map coordinates, vertex indices in range and
+//! distinct within a simplex) are checked as the fields are read, so the
+//! map read is not walked again to validate it (a debug assertion does).
 
 use crate::cursor::{count_lines, leading_digits, line_chunks, Cursor};
 use crate::scan::finite;
@@ -178,7 +183,7 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
     }
     let nv = positions.len();
     // every chunk's triangles into their own slices, in parallel: indices
-    // checked, texture coordinates looked up
+    // checked (in range, distinct), texture coordinates looked up
     let mut simplices = vec![[0u32; 3]; nt];
     let mut coords = vec![[[0.0f64; 2]; 3]; nt];
     let mut jobs = Vec::with_capacity(parts.len());
@@ -189,10 +194,10 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
         jobs.push((c, s, k));
         (rest_s, rest_c) = (rs, rc);
     }
-    let in_range = jobs
+    let ok = jobs
         .into_par_iter()
         .all(|(c, s, k)| chunk_triangles(c, nv, &uvs, s, k));
-    if !in_range {
+    if !ok {
         return None;
     }
     let map = TriMap {
@@ -200,13 +205,22 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
         simplices,
         coords,
     };
-    map.validate().ok()?;
+    debug_assert!(
+        map.validate().is_ok(),
+        "the OBJ fast path read an invalid map"
+    );
     Some(map)
+}
+
+/// Whether the vertex indices of a simplex are pairwise distinct.
+#[inline]
+fn distinct<const N: usize>(t: &[u32; N]) -> bool {
+    (1..N).all(|c| t[..c].iter().all(|&w| w != t[c]))
 }
 
 /// Writes chunk `c`'s triangles into `s` and their texture coordinates
 /// (looked up in `uvs`) into `k`; whether every index is in range (below
-/// `nv` and `uvs.len()`).
+/// `nv` and `uvs.len()`) and every triangle's vertices are distinct.
 fn chunk_triangles(
     c: &ObjChunk,
     nv: usize,
@@ -214,7 +228,8 @@ fn chunk_triangles(
     s: &mut [[u32; 3]],
     k: &mut [[[f64; 2]; 3]],
 ) -> bool {
-    if !c.v.iter().flatten().all(|&i| (i as usize) < nv) {
+    let ok = |t: &[u32; 3]| t.iter().all(|&i| (i as usize) < nv) && distinct(t);
+    if !c.v.iter().all(ok) {
         return false;
     }
     s.copy_from_slice(&c.v);
@@ -288,7 +303,10 @@ pub(crate) fn hexex_chunked(bytes: &[u8], chunk: usize) -> Option<TetMap> {
         simplices,
         coords,
     };
-    map.validate().ok()?;
+    debug_assert!(
+        map.validate().is_ok(),
+        "the .hexex fast path read an invalid map"
+    );
     Some(map)
 }
 
@@ -355,8 +373,8 @@ fn vertex_line(t: &mut Cursor<'_>) -> Option<[f64; 3]> {
     Some(p)
 }
 
-/// One tet line: 4 vertex indices below `nv` and 12 finite numbers, then
-/// the line end.
+/// One tet line: 4 distinct vertex indices below `nv` and 12 finite
+/// numbers, then the line end.
 #[inline]
 fn tet_line(t: &mut Cursor<'_>, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> {
     let mut tet = [0u32; 4];
@@ -367,6 +385,9 @@ fn tet_line(t: &mut Cursor<'_>, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> 
             return None;
         }
         *slot = i as u32;
+    }
+    if !distinct(&tet) {
+        return None;
     }
     let mut uvw = [[0.0; 3]; 4];
     for corner in &mut uvw {

@@ -155,6 +155,29 @@ fn hexex_lines_read_as_the_sequential_reader() {
     }
 }
 
+/// A simplex with a repeated vertex: the fast paths check it as they read
+/// (they validate nothing afterwards), so they step aside and the
+/// sequential readers refuse the file, naming the simplex.
+#[test]
+fn repeated_corners_are_left_to_the_sequential_readers() {
+    let head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n";
+    for face in ["f 1/1 1/2 3/3\n", "f 1/1 2/2 2/3\n", "f 3/1 2/2 3/3\n"] {
+        let text = format!("{head}f 1/1 2/2 3/3\n{face}");
+        assert!(!agree_obj(text.as_bytes(), 1 << 20, false), "{face:?}");
+        let e = parse_obj_sequential(text.as_bytes()).unwrap_err();
+        assert!(e.to_string().contains("triangle 1"), "{face:?}: {e}");
+    }
+    let head = "4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2\n0 1 2 3 0 0 0 1 0 0 0 1 0 0 0 1\n";
+    for tet in [
+        "0 0 2 3", "0 1 2 0", "0 1 3 3", "1 2 1 3", "0 2 1 2", "3 1 2 3",
+    ] {
+        let text = format!("{head}{tet} 0 0 0 1 0 0 0 1 0 0 0 1\n");
+        assert!(!agree_hexex(text.as_bytes(), 1 << 20, false), "{tet:?}");
+        let e = parse_hexex_sequential(text.as_bytes()).unwrap_err();
+        assert!(e.to_string().contains("tet 1"), "{tet:?}: {e}");
+    }
+}
+
 #[test]
 #[cfg_attr(
     no_shared_data,
