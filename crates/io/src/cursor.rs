@@ -149,6 +149,29 @@ pub(crate) fn count_lines(bytes: &[u8]) -> usize {
     newlines + usize::from(bytes.last().is_some_and(|&b| b != b'\n'))
 }
 
+/// [`count_lines`] of `bytes` if they are text (valid UTF-8 without a NUL
+/// byte), in one pass: per block of 255 bytes the newlines are counted
+/// and the bytes or-ed and min-ed (the loop vectorizes); only bytes with
+/// a non-ASCII one are checked as UTF-8 again (`str::from_utf8`).
+pub(crate) fn text_lines(bytes: &[u8]) -> Option<usize> {
+    let (mut newlines, mut any, mut least) = (0usize, 0u8, u8::MAX);
+    for c in bytes.chunks(255) {
+        let (mut n, mut or, mut min) = (0u8, 0u8, u8::MAX);
+        for &b in c {
+            n += u8::from(b == b'\n');
+            or |= b;
+            min = min.min(b);
+        }
+        newlines += usize::from(n);
+        any |= or;
+        least = least.min(min);
+    }
+    if least == 0 || (!any.is_ascii() && std::str::from_utf8(bytes).is_err()) {
+        return None;
+    }
+    Some(newlines + usize::from(bytes.last().is_some_and(|&b| b != b'\n')))
+}
+
 /// `bytes` cut after a `\n` every ~`chunk` bytes (the last piece may end
 /// without one).
 pub(crate) fn line_chunks(bytes: &[u8], chunk: usize) -> Vec<&[u8]> {

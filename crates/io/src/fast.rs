@@ -19,8 +19,8 @@
 //! parsed in parallel with rayon, and joined in file order, so the result
 //! does not depend on the number of threads. Fields are read in place by a
 //! [`Cursor`] (numbers by [`crate::decimal`], same bits as `str::parse`).
-//! OBJ chunks are first checked to be text (UTF-8, no NUL: skipped lines
-//! may hold anything); a `.hexex` file needs no such check, as every byte
+//! OBJ chunks are checked to be text (UTF-8, no NUL: skipped lines may
+//! hold anything), each before it is parsed; a `.hexex` file needs no such check, as every byte
 //! of an accepted file is whitespace or in an accepted (ASCII) number.
 //!
 //! The map's invariants (`SimplexMap::validate`: a simplex at least,
@@ -28,23 +28,13 @@
 //! distinct within a simplex) are checked as the fields are read, so the
 //! map read is not walked again to validate it (a debug assertion does).
 
-use crate::cursor::{count_lines, leading_digits, line_chunks, Cursor};
+use crate::cursor::{count_lines, leading_digits, line_chunks, text_lines, Cursor};
 use crate::scan::finite;
 use dualex_map::{TetMap, TriMap};
 use rayon::prelude::*;
 
 /// Target chunk size in bytes.
 const CHUNK: usize = 1 << 20;
-
-/// `bytes` as text chunks cut after a `\n` every ~`chunk` bytes, if it is
-/// text (valid UTF-8, no NUL byte), checked in parallel (a cut after `\n`
-/// is a char boundary of valid UTF-8).
-fn text_chunks(bytes: &[u8], chunk: usize) -> Option<Vec<&str>> {
-    line_chunks(bytes, chunk)
-        .into_par_iter()
-        .map(|c| std::str::from_utf8(c).ok().filter(|_| !c.contains(&0)))
-        .collect()
-}
 
 /// A positive decimal integer token (digits only, as `str::parse::<u64>`
 /// without sign) minus one, or `None`.
@@ -119,13 +109,12 @@ fn skippable(kw: &[u8]) -> bool {
             && kw.iter().all(|&b| b.is_ascii_alphanumeric() || b == b'_')
 }
 
-/// An empty [`ObjChunk`] with room for as many elements as `text` has
-/// lines, of the kind its first line is (writers list the vertices, then
+/// An empty [`ObjChunk`] with room for `lines` elements (the lines of
+/// `text`), of the kind its first line is (writers list the vertices, then
 /// the texture coordinates, then the faces: most chunks hold one kind, and
 /// their vectors then grow without a copy; the others grow as they go).
-fn reserved(text: &[u8]) -> ObjChunk {
+fn reserved(text: &[u8], lines: usize) -> ObjChunk {
     let mut c = ObjChunk::default();
-    let lines = count_lines(text);
     match Cursor::new(text).field() {
         b"v" => c.positions.reserve_exact(lines),
         b"vt" => c.uvs.reserve_exact(lines),
@@ -138,9 +127,12 @@ fn reserved(text: &[u8]) -> ObjChunk {
     c
 }
 
-fn obj_chunk(text: &str) -> Option<ObjChunk> {
-    let mut c = reserved(text.as_bytes());
-    let mut t = Cursor::new(text.as_bytes());
+/// One chunk of an OBJ file (cut after a `\n`: a char boundary of valid
+/// UTF-8), if it is text (valid UTF-8, no NUL byte: [`text_lines`], while
+/// the chunk is in cache) and every line has the common form.
+fn obj_chunk(text: &[u8]) -> Option<ObjChunk> {
+    let mut c = reserved(text, text_lines(text)?);
+    let mut t = Cursor::new(text);
     while !t.rest().is_empty() {
         match t.field() {
             [] => t.end_line()?,
@@ -165,10 +157,9 @@ pub(crate) fn obj(bytes: &[u8]) -> Option<TriMap> {
 
 /// [`obj`] with chunks of ~`chunk` bytes.
 pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
-    let texts = text_chunks(bytes, chunk)?;
-    let parts: Vec<ObjChunk> = texts
-        .par_iter()
-        .map(|t| obj_chunk(t))
+    let parts: Vec<ObjChunk> = line_chunks(bytes, chunk)
+        .into_par_iter()
+        .map(obj_chunk)
         .collect::<Option<_>>()?;
     let total = |f: fn(&ObjChunk) -> usize| parts.iter().map(f).sum::<usize>();
     let mut positions = Vec::with_capacity(total(|c| c.positions.len()));

@@ -218,3 +218,54 @@ fn shared_data_reads_the_same() {
     // the shared data's valid maps use the canonical layouts
     assert!(fast * 2 > seen, "{fast} of {seen}");
 }
+
+/// `text_lines` against its definition (`str::from_utf8`, no NUL, then
+/// `count_lines` as `str::lines` counts): ASCII, multi-byte and invalid
+/// UTF-8, NUL bytes, CR, a last line with or without `\n`, blocks longer
+/// than the 255 bytes its loop sums at a time.
+#[test]
+fn text_lines_is_utf8_without_nul_and_the_line_count() {
+    use crate::cursor::{count_lines, text_lines};
+    // xorshift, as `mutants`
+    let mut s = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move |m: usize| {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s % m as u64) as usize
+    };
+    let alphabet: [&[u8]; 9] = [
+        b"v 1.5 2",
+        b"\n",
+        b"\r\n",
+        b"\xc3\xa9",
+        b"\xe2\x82\xac",
+        b"\xff",
+        b"\x00",
+        b"\xc3",
+        b" ",
+    ];
+    for case in 0..3000 {
+        let mut bytes = Vec::new();
+        let len = [3, 40, 300, 2000][case % 4];
+        // most cases from the harmless symbols only
+        let kinds = if case % 3 == 0 { alphabet.len() } else { 5 };
+        while bytes.len() < len {
+            bytes.extend_from_slice(alphabet[next(kinds)]);
+        }
+        let want = std::str::from_utf8(&bytes)
+            .ok()
+            .filter(|t| !t.contains('\0'))
+            .map(|t| {
+                assert_eq!(count_lines(&bytes), t.lines().count());
+                t.lines().count()
+            });
+        assert_eq!(
+            text_lines(&bytes),
+            want,
+            "{:?}",
+            String::from_utf8_lossy(&bytes)
+        );
+    }
+    assert_eq!(text_lines(b""), Some(0));
+}
