@@ -87,10 +87,13 @@ impl Constraints {
         role: Role,
         tol: f64,
     ) -> Self {
+        use rayon::prelude::*;
         let has_boundary = r.has_boundary();
+        // per vertex on its own (a closest-point search each), in parallel
         let kind = positions
-            .iter()
+            .par_iter()
             .zip(on_boundary)
+            .with_min_len(256)
             .map(|(&p, &b)| {
                 let on_ref = role == Role::Surface || b;
                 if !on_ref {

@@ -478,22 +478,35 @@ fn moves_and_distances<const D: usize, const K: usize>(
     boundary: bool,
     rep: &mut Report,
 ) {
-    for v in 0..x.len() {
-        let d = norm(sub(x[v], start[v]));
-        if d > 0.0 {
-            rep.moved_vertices += 1;
-            rep.max_move = rep.max_move.max(d);
-        }
+    use rayon::prelude::*;
+    // per vertex: its move (0 when it did not), its distance to the
+    // boundary (0 when not measured); counted and maximised (exact in any
+    // order) over the vertices in parallel
+    let per_vertex = |v: usize| {
+        let moved = norm(sub(x[v], start[v]));
         let on_it = match input.role {
             Role::Surface => matches!(cons.kind[v], Kind::Curve { boundary: true }),
             Role::Volume => cons.kind[v] != Kind::Free,
         };
-        if boundary && input.on_boundary[v] && on_it {
-            let d = match input.role {
+        let off = if boundary && input.on_boundary[v] && on_it {
+            match input.role {
                 Role::Surface => r.closest_on_curves(x[v], true).map_or(0.0, |c| c.2),
                 Role::Volume => r.closest(x[v], None).map_or(0.0, |f| f.distance),
-            };
-            rep.boundary_distance[1] = rep.boundary_distance[1].max(d);
-        }
-    }
+            }
+        } else {
+            0.0
+        };
+        (usize::from(moved > 0.0), moved, off)
+    };
+    let (count, max_move, max_off) = (0..x.len())
+        .into_par_iter()
+        .with_min_len(256)
+        .map(per_vertex)
+        .reduce(
+            || (0, 0.0, 0.0),
+            |a, b| (a.0 + b.0, a.1.max(b.1), a.2.max(b.2)),
+        );
+    rep.moved_vertices += count;
+    rep.max_move = rep.max_move.max(max_move);
+    rep.boundary_distance[1] = rep.boundary_distance[1].max(max_off);
 }
