@@ -18,6 +18,7 @@
 #[cfg(doc)]
 use crate::grid::{box_bounds, box_spans};
 use crate::grid::{floor_above, near_int, EPS};
+use dualex_util::round::{nearest_even, FAST};
 
 /// Per corner and axis of a simplex: the greatest integer in reach of its
 /// grown range, and whether the range holds it (module docs).
@@ -33,7 +34,29 @@ impl<const N: usize, const D: usize> Boxes<N, D> {
     /// The boxes of every coordinate of `c`.
     #[inline]
     pub fn of(c: &[[f64; D]; N]) -> Self {
+        let small = c.iter().flatten().all(|x| x.abs() < 0.5 * FAST);
+        Self::of_known(c, small)
+    }
+
+    /// [`Self::of`] given `small`: whether every coordinate of `c` is below
+    /// `FAST / 2` in magnitude (as [`crate::grid::spanned_axes_small`]
+    /// finds). Then [`floor_above`] is one exact rounding by
+    /// [`nearest_even`] for every coordinate, without its test and branch.
+    #[inline]
+    pub fn of_known(c: &[[f64; D]; N], small: bool) -> Self {
         let (mut hi, mut near) = ([[0.0; D]; N], [0u8; N]);
+        if small {
+            for k in 0..N {
+                for a in 0..D {
+                    let z = c[k][a] + 2.0 * EPS;
+                    let rz = nearest_even(z);
+                    let h = if rz > z { rz - 1.0 } else { rz };
+                    hi[k][a] = h;
+                    near[k] |= u8::from(c[k][a] - 2.0 * EPS <= h) << a;
+                }
+            }
+            return Boxes { hi, near };
+        }
         for k in 0..N {
             for a in 0..D {
                 let h = floor_above(c[k][a]);
@@ -107,14 +130,17 @@ impl<const N: usize, const D: usize> Boxes<N, D> {
 
     /// The integer range of the edge `k`–`l`'s box (grown by `2·EPS`) per
     /// axis, `[lo, hi]` (empty when `lo > hi`).
-    #[inline]
+    #[inline(always)]
     pub fn range(&self, k: usize, l: usize) -> [[f64; 2]; D] {
-        // not NaN (validated input): plain comparisons, cheaper than f64::min
-        std::array::from_fn(|a| {
+        // a plain loop (`array::from_fn` is not always inlined); not NaN
+        // (validated input): plain comparisons, cheaper than f64::min
+        let mut r = [[0.0; 2]; D];
+        for (a, r) in r.iter_mut().enumerate() {
             let (lk, ll) = (self.lo(k, a), self.lo(l, a));
             let (hk, hl) = (self.hi[k][a], self.hi[l][a]);
-            [if ll < lk { ll } else { lk }, if hl > hk { hl } else { hk }]
-        })
+            *r = [if ll < lk { ll } else { lk }, if hl > hk { hl } else { hk }];
+        }
+        r
     }
 }
 
@@ -126,6 +152,14 @@ mod tests {
 
     fn check<const N: usize, const D: usize>(c: &[[f64; D]; N]) {
         let b = Boxes::of(c);
+        // the general path gives the fast path's boxes, bit for bit
+        let slow = Boxes::of_known(c, false);
+        assert_eq!(b.near, slow.near, "{c:?}");
+        assert_eq!(
+            b.hi.map(|p| p.map(f64::to_bits)),
+            slow.hi.map(|p| p.map(f64::to_bits)),
+            "{c:?}"
+        );
         assert_eq!(b.spanned(), pairs(c), "{c:?}");
         assert_eq!(spanned_axes(c), pairs(c), "{c:?}");
         let mut any = 0u8;

@@ -90,7 +90,17 @@ pub fn box_spans(p: [f64; 2], q: [f64; 2]) -> bool {
 /// NaN first corner sets every bit (the caller then tests everything).
 #[inline]
 pub fn spanned_axes<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
-    let mut bits = 0u8;
+    spanned_axes_small(c).0
+}
+
+/// [`spanned_axes`], and whether every coordinate of `c` lies strictly
+/// between `−FAST / 2` and `FAST / 2` (from the least and greatest value
+/// per axis): the `small` of [`crate::boxes::Boxes::of_known`]. A NaN
+/// (not in validated input) may pass unseen; its boxes are the same on
+/// both paths (NaN, not near).
+#[inline]
+pub fn spanned_axes_small<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> (u8, bool) {
+    let (mut bits, mut small) = (0u8, true);
     for a in 0..D {
         let (mut lo, mut hi) = (c[0][a], c[0][a]);
         for p in &c[1..] {
@@ -98,10 +108,11 @@ pub fn spanned_axes<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
             lo = if x < lo { x } else { lo };
             hi = if x > hi { x } else { hi };
         }
+        small &= -0.5 * FAST < lo && hi < 0.5 * FAST;
         let (l, h) = (lo - 2.0 * EPS, floor_above(hi));
         bits |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
     }
-    bits
+    (bits, small)
 }
 
 /// The corners of `c` [`near_int`] on axis `a`, as a mask (bit `k`: corner
@@ -386,6 +397,8 @@ pub(crate) mod tests {
             let t: [[f64; 3]; 4] = std::array::from_fn(|_| [pick(), pick(), pick()]);
             assert_eq!(spanned_axes(&t), pairs(&t), "{t:?}");
             assert_eq!(Boxes::of(&t).spanned(), pairs(&t), "{t:?}");
+            let small = t.iter().flatten().all(|x| x.abs() < 0.5 * FAST);
+            assert_eq!(spanned_axes_small(&t).1, small, "{t:?}");
             for a in 0..3 {
                 let on = near_int_on(&t, a);
                 assert!(on == 0 || spanned_axes(&t) >> a & 1 == 1, "{t:?}");

@@ -54,6 +54,8 @@
 //! - [`bad_scan`]: the incremental bad-vertex scan of sanitization;
 //! - [`boxes`]: the integer boxes of a simplex's corners, the scan's
 //!   prefilters;
+//! - [`contact`]: a segment certainly through a grid point, at neither
+//!   end (the scan's shortcut for edges through the grid);
 //! - [`near`]: closeness of a tet's vertices, edges and faces to the dual
 //!   grid (D = 3; D = 2 in [`grid`]);
 //! - [`sanitize`]: one sanitization for both dimensions (snap, then rounds
@@ -75,6 +77,7 @@
 pub mod bad_scan;
 pub mod boxes;
 pub mod cluster;
+pub mod contact;
 pub mod diagonal;
 pub mod grid;
 pub mod grid_offset;

@@ -23,6 +23,7 @@
 
 use dualex_map::TetMap;
 
+use crate::contact::segment_through_grid;
 pub use crate::grid::{dist2d, grid_point_near_segment, near_int, EPS};
 use crate::grid::{dist2d_below_eps, segment_clear_of_grid};
 use dualex_util::round::{ceil, floor, round};
@@ -43,7 +44,9 @@ pub fn segment_near_iso_line(a: &[f64; 3], b: &[f64; 3]) -> Option<(bool, bool)>
 /// holds the integers `range[k][0]..=range[k][1]` on axis `k`: an axis pair
 /// is skipped when the projection's box holds no integer point, or when
 /// [`segment_clear_of_grid`] shows none is near (the answer is the same:
-/// a grid point within `EPS` of the projection lies in its grown box).
+/// a grid point within `EPS` of the projection lies in its grown box);
+/// when [`segment_through_grid`] shows one at neither end, that is the
+/// answer.
 pub fn segment_near_iso_line_in_box(
     a: &[f64; 3],
     b: &[f64; 3],
@@ -57,6 +60,10 @@ pub fn segment_near_iso_line_in_box(
         let (pa, pb) = ([a[i], a[j]], [b[i], b[j]]);
         if segment_clear_of_grid(&pa, &pb, lo, hi) {
             continue;
+        }
+        if segment_through_grid(&pa, &pb, lo, hi) {
+            // a grid point, at neither end
+            return Some((false, false));
         }
         if let Some(g) = grid_point_near_segment(&pa, &pb) {
             return Some((dist2d_below_eps(&g, &pa), dist2d_below_eps(&g, &pb)));
@@ -125,6 +132,58 @@ pub fn triangle_near_grid_point(t: &[[f64; 3]; 3]) -> bool {
         }
     }
     false
+}
+
+/// Whether [`triangle_near_grid_point`] certainly returns `false` for `t`,
+/// whose box, grown by `2·EPS`, holds the integers `lo[k]..=hi[k]` on axis
+/// `k` (from the boxes of its corners, [`crate::boxes::Boxes::range`]).
+///
+/// A grid point that test accepts lies within `EPS` of `t`'s plane (by
+/// its computed normal `n`) and the line through it along `n` pierces `t`
+/// more than `EPS` inside its edges, so it lies within `EPS + diam·sin θ`
+/// of `t`, `θ` the angle between `n` and the exact normal: inside the
+/// grown box when `diam·sin θ < EPS`. The rounding error of `n` (from
+/// differences of the corners, one rounding each) is below `1.5e-15·E²`
+/// (`E` the largest coordinate difference to `t[0]`, `diam ≤ 3.5·E`), so
+/// `|n| > 1e-3·E³` keeps `diam·sin θ` below `6e-12`, and the rounding
+/// errors of the test's own distances (its points within `6·E` of the
+/// corners) stay below `1e-10`, far from `EPS`. When the box
+/// holds one integer point `g` and `|(g − t₀)·n| > 3·EPS·|n|`, computed
+/// as the test computes it, the test's `|(g − t₀)·n| / |n| ≥ EPS` skips
+/// `g`. `false` when unsure (a coordinate of 1024 or more, more than one
+/// point, a thin or tiny triangle).
+#[inline]
+pub fn triangle_clear_of_grid(t: &[[f64; 3]; 3], lo: [f64; 3], hi: [f64; 3]) -> bool {
+    const SMALL: f64 = 1024.0;
+    let big = max_abs(max_abs(max_abs(0.0, &t[0]), &t[1]), &t[2]);
+    // one point per axis (a NaN corner gives a NaN `nn` below)
+    let one_point = lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2];
+    if !(big < SMALL && one_point) {
+        return false;
+    }
+    let (e1, e2) = (sub(&t[1], &t[0]), sub(&t[2], &t[0]));
+    let n = cross(&e1, &e2);
+    let nn = dot(&n, &n);
+    let e = max_abs(max_abs(0.0, &e1), &e2);
+    let thin = 1e-3 * e * e * e;
+    if !(nn > thin * thin && nn > 1e-200) {
+        return false;
+    }
+    let s = dot(&sub(&lo, &t[0]), &n);
+    s * s > 9.0 * EPS * EPS * nn
+}
+
+/// The greatest of `m` and the magnitudes of `v` (not NaN).
+#[inline]
+fn max_abs(m: f64, v: &[f64; 3]) -> f64 {
+    let (a, b, c) = (v[0].abs(), v[1].abs(), v[2].abs());
+    let m = if a > m { a } else { m };
+    let m = if b > m { b } else { m };
+    if c > m {
+        c
+    } else {
+        m
+    }
 }
 
 /// Vertices on an iso-surface, endpoints of edges on an iso-line (not at

@@ -385,4 +385,6 @@ impl Scan {
 }
 
 #[cfg(test)]
+mod mask_tests;
+#[cfg(test)]
 mod tests;

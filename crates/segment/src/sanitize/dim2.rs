@@ -5,7 +5,7 @@ use super::{Dim, Predicates};
 use crate::boxes::Boxes;
 use crate::grid::{
     dist2d_below_eps as below_eps, grid_point_near_segment, near_int, near_int_on,
-    segment_clear_of_grid, spanned_axes,
+    segment_clear_of_grid, spanned_axes_small,
 };
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology};
@@ -21,11 +21,11 @@ impl Predicates<3, 2> for Dim<3, 2> {
     /// is near its line ([`segment_clear_of_grid`]), or when both its ends
     /// are already bad (it cannot add a bit: the mask is the same).
     ///
-    /// A triangle whose range spans at most one axis ([`spanned_axes`]:
+    /// A triangle whose range spans at most one axis ([`crate::grid::spanned_axes`]:
     /// then no edge spans both) makes bad only its corners on that axis'
     /// isos. The boxes of the corners are computed once ([`Boxes`]).
     fn mask(c: &[[f64; 2]; 3]) -> u8 {
-        let axes = spanned_axes(c);
+        let (axes, small) = spanned_axes_small(c);
         if axes != 0b11 {
             return if axes == 0 {
                 0
@@ -33,7 +33,7 @@ impl Predicates<3, 2> for Dim<3, 2> {
                 near_int_on(c, axes.trailing_zeros() as usize)
             };
         }
-        let boxes = Boxes::of(c);
+        let boxes = Boxes::of_known(c, small);
         let mut mask = boxes.near_any(c);
         for k in 0..3 {
             let l = (k + 1) % 3;

@@ -4,9 +4,10 @@
 
 use super::{Dim, Predicates};
 use crate::boxes::Boxes;
-use crate::grid::{near_int_on, spanned_axes};
+use crate::grid::{near_int_on, spanned_axes_small};
 use crate::near::{
-    face_corners, segment_near_iso_line_in_box, triangle_near_grid_point, EDGES, FACE_EDGES,
+    face_corners, segment_near_iso_line_in_box, triangle_clear_of_grid, triangle_near_grid_point,
+    EDGES, FACE_EDGES,
 };
 use dualex_util::rng::SplitMix;
 
@@ -21,16 +22,20 @@ impl Predicates<4, 3> for Dim<4, 3> {
     /// an integer on fewer than two axes, and faces whose box misses one,
     /// are skipped: they cannot be near an iso-line or a grid point.
     ///
+    /// A face whose box holds one integer point far from its plane is
+    /// skipped too ([`triangle_clear_of_grid`]: the exact test would skip
+    /// that point, and no other can be near the face).
+    ///
     /// A test that can only set bits already set is skipped (an edge
     /// whose ends, a face whose corners are already bad; everything once
     /// all four are): the mask is the same.
     ///
-    /// A tet whose range spans at most one axis ([`spanned_axes`]: then
+    /// A tet whose range spans at most one axis ([`crate::grid::spanned_axes`]: then
     /// no edge spans two, no face three) makes bad only its corners on
     /// that axis' isos. The boxes of the corners are computed once
     /// ([`Boxes`]).
     fn mask(c: &[[f64; 3]; 4]) -> u8 {
-        let axes = spanned_axes(c);
+        let (axes, small) = spanned_axes_small(c);
         if axes & axes.wrapping_sub(1) == 0 {
             return if axes == 0 {
                 0
@@ -40,7 +45,7 @@ impl Predicates<4, 3> for Dim<4, 3> {
         }
         // the other axis (if any): no corner on its isos, no span, empty
         // edge ranges
-        let boxes = Boxes::of(c);
+        let boxes = Boxes::of_known(c, small);
         let mut mask = boxes.near_any(c);
         if mask == FULL {
             return mask;
@@ -67,7 +72,17 @@ impl Predicates<4, 3> for Dim<4, 3> {
                 continue;
             }
             let [i, j, k] = face_corners(f);
-            if triangle_near_grid_point(&[c[i], c[j], c[k]]) {
+            let t = [c[i], c[j], c[k]];
+            let (r, q) = (boxes.range(i, j), boxes.range(i, k));
+            let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
+            for a in 0..3 {
+                lo[a] = if q[a][0] < r[a][0] { q[a][0] } else { r[a][0] };
+                hi[a] = if q[a][1] > r[a][1] { q[a][1] } else { r[a][1] };
+            }
+            if triangle_clear_of_grid(&t, lo, hi) {
+                continue;
+            }
+            if triangle_near_grid_point(&t) {
                 mask |= 1 << i | 1 << j | 1 << k;
             }
         }

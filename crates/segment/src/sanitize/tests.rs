@@ -313,21 +313,7 @@ mod dim3 {
                     }
                 })
             });
-            let mut want = 0u8;
-            for k in 0..4 {
-                want |= u8::from(c[k].iter().any(|&x| near_int(x))) << k;
-                for l in k + 1..4 {
-                    if let Some((at_k, at_l)) = segment_near_iso_line(&c[k], &c[l]) {
-                        want |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
-                    }
-                }
-            }
-            for f in 0..4 {
-                let fc = face_corners(f);
-                if triangle_near_grid_point(&fc.map(|i| c[i])) {
-                    want |= fc.iter().fold(0, |m, &i| m | 1 << i);
-                }
-            }
+            let want = crate::sanitize::mask_tests::mask_unfiltered(&c);
             assert_eq!(<Dim<4, 3>>::mask(&c), want, "{c:?}");
             let axes = crate::boxes::Boxes::of(&c).spanned();
             kinds[axes.count_ones() as usize] += 1;
