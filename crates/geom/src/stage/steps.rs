@@ -32,12 +32,13 @@
 
 use super::corners::{onto_boundary, release_features};
 use super::frames::{all_frames, reframe_moved, Reframe};
+use super::report::moves_and_distances;
 use super::topology::{grow, vertex_cells};
 use super::{
     spread, Input, Measure, Report, BUDGET_PER_SIMPLEX, ITERATIONS, MIN_BUDGET, ON_BOUNDARY, RINGS,
     SMOOTH_ITERATIONS, SMOOTH_MIN_BUDGET, SPREAD_ITERATIONS, SPREAD_RINGS, UNTANGLE_ROUNDS,
 };
-use crate::constraint::{Constraints, Kind, Role};
+use crate::constraint::{Constraints, Kind};
 use crate::optimize::{optimize, Cells, Params};
 use crate::quality::{self, norm, sub, Summary};
 use crate::reference::Reference;
@@ -463,50 +464,4 @@ fn flagged(values: &[f64]) -> Vec<bool> {
 /// How many cells are flat or inverted.
 fn inverted_of(values: &[f64]) -> usize {
     values.iter().filter(|&&v| v <= quality::DEGENERATE).count()
-}
-
-/// 6. The report's moves (vertices moved, the longest move) and the
-///    distance to the input's boundary (curves in 2D, surface in 3D) of
-///    the boundary vertices kept on it.
-#[allow(clippy::needless_range_loop)] // vertices index several arrays
-fn moves_and_distances<const D: usize, const K: usize>(
-    x: &[[f64; 3]],
-    start: &[[f64; 3]],
-    input: &Input<D, K>,
-    cons: &Constraints,
-    r: &Reference,
-    boundary: bool,
-    rep: &mut Report,
-) {
-    use rayon::prelude::*;
-    // per vertex: its move (0 when it did not), its distance to the
-    // boundary (0 when not measured); counted and maximised (exact in any
-    // order) over the vertices in parallel
-    let per_vertex = |v: usize| {
-        let moved = norm(sub(x[v], start[v]));
-        let on_it = match input.role {
-            Role::Surface => matches!(cons.kind[v], Kind::Curve { boundary: true }),
-            Role::Volume => cons.kind[v] != Kind::Free,
-        };
-        let off = if boundary && input.on_boundary[v] && on_it {
-            match input.role {
-                Role::Surface => r.closest_on_curves(x[v], true).map_or(0.0, |c| c.2),
-                Role::Volume => r.closest(x[v], None).map_or(0.0, |f| f.distance),
-            }
-        } else {
-            0.0
-        };
-        (usize::from(moved > 0.0), moved, off)
-    };
-    let (count, max_move, max_off) = (0..x.len())
-        .into_par_iter()
-        .with_min_len(256)
-        .map(per_vertex)
-        .reduce(
-            || (0, 0.0, 0.0),
-            |a, b| (a.0 + b.0, a.1.max(b.1), a.2.max(b.2)),
-        );
-    rep.moved_vertices += count;
-    rep.max_move = rep.max_move.max(max_move);
-    rep.boundary_distance[1] = rep.boundary_distance[1].max(max_off);
 }
