@@ -14,8 +14,11 @@
 //! 2. cross the facet: carry the fixed integers exactly through the
 //!    transition, rotate the moving axis;
 //! 3. in the new simplex the line must pierce exactly two facets, one of
-//!    them the entry; the walking sense is re-derived from the entry
-//!    towards the *other* one (never back through the entry);
+//!    them the entry ([`Simplex::crossed`]); where the simplex holds nodes,
+//!    the walking sense is re-derived from the entry's crossing point
+//!    towards the *other* one's ([`Simplex::crossing_at`]; never back
+//!    through the entry) — elsewhere neither is needed, as the next
+//!    moving axis does not depend on the sense;
 //! 4. the nearest node ahead of the entry ends the walk, arriving on the
 //!    reverse of the walking direction in that simplex's chart;
 //!    otherwise leave through the other facet and go to 2.
@@ -32,7 +35,7 @@
 use crate::local::LocalMap;
 use crate::nodes::Nodes;
 use crate::simplex::{Dim, Line, Pierce, Simplex};
-use dualex_map::{Rot, Topology};
+use dualex_map::{Rot, Topology, NONE};
 
 /// How a walk ended (the dimension-generic [`dualex_graph::walk::End`]).
 pub type End<const D: usize> = dualex_graph::walk::End<D>;
@@ -110,31 +113,64 @@ where
         return (End::Inconsistent, 0);
     };
     let mut rho = Rot::<D>::IDENTITY;
+    let mut rows = Rows::of(local, topo, t);
     for step in 1..=max_steps {
-        let Some((t2, e2)) = topo.neighbour(t, e) else {
+        if rows.adj[e] == NONE {
             return (End::Boundary, step);
-        };
-        let r = local.trans.rot[t][e];
-        let line2 = carry(&line, &r, &local.trans.trans[t][e]);
+        }
+        let (t2, e2, r) = (rows.adj[e] as usize, rows.facet[e] as usize, rows.rot[e]);
+        let mut line2 = carry(&line, &r, &local.trans.trans[t][e]);
         rho = rho.then(&r);
-        let (hits, nh) = Dim::<N, D>::pierced(&local.coords[t2], &line2);
-        let Some((inn, out)) = entry_exit(&hits[..nh], e2) else {
+        let next = Rows::of(local, topo, t2);
+        let p = &local.coords[t2];
+        let crossed = Dim::<N, D>::crossed(p, &line2);
+        let Some(out) = crossed.exit(e2) else {
             return (End::Inconsistent, step);
         };
-        let line2 = Line {
-            sgn: if out.at > inn.at { 1.0 } else { -1.0 },
-            ..line2
-        };
-        if let Some(m) = node_ahead(nodes, t2, &line2, inn.at) {
-            return (node_end(m, line2.dir() ^ 1, rho), step);
+        // the walking sense and the crossing points matter only where a
+        // node may end the walk (the next axis does not depend on the sense)
+        if !nodes.of_simplex(t2).is_empty() {
+            let inn_at = Dim::<N, D>::crossing_at(p, &line2, e2);
+            let out_at = Dim::<N, D>::crossing_at(p, &line2, out);
+            line2.sgn = if out_at > inn_at { 1.0 } else { -1.0 };
+            if let Some(m) = node_ahead(nodes, t2, &line2, inn_at) {
+                return (node_end(m, line2.dir() ^ 1, rho), step);
+            }
         }
-        if out.at_corner {
+        if crossed.corners >> out & 1 == 1 {
             // the walk reaches a vertex on its iso
             return (End::Inconsistent, step);
         }
-        (t, e, line) = (t2, out.face, line2);
+        (t, e, line, rows) = (t2, out, line2, next);
     }
     (End::Loop, max_steps)
+}
+
+/// What a walk step reads of simplex `t` once it knows the exit facet:
+/// its neighbours, their facets and the rotations across, read as soon as
+/// `t` is known, so that these loads (and its translation row, touched)
+/// overlap those of `t`'s image instead of following the
+/// crossing test. The walk is bound by memory latency: it reads each
+/// simplex's rows at a place of its own.
+struct Rows<const N: usize, const D: usize> {
+    adj: [u32; N],
+    facet: [u8; N],
+    rot: [Rot<D>; N],
+}
+
+impl<const N: usize, const D: usize> Rows<N, D> {
+    /// The rows of simplex `t`.
+    #[inline]
+    fn of(local: &LocalMap<N, D>, topo: &Topology<N>, t: usize) -> Self {
+        let tr = &local.trans.trans[t];
+        // the first and last cache lines of the translation row
+        std::hint::black_box(tr[0][0] ^ tr[N - 1][D - 1]);
+        Rows {
+            adj: topo.adj[t],
+            facet: topo.adj_facet[t],
+            rot: local.trans.rot[t],
+        }
+    }
 }
 
 /// The line in the neighbour's chart across a transition `(r, tr)`: the
@@ -150,15 +186,6 @@ fn carry<const D: usize>(line: &Line<D>, r: &Rot<D>, tr: &[i64; D]) -> Line<D> {
         axis,
         sgn: line.sgn,
         val,
-    }
-}
-
-/// The entry (on facet `e2`) and the exit among exactly two pierced facets.
-fn entry_exit(hits: &[Pierce], e2: usize) -> Option<(Pierce, Pierce)> {
-    match hits {
-        [a, b] if a.face == e2 => Some((*a, *b)),
-        [a, b] if b.face == e2 => Some((*b, *a)),
-        _ => None,
     }
 }
 
