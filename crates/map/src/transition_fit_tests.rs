@@ -6,7 +6,9 @@
 
 use super::*;
 use crate::transition_derive::num;
-use crate::transition_same::{mismatch_table_same, only_identity, table_of_terms};
+use crate::transition_same::{
+    mismatch_table_same, only_identity, same_terms, table_of_terms, within_tol,
+};
 use dualex_util::rng::SplitMix;
 
 /// The fit as it was first written: every rotation scanned in group
@@ -268,6 +270,14 @@ fn same_table_agrees<const D: usize>(seed: u64) {
         }
         let (got, want) = (mismatch_table_same(&a), mismatch_table(&a, &a));
         assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{a:?}");
+        for tol in [0.0, 1e-3, 0.05, 0.25] {
+            let terms = same_terms(&a);
+            assert_eq!(
+                within_tol(&a, tol),
+                within_of::<D>(&terms, tol),
+                "{a:?} {tol}"
+            );
+        }
     }
 }
 
@@ -296,7 +306,9 @@ fn same_lookup_agrees<const D: usize>(seed: u64) {
         }
         for tol in [0.0, 1e-3, 0.05, -1.0, f64::NAN] {
             let want = identity_fit::<D>(&table_of_terms::<D>(&terms), tol, &group).is_some();
-            assert_eq!(only_identity(&terms, tol, &group), want, "{terms:?} {tol}");
+            let got = !(tol.is_nan() || tol < 0.0)
+                && only_identity::<D>(within_of::<D>(&terms, tol), &group);
+            assert_eq!(got, want, "{terms:?} {tol}");
             if want {
                 yes += 1;
             } else {
@@ -311,4 +323,9 @@ fn same_lookup_agrees<const D: usize>(seed: u64) {
 fn same_lookup_agrees_2d_3d() {
     same_lookup_agrees::<2>(9);
     same_lookup_agrees::<3>(10);
+}
+
+/// The set of `terms` within `tol` (bit `k` for term `k`).
+fn within_of<const D: usize>(terms: &[f64; 9], tol: f64) -> usize {
+    (0..D * D).fold(0, |w, k| w | usize::from(terms[k] <= tol) << k)
 }

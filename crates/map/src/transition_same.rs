@@ -44,7 +44,7 @@ pub(crate) fn same_fits<const D: usize>(all: &[Rot<D>]) -> [u64; 8] {
 /// `tol` of the best: what `identity_fit` finds on the table of equal
 /// charts, whose identity entries are 0 (so the cut is `tol`) and whose
 /// other entries are the [`same_terms`], read off the set of terms within
-/// `tol` ([`Group`]`::same_fits`). Then the identity with mismatch,
+/// `tol` ([`within_tol`]) ([`Group`]`::same_fits`). Then the identity with mismatch,
 /// translation and residual 0 (what the whole fit finds: `b − a` is 0 bit
 /// for bit). `None`: another rotation fits, left to the whole fit.
 #[inline]
@@ -53,7 +53,7 @@ pub(crate) fn same_charts_fit<const D: usize>(
     tol: f64,
     group: &Group<D>,
 ) -> Option<Fit<D>> {
-    if !only_identity(&same_terms(a), tol, group) {
+    if tol.is_nan() || tol < 0.0 || !only_identity::<D>(within_tol(a, tol), group) {
         return None;
     }
     Some(Fit {
@@ -68,19 +68,37 @@ pub(crate) fn same_charts_fit<const D: usize>(
 }
 
 /// Whether the identity is the only rotation within `tol` of the best
-/// on a facet with equal charts whose terms are `terms` ([`same_terms`]):
-/// no other rotation has all its terms within `tol` (`false` for a NaN or
-/// negative `tol`, as `identity_fit`).
+/// on a facet with equal charts whose [`same_terms`] within `tol` are the
+/// set `within` (bit `k` for term `k`): no other rotation has all its
+/// terms in it (`tol` neither NaN nor negative).
 #[inline]
-pub(crate) fn only_identity<const D: usize>(terms: &[f64; 9], tol: f64, group: &Group<D>) -> bool {
-    if tol.is_nan() || tol < 0.0 {
-        return false;
-    }
-    let mut within = 0usize;
-    for (k, &x) in terms[..D * D].iter().enumerate() {
-        within |= usize::from(x <= tol) << k;
-    }
+pub(crate) fn only_identity<const D: usize>(within: usize, group: &Group<D>) -> bool {
     group.same_fits[within >> 6] >> (within & 63) & 1 == 0
+}
+
+/// The set of [`same_terms`] of the facet `a` within `tol` (bit `k` for
+/// term `k`), without the terms: a term is the largest of its edges'
+/// values skipping NaN (and 0 when there is none), so it is within `tol`
+/// (`tol ≥ 0`) when no edge's value is above: the complement of the OR
+/// over the edges of the values above `tol`.
+#[inline]
+pub(crate) fn within_tol<const D: usize>(a: &[[f64; D]], tol: f64) -> usize {
+    // a facet has D corners: loops of a constant length, unrolled
+    debug_assert_eq!(a.len(), D);
+    let mut above = 0usize;
+    for i in 1..D {
+        let e: [f64; D] = std::array::from_fn(|k| a[i][k] - a[0][k]);
+        let mut pair = D;
+        for j in 0..D {
+            above |= usize::from((-e[j] - e[j]).abs() > tol) << j;
+            for l in j + 1..D {
+                above |= usize::from((e[j] - e[l]).abs() > tol) << pair;
+                above |= usize::from((-e[j] - e[l]).abs() > tol) << (pair + 1);
+                pair += 2;
+            }
+        }
+    }
+    !above & ((1 << (D * D)) - 1)
 }
 
 /// The index in [`same_terms`] of the entry of axis `j` to direction `d`
@@ -102,7 +120,7 @@ pub(crate) const fn same_term(j: usize, d: usize, dim: usize) -> Option<usize> {
 /// entry of axis `j` to direction `2l` is `|e[j] − e[l]|` and to `2l + 1`
 /// is `|−e[j] − e[l]|`, both symmetric in `j, l` (the same floats:
 /// `x − y = −(y − x)` and `−x − y = −y − x` exactly), and 0 for `l = j`.
-#[inline]
+#[cfg(test)]
 pub(crate) fn same_terms<const D: usize>(a: &[[f64; D]]) -> [f64; 9] {
     let mut terms = [0.0f64; 9];
     let mut raise = |at: usize, x: f64| {
