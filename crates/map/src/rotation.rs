@@ -254,9 +254,13 @@ impl<const D: usize> Rot<D> {
         }
     }
 
-    /// `R · x` for a real vector.
+    /// `R · x` for a real vector (the identity returns `x`'s floats as
+    /// they are, with no table lookup).
     #[inline]
     pub fn apply(&self, x: &[f64; D]) -> [f64; D] {
+        if self.is_identity() {
+            return *x;
+        }
         let img = &Self::tables().img[self.rank as usize];
         let mut out = [0.0; D];
         for i in 0..D {
@@ -278,6 +282,13 @@ impl<const D: usize> Rot<D> {
             out[(d >> 1) as usize] = v;
         }
         out
+    }
+
+    /// The rank of this rotation among the group's (below 24; the
+    /// identity's is 0): a one-byte key.
+    #[inline]
+    pub(crate) fn rank(&self) -> u8 {
+        self.rank
     }
 
     /// Whether this is the identity.

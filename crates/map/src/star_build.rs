@@ -23,6 +23,9 @@ use crate::topology::NONE;
 use crate::{InputError, Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
+/// A corner not reached yet by [`star_of`] (no rotation has this rank).
+const UNREACHED: u8 = u8::MAX;
+
 /// Vertices walked by one parallel task.
 const BLOCK: usize = 2048;
 
@@ -135,7 +138,8 @@ fn walk<const N: usize, const D: usize>(
 /// (more than one only when the topology was not checked; each new
 /// component's first simplex is its own reference chart). `position` (of
 /// [`VertexCorners`]) finds a corner in `corners`; `reached[k]`
-/// is the entry of corner `k`, or `u32::MAX`. Returns
+/// is the rank of the rotation of corner `k`'s entry ([`Rot::rank`]), or
+/// [`UNREACHED`]. Returns
 /// `(singular, boundary, one piece)`.
 fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
@@ -143,14 +147,14 @@ fn star_of<const N: usize, const D: usize>(
     corners: &[u32],
     position: &[u32],
     out: &mut [StarEntry<D>],
-    reached: &mut Vec<u32>,
+    reached: &mut Vec<u8>,
 ) -> (bool, bool, bool) {
     let (mut singular, mut boundary, mut pieces) = (false, false, 0);
     reached.clear();
-    reached.resize(corners.len(), u32::MAX);
+    reached.resize(corners.len(), UNREACHED);
     let mut len = 0;
     for (k0, &id) in corners.iter().enumerate() {
-        if reached[k0] != u32::MAX {
+        if reached[k0] != UNREACHED {
             continue;
         }
         pieces += 1;
@@ -161,7 +165,7 @@ fn star_of<const N: usize, const D: usize>(
             corner: c0 as u8,
             rot: Rot::IDENTITY,
         };
-        reached[k0] = len as u32;
+        reached[k0] = Rot::<D>::IDENTITY.rank();
         len += 1;
         while head < len {
             let e = out[head];
@@ -184,10 +188,8 @@ fn star_of<const N: usize, const D: usize>(
                 };
                 let corner = nbr[f][c];
                 let k = position[n * N + corner as usize] as usize;
-                if reached[k] != u32::MAX {
-                    if out[reached[k] as usize].rot != rot {
-                        singular = true;
-                    }
+                if reached[k] != UNREACHED {
+                    singular |= reached[k] != rot.rank();
                     continue;
                 }
                 out[len] = StarEntry {
@@ -195,7 +197,7 @@ fn star_of<const N: usize, const D: usize>(
                     corner,
                     rot,
                 };
-                reached[k] = len as u32;
+                reached[k] = rot.rank();
                 len += 1;
             }
         }

@@ -16,7 +16,11 @@
 //! ([`pair_bucket`]); a small bucket, or one with an error, is sorted by
 //! the other vertices and the half-facet id and glued in that order, the
 //! order of one global sort, so the first error is the one of the least
-//! key. Blocks of vertices are bucketed and glued in parallel: a glued
+//! key. Each half-facet carries its corners in key order and the parity
+//! of that order with its apex last ([`rest_without`]): a pair's corner
+//! map is read off the two orders and its orientation off the two
+//! parities, without matching vertices. Blocks of vertices are bucketed
+//! and glued in parallel: a glued
 //! pair writes the other half-facet's id into a per-half-facet `mate`
 //! (each half-facet is in one bucket), each block stops at its first
 //! error and the first block's error is returned; the adjacency is then
@@ -96,9 +100,9 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
     corners: &VertexCorners,
 ) -> Result<Topology<N>, InputError> {
     let (nv, ns) = (map.positions.len(), map.len());
-    // the other half-facet of each glued one and the corner map to it
-    // ([`pack`]), written by the bucket that holds both (each half-facet
-    // is in exactly one bucket)
+    // the other half-facet of each glued one in the low 32 bits and the
+    // corner map to it (`nbr_corner`, N ≤ 4 bytes) above, written by the
+    // bucket that holds both (each half-facet is in exactly one bucket)
     let mate: Vec<AtomicU64> = (0..ns * N)
         .into_par_iter()
         .map(|_| AtomicU64::new(UNGLUED))
@@ -156,13 +160,13 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
     })
 }
 
-/// The half-facets `(rest, s·N + f)` ([`rest_without`]) whose least vertex is `v`,
+/// The half-facets `(rest, s·N + f, order)` ([`rest_without`]) whose least vertex is `v`,
 /// found through `v`'s corners `star`, in corner order: the bucket of `v`.
 fn facets_from<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     star: &[u32],
     v: u32,
-    bucket: &mut Vec<(u64, u32)>,
+    bucket: &mut Vec<Half>,
 ) {
     bucket.clear();
     for &id in star {
@@ -181,37 +185,94 @@ fn facets_from<const N: usize, const D: usize>(
         match below {
             0 => {
                 for f in (0..N).filter(|&f| f != c) {
-                    bucket.push((rest_without(simplex, f, c), (s * N + f) as u32));
+                    let (rest, order) = rest_without(simplex, f, c);
+                    bucket.push((rest, (s * N + f) as u32, order));
                 }
             }
-            1 => bucket.push((rest_without(simplex, last, c), (s * N + last) as u32)),
+            1 => {
+                let (rest, order) = rest_without(simplex, last, c);
+                bucket.push((rest, (s * N + last) as u32, order));
+            }
             _ => {}
         }
     }
 }
 
+/// A half-facet in a bucket: the rest of its key ([`rest_without`]), its
+/// id `s·N + f`, its order ([`rest_without`]).
+type Half = (u64, u32, u8);
+
+/// Bit of an order ([`rest_without`]): the permutation is odd.
+const ODD: u8 = 1 << 6;
+
 /// The other vertices of the key of facet `f` of `simplex` (all but its
-/// least, at corner `c`), packed into one integer in the key's order.
+/// least, at corner `c`), packed into one integer in the key's order; and
+/// the facet's order: its corners in key order, 2 bits each (`c` first),
+/// with [`ODD`] when they, followed by `f`, are an odd permutation of
+/// `0..N` (N is 3 or 4: one or two other corners, from [`Others`]).
 #[inline]
-fn rest_without<const N: usize>(simplex: &[u32; N], f: usize, c: usize) -> u64 {
-    let mut other = [u32::MAX; N];
-    let mut k = 0;
-    for (j, &w) in simplex.iter().enumerate() {
-        if j != f && j != c {
-            other[k] = w;
-            k += 1;
-        }
+fn rest_without<const N: usize>(simplex: &[u32; N], f: usize, c: usize) -> (u64, u8) {
+    let ([lo, hi], odd) = Others::<N>::TABLE[f][c];
+    let first = (c as u8) | (lo << 2) | (ODD * odd);
+    if N == 3 {
+        return (u64::from(simplex[lo as usize]), first);
     }
-    match k {
-        1 => u64::from(other[0]),
-        2 => (u64::from(other[0].min(other[1])) << 32) | u64::from(other[0].max(other[1])),
-        _ => {
-            other[..k].sort_unstable();
-            other[..k]
-                .iter()
-                .fold(0u64, |acc, &w| (acc << 32) | u64::from(w))
+    let (wl, wh) = (simplex[lo as usize], simplex[hi as usize]);
+    // the key's order swaps the two: a transposition more
+    let (rest, order) = if wl < wh {
+        (u64::from(wl) << 32 | u64::from(wh), first | hi << 4)
+    } else {
+        (
+            u64::from(wh) << 32 | u64::from(wl),
+            (first ^ ODD ^ lo << 2) | hi << 2 | lo << 4,
+        )
+    };
+    (rest, order)
+}
+
+/// Per apex `f` and least corner `c` of a simplex of `N` corners (3 or
+/// 4): its other corners in increasing order (the second 0 for N = 3),
+/// and the parity of `(c, others…, f)` as a permutation of `0..N`.
+struct Others<const N: usize>;
+
+impl<const N: usize> Others<N> {
+    const TABLE: [[([u8; 2], u8); 4]; 4] = {
+        let mut table = [[([0u8; 2], 0u8); 4]; 4];
+        let mut f = 0;
+        while f < N {
+            let mut c = 0;
+            while c < N {
+                let mut perm = [0u8; 4];
+                perm[0] = c as u8;
+                let mut k = 1;
+                let mut j = 0;
+                while j < N {
+                    if j != f && j != c {
+                        perm[k] = j as u8;
+                        k += 1;
+                    }
+                    j += 1;
+                }
+                perm[N - 1] = f as u8;
+                // inversions of perm[..N]
+                let mut odd = 0u8;
+                let mut i = 0;
+                while i < N {
+                    let mut l = i + 1;
+                    while l < N {
+                        odd ^= (perm[i] > perm[l]) as u8;
+                        l += 1;
+                    }
+                    i += 1;
+                }
+                let second = if N == 4 { perm[2] } else { 0 };
+                table[f][c] = ([perm[1], second], odd);
+                c += 1;
+            }
+            f += 1;
         }
-    }
+        table
+    };
 }
 
 /// Marks a key of [`pair_bucket`]'s table whose two half-facets are glued.
@@ -226,7 +287,7 @@ const PAIRED: u32 = 1 << 31;
 /// key order (its writes are those of this one).
 fn pair_bucket<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
-    bucket: &[(u64, u32)],
+    bucket: &[Half],
     mate: &[AtomicU64],
     table: &mut Vec<u32>,
 ) -> Option<usize> {
@@ -235,7 +296,7 @@ fn pair_bucket<const N: usize, const D: usize>(
     table.clear();
     table.resize(size, 0);
     let mut pairs = 0;
-    for (i, &(key, h)) in bucket.iter().enumerate() {
+    for (i, &(key, h, order)) in bucket.iter().enumerate() {
         // Fibonacci hashing: the top bits of the key times 2^64/φ
         let mut at = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> shift) as usize;
         loop {
@@ -244,13 +305,13 @@ fn pair_bucket<const N: usize, const D: usize>(
                 table[at] = i as u32 + 1;
                 break;
             }
-            let (first_key, first) = bucket[(slot & !PAIRED) as usize - 1];
+            let (first_key, first, first_order) = bucket[(slot & !PAIRED) as usize - 1];
             if first_key == key {
                 if slot & PAIRED != 0 {
                     return None;
                 }
                 table[at] = slot | PAIRED;
-                glue_pair(map, first.min(h), first.max(h), mate).ok()?;
+                glue_pair(map, (first, first_order), (h, order), mate).ok()?;
                 pairs += 1;
                 break;
             }
@@ -260,23 +321,55 @@ fn pair_bucket<const N: usize, const D: usize>(
     Some(bucket.len() - 2 * pairs)
 }
 
-/// Glues half-facets `h1 < h2` of the same key (writes both `mate`s), or
-/// the error of a misoriented pair.
+/// Glues half-facets `h1 = s·N + f` and `h2 = n·N + g` of the same key,
+/// with their orders ([`rest_without`]; writes both `mate`s), or the error
+/// of a misoriented pair: consistent orientation <=> putting `s`'s apex
+/// in place of `n`'s apex gives an odd permutation of `s`'s corners (the
+/// two lie on opposite sides), the corner map `there`. With `P1`, `P2`
+/// the two orders (key position → corner, the apex last), `there = P2 ∘
+/// P1⁻¹`, whose parity is that of `P1` xor that of `P2`.
 #[inline]
 fn glue_pair<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
-    h1: u32,
-    h2: u32,
+    (h1, o1): (u32, u8),
+    (h2, o2): (u32, u8),
     mate: &[AtomicU64],
 ) -> Result<(), InputError> {
-    let there = check_orientation(map, h1, h2)?;
-    let mut back = [0u8; N];
-    for (c, &cn) in there.iter().enumerate() {
-        back[cn as usize] = c as u8;
+    let ((s, f), (n, g)) = (split::<N>(h1), split::<N>(h2));
+    if (o1 ^ o2) & ODD == 0 {
+        return Err(opposite_orientations(map, s, f, n));
     }
-    mate[h1 as usize].store(pack(h2, &there), Relaxed);
-    mate[h2 as usize].store(pack(h1, &back), Relaxed);
+    // `mate` words: corner `c` of one side to the corner of the other in
+    // byte `c` above the other half-facet's id
+    let mut there = u64::from(h2) | u64::from(g as u8) << (32 + 8 * f);
+    let mut back = u64::from(h1) | u64::from(f as u8) << (32 + 8 * g);
+    for i in 0..N - 1 {
+        let (a, b) = (o1 >> (2 * i) & 3, o2 >> (2 * i) & 3);
+        there |= u64::from(b) << (32 + 8 * a);
+        back |= u64::from(a) << (32 + 8 * b);
+    }
+    mate[h1 as usize].store(there, Relaxed);
+    mate[h2 as usize].store(back, Relaxed);
     Ok(())
+}
+
+/// The error of simplices `s` and `n` glued across facet `f` of `s` with
+/// opposite orientations.
+#[cold]
+#[inline(never)]
+fn opposite_orientations<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    s: usize,
+    f: usize,
+    n: usize,
+) -> InputError {
+    let key = facet_key(&map.simplices[s], f);
+    MapError::OppositeOrientations {
+        simplex: ElementKind::simplex(N),
+        simplices: [s.min(n), s.max(n)],
+        vertices: key[..N - 1].to_vec(),
+    }
+    .into()
 }
 
 /// Glues the pairs of a sorted bucket (writes `mate`), checking that each
@@ -284,7 +377,7 @@ fn glue_pair<const N: usize, const D: usize>(
 /// or the bucket's first error in key order.
 fn glue_bucket<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
-    bucket: &[(u64, u32)],
+    bucket: &[Half],
     mate: &[AtomicU64],
 ) -> Result<usize, InputError> {
     let mut boundary = 0;
@@ -296,7 +389,10 @@ fn glue_bucket<const N: usize, const D: usize>(
         }
         match j - i {
             1 => boundary += 1,
-            2 => glue_pair(map, bucket[i].1, bucket[i + 1].1, mate)?,
+            2 => {
+                let (a, b) = (&bucket[i], &bucket[i + 1]);
+                glue_pair(map, (a.1, a.2), (b.1, b.2), mate)?;
+            }
             n => {
                 let (s, f) = split::<N>(bucket[i].1);
                 let key = facet_key(&map.simplices[s], f);
@@ -317,59 +413,9 @@ fn glue_bucket<const N: usize, const D: usize>(
     Ok(boundary)
 }
 
-/// One glued half-facet's `mate`: the other half-facet's id in the low
-/// 32 bits, the corner map (`nbr_corner`, N ≤ 4 bytes) above.
-fn pack<const N: usize>(other: u32, corners: &[u8; N]) -> u64 {
-    corners
-        .iter()
-        .enumerate()
-        .fold(u64::from(other), |m, (c, &k)| {
-            m | u64::from(k) << (32 + 8 * c)
-        })
-}
-
-/// `map[c]`: the corner of `vn` that holds the same vertex as corner `c`
-/// of `vs`, across facet `f` of `vs` (facet `g` of `vn`); `map[f] = g`.
-fn corner_map<const N: usize>(vs: &[u32; N], f: usize, vn: &[u32; N], g: usize) -> [u8; N] {
-    let mut out = [0u8; N];
-    out[f] = g as u8;
-    for c in (0..N).filter(|&c| c != f) {
-        let Some(cn) = vn.iter().position(|&v| v == vs[c]) else {
-            panic!("bug: facet key matched but vertex {} is not shared", vs[c]);
-        };
-        out[c] = cn as u8;
-    }
-    out
-}
-
-/// Checks that the simplices of half-facets `h1 = s·N + f` and
-/// `h2 = n·N + g` (same key) are consistently oriented; returns the
-/// corner map from `s` to `n` ([`corner_map`]).
-fn check_orientation<const N: usize, const D: usize>(
-    map: &SimplexMap<N, D>,
-    h1: u32,
-    h2: u32,
-) -> Result<[u8; N], InputError> {
-    let ((s, f), (n, g)) = (split::<N>(h1), split::<N>(h2));
-    let vs = &map.simplices[s];
-    let there = corner_map(vs, f, &map.simplices[n], g);
-    // consistent orientation <=> putting s's apex in place of n's apex gives
-    // an odd permutation of s's corners (the two lie on opposite sides); a
-    // permutation and its inverse have the same parity
-    if permutation_parity(&there) == 0 {
-        let mut key = [0u32; N];
-        key[..N - 1].copy_from_slice(&facet_key(vs, f)[..N - 1]);
-        return Err(MapError::OppositeOrientations {
-            simplex: ElementKind::simplex(N),
-            simplices: [s.min(n), s.max(n)],
-            vertices: key[..N - 1].to_vec(),
-        }
-        .into());
-    }
-    Ok(there)
-}
-
-/// Parity (0 even, 1 odd) of a permutation of `0..N`.
+/// Parity (0 even, 1 odd) of a permutation of `0..N` (the tests' check
+/// of [`Others`]).
+#[cfg(test)]
 fn permutation_parity<const N: usize>(p: &[u8; N]) -> u32 {
     let mut inv = 0;
     for i in 0..N {

@@ -107,6 +107,11 @@ fn same_as_sorted<const N: usize, const D: usize>(m: &SimplexMap<N, D>) {
                 assert_eq!(topo.neighbour(s, f), Some((n, g)));
                 assert_eq!(topo.neighbour(n, g), Some((s, f)));
                 assert_eq!(topo.nbr_corner[s][f][f], g as u8);
+                for c in (0..N).filter(|&c| c != f) {
+                    let cn = topo.nbr_corner[s][f][c] as usize;
+                    assert_eq!(m.simplices[n][cn], m.simplices[s][c]);
+                    assert_eq!(topo.nbr_corner[n][g][cn] as usize, c);
+                }
             }
             _ => panic!("non-manifold test map"),
         }
@@ -161,15 +166,32 @@ fn rest_without_the_key_is_the_keys_rest() {
         for f in 0..4 {
             let key = facet_key(&t, f);
             let c = (0..4).find(|&c| c != f && t[c] == key[0]).expect("least");
-            assert_eq!(rest_without(&t, f, c), rest_of(&key), "{t:?} facet {f}");
+            let (rest, order) = rest_without(&t, f, c);
+            assert_eq!(rest, rest_of(&key), "{t:?} facet {f}");
+            same_order(&t, f, &key, order);
         }
         let tri = [t[0], t[1], t[2]];
         for f in 0..3 {
             let key = facet_key(&tri, f);
             let c = (0..3).find(|&c| c != f && tri[c] == key[0]).expect("least");
-            assert_eq!(rest_without(&tri, f, c), rest_of(&key), "{tri:?} facet {f}");
+            let (rest, order) = rest_without(&tri, f, c);
+            assert_eq!(rest, rest_of(&key), "{tri:?} facet {f}");
+            same_order(&tri, f, &key, order);
         }
     }
+}
+
+/// `order` lists the corners of facet `f` of `simplex` holding the key's
+/// vertices in key order, with the parity of that list then `f`.
+fn same_order<const N: usize>(simplex: &[u32; N], f: usize, key: &[u32; N], order: u8) {
+    let mut perm = [f as u8; N];
+    for i in 0..N - 1 {
+        let j = order >> (2 * i) & 3;
+        assert_eq!(simplex[j as usize], key[i], "{simplex:?} facet {f}");
+        perm[i] = j;
+    }
+    let odd = u32::from(order & ODD != 0);
+    assert_eq!(odd, permutation_parity(&perm), "{simplex:?} facet {f}");
 }
 
 #[test]

@@ -176,6 +176,7 @@ fn write_batch<const N: usize, const D: usize>(
 }
 
 /// The transition back across a facet, from the one across it.
+#[inline]
 fn inverse<const D: usize>((rot, t): (Rot<D>, [i64; D])) -> (Rot<D>, [i64; D]) {
     // the identity is its own inverse and leaves `t` as it is
     let (inv, back) = if rot.is_identity() {

@@ -16,6 +16,7 @@
 
 use crate::error::{ElementKind, MapError};
 use crate::transition::ROUND_FIT_LIMIT;
+use crate::transition_same::{same_charts_fit, same_fits};
 use crate::{InputError, Rot, SimplexMap, Topology, TransitionOptions};
 use dualex_util::round::round;
 
@@ -64,6 +65,10 @@ pub(crate) struct Group<const D: usize> {
     pub(crate) all: Vec<Rot<D>>,
     /// `by_dir[j][d]`: the rotations sending axis `j` to direction `d`.
     by_dir: [[u32; 6]; D],
+    /// Per set of terms within the cut of a facet with equal charts, as
+    /// bits: whether a rotation other than the identity fits
+    /// ([`crate::transition_same`]).
+    pub(crate) same_fits: [u64; 8],
 }
 
 impl<const D: usize> Group<D> {
@@ -76,7 +81,12 @@ impl<const D: usize> Group<D> {
                 by_dir[j][d as usize] |= 1 << r;
             }
         }
-        Group { all, by_dir }
+        let same_fits = same_fits(&all);
+        Group {
+            all,
+            by_dir,
+            same_fits,
+        }
     }
 }
 
@@ -238,56 +248,6 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
 /// Largest coordinate of a facet taken by [`same_charts_fit`]: its edge
 /// vectors and their sums stay finite (no NaN in the table).
 const SAME_LIMIT: f64 = 1e300;
-
-/// The fit of a facet whose corners are the same floats in both charts
-/// (a facet off the seams) when the identity is the only rotation within
-/// `tol` of the best, which [`identity_fit`] proves on the table of
-/// [`mismatch_table_same`]: the identity with mismatch, translation and
-/// residual 0 (what the whole fit finds: `b − a` is 0 bit for bit).
-/// `None`: another rotation fits, left to the whole fit.
-#[inline]
-fn same_charts_fit<const D: usize>(a: &[[f64; D]], tol: f64, group: &Group<D>) -> Option<Fit<D>> {
-    let best = identity_fit::<D>(&mismatch_table_same(a), tol, group)?;
-    debug_assert_eq!(best, 0.0);
-    Some(Fit {
-        rot: Rot::IDENTITY,
-        #[cfg(test)]
-        trans: [0.0; D],
-        rounded: [0; D],
-        residual: 0.0,
-        tol,
-        ambiguous: None,
-    })
-}
-
-/// [`mismatch_table`]`(a, a)`, bit for bit, from half the terms: with
-/// `ea = eb = e`, the entry of axis `j` to direction `2l` is
-/// `|e[j] − e[l]|` and to `2l + 1` is `|−e[j] − e[l]|`, both symmetric in
-/// `j, l` (the same floats: `x − y = −(y − x)` and `−x − y = −y − x`
-/// exactly), and 0 for `l = j`.
-fn mismatch_table_same<const D: usize>(a: &[[f64; D]]) -> [f64; 18] {
-    let mut table = [0.0f64; 18];
-    let mut raise = |at: usize, x: f64| {
-        // `max` without its NaN branch (an entry is never NaN)
-        if x > table[at] {
-            table[at] = x;
-        }
-    };
-    for i in 1..a.len() {
-        let e: [f64; D] = std::array::from_fn(|k| a[i][k] - a[0][k]);
-        for j in 0..D {
-            raise(6 * j + 2 * j + 1, (-e[j] - e[j]).abs());
-            for l in j + 1..D {
-                let (plus, minus) = ((e[j] - e[l]).abs(), (-e[j] - e[l]).abs());
-                raise(6 * j + 2 * l, plus);
-                raise(6 * l + 2 * j, plus);
-                raise(6 * j + 2 * l + 1, minus);
-                raise(6 * l + 2 * j + 1, minus);
-            }
-        }
-    }
-    table
-}
 
 /// Mismatch of the rotation with images `img` (see [`mismatch_table`]).
 #[inline]

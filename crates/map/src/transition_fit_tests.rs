@@ -6,6 +6,9 @@
 
 use super::*;
 use crate::transition_derive::num;
+use crate::transition_same::{
+    mismatch_table_same, only_identity, same_terms, table_of_terms, within_tol,
+};
 use dualex_util::rng::SplitMix;
 
 /// The fit as it was first written: every rotation scanned in group
@@ -267,6 +270,14 @@ fn same_table_agrees<const D: usize>(seed: u64) {
         }
         let (got, want) = (mismatch_table_same(&a), mismatch_table(&a, &a));
         assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{a:?}");
+        for tol in [0.0, 1e-3, 0.05, 0.25] {
+            let terms = same_terms(&a);
+            assert_eq!(
+                within_tol(&a, tol),
+                within_of::<D>(&terms, tol),
+                "{a:?} {tol}"
+            );
+        }
     }
 }
 
@@ -274,4 +285,47 @@ fn same_table_agrees<const D: usize>(seed: u64) {
 fn same_table_agrees_2d_3d() {
     same_table_agrees::<2>(7);
     same_table_agrees::<3>(8);
+}
+
+/// The set of equal charts' terms within `tol` tells what
+/// [`identity_fit`] finds on their table (random terms: 0, near the
+/// tolerances, above them; every set of terms in 2D and 3D is met).
+fn same_lookup_agrees<const D: usize>(seed: u64) {
+    let group = Group::<D>::new();
+    let mut rng = SplitMix::new(seed);
+    let (mut yes, mut no) = (0, 0);
+    for _ in 0..40_000 {
+        let mut terms = [0.0f64; 9];
+        for x in terms[..D * D].iter_mut() {
+            *x = match rng.below(4) {
+                0 => 0.0,
+                1 => [1e-3, 0.05][rng.below(2)],
+                2 => rng.unit() * 1e-2,
+                _ => rng.unit() * 2.0,
+            };
+        }
+        for tol in [0.0, 1e-3, 0.05, -1.0, f64::NAN] {
+            let want = identity_fit::<D>(&table_of_terms::<D>(&terms), tol, &group).is_some();
+            let got = !(tol.is_nan() || tol < 0.0)
+                && only_identity::<D>(within_of::<D>(&terms, tol), &group);
+            assert_eq!(got, want, "{terms:?} {tol}");
+            if want {
+                yes += 1;
+            } else {
+                no += 1;
+            }
+        }
+    }
+    assert!(yes > 1000 && no > 1000, "{yes} {no}");
+}
+
+#[test]
+fn same_lookup_agrees_2d_3d() {
+    same_lookup_agrees::<2>(9);
+    same_lookup_agrees::<3>(10);
+}
+
+/// The set of `terms` within `tol` (bit `k` for term `k`).
+fn within_of<const D: usize>(terms: &[f64; 9], tol: f64) -> usize {
+    (0..D * D).fold(0, |w, k| w | usize::from(terms[k] <= tol) << k)
 }

@@ -70,6 +70,13 @@ pub fn local_transition<const D: usize>(
     if r.is_identity() {
         return std::array::from_fn(|k| os[k] + t[k] - on[k]);
     }
+    rotated_transition(r, [t, os, on], h)
+}
+
+/// [`local_transition`] across a transition whose rotation is not the
+/// identity (kept out of line: the identity's case is inlined).
+#[inline(never)]
+fn rotated_transition<const D: usize>(r: &Rot<D>, [t, os, on]: [&[i64; D]; 3], h: f64) -> [i64; D] {
     let ro = r.apply_i(os);
     let d = if h == 0.0 { [0; D] } else { shift_defect(r) };
     std::array::from_fn(|k| ro[k] + t[k] - on[k] + d[k])
