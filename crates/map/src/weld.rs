@@ -44,69 +44,27 @@ pub fn weld_owned<const N: usize, const D: usize>(
     map: SimplexMap<N, D>,
 ) -> (SimplexMap<N, D>, WeldReport) {
     let pairs = coincident_boundary_pairs(&map);
-    if pairs.is_empty() && every_vertex_used(&map) {
+    let mut used = vec![false; map.positions.len()];
+    for simplex in &map.simplices {
+        for &v in simplex {
+            used[v as usize] = true;
+        }
+    }
+    if pairs.is_empty() && !used.contains(&false) {
         return (map, WeldReport::default());
     }
     weld_pairs(&map, &pairs)
 }
 
-/// Whether every vertex is a corner of some simplex (flags set in
-/// parallel over the simplices).
-fn every_vertex_used<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> bool {
-    use rayon::prelude::*;
-    use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
-    let used: Vec<AtomicBool> = (0..map.positions.len())
-        .map(|_| AtomicBool::new(false))
-        .collect();
-    map.simplices.par_iter().for_each(|simplex| {
-        for &v in simplex {
-            used[v as usize].store(true, Relaxed);
-        }
-    });
-    used.iter().all(|u| u.load(Relaxed))
-}
-
-/// Whether two vertices share a position ([`position_key`]), found on a
-/// hash of the keys: 16-byte pairs sorted in parallel, then the positions
-/// of each run of equal hashes compared.
-fn any_shared_position(positions: &[[f64; 3]]) -> bool {
-    shared_by_hash(positions, |k| {
-        k[0].wrapping_mul(0x9E37_79B9_7F4A_7C15)
-            ^ k[1].wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
-            ^ k[2].wrapping_mul(0x1656_67B1_9E37_79F9)
-    })
-}
-
-/// [`any_shared_position`] with the hash `hash` (any function of the key:
-/// equal keys hash alike, so a shared position is in a run).
-fn shared_by_hash(positions: &[[f64; 3]], hash: impl Fn([u64; 3]) -> u64 + Sync) -> bool {
-    use rayon::prelude::*;
-    let mut hashed: Vec<(u64, u32)> = positions
-        .par_iter()
-        .enumerate()
-        .map(|(v, p)| (hash(position_key(p)), v as u32))
-        .collect();
-    hashed.par_sort_unstable();
-    let key = |x: &(u64, u32)| position_key(&positions[x.1 as usize]);
-    hashed
-        .chunk_by(|a, b| a.0 == b.0)
-        .filter(|run| run.len() > 1)
-        .any(|run| (1..run.len()).any(|i| run[..i].iter().any(|x| key(x) == key(&run[i]))))
-}
-
 /// Pairs of boundary vertices at exactly the same position (consecutive
-/// in position order). Whether two vertices share a position is found
-/// first ([`any_shared_position`]); only then are the positions sorted
-/// (in parallel) and the boundary, a walk over the simplices, found (none
-/// in a mesh whose seams are in its texture coordinates only, as OBJ's
-/// `v/vt`).
+/// in position order). The vertices sharing a position are found first,
+/// over all vertices (a parallel sort): the boundary, a walk over the
+/// simplices, is found only when some exist (none in a mesh whose seams
+/// are in its texture coordinates only, as OBJ's `v/vt`).
 fn coincident_boundary_pairs<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> Vec<(u32, u32)> {
     use rayon::prelude::*;
-    if !any_shared_position(&map.positions) {
-        return Vec::new();
-    }
     let nv = map.positions.len();
     let mut by_pos: Vec<([u64; 3], u32)> = (0..nv)
         .into_par_iter()
@@ -354,34 +312,6 @@ mod tests {
         inner.positions[6] = p; // grid(4)'s vertex 6 is interior
         for m in [cut_square(), m, inner, grid(4), cube_surface(3)] {
             assert_eq!(coincident_boundary_pairs(&m), pairs_by_boundary_sort(&m));
-        }
-    }
-
-    /// Shared positions found on hashes as on the sorted keys, with the
-    /// hash used, one that collides often (the first coordinate only) and
-    /// one that always does; `-0.0` and `0.0` are one position.
-    #[test]
-    fn shared_positions_as_the_sorted_keys_find_them() {
-        let by_sort = |p: &[[f64; 3]]| {
-            let mut keys: Vec<[u64; 3]> = p.iter().map(position_key).collect();
-            keys.sort_unstable();
-            keys.windows(2).any(|w| w[0] == w[1])
-        };
-        let mut s = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            [0.0, -0.0, 1.0, 0.5][(s % 4) as usize]
-        };
-        for n in [0, 1, 2, 3, 5, 9, 40] {
-            for _ in 0..200 {
-                let p: Vec<[f64; 3]> = (0..n).map(|_| [next(), next(), next()]).collect();
-                let want = by_sort(&p);
-                assert_eq!(any_shared_position(&p), want, "{p:?}");
-                assert_eq!(shared_by_hash(&p, |k| k[0]), want, "{p:?}");
-                assert_eq!(shared_by_hash(&p, |_| 7), want, "{p:?}");
-            }
         }
     }
 
