@@ -50,6 +50,7 @@
 mod components;
 pub mod corners;
 pub mod error;
+mod facet_order;
 pub mod holonomy;
 pub mod mesh;
 mod reflect;
