@@ -20,8 +20,9 @@
 //! does not depend on the number of threads. Fields are read in place by a
 //! [`Cursor`] (numbers by [`crate::decimal`], same bits as `str::parse`).
 //! OBJ chunks are checked to be text (UTF-8, no NUL: skipped lines may
-//! hold anything), each before it is parsed; a `.hexex` file needs no such check, as every byte
-//! of an accepted file is whitespace or in an accepted (ASCII) number.
+//! hold anything), each before it is parsed; a `.hexex` file needs no
+//! such check, as every byte of an accepted file is whitespace or in an
+//! accepted (ASCII) number.
 //!
 //! The map's invariants (`SimplexMap::validate`: a simplex at least,
 //! finite positions and map coordinates, vertex indices in range and
@@ -30,6 +31,7 @@
 
 use crate::cursor::{count_lines, leading_digits, line_chunks, text_lines, Cursor};
 use crate::scan::finite;
+use dualex_map::mesh::distinct_corners;
 use dualex_map::{TetMap, TriMap};
 use rayon::prelude::*;
 
@@ -203,12 +205,6 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
     Some(map)
 }
 
-/// Whether the vertex indices of a simplex are pairwise distinct.
-#[inline]
-fn distinct<const N: usize>(t: &[u32; N]) -> bool {
-    (1..N).all(|c| t[..c].iter().all(|&w| w != t[c]))
-}
-
 /// Writes chunk `c`'s triangles into `s` and their texture coordinates
 /// (looked up in `uvs`) into `k`; whether every index is in range (below
 /// `nv` and `uvs.len()`) and every triangle's vertices are distinct.
@@ -219,7 +215,7 @@ fn chunk_triangles(
     s: &mut [[u32; 3]],
     k: &mut [[[f64; 2]; 3]],
 ) -> bool {
-    let ok = |t: &[u32; 3]| t.iter().all(|&i| (i as usize) < nv) && distinct(t);
+    let ok = |t: &[u32; 3]| t.iter().all(|&i| (i as usize) < nv) && distinct_corners(t);
     if !c.v.iter().all(ok) {
         return false;
     }
@@ -377,7 +373,7 @@ fn tet_line(t: &mut Cursor<'_>, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> 
         }
         *slot = i as u32;
     }
-    if !distinct(&tet) {
+    if !distinct_corners(&tet) {
         return None;
     }
     let mut uvw = [[0.0; 3]; 4];

@@ -99,12 +99,9 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
     pub(crate) fn simplex_ok(&self, s: usize) -> bool {
         let simplex = &self.simplices[s];
         let nv = self.positions.len();
-        let mut ok = true;
-        for c in 0..N {
-            ok &= (simplex[c] as usize) < nv;
-            for d in 0..c {
-                ok &= simplex[c] != simplex[d];
-            }
+        let mut ok = distinct_corners(simplex);
+        for &v in simplex {
+            ok &= (v as usize) < nv;
         }
         // (no early exit: the tests are branch-free)
         for c in &self.coords[s] {
@@ -211,6 +208,21 @@ pub(crate) fn grid_points<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> 
         n *= hi[k] - lo[k] + 1.0;
     }
     n
+}
+
+/// Whether the vertex indices of a simplex are pairwise distinct (one of
+/// the invariants [`SimplexMap::validate`] checks; branch-free, for the
+/// walks that check every simplex: the validation's and the fast
+/// readers').
+#[inline]
+pub fn distinct_corners<const N: usize>(simplex: &[u32; N]) -> bool {
+    let mut ok = true;
+    for c in 1..N {
+        for d in 0..c {
+            ok &= simplex[c] != simplex[d];
+        }
+    }
+    ok
 }
 
 /// Determinant of the edge vectors `p1-p0, …, pD-p0` of a simplex image.
