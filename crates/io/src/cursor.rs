@@ -104,10 +104,23 @@ impl<'a> Cursor<'a> {
     }
 
     /// The next field on this line as a decimal integer of at most
-    /// `max_digits` digits (digits only, no sign).
+    /// `max_digits` digits (digits only, no sign). A field of 1 to 7 digits
+    /// with 8 bytes left is read in one word.
     #[inline]
     pub(crate) fn integer(&mut self, max_digits: usize) -> Option<u64> {
         self.skip_blank();
+        if let Some(w) = self.bytes.get(self.pos..).and_then(<[u8]>::first_chunk) {
+            let w = u64::from_le_bytes(*w);
+            let mut i = 0;
+            let n = crate::decimal::part_word(w, &mut i);
+            if (1..8).contains(&n)
+                && n <= max_digits
+                && ((w >> (8 * n)) as u8).is_ascii_whitespace()
+            {
+                self.pos += n;
+                return Some(i);
+            }
+        }
         let (i, n) = leading_digits(self.rest());
         self.pos += n;
         (n > 0 && n <= max_digits && self.at_field_end()).then_some(i)
