@@ -52,9 +52,11 @@ impl<'a> Cursor<'a> {
     /// Skips ASCII whitespace up to the line end.
     #[inline]
     fn skip_blank(&mut self) {
-        while self.bytes.get(self.pos).is_some_and(|&b| blank(b)) {
-            self.pos += 1;
+        let mut pos = self.pos;
+        while self.bytes.get(pos).is_some_and(|&b| blank(b)) {
+            pos += 1;
         }
+        self.pos = pos;
     }
 
     /// Whether the cursor stands at the end of a field.
@@ -89,24 +91,67 @@ impl<'a> Cursor<'a> {
     }
 
     /// The next field on this line as a finite float (the same value and
-    /// decision as [`crate::scan::finite`] on the field; `parse_field`
-    /// reads the field whole, up to whitespace or the end).
-    #[inline]
+    /// decision as [`crate::scan::finite`] on the field; `finite_field`
+    /// reads the field whole, up to whitespace or the end). Inlined: the
+    /// callers' loops keep the parser's constants in registers (fewer
+    /// instructions per field, BENCHMARKS.md).
+    #[inline(always)]
     pub(crate) fn float(&mut self) -> Option<f64> {
         self.skip_blank();
-        let (x, n) = crate::decimal::parse_field(self.rest())?;
+        let (x, n) = crate::decimal::finite_field(self.bytes.get(self.pos..)?)?;
         self.pos += n;
-        x.is_finite().then_some(x)
+        Some(x)
     }
 
     /// The next field on this line as a decimal integer of at most
-    /// `max_digits` digits (digits only, no sign).
+    /// `max_digits` digits (digits only, no sign). A field of 1 to 7 digits
+    /// with 8 bytes left is read in one word.
     #[inline]
     pub(crate) fn integer(&mut self, max_digits: usize) -> Option<u64> {
         self.skip_blank();
+        if let Some(w) = self.bytes.get(self.pos..).and_then(<[u8]>::first_chunk) {
+            let w = u64::from_le_bytes(*w);
+            let mut i = 0;
+            let n = crate::decimal::part_word(w, &mut i);
+            if (1..8).contains(&n)
+                && n <= max_digits
+                && ((w >> (8 * n)) as u8).is_ascii_whitespace()
+            {
+                self.pos += n;
+                return Some(i);
+            }
+        }
         let (i, n) = leading_digits(self.rest());
         self.pos += n;
         (n > 0 && n <= max_digits && self.at_field_end()).then_some(i)
+    }
+
+    /// The next field on this line when it is `digits/digits`, 1 to 7
+    /// digits each, read in two words (the OBJ corner `v/vt`); `None`, the
+    /// cursor after the blanks, when it is anything else or fewer than 16
+    /// bytes are left.
+    #[inline]
+    pub(crate) fn slash_pair(&mut self) -> Option<(u64, u64)> {
+        self.skip_blank();
+        let b: &[u8; 16] = self.bytes.get(self.pos..)?.first_chunk()?;
+        let word = |at: usize| {
+            let mut w = [0; 8];
+            w.copy_from_slice(&b[at..at + 8]);
+            u64::from_le_bytes(w)
+        };
+        let (mut v, mut vt) = (0, 0);
+        let w = word(0);
+        let k = crate::decimal::part_word(w, &mut v);
+        if !(1..8).contains(&k) || (w >> (8 * k)) as u8 != b'/' {
+            return None;
+        }
+        let w = word(k + 1);
+        let l = crate::decimal::part_word(w, &mut vt);
+        if !(1..8).contains(&l) || !((w >> (8 * l)) as u8).is_ascii_whitespace() {
+            return None;
+        }
+        self.pos += k + 1 + l;
+        Some((v, vt))
     }
 
     /// Consumes the rest of the line, which must be blank, and its `\n`

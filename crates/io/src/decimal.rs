@@ -8,12 +8,16 @@
 //!
 //! The common field, `[sign] digits [. digits] [e [sign] digits]` with at
 //! most 19 mantissa digits (leading zeros included) and at most 4 exponent
-//! digits, is scanned here: the integer digits one by one (usually one or
-//! two), the fraction eight bytes at a time (SWAR: one `u64` load is
+//! digits, is scanned here, eight bytes at a time (SWAR: one `u64` load is
 //! checked to be eight digits and converted with three multiplications;
-//! the first word that is not gives its leading digits in one step), then
-//! the value is converted exactly by [`crate::exact`]. Any other field, and
-//! any value `exact` leaves undecided, goes to `str::parse`, which decides.
+//! the first word that is not gives its leading digits in one step). When
+//! the integer part has at most 7 digits and 25 bytes follow the sign (a
+//! field not at the very end of the input), the point is skipped by
+//! merging two loads one byte apart and at most three words are read
+//! ([`pointed`]); otherwise the integer digits are read one by one
+//! ([`loose`]). Then the value is converted exactly by [`crate::exact`].
+//! Any other field, and any value `exact` leaves undecided, goes to
+//! `str::parse`, which decides.
 //! This replaced `fast-float2` (the same algorithm for the value): ~20 %
 //! fewer instructions per field (BENCHMARKS.md, "Reading numbers").
 
@@ -21,8 +25,18 @@
 const ZEROS: u64 = 0x3030_3030_3030_3030;
 /// The top bit of every byte.
 const TOPS: u64 = 0x8080_8080_8080_8080;
-/// `10^k` for `k < 8`.
-const POW10: [u64; 8] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000];
+/// `10^k` for `k ≤ 8`.
+const POW10: [u64; 9] = [
+    1,
+    10,
+    100,
+    1_000,
+    10_000,
+    100_000,
+    1_000_000,
+    10_000_000,
+    100_000_000,
+];
 /// At most this many mantissa digits make an exact `u64` mantissa.
 const MAX_DIGITS: usize = 19;
 /// At most this many exponent digits are read here (`|q|` stays small).
@@ -30,11 +44,21 @@ const MAX_EXP_DIGITS: usize = 4;
 
 /// The field at the start of `b` as `str::parse::<f64>` reads it, and its
 /// length (see the module docs).
-#[inline]
+#[cfg(test)]
 pub(crate) fn parse_field(b: &[u8]) -> Option<(f64, usize)> {
     match scan(b).and_then(Decimal::value) {
         Some(x) => Some(x),
         None => by_std(b),
+    }
+}
+
+/// [`parse_field`] when its value is finite: the fields read here always
+/// are, those `str::parse` reads are checked.
+#[inline(always)]
+pub(crate) fn finite_field(b: &[u8]) -> Option<(f64, usize)> {
+    match scan(b).and_then(Decimal::value) {
+        Some(x) => Some(x),
+        None => by_std(b).filter(|(x, _)| x.is_finite()),
     }
 }
 
@@ -60,41 +84,127 @@ impl Decimal {
 }
 
 /// The field at the start of `b` when it has the common form and ends at
-/// whitespace or at the end of `b`. Whole words of digits advance the
-/// position by a predicted branch, not by a computed run length: the
-/// next load need not wait for this one's digits (a first version that
-/// measured every run was ~20 % slower in wall time).
-#[inline]
+/// whitespace or at the end of `b`.
+#[inline(always)]
 fn scan(b: &[u8]) -> Option<Decimal> {
     let negative = b.first() == Some(&b'-');
-    let mut i = usize::from(matches!(b.first(), Some(b'-' | b'+')));
-    let mut mantissa = 0u64;
-    let int = digits(b.get(i..)?, &mut mantissa);
-    i += int;
-    let mut fraction = 0;
-    if b.get(i) == Some(&b'.') {
-        i += 1;
-        fraction = run(b.get(i..)?, &mut mantissa);
-        i += fraction;
-    }
-    if int + fraction == 0 || int + fraction > MAX_DIGITS {
+    let sign = usize::from(matches!(b.first(), Some(b'-' | b'+')));
+    let m = match pointed(b, sign) {
+        Some(m) => m,
+        None => loose(b, sign)?,
+    };
+    if m.count == 0 || m.count > MAX_DIGITS {
         return None;
     }
-    let mut exponent = 0i32;
-    if b.get(i).is_some_and(|&c| c | 0x20 == b'e') {
-        let (e, n) = exponent_field(b.get(i + 1..)?)?;
-        exponent = e;
-        i += 1 + n;
+    // at most 19 digits: the cast is exact
+    let mut exponent = -(m.fraction as i32);
+    let mut len = m.end;
+    match m.next {
+        None => {}
+        Some(c) if c.is_ascii_whitespace() => {}
+        Some(c) if c | 0x20 == b'e' => {
+            let (e, n) = exponent_field(b.get(len + 1..)?)?;
+            exponent += e;
+            len += 1 + n;
+            if !b.get(len).is_none_or(u8::is_ascii_whitespace) {
+                return None;
+            }
+        }
+        Some(_) => return None,
     }
-    if !b.get(i).is_none_or(u8::is_ascii_whitespace) {
-        return None;
-    }
-    let exponent = exponent - i32::try_from(fraction).ok()?;
     Some(Decimal {
         negative,
-        mantissa,
+        mantissa: m.value,
         exponent,
-        len: i,
+        len,
+    })
+}
+
+/// The digits of a field's mantissa, `[digits] [. digits]`, read up to
+/// the first byte that is not one of them.
+struct Mantissa {
+    /// The digits as one integer (wrapping past 19 digits).
+    value: u64,
+    /// How many digits, leading zeros included.
+    count: usize,
+    /// How many of them follow the point.
+    fraction: usize,
+    /// Where the mantissa ends (the sign and the point included).
+    end: usize,
+    /// The byte there (`None` at the end of the bytes).
+    next: Option<u8>,
+}
+
+/// The mantissa after the `sign` bytes of `b` when its integer part has
+/// at most 7 digits and a point follows them, and 25 bytes follow the
+/// sign. The first eight digits are one word: the bytes before the point
+/// from one load, those after it from a load one byte later, so the point
+/// costs no step of its own. Then one word of digits, and the digits that
+/// begin the next (with more than 16 digits in all).
+#[inline(always)]
+fn pointed(b: &[u8], sign: usize) -> Option<Mantissa> {
+    let body: &[u8; 25] = b.get(sign..)?.first_chunk()?;
+    let word = |at: usize| {
+        let mut w = [0; 8];
+        w.copy_from_slice(&body[at..at + 8]);
+        u64::from_le_bytes(w)
+    };
+    let w0 = word(0);
+    let int = non_digits(w0).trailing_zeros() / 8;
+    // (int = 8: the shift by 64 wraps to 0, and byte 0 is a digit)
+    if w0.wrapping_shr(8 * int) as u8 != b'.' {
+        return None;
+    }
+    // bytes below the point from w0, the rest from the next load
+    let below = (1u64 << (8 * int)) - 1;
+    let merged = (w0 & below) | (word(1) & !below);
+    let mut value = 0;
+    // the word that ends the digits, and how many digits precede it
+    let (last, before) = if !all_digits(merged) {
+        (merged, 0)
+    } else {
+        value = digit_values(merged.wrapping_sub(ZEROS));
+        let next = word(9);
+        if !all_digits(next) {
+            (next, 8)
+        } else {
+            value = value
+                .wrapping_mul(100_000_000)
+                .wrapping_add(digit_values(next.wrapping_sub(ZEROS)));
+            (word(17), 16)
+        }
+    };
+    let k = part_word(last, &mut value);
+    let count = before + k;
+    Some(Mantissa {
+        value,
+        count,
+        fraction: count - int as usize,
+        end: sign + count + 1,
+        // (k = 8 only with 24 digits, which the caller refuses)
+        next: Some(last.wrapping_shr(8 * k as u32) as u8),
+    })
+}
+
+/// The mantissa after the `sign` bytes of `b`, any form: the integer
+/// digits one by one, then the point and the fraction by [`run`].
+#[inline]
+fn loose(b: &[u8], sign: usize) -> Option<Mantissa> {
+    let body = b.get(sign..)?;
+    let mut value = 0u64;
+    let int = digits(body, &mut value);
+    let mut fraction = 0;
+    let mut end = sign + int;
+    if body.get(int) == Some(&b'.') {
+        fraction = run(body.get(int + 1..)?, &mut value);
+        end += 1 + fraction;
+    }
+    Some(Mantissa {
+        value,
+        count: int + fraction,
+        fraction,
+        end,
+        next: b.get(end).copied(),
     })
 }
 
@@ -134,13 +244,10 @@ fn run(b: &[u8], m: &mut u64) -> usize {
 }
 
 /// Reads the digits that begin the word `w` into `m` (as [`run`]) and
-/// returns how many (at most 7: `w` is not all digits).
-#[inline]
-fn part_word(w: u64, m: &mut u64) -> usize {
-    // a byte below '0' borrows into its top bit, one above '9' carries
-    // into it; the bytes before the first non-digit do neither
-    let non_digit = (w.wrapping_sub(ZEROS) | w.wrapping_add(0x4646_4646_4646_4646)) & TOPS;
-    let k = non_digit.trailing_zeros() as usize / 8;
+/// returns how many (0 to 8).
+#[inline(always)]
+pub(crate) fn part_word(w: u64, m: &mut u64) -> usize {
+    let k = non_digits(w).trailing_zeros() as usize / 8;
     // the k digits moved to the top bytes, zero digits below; two shifts
     // so that k = 0 shifts everything out
     let s = 32 - 4 * k as u32;
@@ -170,9 +277,16 @@ fn digits(b: &[u8], m: &mut u64) -> usize {
 /// Whether the eight bytes of `w` are all digits.
 #[inline]
 fn all_digits(w: u64) -> bool {
+    non_digits(w) == 0
+}
+
+/// The top bit of every byte of `w` from its first non-digit on, at least
+/// (the bytes before it: clear).
+#[inline]
+fn non_digits(w: u64) -> u64 {
     // a byte below '0' borrows into its top bit, one above '9' carries
     // into it (the lowest such byte does so whatever the others hold)
-    (w.wrapping_sub(ZEROS) | w.wrapping_add(0x4646_4646_4646_4646)) & TOPS == 0
+    (w.wrapping_sub(ZEROS) | w.wrapping_add(0x4646_4646_4646_4646)) & TOPS
 }
 
 /// The value of the eight digit values (0–9) in the bytes of `v`, the

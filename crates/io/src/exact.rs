@@ -11,7 +11,10 @@
 //! one correctly rounded `f64` multiplication or division), then the
 //! Eisel–Lemire algorithm (Lemire, "Number parsing at a gigabyte per
 //! second", 2021): `w`, normalized, times the 128-bit `5^q` of
-//! [`crate::pow5`], keeping the high 128 bits of the product.
+//! [`crate::pow5`], keeping the high 128 bits of the product. For
+//! `-307 ≤ q ≤ 288` the result is neither subnormal nor infinite for any
+//! `w`, so that path skips both checks and adds the rounded mantissa to
+//! the exponent field (a rounding carry then raises the exponent).
 
 use crate::pow5::{MIN_Q, POW5};
 
@@ -25,6 +28,11 @@ const POW10: [f64; 23] = [
 const MANTISSA_BITS: u32 = 52;
 /// The biased exponent of infinity.
 const INFINITE_POWER: i32 = 0x7ff;
+/// From this `q` on, `w · 10^q ≥ 10^-307` is normal for every `w ≥ 1`.
+const MIN_NORMAL_Q: i32 = -307;
+/// Up to this `q`, `w · 10^q < 10^19 · 10^288` is finite (and far from
+/// overflow after rounding) for every `w < 2^64`.
+const MAX_FINITE_Q: i32 = 288;
 
 /// The `f64` nearest to `w · 10^q`, `w > 0` (see the module docs).
 #[inline]
@@ -61,10 +69,17 @@ fn product(w: u64, q: i32) -> Option<(u64, u64)> {
     Some((hi, lo))
 }
 
-/// The bits of the `f64` nearest to `w · 10^q` by Eisel–Lemire, or `None`
-/// (see the module docs).
-#[inline]
-fn eisel_lemire(w: u64, q: i32) -> Option<u64> {
+/// The leading 54 bits of `w · 10^q` (the 53 of the result and a rounding
+/// bit) and the biased binary exponent of the leading one, before
+/// rounding; `None` when the product cannot decide them.
+struct Leading {
+    mantissa: u64,
+    exp2: i32,
+}
+
+/// [`Leading`] of `w · 10^q`, `w > 0`.
+#[inline(always)]
+fn leading(w: u64, q: i32) -> Option<Leading> {
     let lz = w.leading_zeros();
     let (hi, lo) = product(w << lz, q)?;
     if lo == u64::MAX {
@@ -72,13 +87,39 @@ fn eisel_lemire(w: u64, q: i32) -> Option<u64> {
     }
     let upper = (hi >> 63) as u32;
     let shift = upper + 64 - MANTISSA_BITS - 3;
-    let mut mantissa = hi >> shift;
-    let mut exp2 = power(q) + upper as i32 - lz as i32 + 1023;
-    if exp2 <= 0 {
-        return None; // subnormal
-    }
+    let mantissa = hi >> shift;
     if lo <= 1 && mantissa & 3 == 1 && mantissa << shift == hi {
         return None; // perhaps exactly halfway: ties to even not decided here
+    }
+    let exp2 = power(q) + upper as i32 - lz as i32 + 1023;
+    Some(Leading { mantissa, exp2 })
+}
+
+/// The bits of the `f64` nearest to `w · 10^q` by Eisel–Lemire, or `None`
+/// (see the module docs).
+#[inline]
+fn eisel_lemire(w: u64, q: i32) -> Option<u64> {
+    if !(MIN_NORMAL_Q..=MAX_FINITE_Q).contains(&q) {
+        return eisel_lemire_edges(w, q);
+    }
+    let Leading { mantissa, exp2 } = leading(w, q)?;
+    // 1 ≤ exp2 < 0x7fe by the range of q; the mantissa, rounded, has its
+    // leading bit at 2^52 (or at 2^53 when the rounding carried), and
+    // adding it to the exponent field less one sets the field right
+    let rounded = (mantissa + (mantissa & 1)) >> 1;
+    Some((((exp2 - 1) as u64) << MANTISSA_BITS) + rounded)
+}
+
+/// [`eisel_lemire`] for `q` outside [`MIN_NORMAL_Q`]`..=`[`MAX_FINITE_Q`],
+/// where the result may be subnormal or overflow.
+#[cold]
+fn eisel_lemire_edges(w: u64, q: i32) -> Option<u64> {
+    let Leading {
+        mut mantissa,
+        mut exp2,
+    } = leading(w, q)?;
+    if exp2 <= 0 {
+        return None; // subnormal
     }
     mantissa += mantissa & 1;
     mantissa >>= 1;

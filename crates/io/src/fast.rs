@@ -49,6 +49,12 @@ fn one_based(tok: &[u8]) -> Option<u32> {
     u32::try_from(i.checked_sub(1)?).ok()
 }
 
+/// A 1-based index of at most 7 digits made 0-based, or `None` for 0.
+#[inline]
+fn from_one(i: u64) -> Option<u32> {
+    u32::try_from(i.checked_sub(1)?).ok()
+}
+
 /// An OBJ corner `v/vt` or `v/vt/…` (as `corner.split('/')`: the first two
 /// parts [`one_based`], the rest not read), or `None`.
 #[inline]
@@ -93,7 +99,10 @@ fn numbers<const K: usize>(t: &mut Cursor<'_>) -> Option<[f64; K]> {
 fn face(t: &mut Cursor<'_>) -> Option<([u32; 3], [u32; 3])> {
     let (mut v, mut vt) = ([0u32; 3], [0u32; 3]);
     for n in 0..3 {
-        (v[n], vt[n]) = corner(t.field())?;
+        (v[n], vt[n]) = match t.slash_pair() {
+            Some((a, b)) => (from_one(a)?, from_one(b)?),
+            None => corner(t.field())?,
+        };
     }
     match t.field() {
         [] => t.end_line()?,

@@ -107,9 +107,21 @@ fn obj_lines_and_corners_read_as_the_sequential_reader() {
         ("f 1/1 2/2 3/4\n", false),
         ("f 1/1 2/2 3/3 1/1\n", false),
         ("f 99999999999/1 2/2 3/3\n", false),
+        ("f 0000001/0000001 2/2 03/003\n", true),
+        ("f 00000001/1 2/00000002 3/3\n", true),
+        ("f 1/1\t2/2\r3/3\n", true),
+        ("f 1/0 2/2 3/3\n", false),
+        ("f 1/1 2/2 1234567/3\n", false),
+        ("f 1/1 2/2: 3/3\n", false),
+        ("f 1/1 2/ 3/3\n", false),
+        ("f /1 2/2 3/3\n", false),
     ] {
+        // at the end of the file, then with lines after it (the corners
+        // then read two words at a time)
         let text = format!("{head}{face}");
         assert_eq!(agree_obj(text.as_bytes(), 4, false), must, "{face:?}");
+        let text = format!("{head}{face}\n# a comment longer than two words\n");
+        assert_eq!(agree_obj(text.as_bytes(), 1 << 20, false), must, "{face:?}");
     }
 }
 

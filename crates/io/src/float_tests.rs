@@ -103,7 +103,16 @@ fn check(tok: &str) {
     );
     // the cursor, parsing in place, decides as on the field alone, and
     // stops at its end whatever follows
-    for tail in ["", " 1", "\t9e9", "\r\n5", "\n", " x"] {
+    // (the long tail: every field has the bytes of the one-word paths)
+    for tail in [
+        "",
+        " 1",
+        "\t9e9",
+        "\r\n5",
+        "\n",
+        " x",
+        " 0.25 1.5 -2.75 1e3 4.125 8",
+    ] {
         let text = format!("{tok}{tail}");
         let mut c = Cursor::new(text.as_bytes());
         let whole = !tok.is_empty() && !tok.contains(|c: char| c.is_ascii_whitespace());
@@ -136,6 +145,14 @@ fn check(tok: &str) {
             _ => false,
         };
         assert!(same, "token {tok:?}: parse_field {mine:?}, std {s:?}");
+        // the same with bytes after it (the one-word paths read ahead)
+        let ahead = format!("{tok}\t0.123456789012345678901234");
+        let mine_ahead = parse_field(ahead.as_bytes());
+        assert_eq!(
+            mine_ahead.map(|(x, n)| (x.to_bits(), n)),
+            mine.map(|(x, n)| (x.to_bits(), n)),
+            "token {tok:?} read ahead"
+        );
     }
 }
 
@@ -282,6 +299,35 @@ fn hard_cases_parse_as_std_does() {
         "1.5e00001",
         "-.0e-0",
         "7.",
+        // the point at every place of the first word, and after it
+        "1234567.8",
+        "12345678.9",
+        "1234567.",
+        ".12345678",
+        "0.1234567",
+        "0.12345678",
+        "0.123456789",
+        "9999999.999999999999",
+        "9999999.9999999999999",
+        "0.99999999999999999999",
+        "0.1999999999999999999",
+        "1.2345678901234567890",
+        "0.0000000000000000001",
+        "0.00000000000000000001",
+        "-0.0",
+        "-0.",
+        "0.",
+        "1.e5",
+        "1.5e",
+        "1.5x",
+        "1.5.5",
+        "1.2345678/",
+        "1.234567:",
+        "1.23456789012345:",
+        "1e-400",
+        "1e309",
+        "1.7976931348623157e308",
+        "0.000000000000000000000000000000000000000000000000000000000001e-300",
     ];
     for tok in cases {
         check(tok);

@@ -33,8 +33,8 @@ pub(crate) fn line_of(bytes: &[u8], pos: usize) -> usize {
 #[inline]
 pub(crate) fn finite(tok: &str) -> Option<f64> {
     let b = tok.as_bytes();
-    crate::decimal::parse_field(b)
-        .filter(|&(x, n)| n == b.len() && x.is_finite())
+    crate::decimal::finite_field(b)
+        .filter(|&(_, n)| n == b.len())
         .map(|(x, _)| x)
 }
 
