@@ -47,6 +47,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod angle_sum;
 mod components;
 pub mod corners;
 pub mod error;

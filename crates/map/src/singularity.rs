@@ -91,14 +91,6 @@ pub fn quality<const N: usize, const D: usize>(map: &SimplexMap<N, D>) -> (usize
     (reverted, degenerate)
 }
 
-/// Signed angle of the map image of triangle `p` at corner `c`.
-fn corner_angle(p: &[[f64; 2]; 3], c: usize) -> f64 {
-    let (o, a, b) = (p[c], p[(c + 1) % 3], p[(c + 2) % 3]);
-    let e1 = [a[0] - o[0], a[1] - o[1]];
-    let e2 = [b[0] - o[0], b[1] - o[1]];
-    (e1[0] * e2[1] - e1[1] * e2[0]).atan2(e1[0] * e2[0] + e1[1] * e2[1])
-}
-
 /// Singular interior vertices of a triangle mesh (see the module docs).
 pub fn vertex_singularities(
     map: &TriMap,
@@ -106,19 +98,36 @@ pub fn vertex_singularities(
     trans: &Transitions<3, 2>,
 ) -> Vec<VertexSingularity> {
     let lists = VertexCorners::build(&map.simplices, map.positions.len(), false);
+    let fold_free = fold_free_bits(map);
     // per vertex in parallel, collected in vertex order
     (0..map.positions.len())
         .into_par_iter()
-        .filter_map(|v| vertex_singularity(map, topo, trans, v as u32, lists.of(v)))
+        .filter_map(|v| vertex_singularity(map, topo, trans, &fold_free, v as u32, lists.of(v)))
         .collect()
 }
 
-/// Vertex `v`'s singularity (module docs) from its corners `ring`; `None`
-/// for a boundary, unused or regular vertex.
+/// Per triangle, bit `s % 64` of word `s / 64`: whether its image is
+/// neither reverted nor degenerate (`det > 0`, not [`is_degenerate`]),
+/// found once per triangle rather than once per corner.
+fn fold_free_bits(map: &TriMap) -> Vec<u64> {
+    map.coords
+        .par_chunks(64)
+        .map(|chunk| {
+            chunk.iter().enumerate().fold(0u64, |w, (i, p)| {
+                w | u64::from(det_of::<3, 2>(p) > 0.0 && !is_degenerate(p)) << i
+            })
+        })
+        .collect()
+}
+
+/// Vertex `v`'s singularity (module docs) from its corners `ring` and the
+/// triangles' [`fold_free_bits`]; `None` for a boundary, unused or
+/// regular vertex.
 fn vertex_singularity(
     map: &TriMap,
     topo: &Topology<3>,
     trans: &Transitions<3, 2>,
+    fold_free: &[u64],
     v: u32,
     ring: &[u32],
 ) -> Option<VertexSingularity> {
@@ -127,18 +136,18 @@ fn vertex_singularity(
     let rot = ridge_rotation(topo, trans, s0, &[c0])?;
     let turns = rot.turns();
     let fold_free = ring.iter().all(|&id| {
-        let p = &map.coords[split::<3>(id).0];
-        det_of::<3, 2>(p) > 0.0 && !is_degenerate(p)
+        let s = split::<3>(id).0;
+        fold_free[s / 64] >> (s % 64) & 1 == 1
     });
-    let angles: f64 = ring
-        .iter()
-        .map(|&id| {
+    // the angle sum only where it is read (a fold-free ring)
+    let q = if fold_free {
+        crate::angle_sum::quarters(ring.iter().map(|&id| {
             let (s, c) = split::<3>(id);
-            corner_angle(&map.coords[s], c)
-        })
-        .sum();
-    let tau = std::f64::consts::TAU;
-    let q = (4.0 * (tau - angles) / tau).round() as i64;
+            (&map.coords[s], c)
+        }))
+    } else {
+        0
+    };
     let index_quarters = (fold_free && q.rem_euclid(4) == turns).then_some(q);
     (turns != 0 || index_quarters.is_some_and(|q| q != 0)).then_some(VertexSingularity {
         vertex: v,
