@@ -58,6 +58,7 @@ fn quad_case(
         &g.map.positions,
         &g.map.simplices,
         &x.sources,
+        false,
         &geometry(mode),
     );
     if out.cells != x.mesh.cells {

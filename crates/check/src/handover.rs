@@ -40,6 +40,13 @@ impl<R: Clone> Checked<R> {
         &self.report
     }
 
+    /// The report when it was made of this mesh (`n_vertices`, `cells`).
+    pub fn of<const K: usize>(&self, n_vertices: usize, cells: &[[u32; K]]) -> Option<&R> {
+        let same = (self.n_vertices, self.n_cells) == (n_vertices, cells.len())
+            && self.print == cells_print(cells);
+        same.then_some(&self.report)
+    }
+
     /// The report of `earlier` when it was made of this mesh (`n_vertices`,
     /// `cells`), else `check()`'s.
     pub fn or_check<'a, const K: usize>(
@@ -48,14 +55,9 @@ impl<R: Clone> Checked<R> {
         cells: &[[u32; K]],
         check: impl FnOnce() -> R,
     ) -> Cow<'a, R> {
-        match earlier {
-            Some(c)
-                if (c.n_vertices, c.n_cells) == (n_vertices, cells.len())
-                    && c.print == cells_print(cells) =>
-            {
-                Cow::Borrowed(&c.report)
-            }
-            _ => Cow::Owned(check()),
+        match earlier.and_then(|c| c.of(n_vertices, cells)) {
+            Some(r) => Cow::Borrowed(r),
+            None => Cow::Owned(check()),
         }
     }
 }
@@ -96,5 +98,10 @@ mod tests {
         }
         assert_eq!(*Checked::or_check(None, 6, &cells, check), 7);
         assert_eq!(calls.get(), 4);
+        // the report itself, for the same mesh only
+        assert_eq!(c.of(6, &cells), Some(&5));
+        for (n, cs) in [(7, &cells), (6, &changed), (6, &swapped)] {
+            assert_eq!(c.of(n, cs), None);
+        }
     }
 }

@@ -74,12 +74,23 @@ impl Dimension<4, 2> for TriMap {
     ) -> GeometryReport {
         // the stage's "none" is u32::MAX, the extraction's NO_SOURCE
         let (m, s) = (&mut x.mesh, &x.sources);
+        // the extraction's check of these very cells: every edge of two
+        // quads, so no boundary vertex for the stage to find
+        let report = x.stats.checked.as_ref();
+        let closed = report
+            .and_then(|c| c.of(m.positions.len(), &m.cells))
+            .is_some_and(|r| {
+                r.boundary_edges == 0
+                    && r.degenerate_faces.is_empty()
+                    && r.out_of_range_faces.is_empty()
+            });
         dualex_geom::quads(
             &mut m.positions,
             &m.cells,
             &self.positions,
             &self.simplices,
             s,
+            closed,
             opts,
         )
     }

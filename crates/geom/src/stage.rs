@@ -37,12 +37,17 @@ use topology::boundary_vertices;
 /// triangle nearest its centre ([`Reference::quad_normal`], as `inspect`
 /// does); the source triangles only screen a mesh for work (no search:
 /// a mesh the screen finds nothing to do on is returned as it is).
+/// `closed`: the caller knows that every edge has two quads (its check of
+/// these cells found no boundary edge and no face with a repeated or
+/// missing vertex), so no vertex is on the boundary and the edges are not
+/// matched here; `false` when not known.
 pub fn quads(
     positions: &mut [[f64; 3]],
     cells: &[[u32; 4]],
     surface_positions: &[[f64; 3]],
     triangles: &[[u32; 3]],
     sources: &[u32],
+    closed: bool,
     opts: &Options,
 ) -> Report {
     let t = Instant::now();
@@ -72,7 +77,11 @@ pub fn quads(
         };
         normals.push(n);
     }
-    let on_boundary = boundary_vertices(positions.len(), cells, &QUAD_EDGES);
+    let on_boundary = if closed {
+        vec![false; positions.len()]
+    } else {
+        boundary_vertices(positions.len(), cells, &QUAD_EDGES)
+    };
     let mut hint = vec![[0.0; 3]; positions.len()];
     for (cell, n) in cells.iter().zip(&normals) {
         for &v in cell {

@@ -30,8 +30,14 @@ fn quad_grid(n: usize) -> Grid<4, 3> {
             p.push([i as f64, j as f64, 0.0]);
         }
     }
-    let mut q = Vec::new();
-    let mut t = Vec::new();
+    let (q, t) = quads_of(n, id);
+    (p, q, t)
+}
+
+/// The n×n quads of a grid whose vertex `(i, j)` is `id(i, j)`, and
+/// their two triangles each.
+fn quads_of(n: usize, id: impl Fn(usize, usize) -> u32) -> (Vec<[u32; 4]>, Vec<[u32; 3]>) {
+    let (mut q, mut t) = (Vec::new(), Vec::new());
     for j in 0..n {
         for i in 0..n {
             let c = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)];
@@ -40,7 +46,7 @@ fn quad_grid(n: usize) -> Grid<4, 3> {
             t.push([c[0], c[2], c[3]]);
         }
     }
-    (p, q, t)
+    (q, t)
 }
 
 /// The unit cube's surface (the boundary of its 6 Kuhn tets, as the
@@ -104,7 +110,7 @@ fn tangled_planar_grid_is_untangled_in_the_plane() {
         }
     }
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
-    let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
+    let r = quads(&mut x, &q, &p, &t, &sources, false, &Options::default());
     assert!(
         r.before.inverted > 3,
         "the test must tangle: {:?}",
@@ -129,7 +135,7 @@ fn clean_meshes_are_left_bit_for_bit() {
     let (p, q, t) = quad_grid(4);
     let mut x = p.clone();
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
-    let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
+    let r = quads(&mut x, &q, &p, &t, &sources, false, &Options::default());
     assert_eq!(
         (r.moved_vertices, r.before.inverted, r.boundary_off),
         (0, 0, 0)
@@ -172,7 +178,7 @@ fn boundary_vertices_go_onto_the_boundary_without_inverting() {
         }
     }
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
-    let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
+    let r = quads(&mut x, &q, &p, &t, &sources, false, &Options::default());
     assert!(r.boundary_off > 10, "{r:?}");
     assert!(
         r.boundary_distance[0] > 0.1 && r.boundary_distance[1] <= 1e-9 * 8.5,
@@ -248,7 +254,7 @@ fn curved_surface_untangled_on_the_surface() {
         }
     }
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
-    let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
+    let r = quads(&mut x, &q, &p, &t, &sources, false, &Options::default());
     assert!(r.before.inverted > 3, "{:?}", r.before);
     assert_eq!(r.after.inverted, 0, "{r:?}");
     // on the polygonal cylinder: radius between the inscribed one and 3
@@ -279,7 +285,7 @@ fn smoothing_raises_the_5th_percentile_and_keeps_the_boundary() {
         mode: Mode::Smooth(10),
         ..Options::default()
     };
-    let r = quads(&mut x, &q, &p, &t, &sources, &o);
+    let r = quads(&mut x, &q, &p, &t, &sources, false, &o);
     assert_eq!(r.after.inverted, 0);
     assert!(r.after.p5 > r.before.p5 + 0.1 && r.after.p5 > 0.9, "{r:?}");
     let o = Options {
@@ -288,7 +294,7 @@ fn smoothing_raises_the_5th_percentile_and_keeps_the_boundary() {
     };
     let mut y = p.clone();
     y[10][0] += 2.0;
-    let r = quads(&mut y, &q, &p, &t, &sources, &o);
+    let r = quads(&mut y, &q, &p, &t, &sources, false, &o);
     assert!(r.before.inverted > 0 && r.after.inverted == r.before.inverted && !r.moved());
 }
 
@@ -304,9 +310,54 @@ fn a_boundary_vertex_past_a_corner_goes_back_to_its_arc() {
     // corner (0, 0): the corner quad is flat
     x[1] = [0.0, 0.3, 0.0];
     let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
-    let r = quads(&mut x, &q, &p, &t, &sources, &Options::default());
+    let r = quads(&mut x, &q, &p, &t, &sources, false, &Options::default());
     assert!(r.before.inverted > 0, "{r:?}");
     assert_eq!(r.after.inverted, 0, "{r:?}");
     assert_eq!(x[0], [0.0, 0.0, 0.0], "the mesh corner stays on the corner");
     assert!(x[1][1].abs() <= 1e-9 && x[1][0] > 0.0, "{:?}", x[1]);
+}
+
+/// A closed n×n quad torus (a grid whose last row and column wrap) and
+/// its two triangles per quad.
+fn quad_torus(n: usize) -> Grid<4, 3> {
+    let id = |i: usize, j: usize| ((j % n) * n + i % n) as u32;
+    let mut p = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
+            let (cu, su) = (std::f64::consts::TAU * u).sin_cos();
+            let (cv, sv) = (std::f64::consts::TAU * v).sin_cos();
+            let r = 3.0 + cv;
+            p.push([r * cu, r * su, sv]);
+        }
+    }
+    let (q, t) = quads_of(n, id);
+    (p, q, t)
+}
+
+#[test]
+fn a_closed_mesh_said_closed_is_staged_as_found_closed() {
+    let (p, q, t) = quad_torus(12);
+    let sources: Vec<u32> = (0..q.len() as u32).map(|i| 2 * i).collect();
+    let mut rng = Rng(5);
+    // clean, then tangled (the optimisation runs)
+    for jitter in [0.0, 0.4] {
+        let mut x = p.clone();
+        for v in x.iter_mut() {
+            for c in v.iter_mut() {
+                *c += jitter * rng.next();
+            }
+        }
+        let mut y = x.clone();
+        let o = Options::default();
+        let mut a = quads(&mut x, &q, &p, &t, &sources, false, &o);
+        let mut b = quads(&mut y, &q, &p, &t, &sources, true, &o);
+        (a.time_ms, b.time_ms) = (0.0, 0.0);
+        assert_eq!(format!("{a:?}"), format!("{b:?}"), "jitter {jitter}");
+        assert_eq!(x, y, "jitter {jitter}");
+        assert_eq!(a.boundary_vertices, 0);
+        if jitter > 0.0 {
+            assert!(a.before.inverted > 0, "the test must tangle: {a:?}");
+        }
+    }
 }

@@ -166,7 +166,7 @@ fn graph_and_mesh(
     // 9
     let glued = graph.glue();
     let mut out = place(&s, &nodes, &graph, &glued, &takeover);
-    st.finish_output(&graph, &glued, &out.mesh);
+    st.finish_output(&glued, &out.mesh);
     // 10: holes through columns repaired locally
     let closed = s.topo.boundary_facets == 0;
     columns::repair_open(&graph, &glued, &ends, closed, &mut out, st);

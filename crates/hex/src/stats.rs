@@ -5,7 +5,7 @@
 //! …) with the hex steps' own counts (`output`, `fairing`, `repair`).
 
 use dualex_cells::HexMesh;
-use dualex_graph::{Glued, NodeGraph};
+use dualex_graph::Glued;
 use dualex_segment::sanitize_report::histogram_json;
 use dualex_segment::stats::SegmentStats;
 use serde_json::{json, Value};
@@ -76,11 +76,12 @@ impl AsMut<SegmentStats> for HexStats {
 }
 
 impl HexStats {
-    /// Fills the output counts from the final graph and mesh.
-    pub fn finish_output(&mut self, graph: &NodeGraph<3>, glued: &Glued<3>, mesh: &HexMesh) {
+    /// Fills the output counts from the final gluing (its graph's counts)
+    /// and mesh.
+    pub fn finish_output(&mut self, glued: &Glued<3>, mesh: &HexMesh) {
         self.hexes = mesh.cells.len();
         self.vertices = mesh.positions.len();
-        self.unmatched_sides = graph.unmatched_sides();
+        self.unmatched_sides = glued.unmatched_sides;
         self.boundary_surfaces = glued.boundary_loops;
         self.components = glued.components;
         self.corner_mismatches = glued.corner_mismatches;

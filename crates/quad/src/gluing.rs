@@ -58,7 +58,7 @@ pub fn glue_and_place(
     }
     // 9c
     let out = place(s, nodes, graph, &glued, takeover);
-    st.finish_output(graph, &glued, &out.mesh);
+    st.finish_output(&glued, &out.mesh);
     (glued, out)
 }
 

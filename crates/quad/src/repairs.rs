@@ -33,17 +33,20 @@ pub fn repair(
     out: &mut Placed<2, 4>,
     st: &mut QuadStats,
 ) {
+    // nothing to do, as the output's check tells (no slot built)
+    if checked_clean(st, &out.mesh) {
+        // the slots' own test would say so too (asserted where the
+        // crate's tests extract)
+        #[cfg(test)]
+        assert!(nothing_by_slots(graph, glued, ends, topo, &out.mesh));
+        return nothing_repaired(st);
+    }
     // 10a
     let slots = slots::cell_slots(graph, glued);
     let holes = slots::hole_slots(graph, glued, &slots, ends, topo.boundary_facets == 0);
     let marks = ambiguous::marks(&out.mesh.cells, &slots.partner);
     if nothing_to_repair(&marks, &holes, &out.mesh) {
-        (
-            st.parallel_edges_split,
-            st.folded_cells_cut,
-            st.holes_left_open,
-        ) = (0, 0, 0);
-        return;
+        return nothing_repaired(st);
     }
     let amb = ambiguous::split_marked(&out.mesh, &slots.partner, &holes, marks);
     st.parallel_edges_split = amb.parallel_edges;
@@ -92,6 +95,51 @@ pub fn repair(
     // 10c
     drop_pockets(topo, out, st);
     st.finish_mesh(&out.mesh);
+}
+
+/// The counts of a step 10 that changed nothing.
+fn nothing_repaired(st: &mut QuadStats) {
+    (
+        st.parallel_edges_split,
+        st.folded_cells_cut,
+        st.holes_left_open,
+    ) = (0, 0, 0);
+}
+
+/// Whether step 10 has nothing to do, read off the output's check
+/// (`QuadStats::finish_output`, made of this very `mesh`) and the graph's
+/// count, before any slot is built: no unmatched side (so no hole, and no
+/// two unmatched sides between the same two vertices), no vertex pair
+/// used by more than two cell edges (so no two glued pairs, or a pair and
+/// a side, between the same two vertices: no parallel edge) and no cell
+/// with a repeated corner (no folded cell; every cell a proper quad).
+/// `false` says nothing: [`nothing_to_repair`] then decides.
+fn checked_clean(st: &QuadStats, mesh: &QuadMesh) -> bool {
+    let Some(checked) = &st.checked else {
+        return false;
+    };
+    let report = checked.of(mesh.positions.len(), &mesh.cells);
+    st.unmatched_sides == 0
+        && report.is_some_and(|r| {
+            r.non_manifold_edges.is_empty()
+                && r.degenerate_faces.is_empty()
+                && r.out_of_range_faces.is_empty()
+        })
+}
+
+/// [`nothing_to_repair`] from the slots, as step 10a finds it.
+#[cfg(test)]
+fn nothing_by_slots(
+    graph: &NodeGraph<2>,
+    glued: &Glued<2>,
+    ends: &[End<2>],
+    topo: &Topology<3>,
+    mesh: &QuadMesh,
+) -> bool {
+    let slots = slots::cell_slots(graph, glued);
+    let holes = slots::hole_slots(graph, glued, &slots, ends, topo.boundary_facets == 0);
+    let marks = ambiguous::marks(&mesh.cells, &slots.partner);
+    nothing_to_repair(&marks, &holes, mesh)
 }
 
 /// Whether step 10 would leave the mesh as it is: nothing to split, no

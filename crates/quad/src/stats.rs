@@ -4,7 +4,7 @@
 //! steps' own counts.
 
 use dualex_cells::QuadMesh;
-use dualex_graph::{Glued, NodeGraph};
+use dualex_graph::Glued;
 use dualex_map::TriMap;
 use dualex_segment::sanitize_report::histogram_json;
 use dualex_segment::stats::SegmentStats;
@@ -101,9 +101,10 @@ impl AsMut<SegmentStats> for QuadStats {
 }
 
 impl QuadStats {
-    /// Fills the output counts from the final graph and mesh.
-    pub fn finish_output(&mut self, graph: &NodeGraph<2>, glued: &Glued<2>, mesh: &QuadMesh) {
-        self.unmatched_sides = graph.unmatched_sides();
+    /// Fills the output counts from the final gluing (its graph's counts)
+    /// and mesh.
+    pub fn finish_output(&mut self, glued: &Glued<2>, mesh: &QuadMesh) {
+        self.unmatched_sides = glued.unmatched_sides;
         self.boundary_loops = glued.boundary_loops;
         self.components = glued.components;
         self.finish_mesh(mesh);
