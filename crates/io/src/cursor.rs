@@ -134,11 +134,7 @@ impl<'a> Cursor<'a> {
     pub(crate) fn slash_pair(&mut self) -> Option<(u64, u64)> {
         self.skip_blank();
         let b: &[u8; 16] = self.bytes.get(self.pos..)?.first_chunk()?;
-        let word = |at: usize| {
-            let mut w = [0; 8];
-            w.copy_from_slice(&b[at..at + 8]);
-            u64::from_le_bytes(w)
-        };
+        let word = |at: usize| crate::decimal::word_at(b, at);
         let (mut v, mut vt) = (0, 0);
         let w = word(0);
         let k = crate::decimal::part_word(w, &mut v);

@@ -144,11 +144,7 @@ struct Mantissa {
 #[inline(always)]
 fn pointed(b: &[u8], sign: usize) -> Option<Mantissa> {
     let body: &[u8; 25] = b.get(sign..)?.first_chunk()?;
-    let word = |at: usize| {
-        let mut w = [0; 8];
-        w.copy_from_slice(&body[at..at + 8]);
-        u64::from_le_bytes(w)
-    };
+    let word = |at: usize| word_at(body, at);
     let w0 = word(0);
     let int = non_digits(w0).trailing_zeros() / 8;
     // (int = 8: the shift by 64 wraps to 0, and byte 0 is a digit)
@@ -241,6 +237,15 @@ fn run(b: &[u8], m: &mut u64) -> usize {
         rest = tail;
     }
     b.len() - rest.len() + digits(rest, m)
+}
+
+/// The eight bytes of `b` from `at` as one little-endian word (the first
+/// byte lowest); `at + 8 ≤ L` (the callers' fixed offsets).
+#[inline(always)]
+pub(crate) fn word_at<const L: usize>(b: &[u8; L], at: usize) -> u64 {
+    let mut w = [0; 8];
+    w.copy_from_slice(&b[at..at + 8]);
+    u64::from_le_bytes(w)
 }
 
 /// Reads the digits that begin the word `w` into `m` (as [`run`]) and

@@ -46,10 +46,10 @@ fn one_based(tok: &[u8]) -> Option<u32> {
     if n == 0 || n > 10 || n != tok.len() {
         return None;
     }
-    u32::try_from(i.checked_sub(1)?).ok()
+    from_one(i)
 }
 
-/// A 1-based index of at most 7 digits made 0-based, or `None` for 0.
+/// A 1-based index made 0-based, or `None` for 0 or past `u32`.
 #[inline]
 fn from_one(i: u64) -> Option<u32> {
     u32::try_from(i.checked_sub(1)?).ok()
