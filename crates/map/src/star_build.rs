@@ -3,7 +3,8 @@
 //! the transitions crossed.
 //!
 //! Input: map, topology (manifold: each vertex star is connected through its
-//! facets), transitions. Output: [`Stars`]; the first entry of each vertex is
+//! facets), transitions (the one back across a facet the inverse of the
+//! one across it, [`crate::transition`]'s invariant). Output: [`Stars`]; the first entry of each vertex is
 //! its reference chart (identity). A vertex is singular when some simplex is
 //! reached with two different rotations; on the boundary when one of its
 //! facets has no neighbour. Vertices used by no simplex have an empty star.
@@ -113,7 +114,7 @@ fn walk<const N: usize, const D: usize>(
         .into_par_iter()
         .map(|(first, e, s, b)| {
             let base = offsets[first] as usize;
-            let mut reached = Vec::new();
+            let (mut reached, mut from) = (Vec::new(), Vec::new());
             let mut apart = None;
             for (i, (sv, bv)) in s.iter_mut().zip(b.iter_mut()).enumerate() {
                 let v = first + i;
@@ -121,7 +122,8 @@ fn walk<const N: usize, const D: usize>(
                 let out = &mut e[lo - base..hi - base];
                 let star = &corners[lo..hi];
                 let one;
-                (*sv, *bv, one) = star_of(topo, trans, star, position, out, &mut reached);
+                (*sv, *bv, one) =
+                    star_of(topo, trans, star, position, out, &mut reached, &mut from);
                 if !one && apart.is_none() {
                     apart = Some(v);
                 }
@@ -141,6 +143,11 @@ fn walk<const N: usize, const D: usize>(
 /// is the rank of the rotation of corner `k`'s entry ([`Rot::rank`]), or
 /// [`UNREACHED`]. Returns
 /// `(singular, boundary, one piece)`.
+///
+/// An entry does not cross back the facet it was reached through
+/// (`from`, per queue slot): that crossing reaches its parent with the
+/// parent's own rotation (the transitions back are the inverses,
+/// [`crate::transition`]'s invariant) and is never singular nor boundary.
 fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
@@ -148,10 +155,14 @@ fn star_of<const N: usize, const D: usize>(
     position: &[u32],
     out: &mut [StarEntry<D>],
     reached: &mut Vec<u8>,
+    from: &mut Vec<u8>,
 ) -> (bool, bool, bool) {
     let (mut singular, mut boundary, mut pieces) = (false, false, 0);
     reached.clear();
     reached.resize(corners.len(), UNREACHED);
+    // a root has no facet it was reached through (N: none)
+    from.clear();
+    from.resize(corners.len(), N as u8);
     let mut len = 0;
     for (k0, &id) in corners.iter().enumerate() {
         if reached[k0] != UNREACHED {
@@ -168,12 +179,18 @@ fn star_of<const N: usize, const D: usize>(
         reached[k0] = Rot::<D>::IDENTITY.rank();
         len += 1;
         while head < len {
-            let e = out[head];
+            let (e, back) = (out[head], from[head] as usize);
             head += 1;
             let (s, c) = (e.simplex as usize, e.corner as usize);
             // the rows of `s`, read once for its facets
             let (adj, steps, nbr) = (&topo.adj[s], &trans.rot[s], &topo.nbr_corner[s]);
-            for f in (0..N).filter(|&f| f != c) {
+            // the facets not crossed: the one opposite the vertex, the one
+            // back (bit N, none, for a root)
+            let skip = 1u32 << c | 1u32 << back;
+            for f in 0..N {
+                if skip >> f & 1 != 0 {
+                    continue;
+                }
                 let n = adj[f] as usize;
                 if adj[f] == NONE {
                     boundary = true;
@@ -197,6 +214,9 @@ fn star_of<const N: usize, const D: usize>(
                     corner,
                     rot,
                 };
+                // the neighbour's facet back to `s`: its corner opposite
+                // (`nbr_corner`'s entry `f`)
+                from[len] = nbr[f][f];
                 reached[k] = rot.rank();
                 len += 1;
             }

@@ -70,13 +70,15 @@ pub(crate) fn derive<const N: usize, const D: usize>(
 ) -> Result<(Transitions<N, D>, TransitionReport), InputError> {
     let ns = map.len();
     // every interior entry is written below, the boundary's stay as they
-    // are: filled in parallel (the pages touched by both threads)
+    // are: the rotations filled in parallel (the pages touched by both
+    // threads), the translations zeroed by the allocator (fresh pages,
+    // first touched by the parallel writes below)
     let mut tr = Transitions {
         rot: (0..ns)
             .into_par_iter()
             .map(|_| [Rot::<D>::IDENTITY; N])
             .collect(),
-        trans: (0..ns).into_par_iter().map(|_| [[0i64; D]; N]).collect(),
+        trans: vec![[[0i64; D]; N]; ns],
     };
     let mut rep = TransitionReport::default();
     let group = Group::<D>::new();
