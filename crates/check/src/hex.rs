@@ -30,6 +30,7 @@
 //! - the volume Euler characteristic is `V − E + F − C` over good cells.
 
 use crate::quad::{check_quad_mesh, QuadReport};
+use crate::tally::Tally;
 use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
 use std::collections::BTreeMap;
@@ -257,12 +258,14 @@ fn edge_stats(edges: &[u64], boundary: &[[u32; 4]], r: &mut HexReport) {
         .flat_map(|q| (0..4).map(move |i| key(q[i], q[(i + 1) % 4])))
         .collect();
     on_boundary.sort_unstable();
+    let mut valences = Tally::default();
     for run in edges.chunk_by(|x, y| x == y) {
         r.edges += 1;
         if on_boundary.binary_search(&run[0]).is_err() {
-            *r.interior_edge_valence.entry(run.len() as u32).or_insert(0) += 1;
+            valences.add(run.len() as u32);
         }
     }
+    valences.into_map(&mut r.interior_edge_valence);
 }
 
 /// VTK index of the corner with coordinate bits `(x, y, z)`.

@@ -25,6 +25,7 @@ mod glued_tests;
 pub mod handover;
 pub mod hex;
 pub mod quad;
+mod tally;
 #[cfg(test)]
 mod test_meshes;
 pub mod topology;

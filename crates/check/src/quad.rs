@@ -19,6 +19,7 @@
 //!   (number of distinct edges at a vertex) are histogrammed separately for
 //!   interior and boundary vertices.
 
+use crate::tally::Tally;
 use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
 use std::collections::{BTreeMap, HashMap};
@@ -118,14 +119,17 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     }
     r.misoriented_edges.sort_unstable();
     r.non_manifold_edges.sort_unstable();
+    let (mut boundary, mut interior) = (Tally::default(), Tally::default());
     for v in (0..n_vertices).filter(|&v| used[v]) {
         let hist = if on_boundary[v] {
-            &mut r.boundary_valence
+            &mut boundary
         } else {
-            &mut r.interior_valence
+            &mut interior
         };
-        *hist.entry(valence[v]).or_insert(0) += 1;
+        hist.add(valence[v]);
     }
+    boundary.into_map(&mut r.boundary_valence);
+    interior.into_map(&mut r.interior_valence);
     r.vertices_used = used.iter().filter(|&&u| u).count();
     r.unused_vertices = n_vertices - r.vertices_used;
     r.boundary_loops = boundary_uf.count_sets((0..n_vertices).filter(|&v| on_boundary[v]));

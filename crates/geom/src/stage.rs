@@ -18,6 +18,7 @@ use crate::quality::{self, cross, sub, unit, HEX_CORNER_EDGES, QUAD_CORNER_EDGES
 use crate::reference::Reference;
 use crate::Options;
 use dualex_cells::cells::{HEX_EDGES, HEX_FACES};
+use rayon::prelude::*;
 
 mod corners;
 mod frames;
@@ -66,17 +67,22 @@ pub fn quads(
             .copied()
             .filter(|&s| (s as usize) < triangles.len())
     };
-    let mut normals = Vec::with_capacity(cells.len());
-    for (q, cell) in cells.iter().enumerate() {
-        let n = match source(q) {
-            Some(s) => tri_normal(s),
-            None => {
+    // the source triangles' normals in parallel; the reference, built
+    // only if a quad has no source, gives the others
+    let sourced: Vec<Option<[f64; 3]>> = (0..cells.len())
+        .into_par_iter()
+        .map(|q| source(q).map(tri_normal))
+        .collect();
+    let normals: Vec<[f64; 3]> = sourced
+        .into_iter()
+        .zip(cells)
+        .map(|(n, cell)| {
+            n.unwrap_or_else(|| {
                 let r = reference.get_or_insert_with(make);
                 r.quad_normal(&quality::corners(positions, cell))
-            }
-        };
-        normals.push(n);
-    }
+            })
+        })
+        .collect();
     let on_boundary = if closed {
         vec![false; positions.len()]
     } else {

@@ -172,17 +172,12 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
         .into_par_iter()
         .map(obj_chunk)
         .collect::<Option<_>>()?;
-    let total = |f: fn(&ObjChunk) -> usize| parts.iter().map(f).sum::<usize>();
-    let mut positions = Vec::with_capacity(total(|c| c.positions.len()));
-    let mut uvs = Vec::with_capacity(total(|c| c.uvs.len()));
-    let nt = total(|c| c.v.len());
+    let nt = parts.iter().map(|c| c.v.len()).sum::<usize>();
     if nt == 0 {
         return None;
     }
-    for c in &parts {
-        positions.extend_from_slice(&c.positions);
-        uvs.extend_from_slice(&c.uvs);
-    }
+    let positions = joined(&parts, |c| &c.positions, [0.0; 3]);
+    let uvs = joined(&parts, |c| &c.uvs, [0.0; 2]);
     let nv = positions.len();
     // every chunk's triangles into their own slices, in parallel: indices
     // checked (in range, distinct), texture coordinates looked up
@@ -199,6 +194,8 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
     let ok = jobs
         .into_par_iter()
         .all(|(c, s, k)| chunk_triangles(c, nv, &uvs, s, k));
+    // the chunks freed on the pool's threads, not after on this one
+    parts.into_par_iter().for_each(drop);
     if !ok {
         return None;
     }
@@ -212,6 +209,22 @@ pub(crate) fn obj_chunked(bytes: &[u8], chunk: usize) -> Option<TriMap> {
         "the OBJ fast path read an invalid map"
     );
     Some(map)
+}
+
+/// The chunks' pieces `of` joined in file order, each copied into its
+/// place in parallel (`zero`: the value the vector starts with).
+fn joined<T: Copy + Send + Sync>(parts: &[ObjChunk], of: fn(&ObjChunk) -> &[T], zero: T) -> Vec<T> {
+    let mut out = vec![zero; parts.iter().map(|c| of(c).len()).sum()];
+    let mut rest = &mut out[..];
+    let mut jobs = Vec::with_capacity(parts.len());
+    for c in parts {
+        let (s, r) = std::mem::take(&mut rest).split_at_mut(of(c).len());
+        jobs.push((s, of(c)));
+        rest = r;
+    }
+    jobs.into_par_iter()
+        .for_each(|(s, src)| s.copy_from_slice(src));
+    out
 }
 
 /// Writes chunk `c`'s triangles into `s` and their texture coordinates
