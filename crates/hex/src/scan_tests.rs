@@ -22,7 +22,7 @@ fn incremental_scan_equals_full_scan() {
         Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
     let stars = Stars::build(&map, &topo, &trans);
     let mut local = LocalMap::new(&map, &topo, &trans);
-    let mut scan = BadScan::new(&map, &stars, &local.coords);
+    let mut scan = BadScan::new(&map, &local.coords);
     assert_eq!(scan.list(), bad_vertices(&map, &local.coords));
     assert!(!scan.list().is_empty());
     let mut rng = SplitMix::new(5);

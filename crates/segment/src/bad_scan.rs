@@ -6,6 +6,14 @@
 //! `k` bad; a function of the simplex's own corners only). Output: per
 //! vertex, whether some incident simplex's mask says it is bad.
 //!
+//! The first scan ([`BadScan::new`]) sets the vertices' flags from the
+//! simplices as it tests them, and gives each test the corners already
+//! flagged (`mask_known(corners, known)`): it may skip the tests that
+//! could only flag those again, and then stores a mask marked [`PARTIAL`]
+//! (its bits a part of the simplex's). The flags are those of a full scan
+//! whatever the order; a partial mask is tested again (with `mask_of`)
+//! before it is read.
+//!
 //! Invariant: after [`BadScan::update`] with the vertices that moved, the
 //! flags equal those of a full scan — only the simplices in the stars of
 //! the moved vertices are tested again, and only the vertices of simplices
@@ -18,11 +26,28 @@
 
 use dualex_map::{SimplexMap, Stars};
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicU8, Ordering::Relaxed};
+
+/// The bit of a stored mask that says its other bits may be only part of
+/// the simplex's mask (above every corner's bit).
+pub const PARTIAL: u8 = 0x80;
+
+/// `mask`, marked [`PARTIAL`] when it lacks a bit of `known` (a test
+/// skipped for `known`'s sake could have set it; with every bit of
+/// `known` in `mask`, each skipped test's bits are in it: the mask is
+/// whole).
+#[inline(always)]
+pub fn partial(mask: u8, known: u8) -> u8 {
+    mask | if known & !mask != 0 { PARTIAL } else { 0 }
+}
 
 /// Bad-vertex flags with the per-simplex masks behind them.
 pub struct BadScan {
     bad: Vec<bool>,
+    /// Per simplex, its mask (possibly [`PARTIAL`]).
     mask: Vec<u8>,
+    /// Whether some mask may be [`PARTIAL`] (before the first update).
+    partial: bool,
     v_stamp: Vec<u32>,
     s_stamp: Vec<u32>,
     epoch: u32,
@@ -31,25 +56,33 @@ pub struct BadScan {
 }
 
 impl BadScan {
-    /// Tests every simplex; `min_task` simplices at least per parallel
-    /// task (below it, splitting costs more than it saves).
+    /// Tests every simplex with `mask_known` (module docs); `min_task`
+    /// simplices at least per parallel task (below it, splitting costs
+    /// more than it saves).
     pub fn new<const N: usize, const D: usize>(
         map: &SimplexMap<N, D>,
-        stars: &Stars<D>,
         coords: &[[[f64; D]; N]],
-        mask_of: impl Fn(&[[f64; D]; N]) -> u8 + Sync,
+        mask_known: impl Fn(&[[f64; D]; N], u8) -> u8 + Sync,
         min_task: usize,
     ) -> Self {
         let nv = map.positions.len();
-        let mask: Vec<u8> = coords
-            .par_iter()
-            .with_min_len(min_task)
-            .map(&mask_of)
-            .collect();
-        let bad = all_bad(stars, &mask, nv, min_task);
+        let flags = new_flags(nv);
+        let mut mask = vec![0u8; coords.len()];
+        // plain loops inside tasks of `min_task` simplices
+        mask.par_chunks_mut(min_task)
+            .zip(map.simplices.par_chunks(min_task))
+            .zip(coords.par_chunks(min_task))
+            .for_each(|((m, simplices), c)| {
+                for ((m, simplex), c) in m.iter_mut().zip(simplices).zip(c) {
+                    *m = flag_bad(simplex, c, &flags, &mask_known);
+                }
+            });
+        let partial = mask.iter().any(|&m| m & PARTIAL != 0);
+        let bad = into_bools(flags);
         BadScan {
             bad,
             mask,
+            partial,
             v_stamp: vec![0; nv],
             s_stamp: vec![0; map.simplices.len()],
             epoch: 0,
@@ -78,21 +111,25 @@ impl BadScan {
         let corners: usize = moved.iter().map(|&v| stars.of(v as usize).len()).sum();
         if corners >= self.mask.len() / 2 {
             // about half the simplices or more: one parallel pass over all
-            // simplices and all vertices (the same masks and flags)
+            // simplices, flagging the corners of every mask (the same masks
+            // and flags)
             let mut is_moved = vec![false; self.bad.len()];
             for &v in moved {
                 is_moved[v as usize] = true;
             }
             let old = std::mem::take(&mut self.mask);
+            let flags = new_flags(self.bad.len());
             self.mask = retest_moved(
                 &map.simplices,
                 coords,
                 old,
                 &is_moved,
+                &flags,
                 mask_of,
                 self.min_task,
             );
-            self.bad = all_bad(stars, &self.mask, self.bad.len(), self.min_task);
+            self.partial = false;
+            self.bad = into_bools(flags);
             return;
         }
         // the simplices whose corners moved
@@ -125,6 +162,17 @@ impl BadScan {
                 }
             }
         }
+        if self.partial {
+            // the partial masks not tested again above: their simplices'
+            // flags are right, but `is_bad` reads their masks
+            self.mask
+                .par_iter_mut()
+                .zip(coords)
+                .with_min_len(self.min_task)
+                .filter(|(m, _)| **m & PARTIAL != 0)
+                .for_each(|(m, c)| *m = mask_of(c));
+            self.partial = false;
+        }
         for w in verts {
             self.bad[w as usize] = is_bad(stars, &self.mask, w as usize);
         }
@@ -141,36 +189,69 @@ fn is_bad<const D: usize>(stars: &Stars<D>, mask: &[u8], v: usize) -> bool {
         .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
 }
 
-/// [`is_bad`] of the vertices `0..nv`, in parallel.
-fn all_bad<const D: usize>(stars: &Stars<D>, mask: &[u8], nv: usize, min_task: usize) -> Vec<bool> {
-    (0..nv)
-        .into_par_iter()
-        .with_min_len(min_task)
-        .map(|v| is_bad(stars, mask, v))
-        .collect()
+/// `n` vertex flags, all clear (1: bad).
+fn new_flags(n: usize) -> Vec<AtomicU8> {
+    (0..n).map(|_| AtomicU8::new(0)).collect()
 }
 
-/// The masks after a move: simplex `s`'s `old[s]`, tested again when one
-/// of its vertices is `moved`; in parallel.
+/// The flags as `bool`s.
+fn into_bools(flags: Vec<AtomicU8>) -> Vec<bool> {
+    flags.into_iter().map(|f| f.into_inner() != 0).collect()
+}
+
+/// The mask of the simplex with vertices `simplex` and corners `c` by
+/// `mask_known`, given its corners already `flags`ged; flags the corners
+/// it makes bad.
+#[inline]
+fn flag_bad<const N: usize, const D: usize>(
+    simplex: &[u32; N],
+    c: &[[f64; D]; N],
+    flags: &[AtomicU8],
+    mask_known: impl Fn(&[[f64; D]; N], u8) -> u8,
+) -> u8 {
+    let mut known = 0u8;
+    for (k, &w) in simplex.iter().enumerate() {
+        known |= flags[w as usize].load(Relaxed) << k;
+    }
+    let m = mask_known(c, known);
+    let new = m & !known & !PARTIAL;
+    if new != 0 {
+        for (k, &w) in simplex.iter().enumerate() {
+            if new >> k & 1 != 0 {
+                flags[w as usize].store(1, Relaxed);
+            }
+        }
+    }
+    m
+}
+
+/// The masks `mask` after a move: simplex `s`'s, tested again when one
+/// of its vertices is `moved` or when it is [`PARTIAL`]; the corners of
+/// every mask `flags`ged; in parallel.
 fn retest_moved<const N: usize, const D: usize>(
     simplices: &[[u32; N]],
     coords: &[[[f64; D]; N]],
-    old: Vec<u8>,
+    mut mask: Vec<u8>,
     moved: &[bool],
+    flags: &[AtomicU8],
     mask_of: impl Fn(&[[f64; D]; N]) -> u8 + Sync,
     min_task: usize,
 ) -> Vec<u8> {
-    simplices
-        .par_iter()
-        .zip(coords)
-        .zip(old)
-        .with_min_len(min_task)
-        .map(|((simplex, c), m)| {
-            if simplex.iter().any(|&w| moved[w as usize]) {
-                mask_of(c)
-            } else {
-                m
+    // plain loops inside tasks of `min_task` simplices
+    mask.par_chunks_mut(min_task)
+        .zip(simplices.par_chunks(min_task))
+        .zip(coords.par_chunks(min_task))
+        .for_each(|((m, simplices), c)| {
+            for ((m, simplex), c) in m.iter_mut().zip(simplices).zip(c) {
+                if *m & PARTIAL != 0 || simplex.iter().any(|&w| moved[w as usize]) {
+                    *m = mask_of(c);
+                }
+                for (k, &w) in simplex.iter().enumerate() {
+                    if *m >> k & 1 != 0 {
+                        flags[w as usize].store(1, Relaxed);
+                    }
+                }
             }
-        })
-        .collect()
+        });
+    mask
 }

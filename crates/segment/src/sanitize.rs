@@ -68,6 +68,13 @@ pub trait Predicates<const N: usize, const D: usize> {
     /// through the grid (a grid point at an endpoint is that endpoint's
     /// problem only), or (3D) a corner of a face through a grid point.
     fn mask(c: &[[f64; D]; N]) -> u8;
+    /// [`Self::mask`] for the first scan, given the corners `known` (bit
+    /// `k`: corner `k`) that other simplices already made bad: a test that
+    /// can only set bits of `known` (or of the mask so far) is skipped.
+    /// The mask when it holds every bit of `known`; otherwise possibly
+    /// only part of it, marked with [`crate::bad_scan::PARTIAL`] (the scan
+    /// tests such a simplex again before its mask is read).
+    fn mask_known(c: &[[f64; D]; N], known: u8) -> u8;
     /// A random vector of length `amp`.
     fn step(rng: &mut SplitMix, amp: f64) -> [f64; D];
     /// The kinds of the singular vertices `left` on isos (2D: `"90_node"`,
@@ -113,7 +120,7 @@ where
         stuck: BTreeSet::new(),
         apart: BTreeSet::new(),
     };
-    let mut scan = Scan::new(map, stars, &local.coords);
+    let mut scan = Scan::new(map, &local.coords);
     let mut bad = scan.list();
     let mut executed: usize = 0;
     for round in 0.. {
@@ -348,21 +355,21 @@ pub fn singular_free_axis<const N: usize, const D: usize>(
     }
 }
 
-/// [`BadScan`] with the dimension's test ([`Predicates::mask`]).
+/// [`BadScan`] with the dimension's tests ([`Predicates::mask_known`] in
+/// the first scan, [`Predicates::mask`] after).
 pub struct Scan(BadScan);
 
 impl Scan {
     /// Tests every simplex.
     pub fn new<const N: usize, const D: usize>(
         map: &SimplexMap<N, D>,
-        stars: &Stars<D>,
         coords: &[[[f64; D]; N]],
     ) -> Self
     where
         Dim<N, D>: Predicates<N, D>,
     {
-        let (mask, min_task) = (<Dim<N, D>>::mask, <Dim<N, D>>::MIN_TASK);
-        Scan(BadScan::new(map, stars, coords, mask, min_task))
+        let (mask, min_task) = (<Dim<N, D>>::mask_known, <Dim<N, D>>::MIN_TASK);
+        Scan(BadScan::new(map, coords, mask, min_task))
     }
 
     /// The bad vertices, in increasing order.

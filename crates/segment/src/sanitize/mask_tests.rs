@@ -6,6 +6,7 @@
 //! points, thin and flat faces, repeated corners, large coordinates.
 
 use super::{Dim, Predicates};
+use crate::bad_scan::PARTIAL;
 use crate::boxes::Boxes;
 use crate::grid::{dist2d_below_eps, grid_point_near_segment, segment_clear_of_grid};
 use crate::grid::{near_int_on, spanned_axes};
@@ -210,4 +211,53 @@ fn mask_equals_oracles_on_adversarial_tets() {
         }
     }
     assert!(found > 10000 && cleared > 100000, "{found} {cleared}");
+}
+
+/// [`Predicates::mask_known`] of `c` under every `known`: no bit the mask
+/// lacks, no bit of the mask lost unless in `known`, and the mask itself
+/// unless marked [`PARTIAL`] (then it lacks a bit of `known`).
+fn check_known<const N: usize, const D: usize>(c: &[[f64; D]; N])
+where
+    Dim<N, D>: Predicates<N, D>,
+{
+    let want = <Dim<N, D>>::mask(c);
+    for known in 0..1u8 << N {
+        let got = <Dim<N, D>>::mask_known(c, known);
+        let bits = got & !PARTIAL;
+        assert_eq!(bits & !want, 0, "{c:?} {known:b}");
+        assert_eq!(want & !(bits | known), 0, "{c:?} {known:b}");
+        if got & PARTIAL == 0 {
+            assert_eq!(got, want, "{c:?} {known:b}");
+        } else {
+            assert_ne!(known & !bits, 0, "{c:?} {known:b}");
+        }
+    }
+}
+
+/// The first scan's test given known corners ([`check_known`]) on the
+/// adversarial tets, and on triangles of the same lattices: on, next to
+/// and off integers and half-integers, edges through grid points.
+#[test]
+fn mask_given_known_corners_keeps_every_bit() {
+    let mut rng = SplitMix::new(31);
+    let mut bad = 0usize;
+    for n in 0..60000 {
+        let c = tet(&mut rng, n);
+        check_known(&c);
+        let c: [[f64; 2]; 3] = std::array::from_fn(|_| {
+            std::array::from_fn(|_| {
+                let x = (rng.unit() * 8.0).floor() * 0.5 + 0.2;
+                match (rng.unit() * 8.0) as u32 {
+                    0 => x.round(),
+                    1 => x.round() + EPS * (rng.unit() * 4.0 - 2.0),
+                    2 => x + 1e-5 * (rng.unit() - 0.5),
+                    3 => x + 0.3,
+                    _ => x,
+                }
+            })
+        });
+        check_known(&c);
+        bad += usize::from(<Dim<3, 2>>::mask(&c) != 0);
+    }
+    assert!(bad > 10000, "{bad}");
 }

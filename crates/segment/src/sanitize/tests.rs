@@ -53,7 +53,7 @@ mod dim2 {
                 .filter(|&v| bad[v as usize])
                 .collect::<Vec<u32>>()
         };
-        let mut scan = BadScan::new(&map, &stars, &local.coords);
+        let mut scan = BadScan::new(&map, &local.coords);
         assert_eq!(scan.list(), full(&local));
         let mut rng = SplitMix::new(9);
         let nv = map.positions.len();
