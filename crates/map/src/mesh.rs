@@ -95,7 +95,7 @@ impl<const N: usize, const D: usize> SimplexMap<N, D> {
     }
 
     /// Whether simplex `s` keeps the invariants of the module docs.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn simplex_ok(&self, s: usize) -> bool {
         let simplex = &self.simplices[s];
         let nv = self.positions.len();
@@ -264,6 +264,33 @@ pub(crate) fn longest_edge<const N: usize, const D: usize>(p: &[[f64; D]; N]) ->
 #[inline]
 pub(crate) fn flat_bound<const D: usize>(len: f64) -> f64 {
     1e-12 * len.powi(D as i32)
+}
+
+/// [`degenerate_with`], without its scale (the largest |coordinate|, a
+/// pass over all of them) when `|det|` lies above a bound of its
+/// tolerance: `S = (max_k |p₀ₖ| + len)·(1 + 2⁻⁴⁰)` is at least every
+/// |coordinate| (a corner differs from `p₀` by at most the longest edge
+/// on each axis; `len` is that edge within a few ulps), `ulp` does not
+/// decrease with its argument and each operation of the tolerance rounds
+/// monotonically, so `|det|` above the tolerance taken with `ulp(S)` is
+/// above the exact one. Otherwise (and for any overflow or NaN, which
+/// fail the comparison) [`degenerate_with`] decides: the same answer.
+#[inline]
+pub(crate) fn degenerate_bounded<const N: usize, const D: usize>(
+    p: &[[f64; D]; N],
+    det: f64,
+    len: f64,
+) -> bool {
+    let mut first = 0.0f64;
+    for x in &p[0] {
+        first = if x.abs() > first { x.abs() } else { first };
+    }
+    let s = (first + len) * (1.0 + 1.0 / (1u64 << 40) as f64);
+    let above = flat_bound::<D>(len).max(8.0 * ulp(s) * len.powi(D as i32 - 1));
+    if det.abs() > above {
+        return false;
+    }
+    degenerate_with(p, det, len)
 }
 
 /// Whether simplex image `p` of determinant `det` and longest edge `len`

@@ -120,7 +120,7 @@ impl Reflect {
         let p = &map.coords[s];
         let len = longest_edge(p);
         let tiny = flat_bound::<3>(len);
-        self.degenerate += usize::from(crate::mesh::degenerate_with(p, det, len));
+        self.degenerate += usize::from(crate::mesh::degenerate_bounded(p, det, len));
         let geo = map.geo_det(s);
         self.geo += geo;
         self.geo_abs += geo.abs();

@@ -5,7 +5,7 @@
 //! and 3 threads.
 
 use super::*;
-use crate::mesh::{degenerate_with, longest_edge};
+use crate::mesh::{degenerate_bounded, degenerate_with, longest_edge};
 use crate::singularity::{is_degenerate, quality};
 use crate::test_maps::{grid, rechart, tet_cube};
 use crate::transition_derive::ulp;
@@ -234,4 +234,51 @@ fn the_shared_degeneracy_test_is_the_old_one() {
         flips += usize::from(is_degenerate(&p));
     }
     assert!(flips > 1000 && flips < 19_000, "{flips}");
+}
+
+#[test]
+fn the_bounded_degeneracy_test_is_the_shared_one() {
+    let mut rng = SplitMix::new(12);
+    let (mut flat, mut near) = (0, 0);
+    for case in 0..40_000 {
+        let far = [0.0, 1.0, -1e6, 1e12, -3e15][case % 5];
+        let size = [1.0, 1e-5, 1e-9, 0.0, 1e3][(case / 5) % 5];
+        let mut p = [[0.0; 3]; 4];
+        for x in p.iter_mut().flatten() {
+            *x = far + size * (2.0 * rng.unit() - 1.0);
+        }
+        match case % 4 {
+            // a corner on an edge: flat
+            0 => p[3] = std::array::from_fn(|k| (p[1][k] + p[2][k]) * 0.5),
+            // the first corner at the origin, the others far
+            1 => p[0] = [0.0; 3],
+            // a corner barely off the face of the others
+            2 => p[3] = std::array::from_fn(|k| (p[1][k] + p[2][k]) * 0.5 + 1e-13 * size),
+            _ => {}
+        }
+        let (det, len) = (det_of(&p), longest_edge(&p));
+        let want = degenerate_with(&p, det, len);
+        assert_eq!(degenerate_bounded(&p, det, len), want, "{p:?}");
+        flat += usize::from(want);
+        near += usize::from(!want && det.abs() <= 1e-9 * len.powi(3));
+    }
+    assert!(flat > 5_000 && flat < 35_000, "{flat}");
+    assert!(near > 0, "{near}");
+}
+
+#[test]
+fn every_non_finite_coordinate_is_found() {
+    let mut m = tet_cube(1);
+    assert!((0..m.len()).all(|s| m.simplex_ok(s)));
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        for (c, k) in (0..4).flat_map(|c| (0..3).map(move |k| (c, k))) {
+            let keep = m.coords[0][c][k];
+            m.coords[0][c][k] = bad;
+            assert!(!m.simplex_ok(0), "{bad} at {c}, {k}");
+            m.coords[0][c][k] = keep;
+        }
+    }
+    m.coords[0][1][2] = f64::MAX;
+    m.coords[0][2][0] = -f64::MAX;
+    assert!(m.simplex_ok(0));
 }
