@@ -87,16 +87,18 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     // combined in facet order (the first error returned is the one of a sequential
     // loop), then written into the batch's simplices in parallel
     let mut tally = Tally::<D>::default();
-    let mut fits: Vec<Owned<N, D>> = Vec::new();
+    let none: Owned<N, D> = [(Rot::IDENTITY, [0; D]); N];
+    let mut fits: Vec<Owned<N, D>> = vec![none; BATCH.min(ns)];
     for lo in (0..ns).step_by(BATCH) {
         let hi = ns.min(lo + BATCH);
-        fits.clear();
-        fits.resize(hi - lo, [(Rot::IDENTITY, [0; D]); N]);
-        let batch = fits
+        // each slot reset by the task that fits it (no serial refill of
+        // the buffer per batch)
+        let batch = fits[..hi - lo]
             .par_iter_mut()
             .enumerate()
             .fold(Tally::default, |mut t, (i, slot)| {
                 let s = lo + i;
+                *slot = none;
                 for (f, out) in slot.iter_mut().enumerate() {
                     if topo.neighbour(s, f).is_some_and(|nf| nf > (s, f)) {
                         *out = t.add(s, f, fit_facet(map, topo, s, f, &group, opts), opts);
@@ -109,7 +111,7 @@ pub(crate) fn derive<const N: usize, const D: usize>(
         if let Some(e) = tally.error.take() {
             return Err(*e);
         }
-        write_batch(topo, &mut tr, &fits, lo);
+        write_batch(topo, &mut tr, &fits[..hi - lo], lo);
     }
     rep.max_residual = tally.worst.map_or(0.0, |w| 0.0f64.max(w.0));
     rep.worst_facet = tally.worst.map(|w| (w.1, w.2));
