@@ -281,13 +281,8 @@ pub(crate) fn degenerate_bounded<const N: usize, const D: usize>(
     det: f64,
     len: f64,
 ) -> bool {
-    let mut first = 0.0f64;
-    for x in &p[0] {
-        first = if x.abs() > first { x.abs() } else { first };
-    }
-    let s = (first + len) * (1.0 + 1.0 / (1u64 << 40) as f64);
-    let above = flat_bound::<D>(len).max(8.0 * ulp(s) * len.powi(D as i32 - 1));
-    if det.abs() > above {
+    let s = (largest_abs(&p[0]) + len) * (1.0 + 1.0 / (1u64 << 40) as f64);
+    if det.abs() > flat_tolerance::<D>(s, len) {
         return false;
     }
     degenerate_with(p, det, len)
@@ -301,13 +296,24 @@ pub(crate) fn degenerate_with<const N: usize, const D: usize>(
     det: f64,
     len: f64,
 ) -> bool {
+    det.abs() <= flat_tolerance::<D>(largest_abs(p.iter().flatten()), len)
+}
+
+/// The largest `|x|` of `xs`, 0 for none (as `scale.max(x.abs())` in
+/// turn).
+#[inline]
+fn largest_abs<'a>(xs: impl IntoIterator<Item = &'a f64>) -> f64 {
     let mut scale = 0.0f64;
-    for c in p {
-        for x in c {
-            // as `scale.max(x.abs())`
-            scale = if x.abs() > scale { x.abs() } else { scale };
-        }
+    for x in xs {
+        scale = if x.abs() > scale { x.abs() } else { scale };
     }
-    let tol = flat_bound::<D>(len).max(8.0 * ulp(scale) * len.powi(D as i32 - 1));
-    det.abs() <= tol
+    scale
+}
+
+/// The flatness tolerance of a simplex image of longest edge `len` whose
+/// coordinates are at most `scale` in size: `max(1e-12·len^D,
+/// 8·ulp(scale)·len^(D−1))`.
+#[inline]
+fn flat_tolerance<const D: usize>(scale: f64, len: f64) -> f64 {
+    flat_bound::<D>(len).max(8.0 * ulp(scale) * len.powi(D as i32 - 1))
 }
