@@ -10,7 +10,8 @@
 //! Invariants: the result does not depend on the number of threads nor on
 //! the chunking: the simplices are cut into at most [`CHUNKS`] chunks,
 //! each counts its corners per vertex, the counts give every chunk its
-//! first slot in each vertex's list (earlier chunks first), then every
+//! first slot in each vertex's list (earlier chunks first; a prefix sum
+//! over blocks of vertices, in parallel), then every
 //! chunk writes its corners in simplex order. Those writes land anywhere
 //! in the list, so they go through relaxed atomic stores (each slot is
 //! written once, read after the parallel pass has joined).
@@ -62,19 +63,8 @@ impl VertexCorners {
                 count
             })
             .collect();
-        // counts → each chunk's first slot per vertex, earlier chunks first
-        let mut offsets = Vec::with_capacity(nv + 1);
-        let mut at = 0u32;
-        offsets.push(0);
-        for v in 0..nv {
-            for start in starts.iter_mut() {
-                let n = start[v];
-                start[v] = at;
-                at += n;
-            }
-            offsets.push(at);
-        }
-        let corners: Vec<AtomicU32> = (0..at as usize)
+        let offsets = first_slots(&mut starts, nv);
+        let corners: Vec<AtomicU32> = (0..offsets[nv] as usize)
             .into_par_iter()
             .map(|_| AtomicU32::new(0))
             .collect();
@@ -131,6 +121,58 @@ impl VertexCorners {
     }
 }
 
+/// Vertices per task of [`first_slots`].
+const PREFIX_BLOCK: usize = 1 << 14;
+
+/// Turns each chunk's counts per vertex (`starts[k][v]`) into its first
+/// slot in the vertex's list, earlier chunks first, and returns the CSR
+/// offsets (`nv + 1`): the sum over vertices, then chunks, in two
+/// parallel passes over blocks of vertices with the blocks' totals
+/// summed in between (the same integers as one serial pass).
+fn first_slots(starts: &mut [Vec<u32>], nv: usize) -> Vec<u32> {
+    let blocks = nv.div_ceil(PREFIX_BLOCK);
+    let range = |b: usize| b * PREFIX_BLOCK..nv.min((b + 1) * PREFIX_BLOCK);
+    let totals: Vec<u32> = (0..blocks)
+        .into_par_iter()
+        .map(|b| {
+            starts
+                .iter()
+                .map(|st| st[range(b)].iter().sum::<u32>())
+                .sum()
+        })
+        .collect();
+    let mut firsts = Vec::with_capacity(blocks);
+    let mut at = 0u32;
+    for t in totals {
+        firsts.push(at);
+        at += t;
+    }
+    // per block, its part of every chunk's counts
+    let mut parts: Vec<Vec<&mut [u32]>> = (0..blocks).map(|_| Vec::new()).collect();
+    for st in starts.iter_mut() {
+        for (b, part) in st[..nv].chunks_mut(PREFIX_BLOCK).enumerate() {
+            parts[b].push(part);
+        }
+    }
+    let mut offsets = vec![0u32; nv + 1];
+    offsets[nv] = at;
+    offsets[..nv]
+        .par_chunks_mut(PREFIX_BLOCK)
+        .zip(parts)
+        .zip(firsts)
+        .for_each(|((off, mut parts), mut at)| {
+            for (i, o) in off.iter_mut().enumerate() {
+                *o = at;
+                for part in parts.iter_mut() {
+                    let n = part[i];
+                    part[i] = at;
+                    at += n;
+                }
+            }
+        });
+    offsets
+}
+
 /// Simplex and corner of corner id `id = s·N + c`.
 #[inline]
 pub fn split<const N: usize>(id: u32) -> (usize, usize) {
@@ -167,7 +209,13 @@ mod tests {
     #[test]
     fn same_lists_as_one_sequential_pass() {
         let mut rng = dualex_util::rng::SplitMix::new(7);
-        for (ns, nv) in [(0usize, 3usize), (5, 9), (70_000, 900), (100_000, 60_000)] {
+        for (ns, nv) in [
+            (0usize, 3usize),
+            (5, 9),
+            (70_000, 900),
+            (100_000, 60_000),
+            (20_000, 40_000),
+        ] {
             let tets: Vec<[u32; 4]> = (0..ns)
                 .map(|_| std::array::from_fn(|_| rng.below(nv) as u32))
                 .collect();

@@ -37,6 +37,60 @@ pub(crate) fn rest_without<const N: usize>(simplex: &[u32; N], f: usize, c: usiz
     (rest, order)
 }
 
+/// Per pair of orders ([`rest_without`], their low 6 bits) of two
+/// half-facets with the same key, the corner map between their simplices
+/// (bit-packed as in `crate::topology_build`'s `mate`): byte `a` holds the
+/// corner of the second for corner `a` of the first, key position by key
+/// position, and the first's apex (the corner its order leaves out) to
+/// the second's. A lookup in place of a loop over the key's positions per
+/// glued pair.
+pub(crate) struct CornerMaps<const N: usize>;
+
+impl<const N: usize> CornerMaps<N> {
+    /// `TABLE[o1][o2]`: the corner map from the order `o1` to `o2`
+    /// (entries of orders that repeat a corner are never read).
+    pub(crate) const TABLE: [[u32; 64]; 64] = {
+        let mut table = [[0u32; 64]; 64];
+        let mut o1 = 0;
+        while o1 < 64 {
+            let mut o2 = 0;
+            while o2 < 64 {
+                table[o1][o2] = Self::corner_map(o1, o2);
+                o2 += 1;
+            }
+            o1 += 1;
+        }
+        table
+    };
+
+    /// [`Self::TABLE`]'s entry of the orders `o1`, `o2`.
+    const fn corner_map(o1: usize, o2: usize) -> u32 {
+        let (mut word, mut used1, mut used2) = (0u32, 0usize, 0usize);
+        let mut i = 0;
+        while i < N - 1 {
+            let (a, b) = (o1 >> (2 * i) & 3, o2 >> (2 * i) & 3);
+            word |= (b as u32) << (8 * a);
+            used1 |= 1 << a;
+            used2 |= 1 << b;
+            i += 1;
+        }
+        let (apex1, apex2) = (Self::left_out(used1), Self::left_out(used2));
+        word | (apex2 as u32) << (8 * apex1)
+    }
+
+    /// The least corner of `0..N` not in the set `used` (0 when none).
+    const fn left_out(used: usize) -> usize {
+        let mut c = 0;
+        while c < N {
+            if used >> c & 1 == 0 {
+                return c;
+            }
+            c += 1;
+        }
+        0
+    }
+}
+
 /// Per apex `f` and least corner `c` of a simplex of `N` corners (3 or
 /// 4): its other corners in increasing order (the second 0 for N = 3),
 /// and the parity of `(c, others…, f)` as a permutation of `0..N`.

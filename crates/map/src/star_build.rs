@@ -24,8 +24,8 @@ use crate::topology::NONE;
 use crate::{InputError, Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
-/// A corner not reached yet by [`star_of`] (no rotation has this rank).
-const UNREACHED: u8 = u8::MAX;
+/// A corner not reached yet by [`star_of`] (no queue slot has this index).
+const UNREACHED: u64 = u64::MAX;
 
 /// Vertices walked by one parallel task.
 const BLOCK: usize = 2048;
@@ -114,7 +114,7 @@ fn walk<const N: usize, const D: usize>(
         .into_par_iter()
         .map(|(first, e, s, b)| {
             let base = offsets[first] as usize;
-            let (mut reached, mut from) = (Vec::new(), Vec::new());
+            let (mut reached, mut done) = (Vec::new(), Vec::new());
             let mut apart = None;
             for (i, (sv, bv)) in s.iter_mut().zip(b.iter_mut()).enumerate() {
                 let v = first + i;
@@ -123,7 +123,7 @@ fn walk<const N: usize, const D: usize>(
                 let star = &corners[lo..hi];
                 let one;
                 (*sv, *bv, one) =
-                    star_of(topo, trans, star, position, out, &mut reached, &mut from);
+                    star_of(topo, trans, star, position, out, &mut reached, &mut done);
                 if !one && apart.is_none() {
                     apart = Some(v);
                 }
@@ -140,29 +140,33 @@ fn walk<const N: usize, const D: usize>(
 /// (more than one only when the topology was not checked; each new
 /// component's first simplex is its own reference chart). `position` (of
 /// [`VertexCorners`]) finds a corner in `corners`; `reached[k]`
-/// is the rank of the rotation of corner `k`'s entry ([`Rot::rank`]), or
-/// [`UNREACHED`]. Returns
+/// is the queue slot of corner `k`'s entry times 256 plus the rank of its
+/// rotation ([`Rot::rank`]), or [`UNREACHED`]. Returns
 /// `(singular, boundary, one piece)`.
 ///
-/// An entry does not cross back the facet it was reached through
-/// (`from`, per queue slot): that crossing reaches its parent with the
-/// parent's own rotation (the transitions back are the inverses,
-/// [`crate::transition`]'s invariant) and is never singular nor boundary.
+/// An entry does not cross the facets set in its mask (`done`, per queue
+/// slot): the one it was reached through, and those through which a
+/// crossing from an entry walked earlier landed on it. Crossing such a
+/// facet back lands on that entry with the rotation it was compared
+/// against (the transitions back are the inverses, [`crate::transition`]'s
+/// invariant): the same comparison again, never boundary, never a new
+/// entry. Each facet between two entries of the star is thus crossed once.
 fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
     corners: &[u32],
     position: &[u32],
     out: &mut [StarEntry<D>],
-    reached: &mut Vec<u8>,
-    from: &mut Vec<u8>,
+    reached: &mut Vec<u64>,
+    done: &mut Vec<u8>,
 ) -> (bool, bool, bool) {
     let (mut singular, mut boundary, mut pieces) = (false, false, 0);
     reached.clear();
     reached.resize(corners.len(), UNREACHED);
-    // a root has no facet it was reached through (N: none)
-    from.clear();
-    from.resize(corners.len(), N as u8);
+    // every slot is written when its entry is queued (no clearing)
+    if done.len() < corners.len() {
+        done.resize(corners.len(), 0);
+    }
     let mut len = 0;
     for (k0, &id) in corners.iter().enumerate() {
         if reached[k0] != UNREACHED {
@@ -176,17 +180,19 @@ fn star_of<const N: usize, const D: usize>(
             corner: c0 as u8,
             rot: Rot::IDENTITY,
         };
-        reached[k0] = Rot::<D>::IDENTITY.rank();
+        reached[k0] = (len as u64) << 8 | u64::from(Rot::<D>::IDENTITY.rank());
+        // a root has no facet it was reached through
+        done[len] = 0;
         len += 1;
         while head < len {
-            let (e, back) = (out[head], from[head] as usize);
+            let (e, mask) = (out[head], done[head]);
             head += 1;
             let (s, c) = (e.simplex as usize, e.corner as usize);
             // the rows of `s`, read once for its facets
             let (adj, steps, nbr) = (&topo.adj[s], &trans.rot[s], &topo.nbr_corner[s]);
-            // the facets not crossed: the one opposite the vertex, the one
-            // back (bit N, none, for a root)
-            let skip = 1u32 << c | 1u32 << back;
+            // the facets not crossed: the one opposite the vertex, those
+            // of the mask
+            let skip = 1u32 << c | u32::from(mask);
             for f in 0..N {
                 if skip >> f & 1 != 0 {
                     continue;
@@ -205,8 +211,14 @@ fn star_of<const N: usize, const D: usize>(
                 };
                 let corner = nbr[f][c];
                 let k = position[n * N + corner as usize] as usize;
-                if reached[k] != UNREACHED {
-                    singular |= reached[k] != rot.rank();
+                // the neighbour's facet back to `s`: its corner opposite
+                // (`nbr_corner`'s entry `f`)
+                let back = 1u8 << nbr[f][f];
+                let q = reached[k];
+                if q != UNREACHED {
+                    singular |= q as u8 != rot.rank();
+                    // not to be compared again from that entry's side
+                    done[(q >> 8) as usize] |= back;
                     continue;
                 }
                 out[len] = StarEntry {
@@ -214,10 +226,8 @@ fn star_of<const N: usize, const D: usize>(
                     corner,
                     rot,
                 };
-                // the neighbour's facet back to `s`: its corner opposite
-                // (`nbr_corner`'s entry `f`)
-                from[len] = nbr[f][f];
-                reached[k] = rot.rank();
+                done[len] = back;
+                reached[k] = (len as u64) << 8 | u64::from(rot.rank());
                 len += 1;
             }
         }

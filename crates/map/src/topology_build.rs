@@ -13,7 +13,8 @@
 //! `u32::MAX`). The half-facets `(key, s·N + f)` are bucketed by their
 //! least vertex, found through that vertex's corners ([`VertexCorners`]),
 //! and each bucket's equal keys are paired through a small hash table
-//! ([`pair_bucket`]); a small bucket, or one with an error, is sorted by
+//! ([`pair_bucket`]), or, in a small bucket, by comparing every two keys
+//! ([`pair_small`]); a bucket with an error is sorted by
 //! the other vertices and the half-facet id and glued in that order, the
 //! order of one global sort, so the first error is the one of the least
 //! key. Each half-facet carries its corners in key order and the parity
@@ -30,7 +31,7 @@ use crate::corners::{split, VertexCorners};
 use crate::error::{ElementKind, MapError};
 #[cfg(test)]
 use crate::facet_order::permutation_parity;
-use crate::facet_order::{rest_without, ODD};
+use crate::facet_order::{rest_without, CornerMaps, ODD};
 use crate::topology::{Topology, NONE};
 use crate::{InputError, SimplexMap};
 use rayon::prelude::*;
@@ -42,8 +43,8 @@ const UNGLUED: u64 = u64::MAX;
 /// Vertices whose facet buckets are sorted by one parallel task.
 const SORT_BLOCK: usize = 4096;
 
-/// Most half-facets of a bucket sorted rather than hashed (a few
-/// comparisons cost less than clearing a table: the buckets of a triangle
+/// Most half-facets of a bucket paired by comparing every two keys
+/// rather than hashed (a few comparisons cost less than clearing a table: the buckets of a triangle
 /// mesh hold 3 on average, those of a tet mesh about 20).
 const SMALL_BUCKET: usize = 8;
 
@@ -117,14 +118,15 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
             let mut boundary = 0;
             for v in b * SORT_BLOCK..nv.min((b + 1) * SORT_BLOCK) {
                 facets_from(map, corners.of(v), v as u32, &mut bucket);
-                let paired = (bucket.len() > SMALL_BUCKET)
-                    .then(|| pair_bucket(map, &bucket, &mate, &mut table))
-                    .flatten();
+                let paired = if bucket.len() > SMALL_BUCKET {
+                    pair_bucket(map, &bucket, &mate, &mut table)
+                } else {
+                    pair_small(map, &bucket, &mate)
+                };
                 boundary += match paired {
                     Some(boundary) => boundary,
                     None => {
-                        // small, or an error (the sorted bucket names the
-                        // first)
+                        // an error (the sorted bucket names the first)
                         bucket.sort_unstable();
                         glue_bucket(map, &bucket, &mate)?
                     }
@@ -178,25 +180,20 @@ fn facets_from<const N: usize, const D: usize>(
         // the facets through corner c whose other vertices are all above v:
         // every one when no corner is below v, the one opposite the only
         // corner below v, none when two are below
-        let (mut below, mut last) = (0, 0);
-        for (j, &w) in simplex.iter().enumerate() {
-            if w < v {
-                below += 1;
-                last = j;
+        // (the corners below v as a bit set: no branch per corner)
+        let below = simplex
+            .iter()
+            .enumerate()
+            .fold(0u32, |m, (j, &w)| m | u32::from(w < v) << j);
+        if below == 0 {
+            for f in (0..N).filter(|&f| f != c) {
+                let (rest, order) = rest_without(simplex, f, c);
+                bucket.push((rest, (s * N + f) as u32, order));
             }
-        }
-        match below {
-            0 => {
-                for f in (0..N).filter(|&f| f != c) {
-                    let (rest, order) = rest_without(simplex, f, c);
-                    bucket.push((rest, (s * N + f) as u32, order));
-                }
-            }
-            1 => {
-                let (rest, order) = rest_without(simplex, last, c);
-                bucket.push((rest, (s * N + last) as u32, order));
-            }
-            _ => {}
+        } else if below & (below - 1) == 0 {
+            let last = below.trailing_zeros() as usize;
+            let (rest, order) = rest_without(simplex, last, c);
+            bucket.push((rest, (s * N + last) as u32, order));
         }
     }
 }
@@ -251,6 +248,40 @@ fn pair_bucket<const N: usize, const D: usize>(
     Some(bucket.len() - 2 * pairs)
 }
 
+/// Glues the pairs of a bucket of at most [`SMALL_BUCKET`] half-facets
+/// (writes `mate`) by comparing each key not yet glued with the keys after
+/// it, without sorting; returns the number of boundary facets, or `None`
+/// as [`pair_bucket`] does. A bucket lists its half-facets by increasing
+/// id ([`facets_from`]), so each pair is glued in the order of one sort.
+fn pair_small<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    bucket: &[Half],
+    mate: &[AtomicU64],
+) -> Option<usize> {
+    debug_assert!(bucket.len() <= SMALL_BUCKET);
+    let (mut glued, mut pairs) = (0u32, 0);
+    for (i, &(key, h, order)) in bucket.iter().enumerate() {
+        if glued >> i & 1 != 0 {
+            continue;
+        }
+        let mut other = None;
+        for (j, second) in bucket.iter().enumerate().skip(i + 1) {
+            if second.0 == key {
+                if other.is_some() {
+                    return None;
+                }
+                other = Some((j, second));
+            }
+        }
+        if let Some((j, &(_, h2, o2))) = other {
+            glued |= 1 << j;
+            glue_pair(map, (h, order), (h2, o2), mate).ok()?;
+            pairs += 1;
+        }
+    }
+    Some(bucket.len() - 2 * pairs)
+}
+
 /// Glues half-facets `h1 = s·N + f` and `h2 = n·N + g` of the same key,
 /// with their orders ([`rest_without`]; writes both `mate`s), or the error
 /// of a misoriented pair: consistent orientation <=> putting `s`'s apex
@@ -270,14 +301,13 @@ fn glue_pair<const N: usize, const D: usize>(
         return Err(opposite_orientations(map, s, f, n));
     }
     // `mate` words: corner `c` of one side to the corner of the other in
-    // byte `c` above the other half-facet's id
-    let mut there = u64::from(h2) | u64::from(g as u8) << (32 + 8 * f);
-    let mut back = u64::from(h1) | u64::from(f as u8) << (32 + 8 * g);
-    for i in 0..N - 1 {
-        let (a, b) = (o1 >> (2 * i) & 3, o2 >> (2 * i) & 3);
-        there |= u64::from(b) << (32 + 8 * a);
-        back |= u64::from(a) << (32 + 8 * b);
-    }
+    // byte `c` above the other half-facet's id (the apexes `f` and `g`
+    // are the corners the orders leave out)
+    debug_assert!(f < N && g < N);
+    let maps = &CornerMaps::<N>::TABLE;
+    let (o1, o2) = (usize::from(o1 & 63), usize::from(o2 & 63));
+    let there = u64::from(h2) | u64::from(maps[o1][o2]) << 32;
+    let back = u64::from(h1) | u64::from(maps[o2][o1]) << 32;
     mate[h1 as usize].store(there, Relaxed);
     mate[h2 as usize].store(back, Relaxed);
     Ok(())

@@ -247,3 +247,45 @@ fn the_first_error_in_key_order_within_a_bucket() {
         "face 0-1-2 is shared by 4 tets (0, 1, 2, 3): non-manifold"
     );
 }
+
+/// Every order of `N` corners ([`rest_without`] of a facet of every
+/// permutation of `N` vertices), with its apex.
+fn all_orders<const N: usize>() -> Vec<(u8, usize)> {
+    let mut out = Vec::new();
+    for code in 0..N.pow(N as u32) {
+        let t: [u32; N] = std::array::from_fn(|k| (code / N.pow(k as u32) % N) as u32 * 10);
+        if (1..N).any(|k| t[..k].contains(&t[k])) {
+            continue;
+        }
+        for f in 0..N {
+            let key = facet_key(&t, f);
+            let c = (0..N).find(|&c| c != f && t[c] == key[0]).expect("least");
+            out.push((rest_without(&t, f, c).1, f));
+        }
+    }
+    out
+}
+
+/// [`CornerMaps`] holds, per pair of orders, the corner map the key's
+/// positions give, apexes included.
+fn corner_maps_agree<const N: usize>() {
+    let orders = all_orders::<N>();
+    assert_eq!(orders.len(), (1..=N).product::<usize>() * N);
+    for &(o1, f) in &orders {
+        for &(o2, g) in &orders {
+            let mut want = u32::from(g as u8) << (8 * f);
+            for i in 0..N - 1 {
+                let (a, b) = (o1 >> (2 * i) & 3, o2 >> (2 * i) & 3);
+                want |= u32::from(b) << (8 * a);
+            }
+            let got = CornerMaps::<N>::TABLE[usize::from(o1 & 63)][usize::from(o2 & 63)];
+            assert_eq!(got, want, "{o1:#b} {o2:#b}");
+        }
+    }
+}
+
+#[test]
+fn corner_maps_agree_3_4() {
+    corner_maps_agree::<3>();
+    corner_maps_agree::<4>();
+}
