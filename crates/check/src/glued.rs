@@ -102,9 +102,8 @@ fn fill_block<const N: usize>(
     lo: usize,
     label: &mut [u32],
 ) -> (usize, Vec<(u32, u32)>) {
-    let hi = lo + label.len();
     let (mut stack, mut cross, mut count) = (Vec::new(), Vec::new(), 0);
-    for s in lo..hi {
+    for s in lo..lo + label.len() {
         if label[s - lo] != 0 {
             continue;
         }
@@ -113,16 +112,14 @@ fn fill_block<const N: usize>(
         stack.push(s as u32);
         while let Some(t) = stack.pop() {
             for &n in &adj[t as usize] {
-                if n == NONE {
-                    continue;
-                }
-                let i = n as usize;
-                if !(lo..hi).contains(&i) {
-                    if n > t {
+                // outside the block (below it, wrapping, or above it) or NONE
+                let i = (n as usize).wrapping_sub(lo);
+                if i >= label.len() {
+                    if n > t && n != NONE {
                         cross.push((t, n));
                     }
-                } else if label[i - lo] == 0 {
-                    label[i - lo] = count;
+                } else if label[i] == 0 {
+                    label[i] = count;
                     stack.push(n);
                 }
             }
