@@ -16,6 +16,9 @@
 //!   facets: the components through shared vertices are those across
 //!   facets.
 //!
+//! The triangles' components are counted by blocks in parallel
+//! ([`facet_components_par`]).
+//!
 //! Tests (`glued_tests.rs`, and the facade's on whole extractions) compare
 //! both ways on maps with boundaries, several components and pinched
 //! vertices.
@@ -52,6 +55,79 @@ pub fn facet_components<const N: usize>(adj: &[[u32; N]]) -> usize {
     count
 }
 
+/// Simplices per block of [`facet_components_par`].
+const BLOCK: usize = 1 << 14;
+
+/// [`facet_components`] on all threads: each block of [`BLOCK`]
+/// simplices is flood-filled on its own (a label per simplex, 4 bytes),
+/// then the blocks' components are joined along the facets between
+/// blocks. For triangle maps, whose labels are small beside the model;
+/// the tets keep the one-thread fill (see above).
+pub fn facet_components_par<const N: usize>(adj: &[[u32; N]]) -> usize {
+    components_by_blocks(adj, BLOCK)
+}
+
+/// [`facet_components_par`] with blocks of `block` simplices (tests vary
+/// it).
+pub(crate) fn components_by_blocks<const N: usize>(adj: &[[u32; N]], block: usize) -> usize {
+    use rayon::prelude::*;
+    let mut label = vec![0u32; adj.len()];
+    // per block: its components, and its facets to a later block
+    let parts: Vec<(usize, Vec<(u32, u32)>)> = label
+        .par_chunks_mut(block)
+        .enumerate()
+        .map(|(b, label)| fill_block(adj, b * block, label))
+        .collect();
+    let mut first = Vec::with_capacity(parts.len());
+    let mut total = 0;
+    for (count, _) in &parts {
+        first.push(total);
+        total += count;
+    }
+    let global = |s: u32| first[s as usize / block] + label[s as usize] as usize - 1;
+    let mut joined = UnionFind::new(total);
+    let merged = parts
+        .iter()
+        .flat_map(|(_, cross)| cross)
+        .filter(|&&(s, t)| joined.union(global(s), global(t)))
+        .count();
+    total - merged
+}
+
+/// One block's flood fill: `label[s - lo]` becomes 1 + the index of the
+/// block-local component of simplex `s`; returns the component count and
+/// the facets `(s, t)` to a simplex `t > s` outside the block.
+fn fill_block<const N: usize>(
+    adj: &[[u32; N]],
+    lo: usize,
+    label: &mut [u32],
+) -> (usize, Vec<(u32, u32)>) {
+    let (mut stack, mut cross, mut count) = (Vec::new(), Vec::new(), 0);
+    for s in lo..lo + label.len() {
+        if label[s - lo] != 0 {
+            continue;
+        }
+        count += 1;
+        label[s - lo] = count;
+        stack.push(s as u32);
+        while let Some(t) = stack.pop() {
+            for &n in &adj[t as usize] {
+                // outside the block (below it, wrapping, or above it) or NONE
+                let i = (n as usize).wrapping_sub(lo);
+                if i >= label.len() {
+                    if n > t && n != NONE {
+                        cross.push((t, n));
+                    }
+                } else if label[i] == 0 {
+                    label[i] = count;
+                    stack.push(n);
+                }
+            }
+        }
+    }
+    (count as usize, cross)
+}
+
 /// The unglued facets, as places `N·s + f` (the facet opposite corner
 /// `f` of `s`), in that order.
 pub fn lone_facets<const N: usize>(adj: &[[u32; N]]) -> Vec<usize> {
@@ -69,10 +145,10 @@ pub fn lone_facets<const N: usize>(adj: &[[u32; N]]) -> Vec<usize> {
 /// [`topology::surface_shape`] of an accepted triangle map (module docs):
 /// `E = (3F + B) / 2` edges for `B` unglued sides, the vertices used
 /// counted, the boundary loops joined along the unglued sides; the
-/// components are counted beside the rest.
+/// components are counted beside the rest, by blocks.
 pub fn surface_shape(n_vertices: usize, triangles: &[[u32; 3]], adj: &[[u32; 3]]) -> Shape {
     let (components, (n_used, lone, loops)) = rayon::join(
-        || facet_components(adj),
+        || facet_components_par(adj),
         || {
             let lone = lone_facets(adj);
             let loops = boundary_loops(n_vertices, triangles, &lone);

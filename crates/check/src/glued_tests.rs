@@ -193,3 +193,31 @@ fn a_closed_surface_and_a_pillow() {
         (2, 4, 0)
     );
 }
+
+#[test]
+fn components_by_blocks_equal_the_flood_fill() {
+    let (mut rng, mut most) = (SplitMix::new(3), 0);
+    for case in 0..200usize {
+        let (_, tris) = grid_piece(
+            2 + (case % 5) as u32,
+            3 + case % 6,
+            1 + (case % 3) as u32,
+            &mut rng,
+        );
+        let (_, tets) = block_piece(1 + (case % 3) as u32, 3 + case % 6, 1, &mut rng);
+        let (Some(a2), Some(a3)) = (adjacency(&tris), adjacency(&tets)) else {
+            continue;
+        };
+        let want = (glued::facet_components(&a2), glued::facet_components(&a3));
+        most = most.max(want.0);
+        for block in [1, 2, 3, 7, 64, 1 << 14] {
+            let got = (
+                glued::components_by_blocks(&a2, block),
+                glued::components_by_blocks(&a3, block),
+            );
+            assert_eq!(got, want, "case {case}, block {block}");
+        }
+        assert_eq!(glued::facet_components_par(&a2), want.0);
+    }
+    assert!(most > 2, "no case of several components: {most}");
+}
