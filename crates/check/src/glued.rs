@@ -216,6 +216,29 @@ pub fn tet_glued(adj: &[[u32; 4]]) -> TetGlued {
 /// from its [`TetGlued`] `g`: the components across faces, the boundary
 /// surface's shape as there.
 pub fn tet_shape(n_vertices: usize, tets: &[[u32; 4]], g: &TetGlued) -> Shape {
-    let b = topology::surface_shape(n_vertices, &topology::tet_boundary_of(tets, &g.lone));
+    let (m, faces) = renumbered(n_vertices, topology::tet_boundary_of(tets, &g.lone));
+    let b = topology::surface_shape(m, &faces);
     topology::volume_shape(g.components, b)
+}
+
+/// `faces` with their vertices numbered `0..m` in order of first use, and
+/// `m`; as they are when a vertex is `n_vertices` or more (not in an
+/// accepted map). A surface's shape (components, Euler characteristic and
+/// boundary loops, over the vertices it uses) does not depend on the
+/// numbering: [`topology::surface_shape`]'s arrays are then as long as
+/// the boundary's vertices, not the volume's (one array of the volume's
+/// here).
+fn renumbered(n_vertices: usize, mut faces: Vec<[u32; 3]>) -> (usize, Vec<[u32; 3]>) {
+    if faces.iter().flatten().any(|&v| v as usize >= n_vertices) {
+        return (n_vertices, faces);
+    }
+    let (mut id, mut m) = (vec![u32::MAX; n_vertices], 0u32);
+    for v in faces.iter_mut().flatten() {
+        let i = &mut id[*v as usize];
+        if *i == u32::MAX {
+            (*i, m) = (m, m + 1);
+        }
+        *v = *i;
+    }
+    (m as usize, faces)
 }

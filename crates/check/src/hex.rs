@@ -112,30 +112,17 @@ pub fn check_hex_mesh(
         ..HexReport::default()
     };
     let good = classify_cells(n_vertices, hexes, &mut r);
-    // three independent passes over the good cells, one after the other
-    // (side by side, their buffers raised block40's peak by 1 976 KiB)
-    let faces = face_uses(n_vertices, &good);
-    let edges = sorted_edges(n_vertices, &good);
+    // independent passes, one after the other (side by side, their
+    // buffers, allocated on the pool's threads, raised the peak); the
+    // faces (the largest buffer, 192 bytes a cell) are gone before the
+    // edges (96) are made
     let (used, components) = used_and_components(n_vertices, &good);
-    let mut boundary_quads = Vec::new();
-    for uses in faces.chunk_by(|x, y| x.0 == y.0) {
-        r.faces += 1;
-        let key = uses[0].0;
-        match uses {
-            [one] => boundary_quads.push(one.1),
-            [a, b] if !opposite(&a.1, &b.1) => r.misoriented_faces.push(key),
-            [_, _] => {}
-            _ => r.non_manifold_faces.push(key),
-        }
-    }
-    r.misoriented_faces.sort_unstable();
-    r.non_manifold_faces.sort_unstable();
-    boundary_quads.sort_unstable();
+    let boundary_quads = face_stats(n_vertices, &good, &mut r);
     r.boundary_faces = boundary_quads.len();
     r.boundary = check_quad_mesh(n_vertices, &boundary_quads);
+    let edges = sorted_edges(n_vertices, &good);
     edge_stats(&edges, &boundary_quads, &mut r);
-    r.vertices_used = used.iter().filter(|&&u| u).count();
-    r.components = components;
+    (r.vertices_used, r.components) = (used, components);
     r.euler = r.vertices_used as i64 - r.edges as i64 + r.faces as i64 - good.len() as i64;
     if let Some(p) = positions {
         r.missing_positions = p.len() < n_vertices;
@@ -170,6 +157,28 @@ fn face_key(h: &[u32; 8], f: &[usize; 4]) -> [u32; 4] {
     let mut k = f.map(|i| h[i]);
     k.sort_unstable();
     k
+}
+
+/// The faces of the cells (vertices below `n`, [`face_uses`]) counted
+/// into `r` (faces, misoriented and non-manifold ones, sorted); returns
+/// the boundary faces (one cell), as outward cycles, sorted.
+fn face_stats(n: usize, cells: &[[u32; 8]], r: &mut HexReport) -> Vec<[u32; 4]> {
+    let faces = face_uses(n, cells);
+    let mut boundary_quads = Vec::new();
+    for uses in faces.chunk_by(|x, y| x.0 == y.0) {
+        r.faces += 1;
+        let key = uses[0].0;
+        match uses {
+            [one] => boundary_quads.push(one.1),
+            [a, b] if !opposite(&a.1, &b.1) => r.misoriented_faces.push(key),
+            [_, _] => {}
+            _ => r.non_manifold_faces.push(key),
+        }
+    }
+    r.misoriented_faces.sort_unstable();
+    r.non_manifold_faces.sort_unstable();
+    boundary_quads.sort_unstable();
+    boundary_quads
 }
 
 /// Every face of every cell (vertices below `n`) as (sorted vertices,
@@ -234,9 +243,9 @@ fn sorted_edges(n: usize, cells: &[[u32; 8]]) -> Vec<u64> {
     edges
 }
 
-/// The vertices used by the cells, and the cells' connected components
-/// (through shared vertices).
-fn used_and_components(n_vertices: usize, cells: &[[u32; 8]]) -> (Vec<bool>, usize) {
+/// The number of vertices used by the cells, and of the cells' connected
+/// components (through shared vertices).
+fn used_and_components(n_vertices: usize, cells: &[[u32; 8]]) -> (usize, usize) {
     let mut used = vec![false; n_vertices];
     let mut uf = UnionFind::new(n_vertices);
     for h in cells {
@@ -246,7 +255,7 @@ fn used_and_components(n_vertices: usize, cells: &[[u32; 8]]) -> (Vec<bool>, usi
         }
     }
     let components = uf.count_sets((0..n_vertices).filter(|&v| used[v]));
-    (used, components)
+    (used.iter().filter(|&&u| u).count(), components)
 }
 
 /// Edge count and the valence histogram of interior edges, from the

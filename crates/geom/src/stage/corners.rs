@@ -13,6 +13,7 @@ use super::{Input, Report, FLAT, MESH_CORNER_ANGLE};
 use crate::constraint::{Constraints, Kind, Role};
 use crate::quality::{self, norm, sub};
 use crate::reference::Reference;
+use rayon::prelude::*;
 
 /// Step 3: every boundary vertex onto the input's boundary (to 1e-9 of
 /// the bounding box; a vertex fixed at a corner of the curves exactly
@@ -33,15 +34,20 @@ pub(super) fn onto_boundary<const D: usize, const K: usize>(
     let exact = 1e-9 * r.diagonal;
     mesh_corners_to_input_corners(x, input, r, around, cons, rep.mean_edge);
     bind_to_arcs(x, input, r, cons, tol.max(1e-9 * r.diagonal));
-    for v in 0..x.len() {
-        if !input.on_boundary[v] {
-            continue;
-        }
-        let q = match cons.kind[v] {
+    // the boundary vertices' targets found in parallel (each query reads
+    // only its own vertex's position and foot cache), applied in order;
+    // arrays as long as the boundary only (the stage holds the peak)
+    let boundary: Vec<usize> = (0..x.len()).filter(|&v| input.on_boundary[v]).collect();
+    let onto: Vec<[f64; 3]> = {
+        let cons = &*cons;
+        let target = |v: usize| match cons.kind[v] {
             // a vertex fixed at a corner of the curves: exactly there
             Kind::Fixed => r.nearest_corner(x[v], tol, f64::INFINITY).unwrap_or(x[v]),
             _ => cons.project(r, v, x[v]),
         };
+        boundary.par_iter().map(|&v| target(v)).collect()
+    };
+    for (&v, q) in boundary.iter().zip(onto) {
         let d = norm(sub(q, x[v]));
         rep.boundary_distance[0] = rep.boundary_distance[0].max(d);
         if d > exact {
