@@ -74,6 +74,35 @@ pub(crate) fn corner_across<const D: usize>(
     rho: &Rot<D>,
     code: usize,
 ) -> Option<usize> {
+    if rho.is_identity() {
+        return corner_across_unrotated::<D>(s_dir, t_dir, code);
+    }
+    corner_across_rotated(s_dir, t_dir, rho, code)
+}
+
+/// [`corner_across`] with the identity (the common pair inside one
+/// chart), without the rotation's tables: each axis but `t`'s keeps its
+/// bit, `t`'s axis gets `t`'s side; `None` when `s` and `t` are on
+/// different axes (then `s`'s axis, not `t`'s, keeps its bit, and `t`'s
+/// axis is taken twice).
+#[inline]
+pub(crate) fn corner_across_unrotated<const D: usize>(
+    s_dir: usize,
+    t_dir: usize,
+    code: usize,
+) -> Option<usize> {
+    let bit = 1usize << axis(t_dir);
+    (axis(s_dir) == axis(t_dir)).then(|| code & !bit | if positive(t_dir) { bit } else { 0 })
+}
+
+/// [`corner_across`] for any rotation `rho`: the rule of the module docs,
+/// axis by axis.
+pub(crate) fn corner_across_rotated<const D: usize>(
+    s_dir: usize,
+    t_dir: usize,
+    rho: &Rot<D>,
+    code: usize,
+) -> Option<usize> {
     let mut used = 1usize << axis(t_dir);
     let mut out = if positive(t_dir) { used } else { 0 };
     for a in (0..D).filter(|&a| a != axis(s_dir)) {

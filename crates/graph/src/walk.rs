@@ -72,24 +72,48 @@ pub fn walk_all<const D: usize>(
     use rayon::prelude::*;
     // walks are independent: in parallel, collected in (node, direction)
     // order, so the result does not depend on the thread count
-    let walked: Vec<(End<D>, usize)> = (0..n_nodes * 2 * D)
+    let (mut ends, mut steps) = (Vec::new(), Vec::new());
+    (0..n_nodes * 2 * D)
         .into_par_iter()
         .with_min_len(1024)
         .map(|i| walk(i / (2 * D), i % (2 * D)))
-        .collect();
-    let mut rep = TraceReport::default();
-    let mut ends = Vec::with_capacity(walked.len());
-    for (end, steps) in walked {
-        rep.max_steps = rep.max_steps.max(steps);
-        match end {
-            End::Node { .. } => rep.to_node += 1,
-            End::Boundary => rep.to_boundary += 1,
-            End::Inconsistent => rep.inconsistent += 1,
-            End::Loop => rep.loops += 1,
-        }
-        ends.push(end);
-    }
+        .unzip_into_vecs(&mut ends, &mut steps);
+    let (counts, max_steps) = tally(&ends, &steps);
+    let [to_node, to_boundary, inconsistent, loops] = counts;
+    let rep = TraceReport {
+        to_node,
+        to_boundary,
+        inconsistent,
+        loops,
+        max_steps,
+    };
     (ends, rep)
+}
+
+/// How many `ends` are of each kind (node, boundary, inconsistent, loop),
+/// and the most `steps` of a walk; in parallel, per chunk.
+fn tally<const D: usize>(ends: &[End<D>], steps: &[usize]) -> ([usize; 4], usize) {
+    use rayon::prelude::*;
+    const CHUNK: usize = 4096;
+    ends.par_chunks(CHUNK)
+        .zip(steps.par_chunks(CHUNK))
+        .map(|(ends, steps)| {
+            let mut counts = [0; 4];
+            for end in ends {
+                let kind = match end {
+                    End::Node { .. } => 0,
+                    End::Boundary => 1,
+                    End::Inconsistent => 2,
+                    End::Loop => 3,
+                };
+                counts[kind] += 1;
+            }
+            (counts, steps.iter().copied().max().unwrap_or(0))
+        })
+        .reduce(
+            || ([0; 4], 0),
+            |(a, m), (b, n)| (std::array::from_fn(|k| a[k] + b[k]), m.max(n)),
+        )
 }
 
 /// What linking the walks' ends found.

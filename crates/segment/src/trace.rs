@@ -120,7 +120,9 @@ where
         }
         let (t2, e2, r) = (rows.adj[e] as usize, rows.facet[e] as usize, rows.rot[e]);
         let mut line2 = carry(&line, &r, &local.trans.trans[t][e]);
-        rho = rho.then(&r);
+        if !r.is_identity() {
+            rho = rho.then(&r);
+        }
         let next = Rows::of(local, topo, t2);
         let p = &local.coords[t2];
         let crossed = Dim::<N, D>::crossed(p, &line2);
@@ -176,6 +178,14 @@ impl<const N: usize, const D: usize> Rows<N, D> {
 /// The line in the neighbour's chart across a transition `(r, tr)`: the
 /// fixed integers carried exactly, the moving axis rotated.
 fn carry<const D: usize>(line: &Line<D>, r: &Rot<D>, tr: &[i64; D]) -> Line<D> {
+    if r.is_identity() {
+        // the common transition inside one chart: no table to read
+        let mut val = line.val;
+        for (k, (v, t)) in val.iter_mut().zip(tr).enumerate() {
+            *v = if k == line.axis { 0 } else { *v + t };
+        }
+        return Line { val, ..*line };
+    }
     let pi = r.apply_i(&line.val);
     let axis = r.apply_dir(line.dir()) >> 1;
     let mut val = [0i64; D];

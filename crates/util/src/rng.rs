@@ -6,15 +6,33 @@
 #[derive(Clone, Debug)]
 pub struct SplitMix(u64);
 
+/// What each draw adds to the state.
+const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
+
 impl SplitMix {
     /// A generator from a seed.
     pub fn new(seed: u64) -> Self {
-        SplitMix(seed ^ 0x9E37_79B9_7F4A_7C15)
+        SplitMix(seed ^ GOLDEN)
+    }
+
+    /// The generator `n` draws ([`Self::next_u64`]) ahead: each draw adds
+    /// one constant to the state, so this is one multiplication (to draw
+    /// from many places of one sequence in parallel).
+    pub fn ahead(&self, n: u64) -> Self {
+        SplitMix(self.0.wrapping_add(n.wrapping_mul(GOLDEN)))
+    }
+
+    /// How many draws `f` takes from a copy of this generator, if at most
+    /// `max`.
+    pub fn draws_of(&self, max: u64, f: impl FnOnce(&mut SplitMix)) -> Option<u64> {
+        let mut copy = self.clone();
+        f(&mut copy);
+        (0..=max).find(|&n| self.ahead(n).0 == copy.0)
     }
 
     /// Next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        self.0 = self.0.wrapping_add(GOLDEN);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
@@ -53,5 +71,42 @@ impl SplitMix {
             let j = self.below(i + 1);
             v.swap(i, j);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::SplitMix;
+
+    /// [`SplitMix::ahead`] lands where as many draws land, and
+    /// [`SplitMix::draws_of`] counts them.
+    #[test]
+    fn ahead_equals_drawing() {
+        let rng = SplitMix::new(7);
+        for n in 0..20u64 {
+            let mut drawn = rng.clone();
+            for _ in 0..n {
+                drawn.next_u64();
+            }
+            assert_eq!(rng.ahead(n).next_u64(), drawn.next_u64(), "{n}");
+        }
+        assert_eq!(
+            rng.draws_of(4, |r| {
+                r.angle();
+            }),
+            Some(1)
+        );
+        assert_eq!(
+            rng.draws_of(4, |r| {
+                r.direction();
+            }),
+            Some(2)
+        );
+        assert_eq!(
+            rng.draws_of(1, |r| {
+                r.direction();
+            }),
+            None
+        );
     }
 }

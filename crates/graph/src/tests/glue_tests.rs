@@ -1,7 +1,7 @@
 //! Gluing: regular grids, rotated charts, boundary and components.
 
 use super::support::{assert_oriented, assert_same_partition, counts, grid_counts};
-use crate::glue::{corner_across, corners_on};
+use crate::glue::{corner_across, corner_across_rotated, corner_across_unrotated, corners_on};
 use crate::ids::Node;
 use crate::testgrid::{random_rotations, rotate_charts, rotate_corner, GridSpec};
 use crate::NodeGraph;
@@ -196,4 +196,27 @@ fn boundary_is_counted_on_the_graph_not_the_mesh() {
     let c = counts(&gl);
     assert_eq!((gl.n_vertices, c.e, c.euler), (4, 4, 2));
     assert_eq!((gl.unmatched_sides, gl.boundary_loops), (4, 2));
+}
+
+/// The identity's shortcut of `corner_across` answers as the rule axis by
+/// axis does, for every pair of directions and every corner on `s`'s
+/// side, in both dimensions.
+fn unrotated_corners_follow_the_rule<const D: usize>() {
+    for s_dir in 0..2 * D {
+        for t_dir in 0..2 * D {
+            for code in corners_on::<D>(s_dir) {
+                assert_eq!(
+                    corner_across_unrotated::<D>(s_dir, t_dir, code),
+                    corner_across_rotated(s_dir, t_dir, &Rot::<D>::IDENTITY, code),
+                    "D = {D}, {s_dir} -> {t_dir}, corner {code}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn unrotated_corners_follow_the_rule_2d_3d() {
+    unrotated_corners_follow_the_rule::<2>();
+    unrotated_corners_follow_the_rule::<3>();
 }

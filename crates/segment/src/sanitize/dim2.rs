@@ -93,6 +93,16 @@ fn tri_mask(c: &[[f64; 2]; 3], known: u8) -> u8 {
             near_int_on(c, axes.trailing_zeros() as usize)
         };
     }
+    both_axes_mask(c, known, small)
+}
+
+/// [`tri_mask`] of a triangle that spans both axes, `small` as
+/// [`spanned_axes_small`] finds: the corners' boxes, then the edges.
+///
+/// Out of line: its many live values (spilled to the stack) and saved
+/// registers stay off the early answers, about half the triangles.
+#[inline(never)]
+fn both_axes_mask(c: &[[f64; 2]; 3], known: u8, small: bool) -> u8 {
     let boxes = Boxes::of_known(c, small);
     let mut mask = boxes.near_any(c);
     for k in 0..3 {

@@ -395,3 +395,34 @@ mod dim3 {
         assert_eq!(rep.leftovers(), None, "{rep:?}");
     }
 }
+
+/// The steps of a round drawn at their places ([`SplitMix::ahead`], as
+/// `Mover::round` draws them in parallel) are those drawn one after the
+/// other, in both dimensions.
+mod steps_ahead {
+    use crate::sanitize::{Dim, Predicates, STEP_DRAWS};
+    use dualex_util::rng::SplitMix;
+
+    fn same_steps<const N: usize, const D: usize>()
+    where
+        Dim<N, D>: Predicates<N, D>,
+    {
+        let step = <Dim<N, D>>::step;
+        let rng = SplitMix::new(5);
+        let per = rng.draws_of(STEP_DRAWS, |r| {
+            step(r, 1e-5);
+        });
+        let per = per.expect("a step draws at most STEP_DRAWS values");
+        let mut in_turn = rng.clone();
+        for i in 0..100 {
+            let want = step(&mut in_turn, 1e-5);
+            assert_eq!(step(&mut rng.ahead(i * per), 1e-5), want, "step {i}");
+        }
+    }
+
+    #[test]
+    fn steps_drawn_ahead_are_drawn_in_turn() {
+        same_steps::<3, 2>();
+        same_steps::<4, 3>();
+    }
+}
