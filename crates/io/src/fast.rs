@@ -36,7 +36,7 @@ use dualex_map::{TetMap, TriMap};
 use rayon::prelude::*;
 
 /// Target chunk size in bytes.
-const CHUNK: usize = 1 << 18;
+const CHUNK: usize = 1 << 20;
 
 /// A positive decimal integer token (digits only, as `str::parse::<u64>`
 /// without sign) minus one, or `None`.
