@@ -37,8 +37,7 @@
 //! - [`holonomy`]: rotation around a vertex (2D) or an edge (3D);
 //! - [`singularity`]: singular vertices (2D) and edges (3D), their indices;
 //!   reverted and degenerate simplices;
-//! - [`weld`]: welding of cut meshes (vertices duplicated along seams),
-//!   the vertices at one position found by `coincident` (private);
+//! - [`weld`]: welding of cut meshes (vertices duplicated along seams);
 //! - [`report`]: `inspect`, all of the above in one report;
 //! - `test_maps` (tests, and the `test-maps` feature for the tests of the
 //!   crates above): small generated maps and tiny readers of the shared
@@ -49,7 +48,6 @@
 #![warn(missing_docs)]
 
 mod angle_sum;
-mod coincident;
 mod components;
 pub mod corners;
 pub mod error;

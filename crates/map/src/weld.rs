@@ -11,7 +11,6 @@
 //! into a simplex is left unmerged. Afterwards unused vertices are dropped;
 //! simplices keep their order and their per-corner coordinates.
 
-use crate::coincident::shared_positions;
 use crate::corners::{split, VertexCorners};
 use crate::topology_build::sorted_facets;
 use crate::SimplexMap;
@@ -24,6 +23,11 @@ pub struct WeldReport {
     pub welded_vertices: usize,
     /// Vertices used by no simplex, dropped.
     pub dropped_vertices: usize,
+}
+
+/// Bits of a position with `-0.0` read as `0.0`.
+fn position_key(p: &[f64; 3]) -> [u64; 3] {
+    p.map(|x| if x == 0.0 { 0 } else { x.to_bits() })
 }
 
 /// Merges coincident boundary vertices (see the module docs).
@@ -40,47 +44,49 @@ pub fn weld_owned<const N: usize, const D: usize>(
     map: SimplexMap<N, D>,
 ) -> (SimplexMap<N, D>, WeldReport) {
     let pairs = coincident_boundary_pairs(&map);
-    if pairs.is_empty() && every_vertex_used(&map.simplices, map.positions.len()) {
+    let mut used = vec![false; map.positions.len()];
+    for simplex in &map.simplices {
+        for &v in simplex {
+            used[v as usize] = true;
+        }
+    }
+    if pairs.is_empty() && !used.contains(&false) {
         return (map, WeldReport::default());
     }
     weld_pairs(&map, &pairs)
 }
 
-/// Whether every vertex is a corner of some simplex (the flags are set in
-/// parallel; each store is a plain relaxed write of `true`).
-fn every_vertex_used<const N: usize>(simplices: &[[u32; N]], nv: usize) -> bool {
-    use rayon::prelude::*;
-    use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
-    let used: Vec<AtomicBool> = (0..nv).map(|_| AtomicBool::new(false)).collect();
-    simplices.par_iter().with_min_len(4096).for_each(|simplex| {
-        for &v in simplex {
-            used[v as usize].store(true, Relaxed);
-        }
-    });
-    used.iter().all(|u| u.load(Relaxed))
-}
-
 /// Pairs of boundary vertices at exactly the same position (consecutive
 /// in position order). The vertices sharing a position are found first,
-/// over all vertices ([`shared_positions`]): the boundary, a walk over the
+/// over all vertices (a parallel sort): the boundary, a walk over the
 /// simplices, is found only when some exist (none in a mesh whose seams
 /// are in its texture coordinates only, as OBJ's `v/vt`).
 fn coincident_boundary_pairs<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> Vec<(u32, u32)> {
-    let shared = shared_positions(&map.positions);
+    use rayon::prelude::*;
+    let nv = map.positions.len();
+    let mut by_pos: Vec<([u64; 3], u32)> = (0..nv)
+        .into_par_iter()
+        .map(|v| (position_key(&map.positions[v]), v as u32))
+        .collect();
+    by_pos.par_sort_unstable();
+    let shared: Vec<&[([u64; 3], u32)]> = by_pos
+        .chunk_by(|a, b| a.0 == b.0)
+        .filter(|g| g.len() > 1)
+        .collect();
     if shared.is_empty() {
         return Vec::new();
     }
-    let boundary = boundary_vertices(&map.simplices, map.positions.len());
+    let boundary = boundary_vertices(&map.simplices, nv);
     let mut pairs = Vec::new();
-    for (_, group) in shared {
-        let mut on = group.iter().filter(|&&v| boundary[v as usize]);
+    for group in shared {
+        let mut on = group.iter().filter(|x| boundary[x.1 as usize]);
         let Some(mut last) = on.next() else {
             continue;
         };
         for x in on {
-            pairs.push((*last, *x));
+            pairs.push((last.1, x.1));
             last = x;
         }
     }
@@ -206,7 +212,6 @@ fn unmerge_conflicts<const N: usize, const D: usize>(map: &SimplexMap<N, D>, uf:
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::coincident::position_key;
     use crate::{Topology, TriMap};
 
     /// A unit square of 2×1 cells cut along x = 1: the middle column of
