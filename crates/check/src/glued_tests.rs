@@ -60,6 +60,17 @@ fn stars_connected<const N: usize>(n: usize, simplices: &[[u32; N]], adj: &[[u32
     })
 }
 
+/// The grid piece of test case `case`: sizes 2–6, kept eighths 3–8,
+/// 1–3 copies, cycling with the case.
+fn grid_case(case: usize, rng: &mut SplitMix) -> (usize, Vec<[u32; 3]>) {
+    grid_piece(
+        2 + (case % 5) as u32,
+        3 + case % 6,
+        1 + (case % 3) as u32,
+        rng,
+    )
+}
+
 /// Two triangles per cell of a `k × k` grid, each cell kept with
 /// probability `keep` in 1/8, the grid repeated `copies` times apart.
 fn grid_piece(k: u32, keep: usize, copies: u32, rng: &mut SplitMix) -> (usize, Vec<[u32; 3]>) {
@@ -110,12 +121,7 @@ fn block_piece(k: u32, keep: usize, copies: u32, rng: &mut SplitMix) -> (usize, 
 fn surface_shape_equals_the_checkers() {
     let (mut rng, mut compared, mut most) = (SplitMix::new(1), 0, (0, 0));
     for case in 0..400usize {
-        let (n, tris) = grid_piece(
-            2 + (case % 5) as u32,
-            3 + case % 6,
-            1 + (case % 3) as u32,
-            &mut rng,
-        );
+        let (n, tris) = grid_case(case, &mut rng);
         let Some(adj) = adjacency(&tris) else {
             continue;
         };
@@ -198,12 +204,7 @@ fn a_closed_surface_and_a_pillow() {
 fn components_by_blocks_equal_the_flood_fill() {
     let (mut rng, mut most) = (SplitMix::new(3), 0);
     for case in 0..200usize {
-        let (_, tris) = grid_piece(
-            2 + (case % 5) as u32,
-            3 + case % 6,
-            1 + (case % 3) as u32,
-            &mut rng,
-        );
+        let (_, tris) = grid_case(case, &mut rng);
         let (_, tets) = block_piece(1 + (case % 3) as u32, 3 + case % 6, 1, &mut rng);
         let (Some(a2), Some(a3)) = (adjacency(&tris), adjacency(&tets)) else {
             continue;
