@@ -57,12 +57,12 @@ pub fn facet_components<const N: usize>(adj: &[[u32; N]]) -> usize {
 const BLOCK: usize = 1 << 14;
 
 /// [`facet_components`] on all threads: each block of [`BLOCK`]
-/// simplices is flood-filled on its own (a block-local label per
-/// simplex, 1 byte as the reference's `bool`: the first pass of 1M tets
-/// holds it at its peak), then the blocks' components are joined along
-/// the facets between blocks, each pair of components once. A block of
-/// more components than a byte numbers (a very fragmented input) falls
-/// back to the reference.
+/// simplices is flood-filled on its own (a byte per simplex, as the
+/// reference's `bool`: the first pass of 1M tets holds it at its peak;
+/// [`fill_block`]), then the blocks' components are joined along the
+/// facets from the simplices marked there to later blocks, each pair of
+/// components once. A block of more components than the byte numbers (a
+/// very fragmented input) falls back to the reference.
 pub fn facet_components_par<const N: usize>(adj: &[[u32; N]]) -> usize {
     components_by_blocks(adj, BLOCK)
 }
@@ -87,10 +87,11 @@ pub(crate) fn components_by_blocks<const N: usize>(adj: &[[u32; N]], block: usiz
         first.push(total);
         total += count;
     }
-    let global = |s: usize| first[s / block] + usize::from(label[s]) - 1;
-    let pairs: Vec<Vec<(usize, usize)>> = (0..counts.len())
-        .into_par_iter()
-        .map(|b| later_pairs(adj, b * block..adj.len().min((b + 1) * block), &global))
+    let global = |s: usize| first[s / block] + usize::from(label[s] & !LATER) - 1;
+    let pairs: Vec<Vec<(usize, usize)>> = label
+        .par_chunks(block)
+        .enumerate()
+        .map(|(b, marks)| later_pairs(adj, b * block, marks, &global))
         .collect();
     let mut joined = UnionFind::new(total);
     let merged = pairs
@@ -101,25 +102,38 @@ pub(crate) fn components_by_blocks<const N: usize>(adj: &[[u32; N]], block: usiz
     total - merged
 }
 
+/// The bit of a [`fill_block`] label marking a simplex with a facet to a
+/// later block.
+const LATER: u8 = 0x80;
+
 /// One block's flood fill: `label[s - lo]` becomes 1 + the index of the
-/// block-local component of simplex `s`; returns the component count, or
-/// `None` past 255 components.
+/// block-local component of simplex `s`, with [`LATER`] set when `s` has
+/// a facet to a simplex of a later block; returns the component count,
+/// or `None` past 127 components.
 fn fill_block<const N: usize>(adj: &[[u32; N]], lo: usize, label: &mut [u8]) -> Option<usize> {
     let (mut stack, mut count) = (Vec::new(), 0u8);
-    for s in lo..lo + label.len() {
+    let hi = lo + label.len();
+    for s in lo..hi {
         if label[s - lo] != 0 {
             continue;
         }
-        count = count.checked_add(1)?;
+        count += 1;
+        if count >= LATER {
+            return None;
+        }
         label[s - lo] = count;
         stack.push(s as u32);
         while let Some(t) = stack.pop() {
             for &n in &adj[t as usize] {
                 // outside the block (below it, wrapping, or above it) or NONE
                 let i = (n as usize).wrapping_sub(lo);
-                if i < label.len() && label[i] == 0 {
-                    label[i] = count;
-                    stack.push(n);
+                if i < label.len() {
+                    if label[i] == 0 {
+                        label[i] = count;
+                        stack.push(n);
+                    }
+                } else if n != NONE && n as usize >= hi {
+                    label[t as usize - lo] |= LATER;
                 }
             }
         }
@@ -129,16 +143,20 @@ fn fill_block<const N: usize>(adj: &[[u32; N]], lo: usize, label: &mut [u8]) -> 
 
 /// The distinct pairs `(component of s, component of t)` (`component`:
 /// global indices) of the facets from a simplex `s` of the block
-/// `range` to a simplex `t` of a later block, sorted.
+/// starting at `lo` (`marks`: its labels, [`LATER`] set on the simplices
+/// to look at) to a simplex `t` of a later block, sorted.
 fn later_pairs<const N: usize>(
     adj: &[[u32; N]],
-    range: std::ops::Range<usize>,
+    lo: usize,
+    marks: &[u8],
     component: &(impl Fn(usize) -> usize + Sync),
 ) -> Vec<(usize, usize)> {
+    let hi = lo + marks.len();
     let mut pairs = Vec::new();
-    for s in range.clone() {
+    for (i, _) in marks.iter().enumerate().filter(|(_, &m)| m & LATER != 0) {
+        let s = lo + i;
         for &n in &adj[s] {
-            if n != NONE && n as usize >= range.end {
+            if n != NONE && n as usize >= hi {
                 let pair = (component(s), component(n as usize));
                 if pairs.last() != Some(&pair) {
                     pairs.push(pair);
