@@ -87,11 +87,12 @@ pub(crate) fn components_by_blocks<const N: usize>(adj: &[[u32; N]], block: usiz
         first.push(total);
         total += count;
     }
-    let global = |s: usize| first[s / block] + usize::from(label[s] & !LATER) - 1;
+    // the global component of simplex `s` of block `b`
+    let global = |b: usize, s: usize| first[b] + usize::from(label[s] & !LATER) - 1;
     let pairs: Vec<Vec<(usize, usize)>> = label
         .par_chunks(block)
         .enumerate()
-        .map(|(b, marks)| later_pairs(adj, b * block, marks, &global))
+        .map(|(b, marks)| later_pairs(adj, (b, block), marks, &global))
         .collect();
     let mut joined = UnionFind::new(total);
     let merged = pairs
@@ -142,22 +143,28 @@ fn fill_block<const N: usize>(adj: &[[u32; N]], lo: usize, label: &mut [u8]) -> 
 }
 
 /// The distinct pairs `(component of s, component of t)` (`component`:
-/// global indices) of the facets from a simplex `s` of the block
-/// starting at `lo` (`marks`: its labels, [`LATER`] set on the simplices
-/// to look at) to a simplex `t` of a later block, sorted.
+/// global indices, of a simplex and its block) of the facets from a
+/// simplex `s` of block `b` (of `block` simplices; `marks`: its labels,
+/// [`LATER`] set on the simplices to look at) to a simplex `t` of a later
+/// block, sorted.
 fn later_pairs<const N: usize>(
     adj: &[[u32; N]],
-    lo: usize,
+    (b, block): (usize, usize),
     marks: &[u8],
-    component: &(impl Fn(usize) -> usize + Sync),
+    component: &(impl Fn(usize, usize) -> usize + Sync),
 ) -> Vec<(usize, usize)> {
+    let lo = b * block;
     let hi = lo + marks.len();
     let mut pairs = Vec::new();
     for (i, _) in marks.iter().enumerate().filter(|(_, &m)| m & LATER != 0) {
         let s = lo + i;
+        let of_s = component(b, s);
         for &n in &adj[s] {
-            if n != NONE && n as usize >= hi {
-                let pair = (component(s), component(n as usize));
+            let t = n as usize;
+            if n != NONE && t >= hi {
+                // most often the next block (no division)
+                let bt = if t - hi < block { b + 1 } else { t / block };
+                let pair = (of_s, component(bt, t));
                 if pairs.last() != Some(&pair) {
                     pairs.push(pair);
                 }
