@@ -16,7 +16,7 @@
 //!   facets: the components through shared vertices are those across
 //!   facets.
 //!
-//! The triangles' components are counted by blocks in parallel
+//! The components are counted by blocks in parallel
 //! ([`facet_components_par`]).
 //!
 //! Tests (`glued_tests.rs`, and the facade's on whole extractions) compare
@@ -30,10 +30,8 @@ use dualex_util::union_find::UnionFind;
 pub const NONE: u32 = u32::MAX;
 
 /// Components of the simplices joined across their glued facets: a flood
-/// fill (each simplex pushed once). One thread: a parallel count held an
-/// array of labels (and the edges between blocks) at the first pass's
-/// peak, +6 556 KiB on 1M tets, for a few ms; the callers run it beside their
-/// other counts instead.
+/// fill on one thread (each simplex pushed once); the reference of
+/// [`facet_components_par`], which the callers use.
 pub fn facet_components<const N: usize>(adj: &[[u32; N]]) -> usize {
     let mut seen = vec![false; adj.len()];
     let (mut stack, mut count) = (Vec::new(), 0);
@@ -59,73 +57,123 @@ pub fn facet_components<const N: usize>(adj: &[[u32; N]]) -> usize {
 const BLOCK: usize = 1 << 14;
 
 /// [`facet_components`] on all threads: each block of [`BLOCK`]
-/// simplices is flood-filled on its own (a label per simplex, 4 bytes),
-/// then the blocks' components are joined along the facets between
-/// blocks. For triangle maps, whose labels are small beside the model;
-/// the tets keep the one-thread fill (see above).
+/// simplices is flood-filled on its own (a byte per simplex, as the
+/// reference's `bool`: the first pass of 1M tets holds it at its peak;
+/// [`fill_block`]), then the blocks' components are joined along the
+/// facets from the simplices marked there to later blocks, each pair of
+/// components once. A block of more components than the byte numbers (a
+/// very fragmented input) falls back to the reference.
 pub fn facet_components_par<const N: usize>(adj: &[[u32; N]]) -> usize {
     components_by_blocks(adj, BLOCK)
 }
 
-/// [`facet_components_par`] with blocks of `block` simplices (tests vary
-/// it).
+/// [`facet_components_par`] with blocks of `block ≥ 1` simplices (tests
+/// vary it).
 pub(crate) fn components_by_blocks<const N: usize>(adj: &[[u32; N]], block: usize) -> usize {
     use rayon::prelude::*;
-    let mut label = vec![0u32; adj.len()];
-    // per block: its components, and its facets to a later block
-    let parts: Vec<(usize, Vec<(u32, u32)>)> = label
+    let mut label = vec![0u8; adj.len()];
+    let counts: Option<Vec<usize>> = label
         .par_chunks_mut(block)
         .enumerate()
         .map(|(b, label)| fill_block(adj, b * block, label))
         .collect();
-    let mut first = Vec::with_capacity(parts.len());
+    let Some(counts) = counts else {
+        drop(label);
+        return facet_components(adj);
+    };
+    let mut first = Vec::with_capacity(counts.len());
     let mut total = 0;
-    for (count, _) in &parts {
+    for count in &counts {
         first.push(total);
         total += count;
     }
-    let global = |s: u32| first[s as usize / block] + label[s as usize] as usize - 1;
+    // the global component of simplex `s` of block `b`
+    let global = |b: usize, s: usize| first[b] + usize::from(label[s] & !LATER) - 1;
+    let pairs: Vec<Vec<(usize, usize)>> = label
+        .par_chunks(block)
+        .enumerate()
+        .map(|(b, marks)| later_pairs(adj, (b, block), marks, &global))
+        .collect();
     let mut joined = UnionFind::new(total);
-    let merged = parts
+    let merged = pairs
         .iter()
-        .flat_map(|(_, cross)| cross)
-        .filter(|&&(s, t)| joined.union(global(s), global(t)))
+        .flatten()
+        .filter(|&&(a, b)| joined.union(a, b))
         .count();
     total - merged
 }
 
+/// The bit of a [`fill_block`] label marking a simplex with a facet to a
+/// later block.
+const LATER: u8 = 0x80;
+
 /// One block's flood fill: `label[s - lo]` becomes 1 + the index of the
-/// block-local component of simplex `s`; returns the component count and
-/// the facets `(s, t)` to a simplex `t > s` outside the block.
-fn fill_block<const N: usize>(
-    adj: &[[u32; N]],
-    lo: usize,
-    label: &mut [u32],
-) -> (usize, Vec<(u32, u32)>) {
-    let (mut stack, mut cross, mut count) = (Vec::new(), Vec::new(), 0);
-    for s in lo..lo + label.len() {
+/// block-local component of simplex `s`, with [`LATER`] set when `s` has
+/// a facet to a simplex of a later block; returns the component count,
+/// or `None` past 127 components.
+fn fill_block<const N: usize>(adj: &[[u32; N]], lo: usize, label: &mut [u8]) -> Option<usize> {
+    let (mut stack, mut count) = (Vec::new(), 0u8);
+    let hi = lo + label.len();
+    for s in lo..hi {
         if label[s - lo] != 0 {
             continue;
         }
         count += 1;
+        if count >= LATER {
+            return None;
+        }
         label[s - lo] = count;
         stack.push(s as u32);
         while let Some(t) = stack.pop() {
             for &n in &adj[t as usize] {
                 // outside the block (below it, wrapping, or above it) or NONE
                 let i = (n as usize).wrapping_sub(lo);
-                if i >= label.len() {
-                    if n > t && n != NONE {
-                        cross.push((t, n));
+                if i < label.len() {
+                    if label[i] == 0 {
+                        label[i] = count;
+                        stack.push(n);
                     }
-                } else if label[i] == 0 {
-                    label[i] = count;
-                    stack.push(n);
+                } else if n != NONE && n as usize >= hi {
+                    label[t as usize - lo] |= LATER;
                 }
             }
         }
     }
-    (count as usize, cross)
+    Some(usize::from(count))
+}
+
+/// The distinct pairs `(component of s, component of t)` (`component`:
+/// global indices, of a simplex and its block) of the facets from a
+/// simplex `s` of block `b` (of `block` simplices; `marks`: its labels,
+/// [`LATER`] set on the simplices to look at) to a simplex `t` of a later
+/// block, sorted.
+fn later_pairs<const N: usize>(
+    adj: &[[u32; N]],
+    (b, block): (usize, usize),
+    marks: &[u8],
+    component: &(impl Fn(usize, usize) -> usize + Sync),
+) -> Vec<(usize, usize)> {
+    let lo = b * block;
+    let hi = lo + marks.len();
+    let mut pairs = Vec::new();
+    for (i, _) in marks.iter().enumerate().filter(|(_, &m)| m & LATER != 0) {
+        let s = lo + i;
+        let of_s = component(b, s);
+        for &n in &adj[s] {
+            let t = n as usize;
+            if n != NONE && t >= hi {
+                // most often the next block (no division)
+                let bt = if t - hi < block { b + 1 } else { t / block };
+                let pair = (of_s, component(bt, t));
+                if pairs.last() != Some(&pair) {
+                    pairs.push(pair);
+                }
+            }
+        }
+    }
+    pairs.sort_unstable();
+    pairs.dedup();
+    pairs
 }
 
 /// The unglued facets, as places `N·s + f` (the facet opposite corner
@@ -208,7 +256,7 @@ pub struct TetGlued {
 /// [`TetGlued`] of an accepted tet map: the components and the faces of
 /// one tet, in parallel.
 pub fn tet_glued(adj: &[[u32; 4]]) -> TetGlued {
-    let (components, lone) = rayon::join(|| facet_components(adj), || lone_facets(adj));
+    let (components, lone) = rayon::join(|| facet_components_par(adj), || lone_facets(adj));
     TetGlued { components, lone }
 }
 

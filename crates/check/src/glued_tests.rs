@@ -219,6 +219,27 @@ fn components_by_blocks_equal_the_flood_fill() {
             assert_eq!(got, want, "case {case}, block {block}");
         }
         assert_eq!(glued::facet_components_par(&a2), want.0);
+        assert_eq!(glued::facet_components_par(&a3), want.1);
     }
     assert!(most > 2, "no case of several components: {most}");
+}
+
+/// Blocks of more than 127 components (isolated simplices) fall back to
+/// the flood fill, alone or beside blocks that do not.
+#[test]
+fn components_by_blocks_past_a_byte_of_labels() {
+    let mut adj = vec![[NONE; 3]; 600];
+    // a strip of 100 glued triangles after 500 lone ones
+    for s in 500..599 {
+        adj[s][0] = s as u32 + 1;
+        adj[s + 1][1] = s as u32;
+    }
+    assert_eq!(glued::facet_components(&adj), 501);
+    for block in [100, 127, 128, 300, 600, 1 << 14] {
+        assert_eq!(
+            glued::components_by_blocks(&adj, block),
+            501,
+            "block {block}"
+        );
+    }
 }

@@ -131,25 +131,52 @@ pub fn check_hex_mesh(
     r
 }
 
-/// Sorts cells into out of range, degenerate and good (returned).
+/// Sorts cells into out of range, degenerate and good (returned); the
+/// cells are judged in parallel ([`class_of`]), the lists made in cell
+/// order.
 fn classify_cells(n: usize, hexes: &[[u32; 8]], r: &mut HexReport) -> Vec<[u32; 8]> {
+    use rayon::prelude::*;
+    let class: Vec<Class> = hexes
+        .par_iter()
+        .with_min_len(1 << 12)
+        .map(|h| class_of(n, h))
+        .collect();
     let mut good = Vec::with_capacity(hexes.len());
-    for (c, h) in hexes.iter().enumerate() {
-        if h.iter().any(|&v| v as usize >= n) {
-            r.out_of_range_cells.push(c);
-            continue;
-        }
-        let repeated = (0..8).any(|i| h[..i].contains(&h[i]));
-        let mut keys = HEX_FACES.map(|f| face_key(h, &f));
-        keys.sort_unstable();
-        let distinct = 1 + keys.windows(2).filter(|w| w[0] != w[1]).count();
-        if repeated || distinct < 6 {
-            r.degenerate_cells.push(c);
-        } else {
-            good.push(*h);
+    for (c, (h, class)) in hexes.iter().zip(&class).enumerate() {
+        match class {
+            Class::OutOfRange => r.out_of_range_cells.push(c),
+            Class::Degenerate => r.degenerate_cells.push(c),
+            Class::Good => good.push(*h),
         }
     }
     good
+}
+
+/// What [`classify_cells`] finds a cell to be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Class {
+    /// A vertex at or beyond the vertex count.
+    OutOfRange,
+    /// A repeated vertex, or fewer than 6 distinct faces.
+    Degenerate,
+    /// Neither.
+    Good,
+}
+
+/// The [`Class`] of hex `h` among `n` vertices.
+fn class_of(n: usize, h: &[u32; 8]) -> Class {
+    if h.iter().any(|&v| v as usize >= n) {
+        return Class::OutOfRange;
+    }
+    let repeated = (0..8).any(|i| h[..i].contains(&h[i]));
+    let mut keys = HEX_FACES.map(|f| face_key(h, &f));
+    keys.sort_unstable();
+    let distinct = 1 + keys.windows(2).filter(|w| w[0] != w[1]).count();
+    if repeated || distinct < 6 {
+        Class::Degenerate
+    } else {
+        Class::Good
+    }
 }
 
 /// The sorted vertices of face `f` of hex `h`.
@@ -261,19 +288,33 @@ fn used_and_components(n_vertices: usize, cells: &[[u32; 8]]) -> (usize, usize) 
 /// Edge count and the valence histogram of interior edges, from the
 /// sorted cell edges ([`sorted_edges`]) and the boundary quads.
 fn edge_stats(edges: &[u64], boundary: &[[u32; 4]], r: &mut HexReport) {
+    use rayon::prelude::*;
     let key = crate::topology::edge_key;
     let mut on_boundary: Vec<u64> = boundary
         .iter()
         .flat_map(|q| (0..4).map(move |i| key(q[i], q[(i + 1) % 4])))
         .collect();
     on_boundary.sort_unstable();
-    let mut valences = Tally::default();
-    for run in edges.chunk_by(|x, y| x == y) {
-        r.edges += 1;
-        if on_boundary.binary_search(&run[0]).is_err() {
-            valences.add(run.len() as u32);
-        }
-    }
+    // runs (one per edge) counted in parallel
+    let (count, valences) = edges
+        .par_chunk_by(|x, y| x == y)
+        .fold(
+            || (0, Tally::default()),
+            |(count, mut valences), run| {
+                if on_boundary.binary_search(&run[0]).is_err() {
+                    valences.add(run.len() as u32);
+                }
+                (count + 1, valences)
+            },
+        )
+        .reduce(
+            || (0, Tally::default()),
+            |(n, mut a), (m, b)| {
+                a.merge(b);
+                (n + m, a)
+            },
+        );
+    r.edges += count;
     valences.into_map(&mut r.interior_edge_valence);
 }
 

@@ -10,7 +10,7 @@
 use std::collections::BTreeMap;
 
 /// Counts per key, the key being the index.
-#[derive(Default)]
+#[derive(Clone, Debug, Default)]
 pub(crate) struct Tally(Vec<usize>);
 
 impl Tally {
@@ -21,6 +21,16 @@ impl Tally {
             self.0.resize(k + 1, 0);
         }
         self.0[k] += 1;
+    }
+
+    /// `other`'s counts added.
+    pub(crate) fn merge(&mut self, other: Tally) {
+        if self.0.len() < other.0.len() {
+            self.0.resize(other.0.len(), 0);
+        }
+        for (a, b) in self.0.iter_mut().zip(other.0) {
+            *a += b;
+        }
     }
 
     /// The non-zero counts added into `map`.
@@ -49,5 +59,19 @@ mod tests {
         t.into_map(&mut map);
         assert_eq!(map, by_entry);
         assert_eq!(map.get(&5), None);
+        // split anywhere, counted apart, merged either way: the same map
+        for cut in 0..=keys.len() {
+            let (mut a, mut b) = (Tally::default(), Tally::default());
+            keys[..cut].iter().for_each(|&k| a.add(k));
+            keys[cut..].iter().for_each(|&k| b.add(k));
+            let (mut ab, mut ba) = (a.clone(), b.clone());
+            ab.merge(b);
+            ba.merge(a);
+            for t in [ab, ba] {
+                let mut got = BTreeMap::new();
+                t.into_map(&mut got);
+                assert_eq!(got, by_entry, "cut {cut}");
+            }
+        }
     }
 }

@@ -265,7 +265,15 @@ where
 {
     let input = map.len();
     let mut map = Cow::Borrowed(map);
-    let mut parent: Vec<u32> = (0..input as u32).collect();
+    // the identity, written on the pool (its pages' first touch: ~1.4 ms
+    // on one thread for 1M tets)
+    let mut parent: Vec<u32> = {
+        use rayon::prelude::*;
+        (0..input as u32)
+            .into_par_iter()
+            .with_min_len(1 << 16)
+            .collect()
+    };
     let mut first_pass = Some(first_pass);
     let mut chosen = None;
     loop {

@@ -93,66 +93,112 @@ impl ToSplit<4, 3> for Dim<4, 3> {
 /// The edges (2 vertex ids, sorted) and faces (3, sorted) to split, edges
 /// first, each once, in the order of their first tet; `free` as
 /// [`crate::sanitize::free_axes`], `singular_edges` the singular edges'
-/// sorted vertex pairs.
+/// sorted vertex pairs. Blocks of tets are scanned in parallel
+/// ([`tet_keys`]), then joined in tet order.
 fn faces_to_split(pass: &Pass<'_, 4, 3>, singular_edges: &HashSet<(u32, u32)>) -> Vec<Vec<u32>> {
-    let Pass {
-        map,
-        stars,
-        local,
-        free,
-        ..
-    } = *pass;
-    let sing = |v: u32| stars.singular[v as usize];
-    let mut seen: HashSet<Vec<u32>> = HashSet::new();
+    faces_to_split_by(pass, singular_edges, 1 << 14)
+}
+
+/// [`faces_to_split`] with blocks of `block ≥ 1` tets (tests vary it).
+fn faces_to_split_by(
+    pass: &Pass<'_, 4, 3>,
+    singular_edges: &HashSet<(u32, u32)>,
+    block: usize,
+) -> Vec<Vec<u32>> {
+    use rayon::prelude::*;
+    let blocks: Vec<Keys> = pass
+        .map
+        .simplices
+        .par_chunks(block)
+        .enumerate()
+        .map(|(b, tets)| {
+            let mut keys = Keys::default();
+            for (i, tet) in tets.iter().enumerate() {
+                tet_keys(pass, singular_edges, b * block + i, tet, &mut keys);
+            }
+            keys
+        })
+        .collect();
+    let mut seen: HashSet<&[u32]> = HashSet::new();
     let (mut edges, mut faces) = (Vec::new(), Vec::new());
-    for (s, tet) in map.simplices.iter().enumerate() {
-        let singular_corners = tet.iter().filter(|&&v| sing(v)).count();
-        if singular_corners < 2 {
-            continue;
-        }
-        let c = &local.coords[s];
-        for [k, l] in EDGES {
-            let (a, b) = (tet[k], tet[l]);
-            if !(sing(a) && sing(b)) || singular_edges.contains(&(a.min(b), a.max(b))) {
-                continue;
-            }
-            let axes = [a, b].map(|v| free_axis_in(stars, free, v, s));
-            if crosses_stuck(&c[k], &c[l], axes) {
-                let key = vec![a.min(b), a.max(b)];
-                if seen.insert(key.clone()) {
-                    edges.push(key);
-                }
-            }
-        }
-        if singular_corners < 3 {
-            continue;
-        }
-        for f in 0..4 {
-            let corners = face_corners(f);
-            if !corners.iter().all(|&k| sing(tet[k])) {
-                continue;
-            }
-            // (only faces with a vertex where singular edges meet: the
-            // test is costly on large triangles, and a face spanned by
-            // vertices inside singular edges alone can move with them)
-            let axes = corners.map(|k| free_axis_in(stars, free, tet[k], s));
-            if axes.iter().all(Option::is_some) {
-                continue;
-            }
-            let t = corners.map(|k| c[k]);
-            let n = normal(&t);
-            let movable = axes.iter().flatten().any(|&a| n[a] != 0.0);
-            if !movable && box_holds_grid_point(&t) && triangle_near_grid_point(&t) {
-                let mut key: Vec<u32> = corners.iter().map(|&k| tet[k]).collect();
-                key.sort_unstable();
-                if seen.insert(key.clone()) {
-                    faces.push(key);
-                }
-            }
-        }
+    for keys in &blocks {
+        edges.extend(
+            keys.edges
+                .iter()
+                .filter(|k| seen.insert(k.as_slice()))
+                .cloned(),
+        );
+        faces.extend(
+            keys.faces
+                .iter()
+                .filter(|k| seen.insert(k.as_slice()))
+                .cloned(),
+        );
     }
     edges.extend(faces);
     edges
+}
+
+/// The edges and faces to split that tets name, in their order (a key
+/// may come again).
+#[derive(Default)]
+struct Keys {
+    edges: Vec<Vec<u32>>,
+    faces: Vec<Vec<u32>>,
+}
+
+/// Appends to `keys` the edges and faces of tet `s` to split
+/// ([`faces_to_split`]).
+fn tet_keys(
+    pass: &Pass<'_, 4, 3>,
+    singular_edges: &HashSet<(u32, u32)>,
+    s: usize,
+    tet: &[u32; 4],
+    keys: &mut Keys,
+) {
+    let Pass {
+        stars, local, free, ..
+    } = *pass;
+    let sing = |v: u32| stars.singular[v as usize];
+    let singular_corners = tet.iter().filter(|&&v| sing(v)).count();
+    if singular_corners < 2 {
+        return;
+    }
+    let c = &local.coords[s];
+    for [k, l] in EDGES {
+        let (a, b) = (tet[k], tet[l]);
+        if !(sing(a) && sing(b)) || singular_edges.contains(&(a.min(b), a.max(b))) {
+            continue;
+        }
+        let axes = [a, b].map(|v| free_axis_in(stars, free, v, s));
+        if crosses_stuck(&c[k], &c[l], axes) {
+            keys.edges.push(vec![a.min(b), a.max(b)]);
+        }
+    }
+    if singular_corners < 3 {
+        return;
+    }
+    for f in 0..4 {
+        let corners = face_corners(f);
+        if !corners.iter().all(|&k| sing(tet[k])) {
+            continue;
+        }
+        // (only faces with a vertex where singular edges meet: the
+        // test is costly on large triangles, and a face spanned by
+        // vertices inside singular edges alone can move with them)
+        let axes = corners.map(|k| free_axis_in(stars, free, tet[k], s));
+        if axes.iter().all(Option::is_some) {
+            continue;
+        }
+        let t = corners.map(|k| c[k]);
+        let n = normal(&t);
+        let movable = axes.iter().flatten().any(|&a| n[a] != 0.0);
+        if !movable && box_holds_grid_point(&t) && triangle_near_grid_point(&t) {
+            let mut key: Vec<u32> = corners.iter().map(|&k| tet[k]).collect();
+            key.sort_unstable();
+            keys.faces.push(key);
+        }
+    }
 }
 
 /// Whether the box of `t`, grown by `EPS`, holds an integer on every axis
@@ -185,6 +231,14 @@ mod tests {
 
     /// What the driver's first pass finds on a map.
     fn to_split(map: &TetMap) -> Vec<Vec<u32>> {
+        with_pass(map, Dim::<4, 3>::faces)
+    }
+
+    /// `f` of the driver's first pass on a map and its singular edges.
+    fn with_pass<T>(
+        map: &TetMap,
+        f: impl FnOnce(&Pass<'_, 4, 3>, &Vec<EdgeSingularity>) -> T,
+    ) -> T {
         let topo = Topology::build(map).unwrap_or_else(|e| panic!("{e}"));
         let (trans, _) =
             Transitions::derive(map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
@@ -200,7 +254,41 @@ mod tests {
             local: &local,
             free: &free,
         };
-        Dim::<4, 3>::faces(&pass, &singular)
+        f(&pass, &singular)
+    }
+
+    /// The cubed ball's map at k = 1.
+    fn cubed_ball_k1() -> TetMap {
+        let o = FromMeshOptions {
+            scale: 1,
+            ..Default::default()
+        };
+        from_hexes(&meshes::cubed_ball(), &o)
+            .unwrap_or_else(|e| panic!("{e:?}"))
+            .map
+    }
+
+    /// Blocks of any size find the same keys in the same order as one
+    /// block (the serial scan), on a map with keys in many tets: the cubed
+    /// ball's diagonals (each in several tets) at k = 1.
+    #[test]
+    fn blocks_join_in_tet_order() {
+        let map = cubed_ball_k1();
+        with_pass(&map, |pass, singular| {
+            let pairs = singular
+                .iter()
+                .map(|e| (e.edge[0].min(e.edge[1]), e.edge[0].max(e.edge[1])))
+                .collect();
+            let whole = faces_to_split_by(pass, &pairs, map.len());
+            assert!(!whole.is_empty(), "nothing to compare");
+            for block in [1, 2, 5, 64] {
+                assert_eq!(
+                    faces_to_split_by(pass, &pairs, block),
+                    whole,
+                    "block {block}"
+                );
+            }
+        });
     }
 
     /// The cubed ball at k = 1: every hex's main diagonal joins two
@@ -210,13 +298,7 @@ mod tests {
     /// split, and the split map has nothing left to split.
     #[test]
     fn cubed_ball_diagonals_through_nodes_are_split() {
-        let o = FromMeshOptions {
-            scale: 1,
-            ..Default::default()
-        };
-        let map = from_hexes(&meshes::cubed_ball(), &o)
-            .unwrap_or_else(|e| panic!("{e:?}"))
-            .map;
+        let map = cubed_ball_k1();
         let first = to_split(&map);
         assert!(first.iter().all(|f| f.len() == 2), "{first:?}");
         assert!(first.len() >= 7, "{first:?}");
