@@ -91,14 +91,14 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     let mut fits: Vec<Owned<N, D>> = vec![none; BATCH.min(ns)];
     for lo in (0..ns).step_by(BATCH) {
         let hi = ns.min(lo + BATCH);
-        // each slot reset by the task that fits it (no serial refill of
-        // the buffer per batch)
+        // a slot's entries of the facets its simplex owns are written
+        // here, the only ones `write_batch` reads (the others keep what
+        // an earlier batch left)
         let batch = fits[..hi - lo]
             .par_iter_mut()
             .enumerate()
             .fold(Tally::default, |mut t, (i, slot)| {
                 let s = lo + i;
-                *slot = none;
                 for (f, out) in slot.iter_mut().enumerate() {
                     if topo.neighbour(s, f).is_some_and(|nf| nf > (s, f)) {
                         *out = t.add(s, f, fit_facet(map, topo, s, f, &group, opts), opts);

@@ -121,15 +121,25 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
         b[i] = cn[corner[c] as usize];
         for k in 0..D {
             // `max` without its NaN branch: the same result from 0.0
-            let (x, y) = (a[i][k].abs(), b[i][k].abs());
+            let x = a[i][k].abs();
             if x > scale {
                 scale = x;
             }
-            if y > scale {
-                scale = y;
-            }
             differ |= a[i][k].to_bits() ^ b[i][k].to_bits();
         }
+    }
+    if differ != 0 {
+        // the other chart's corners (the same floats when none differs)
+        scale = b[..m].iter().flatten().fold(
+            scale,
+            |scale, y| {
+                if y.abs() > scale {
+                    y.abs()
+                } else {
+                    scale
+                }
+            },
+        );
     }
     let tol = opts.tolerance_at(scale);
     if differ == 0 && scale <= SAME_LIMIT {

@@ -32,6 +32,7 @@
 use crate::local::{local_transition, simplex_offsets, LocalMap};
 use crate::singular_snap::{singular_corners, snap_singular, Chart, SingularSnap, Snapped};
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
+use rayon::prelude::*;
 use std::collections::HashMap;
 
 /// Distance to an integer below which a singular vertex's coordinate counts
@@ -126,7 +127,7 @@ pub fn count_on_grid<const N: usize, const D: usize>(
 /// chart). Reads the simplices with a boundary facet and the reference
 /// corners of the singular vertices only.
 fn count_in<const N: usize, const D: usize>(
-    coords_of: impl Fn(usize) -> [[f64; D]; N],
+    coords_of: impl Fn(usize) -> [[f64; D]; N] + Sync,
     len: usize,
     base: f64,
     topo: &Topology<N>,
@@ -134,26 +135,14 @@ fn count_in<const N: usize, const D: usize>(
 ) -> (OnGrid, OnGrid) {
     let (mut half, mut zero) = (OnGrid::default(), OnGrid::default());
     let shifts = [(0.5 - base), (0.0 - base)];
-    for s in 0..len {
-        if (0..N).all(|f| topo.neighbour(s, f).is_some()) {
-            continue;
-        }
-        let c = coords_of(s);
-        for f in (0..N).filter(|&f| topo.neighbour(s, f).is_none()) {
-            let mut corners = (0..N).filter(|&k| k != f).map(|k| &c[k]);
-            let Some(first) = corners.next() else {
-                continue;
-            };
-            let rest: Vec<&[f64; D]> = corners.collect();
-            for (count, shift) in [(&mut half, shifts[0]), (&mut zero, shifts[1])] {
-                let flat = (0..D).any(|k| {
-                    on_iso(first[k], shift)
-                        && rest.iter().all(|p| (p[k] - first[k]).abs() < ON_GRID)
-                });
-                count.boundary_on_iso += usize::from(flat);
-            }
-        }
-    }
+    // the simplices in parallel: counts, the same for every split
+    let flat = |s: usize| boundary_on_iso(&coords_of(s), s, topo, shifts);
+    [half.boundary_on_iso, zero.boundary_on_iso] = (0..len)
+        .into_par_iter()
+        .with_min_len(4096)
+        .filter(|&s| (0..N).any(|f| topo.neighbour(s, f).is_none()))
+        .map(flat)
+        .reduce(|| [0, 0], |a, b| [a[0] + b[0], a[1] + b[1]]);
     for v in (0..stars.singular.len()).filter(|&v| stars.singular[v]) {
         let Some(e) = stars.of(v).first() else {
             continue;
@@ -169,6 +158,32 @@ fn count_in<const N: usize, const D: usize>(
         }
     }
     (half, zero)
+}
+
+/// The boundary facets of simplex `s` (its corners `c`) that lie in an
+/// iso under each of the two `shifts` (all their corners share one
+/// coordinate within [`ON_GRID`] of the grid).
+fn boundary_on_iso<const N: usize, const D: usize>(
+    c: &[[f64; D]; N],
+    s: usize,
+    topo: &Topology<N>,
+    shifts: [f64; 2],
+) -> [usize; 2] {
+    let mut counts = [0; 2];
+    for f in (0..N).filter(|&f| topo.neighbour(s, f).is_none()) {
+        let mut corners = (0..N).filter(|&k| k != f).map(|k| &c[k]);
+        let Some(first) = corners.next() else {
+            continue;
+        };
+        let rest: Vec<&[f64; D]> = corners.collect();
+        for (count, shift) in counts.iter_mut().zip(shifts) {
+            let flat = (0..D).any(|k| {
+                on_iso(first[k], shift) && rest.iter().all(|p| (p[k] - first[k]).abs() < ON_GRID)
+            });
+            *count += usize::from(flat);
+        }
+    }
+    counts
 }
 
 /// Resolves `opt`: `Half` and `Zero` as given, `Auto` by the counts.

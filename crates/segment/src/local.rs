@@ -246,23 +246,38 @@ fn snap_block<const N: usize, const D: usize>(
         for e in star {
             let y = e.rot.apply(&x_ref);
             let old = coords[e.simplex as usize][e.corner as usize];
-            let mut x = old;
-            for (xk, yk) in x.iter_mut().zip(y) {
-                let snapped = yk + dualex_util::round::round(*xk - yk);
-                // not NaN (validated input): as `f64::max`
-                let m = (snapped - *xk).abs();
-                if m > max_move {
-                    max_move = m;
-                }
-                *xk = snapped;
-            }
-            if x.iter().zip(&old).any(|(a, b)| a.to_bits() != b.to_bits()) {
+            // (branch-free: `==` per axis, no early exit)
+            let same = (0..D).fold(true, |same, k| same & (old[k] == y[k]));
+            let x = if same {
+                // the common case, the same point: `x − y = +0`, which
+                // rounds to itself, and the move is 0
+                y.map(|yk| yk + 0.0)
+            } else {
+                snap_corner(&old, &y, &mut max_move)
+            };
+            let changed = (0..D).fold(false, |c, k| c | (x[k].to_bits() != old[k].to_bits()));
+            if changed {
                 out.push(e.simplex, e.corner, x);
             }
         }
         count += 1;
     }
     (count, max_move)
+}
+
+/// A corner `x` snapped onto `y` plus the nearest integer translation
+/// ([`LocalMap::snap`]), `max_move` raised to its move.
+#[inline]
+fn snap_corner<const D: usize>(x: &[f64; D], y: &[f64; D], max_move: &mut f64) -> [f64; D] {
+    std::array::from_fn(|k| {
+        let snapped = y[k] + dualex_util::round::round(x[k] - y[k]);
+        // not NaN (validated input): as `f64::max`
+        let m = (snapped - x[k]).abs();
+        if m > *max_move {
+            *max_move = m;
+        }
+        snapped
+    })
 }
 
 /// The input-chart coordinates of corner `code` (bit `a` set: the + side
