@@ -102,17 +102,25 @@ pub fn spanned_axes<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> u8 {
 pub fn spanned_axes_small<const N: usize, const D: usize>(c: &[[f64; D]; N]) -> (u8, bool) {
     let (mut bits, mut small) = (0u8, true);
     for a in 0..D {
-        let (mut lo, mut hi) = (c[0][a], c[0][a]);
-        for p in &c[1..] {
-            let x = p[a];
-            lo = if x < lo { x } else { lo };
-            hi = if x > hi { x } else { hi };
-        }
+        let (lo, hi) = axis_range(c, a);
         small &= -0.5 * FAST < lo && hi < 0.5 * FAST;
         let (l, h) = (lo - 2.0 * EPS, floor_above(hi));
         bits |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
     }
     (bits, small)
+}
+
+/// The least and greatest value of the corners `c` on axis `a` (not NaN:
+/// validated input; plain comparisons, cheaper than `f64::min`).
+#[inline(always)]
+pub fn axis_range<const N: usize, const D: usize>(c: &[[f64; D]; N], a: usize) -> (f64, f64) {
+    let (mut lo, mut hi) = (c[0][a], c[0][a]);
+    for p in &c[1..] {
+        let x = p[a];
+        lo = if x < lo { x } else { lo };
+        hi = if x > hi { x } else { hi };
+    }
+    (lo, hi)
 }
 
 /// The corners of `c` [`near_int`] on axis `a`, as a mask (bit `k`: corner

@@ -4,13 +4,16 @@
 use super::{Dim, Predicates};
 use crate::bad_scan::{partial, PARTIAL};
 use crate::boxes::Boxes;
+#[cfg(doc)]
+use crate::grid::spanned_axes_small;
 use crate::grid::{
-    dist2d_below_eps as below_eps, grid_point_near_segment, near_int, near_int_on,
-    segment_clear_of_grid, spanned_axes_small,
+    axis_range, dist2d_below_eps as below_eps, floor_above, grid_point_near_segment, near_int,
+    near_int_on, segment_clear_of_grid, EPS,
 };
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology};
 use dualex_util::rng::SplitMix;
+use dualex_util::round::FAST;
 use std::collections::BTreeMap;
 
 /// Every corner of a triangle bad.
@@ -77,6 +80,9 @@ impl Predicates<3, 2> for Dim<3, 2> {
 /// already ([`Predicates::mask_known`]: an edge is skipped when both its
 /// ends are in the mask so far or in `known`; a result that may miss a
 /// bit of `known` carries [`PARTIAL`]). With `known = 0`, the mask.
+/// A triangle whose range holds one grid point ([`Span`]: most that span
+/// both axes) is tested against that point alone ([`one_point_mask`]),
+/// without the corners' boxes.
 ///
 /// Out of line: one copy for both scans (two inlined copies made the
 /// compiler call the boxes' helpers instead of inlining them).
@@ -85,15 +91,107 @@ fn tri_mask(c: &[[f64; 2]; 3], known: u8) -> u8 {
     if known == FULL {
         return PARTIAL;
     }
-    let (axes, small) = spanned_axes_small(c);
-    if axes != 0b11 {
-        return if axes == 0 {
+    let span = Span::of(c);
+    if span.axes != 0b11 {
+        return if span.axes == 0 {
             0
         } else {
-            near_int_on(c, axes.trailing_zeros() as usize)
+            near_int_on(c, span.axes.trailing_zeros() as usize)
         };
     }
-    both_axes_mask(c, known, small)
+    match span.point {
+        Some(g) => one_point_mask(c, g, known),
+        None => both_axes_mask(c, known, span.small),
+    }
+}
+
+/// What [`tri_mask`] needs of a triangle's range per axis, grown by
+/// `2·EPS`, from its least and greatest value: the spanned axes and
+/// `small` as [`spanned_axes_small`] finds them, and the one grid point
+/// of the range when it holds exactly one integer on each axis and every
+/// coordinate is below 1024 in magnitude.
+struct Span {
+    axes: u8,
+    small: bool,
+    point: Option<[f64; 2]>,
+}
+
+impl Span {
+    /// The span of the corners `c` (not NaN: validated input).
+    #[inline(always)]
+    fn of(c: &[[f64; 2]; 3]) -> Self {
+        const SMALL: f64 = 1024.0;
+        let (mut axes, mut small, mut one) = (0u8, true, true);
+        let mut g = [0.0; 2];
+        for (a, ga) in g.iter_mut().enumerate() {
+            let (lo, hi) = axis_range(c, a);
+            small &= -0.5 * FAST < lo && hi < 0.5 * FAST;
+            one &= -SMALL < lo && hi < SMALL;
+            // the range's integers: `ceil(l)..=h`
+            let (l, h) = (lo - 2.0 * EPS, floor_above(hi));
+            axes |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
+            one &= l > h - 1.0;
+            *ga = h;
+        }
+        Span {
+            axes,
+            small,
+            point: one.then_some(g),
+        }
+    }
+}
+
+/// [`tri_mask`] of a triangle spanning both axes whose range holds one
+/// grid point `g` only ([`Span`]), given the corners `known` to be bad:
+/// the corners within `EPS` of `g`'s isos (as [`near_int`]: the nearest
+/// integer of such a coordinate is in the range, so it is `g`'s), then
+/// each edge. An edge farther than `3·EPS` from `g` by
+/// [`segment_clear_of_grid`]'s cross product is clear (that test clears
+/// every edge whose box holds `g`, and no other grid point is in reach);
+/// the others ([`edge_bits`]) are skipped when both ends are bad already.
+#[inline(always)]
+fn one_point_mask(c: &[[f64; 2]; 3], g: [f64; 2], known: u8) -> u8 {
+    let mut mask = 0u8;
+    let mut near_edges = 0u8;
+    for k in 0..3 {
+        let (a, b) = (&c[k], &c[(k + 1) % 3]);
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let lim = 9.0 * EPS * EPS * (d[0] * d[0] + d[1] * d[1]);
+        let (gx, gy) = (g[0] - a[0], g[1] - a[1]);
+        let cr = d[0] * gy - d[1] * gx;
+        near_edges |= u8::from(cr * cr <= lim) << k;
+        mask |= u8::from(gx.abs() < EPS || gy.abs() < EPS) << k;
+    }
+    for k in (0..3).filter(|&k| near_edges >> k & 1 == 1) {
+        let l = (k + 1) % 3;
+        // both ends already bad: the edge cannot add a bit
+        let ends = 1 << k | 1 << l;
+        if (mask | known) & ends != ends {
+            mask |= edge_bits(c, k, l, g);
+        }
+    }
+    partial(mask, known)
+}
+
+/// The corners that the edge `k`–`l` of `c` makes bad through a grid
+/// point near it, as [`both_axes_mask`] finds them
+/// ([`grid_point_near_segment`], whose answer the box filters never
+/// change), when `g` is the only grid point in reach ([`Span`]). An end
+/// exactly at `g` is the grid point found (at distance 0): the other end
+/// is bad only when within `EPS` of it too.
+#[inline(never)]
+fn edge_bits(c: &[[f64; 2]; 3], k: usize, l: usize, g: [f64; 2]) -> u8 {
+    let (a, b) = (&c[k], &c[l]);
+    let (at_k, at_l) = if *a == g {
+        (true, below_eps(&g, b))
+    } else if *b == g {
+        (below_eps(&g, a), true)
+    } else if let Some(p) = grid_point_near_segment(a, b) {
+        (below_eps(&p, a), below_eps(&p, b))
+    } else {
+        return 0;
+    };
+    u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l
 }
 
 /// [`tri_mask`] of a triangle that spans both axes, `small` as

@@ -3,7 +3,9 @@
 //! ([`triangle_clear_of_grid`]) and the unfiltered tests of
 //! [`crate::near::bad_vertices`], on random and adversarial tets: corners
 //! on and just off integers, edges and faces through and next to grid
-//! points, thin and flat faces, repeated corners, large coordinates.
+//! points, thin and flat faces, repeated corners, large coordinates; the
+//! 2D mask against its unfiltered tests on the triangles of those tets'
+//! corners, seen along two axes.
 
 use super::{Dim, Predicates};
 use crate::bad_scan::PARTIAL;
@@ -100,6 +102,51 @@ pub(super) fn mask_unfiltered(c: &[[f64; 3]; 4]) -> u8 {
         }
     }
     want
+}
+
+/// The unfiltered tests of the 2D mask on one triangle: every corner's
+/// coordinates, every edge by [`grid_point_near_segment`].
+fn tri_mask_unfiltered(c: &[[f64; 2]; 3]) -> u8 {
+    let mut want = 0u8;
+    for k in 0..3 {
+        let l = (k + 1) % 3;
+        want |= u8::from(c[k].iter().any(|&x| near_int(x))) << k;
+        if let Some(g) = grid_point_near_segment(&c[k], &c[l]) {
+            let (at_k, at_l) = (dist2d_below_eps(&g, &c[k]), dist2d_below_eps(&g, &c[l]));
+            want |= u8::from(at_k || !at_l) << k | u8::from(at_l || !at_k) << l;
+        }
+    }
+    want
+}
+
+/// The 2D mask (with its one-grid-point shortcut and box filters) equals
+/// its unfiltered tests on the triangles of adversarial tets' corners,
+/// along every pair of axes, and with a corner moved onto a grid point
+/// and the next onto its iso; given known corners too ([`check_known`]).
+#[test]
+fn triangle_mask_equals_unfiltered_tests() {
+    let mut rng = SplitMix::new(37);
+    let mut bad = 0usize;
+    for n in 0..100000 {
+        let c = tet(&mut rng, n);
+        for [i, j, k] in [[0, 1, 2], [0, 1, 3], [3, 2, 1]] {
+            for [x, y] in [[0, 1], [1, 2], [2, 0]] {
+                let t = [i, j, k].map(|p| [c[p][x], c[p][y]]);
+                // also: a corner exactly on a grid point, with the next
+                // corner on its iso
+                let mut on = t;
+                on[0] = on[0].map(f64::round);
+                on[1][n % 2] = on[0][n % 2];
+                for t in [t, on] {
+                    let got = <Dim<3, 2>>::mask(&t);
+                    assert_eq!(got, tri_mask_unfiltered(&t), "{t:?}");
+                    check_known(&t);
+                    bad += usize::from(got != 0);
+                }
+            }
+        }
+    }
+    assert!(bad > 200000, "{bad}");
 }
 
 /// Offsets from the grid: on it, a few `EPS` off, `1e-5` off.
