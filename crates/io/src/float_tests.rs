@@ -157,6 +157,28 @@ fn check(tok: &str) {
 }
 
 #[test]
+fn every_digit_count_parses_as_std_does() {
+    // 0–25 digits either side of the point (the point at every place of
+    // the first words, fields longer than 19 digits), with leading and
+    // trailing zeros, signs, exponents, bad tails; no point
+    for int in 0..=25 {
+        for frac in 0..=25 {
+            let digits: String = (0..int + frac)
+                .map(|i| char::from(b'1' + (i * 7 % 9) as u8))
+                .collect();
+            let (a, b) = digits.split_at(int);
+            for sign in ["", "-", "+"] {
+                for exp in ["", "e5", "E-17", "e+300", "e-330", "e", "x"] {
+                    check(&format!("{sign}{a}.{b}{exp}"));
+                    check(&format!("{sign}0{a}.{b}0{exp}"));
+                }
+            }
+            check(&format!("{a}{b}"));
+        }
+    }
+}
+
+#[test]
 fn random_decimal_strings_parse_as_std_does() {
     let mut r = Rng(0x2545_f491_4f6c_dd1d);
     for _ in 0..3_000_000 {
