@@ -156,14 +156,11 @@ pub fn segment_clear_of_grid(a: &[f64; 2], b: &[f64; 2], lo: [f64; 2], hi: [f64;
     if (hi[0] - lo[0] + 1.0) * (hi[1] - lo[1] + 1.0) > 4.0 {
         return false;
     }
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let lim = 9.0 * EPS * EPS * (d[0] * d[0] + d[1] * d[1]);
     let mut gx = lo[0];
     while gx <= hi[0] {
         let mut gy = lo[1];
         while gy <= hi[1] {
-            let cr = d[0] * (gy - a[1]) - d[1] * (gx - a[0]);
-            if cr * cr <= lim {
+            if point_near_line(a, b, &[gx, gy]) {
                 return false;
             }
             gy += 1.0;
@@ -171,6 +168,18 @@ pub fn segment_clear_of_grid(a: &[f64; 2], b: &[f64; 2], lo: [f64; 2], hi: [f64;
         gx += 1.0;
     }
     true
+}
+
+/// Whether point `g` is within `3·EPS` of the line through `a` and `b` by
+/// the cross product: [`segment_clear_of_grid`]'s test of one grid point,
+/// shared by the sanitization's shortcuts that test one point alone (the
+/// same operations in the same order, so the same answer).
+#[inline(always)]
+pub fn point_near_line(a: &[f64; 2], b: &[f64; 2], g: &[f64; 2]) -> bool {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let lim = 9.0 * EPS * EPS * (d[0] * d[0] + d[1] * d[1]);
+    let cr = d[0] * (g[1] - a[1]) - d[1] * (g[0] - a[0]);
+    cr * cr <= lim
 }
 
 /// Distance between two points of the plane.

@@ -8,7 +8,7 @@ use crate::boxes::Boxes;
 use crate::grid::spanned_axes_small;
 use crate::grid::{
     axis_range, dist2d_below_eps as below_eps, floor_above, grid_point_near_segment, near_int,
-    near_int_on, segment_clear_of_grid, EPS,
+    near_int_on, point_near_line, segment_clear_of_grid, EPS,
 };
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology};
@@ -155,12 +155,8 @@ fn one_point_mask(c: &[[f64; 2]; 3], g: [f64; 2], known: u8) -> u8 {
     let mut near_edges = 0u8;
     for k in 0..3 {
         let (a, b) = (&c[k], &c[(k + 1) % 3]);
-        let d = [b[0] - a[0], b[1] - a[1]];
-        let lim = 9.0 * EPS * EPS * (d[0] * d[0] + d[1] * d[1]);
-        let (gx, gy) = (g[0] - a[0], g[1] - a[1]);
-        let cr = d[0] * gy - d[1] * gx;
-        near_edges |= u8::from(cr * cr <= lim) << k;
-        mask |= u8::from(gx.abs() < EPS || gy.abs() < EPS) << k;
+        near_edges |= u8::from(point_near_line(a, b, &g)) << k;
+        mask |= u8::from((g[0] - a[0]).abs() < EPS || (g[1] - a[1]).abs() < EPS) << k;
     }
     for k in (0..3).filter(|&k| near_edges >> k & 1 == 1) {
         let l = (k + 1) % 3;

@@ -7,7 +7,7 @@ use crate::bad_scan::{partial, PARTIAL};
 use crate::boxes::Boxes;
 #[cfg(doc)]
 use crate::grid::segment_clear_of_grid;
-use crate::grid::{near_int_on, spanned_axes_small, EPS};
+use crate::grid::{near_int_on, point_near_line, spanned_axes_small};
 use crate::near::{
     face_corners, segment_near_iso_line_in_box, triangle_clear_of_grid, triangle_near_grid_point,
     EDGES, FACE_EDGES,
@@ -154,10 +154,7 @@ fn edge_clear_at(a: &[f64; 3], b: &[f64; 3], g: &[f64; 3], bits: u8) -> bool {
         if bits >> i & 1 == 0 || bits >> j & 1 == 0 {
             continue;
         }
-        let d = [b[i] - a[i], b[j] - a[j]];
-        let lim = 9.0 * EPS * EPS * (d[0] * d[0] + d[1] * d[1]);
-        let cr = d[0] * (g[j] - a[j]) - d[1] * (g[i] - a[i]);
-        if cr * cr <= lim {
+        if point_near_line(&[a[i], a[j]], &[b[i], b[j]], &[g[i], g[j]]) {
             return false;
         }
     }
@@ -190,7 +187,7 @@ fn face_clear_of_grid(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::grid::{box_bounds, spanned_axes};
+    use crate::grid::{box_bounds, spanned_axes, EPS};
     use dualex_util::rng::SplitMix;
 
     /// [`single_point`] is the one integer of the tet's box on each
