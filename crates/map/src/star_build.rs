@@ -190,13 +190,12 @@ fn star_of<const N: usize, const D: usize>(
             let (s, c) = (e.simplex as usize, e.corner as usize);
             // the rows of `s`, read once for its facets
             let (adj, steps, nbr) = (&topo.adj[s], &trans.rot[s], &topo.nbr_corner[s]);
-            // the facets not crossed: the one opposite the vertex, those
-            // of the mask
-            let skip = 1u32 << c | u32::from(mask);
-            for f in 0..N {
-                if skip >> f & 1 != 0 {
-                    continue;
-                }
+            // the facets crossed, as bits taken in increasing order: all
+            // but the one opposite the vertex and those of the mask
+            let mut cross = ((1u32 << N) - 1) & !(1u32 << c | u32::from(mask));
+            while cross != 0 {
+                let f = cross.trailing_zeros() as usize;
+                cross &= cross - 1;
                 let n = adj[f] as usize;
                 if adj[f] == NONE {
                     boundary = true;

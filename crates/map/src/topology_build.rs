@@ -186,9 +186,11 @@ fn facets_from<const N: usize, const D: usize>(
             .enumerate()
             .fold(0u32, |m, (j, &w)| m | u32::from(w < v) << j);
         if below == 0 {
-            for f in (0..N).filter(|&f| f != c) {
-                let (rest, order) = rest_without(simplex, f, c);
-                bucket.push((rest, (s * N + f) as u32, order));
+            for f in 0..N {
+                if f != c {
+                    let (rest, order) = rest_without(simplex, f, c);
+                    bucket.push((rest, (s * N + f) as u32, order));
+                }
             }
         } else if below & (below - 1) == 0 {
             let last = below.trailing_zeros() as usize;

@@ -30,6 +30,7 @@
 
 use crate::error::{ElementKind, MapError};
 use crate::holonomy::ridge_rotation;
+use crate::topology::NONE;
 use crate::transition_fit::{fit_facet, Group};
 use rayon::prelude::*;
 
@@ -99,8 +100,10 @@ pub(crate) fn derive<const N: usize, const D: usize>(
             .enumerate()
             .fold(Tally::default, |mut t, (i, slot)| {
                 let s = lo + i;
+                // the rows of `s`, read once for its facets
+                let (adj, back) = (&topo.adj[s], &topo.adj_facet[s]);
                 for (f, out) in slot.iter_mut().enumerate() {
-                    if topo.neighbour(s, f).is_some_and(|nf| nf > (s, f)) {
+                    if owns(adj[f], back[f], s, f) {
                         *out = t.add(s, f, fit_facet(map, topo, s, f, &group, opts), opts);
                     }
                 }
@@ -164,11 +167,13 @@ fn write_batch<const N: usize, const D: usize>(
         .enumerate()
         .for_each(|(i, (rot, trans))| {
             let s = lo + i;
+            let (adj, back) = (&topo.adj[s], &topo.adj_facet[s]);
             for f in 0..N {
-                let Some((n, g)) = topo.neighbour(s, f) else {
+                if adj[f] == NONE {
                     continue;
-                };
-                (rot[f], trans[f]) = if (n, g) > (s, f) {
+                }
+                let (n, g) = (adj[f] as usize, usize::from(back[f]));
+                (rot[f], trans[f]) = if owns(adj[f], back[f], s, f) {
                     fits[i][f]
                 } else if n >= lo {
                     inverse(fits[n - lo][g])
@@ -177,6 +182,14 @@ fn write_batch<const N: usize, const D: usize>(
                 };
             }
         });
+}
+
+/// Whether simplex `s` owns its facet `f`, whose neighbour is `n` (or
+/// [`NONE`]) across its facet `g`: the facet is interior and `(n, g) >
+/// (s, f)` (the owner's fit is the one derived).
+#[inline]
+fn owns(n: u32, g: u8, s: usize, f: usize) -> bool {
+    n != NONE && (n as usize, usize::from(g)) > (s, f)
 }
 
 /// The transition back across a facet, from the one across it.

@@ -31,6 +31,7 @@
 
 use crate::local::{local_transition, simplex_offsets, LocalMap};
 use crate::singular_snap::{singular_corners, snap_singular, Chart, SingularSnap, Snapped};
+use dualex_map::topology::NONE;
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -140,7 +141,7 @@ fn count_in<const N: usize, const D: usize>(
     [half.boundary_on_iso, zero.boundary_on_iso] = (0..len)
         .into_par_iter()
         .with_min_len(4096)
-        .filter(|&s| (0..N).any(|f| topo.neighbour(s, f).is_none()))
+        .filter(|&s| topo.adj[s].contains(&NONE))
         .map(flat)
         .reduce(|| [0, 0], |a, b| [a[0] + b[0], a[1] + b[1]]);
     for v in (0..stars.singular.len()).filter(|&v| stars.singular[v]) {

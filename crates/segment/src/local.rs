@@ -17,6 +17,7 @@
 
 use crate::grid_offset::GridOffset;
 use crate::scatter::{self, Buckets};
+use dualex_map::topology::NONE;
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
 use rayon::prelude::*;
 
@@ -142,11 +143,13 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
         let mut t = trans;
         let rot = &t.rot;
         t.trans.par_iter_mut().enumerate().for_each(|(s, ts)| {
-            for (f, tf) in ts.iter_mut().enumerate() {
-                let Some((n, _)) = topo.neighbour(s, f) else {
+            // the rows of `s`, read once for its facets
+            let (adj, rs, os) = (&topo.adj[s], &rot[s], &offset[s]);
+            for ((tf, r), &n) in ts.iter_mut().zip(rs).zip(adj) {
+                if n == NONE {
                     continue;
-                };
-                *tf = local_transition(&rot[s][f], tf, &offset[s], &offset[n], h);
+                }
+                *tf = local_transition(r, tf, os, &offset[n as usize], h);
             }
         });
         LocalMap {
