@@ -25,6 +25,7 @@
 
 use crate::topology::{self, Shape};
 use dualex_util::union_find::UnionFind;
+use dualex_util::used::used_vertices;
 
 /// No neighbour across a facet (a facet of one simplex).
 pub const NONE: u32 = u32::MAX;
@@ -210,17 +211,6 @@ pub fn surface_shape(n_vertices: usize, triangles: &[[u32; 3]], adj: &[[u32; 3]]
         euler: n_used as i64 - n_edges + n_faces,
         boundary_components: loops,
     }
-}
-
-/// How many of the `n_vertices` vertices `simplices` use.
-fn used_vertices<const N: usize>(n_vertices: usize, simplices: &[[u32; N]]) -> usize {
-    let mut used = vec![false; n_vertices];
-    for t in simplices {
-        for &v in t {
-            used[v as usize] = true;
-        }
-    }
-    used.iter().filter(|&&u| u).count()
 }
 
 /// Components of the sides `lone` (places `3·t + f`, the side opposite

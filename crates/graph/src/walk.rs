@@ -9,6 +9,7 @@
 //! counted, not hidden.
 
 use crate::graph::NodeGraph;
+use crate::graph::NONE;
 use crate::ids::Side;
 use dualex_map::Rot;
 
@@ -116,6 +117,9 @@ fn tally<const D: usize>(ends: &[End<D>], steps: &[usize]) -> ([usize; 4], usize
         )
 }
 
+/// Sides per parallel task of [`NodeGraph::link_mutual`].
+const LINK_TASK: usize = 1 << 12;
+
 /// What linking the walks' ends found.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct LinkReport {
@@ -129,6 +133,14 @@ impl<const D: usize> NodeGraph<D> {
     /// Glues every pair of sides whose walks reached each other, with the
     /// rotation of the first walk.
     pub fn link_mutual(&mut self, ends: &[End<D>]) -> LinkReport {
+        if ends.len() == self.n_sides() && self.is_fresh() {
+            return self.link_mutual_fresh(ends);
+        }
+        self.link_mutual_serial(ends)
+    }
+
+    /// [`Self::link_mutual`] one pair after the other, on any graph.
+    fn link_mutual_serial(&mut self, ends: &[End<D>]) -> LinkReport {
         let mut rep = LinkReport::default();
         for (a, end) in ends.iter().enumerate() {
             let End::Node { side: b, rho } = *end else {
@@ -150,6 +162,68 @@ impl<const D: usize> NodeGraph<D> {
             }
         }
         rep
+    }
+
+    /// Whether every node is alive and no side glued (a graph as
+    /// [`NodeGraph::new`] makes it); read in parallel.
+    fn is_fresh(&self) -> bool {
+        use rayon::prelude::*;
+        self.alive.par_iter().with_min_len(LINK_TASK).all(|&a| a)
+            && self
+                .opp
+                .par_iter()
+                .with_min_len(LINK_TASK)
+                .all(|&o| o == NONE)
+    }
+
+    /// [`Self::link_mutual`] on a fresh graph ([`Self::is_fresh`]) with one
+    /// end per side, each side written by itself, in parallel. There every
+    /// side is usable and unmatched, and a side is in at most one mutual
+    /// pair (it has one end), so the serial loop links every mutual pair
+    /// `a < b` whatever the order: `a` gets `b` and the rotation of `a`'s
+    /// walk, `b` gets `a` and its inverse. The counts follow the serial
+    /// loop's rule: a mutual pair is counted from its smaller side (a side
+    /// reaching itself is counted non-mutual), any other walk to a node is
+    /// non-mutual.
+    fn link_mutual_fresh(&mut self, ends: &[End<D>]) -> LinkReport {
+        use rayon::prelude::*;
+        // the walk back of the side a walk from `a` reached, if it is `a`
+        let back_of = |a: usize, b: u32| match ends.get(b as usize) {
+            Some(&End::Node { side, rho: back }) if side as usize == a => Some(back),
+            _ => None,
+        };
+        let (non_mutual, rotation_mismatches) = self
+            .opp
+            .par_iter_mut()
+            .zip(self.rot.par_iter_mut())
+            .zip(ends)
+            .enumerate()
+            .with_min_len(LINK_TASK)
+            .map(|(a, ((opp, rot), end))| {
+                let End::Node { side: b, rho } = *end else {
+                    return (0, 0);
+                };
+                let Some(back) = back_of(a, b) else {
+                    return (1, 0);
+                };
+                let b_us = b as usize;
+                if b_us != a {
+                    *opp = b;
+                    *rot = if a < b_us { rho } else { back.inverse() };
+                }
+                match a.cmp(&b_us) {
+                    std::cmp::Ordering::Greater => (0, 0),
+                    order => (
+                        usize::from(order.is_eq()),
+                        usize::from(back != rho.inverse()),
+                    ),
+                }
+            })
+            .reduce(|| (0, 0), |x, y| (x.0 + y.0, x.1 + y.1));
+        LinkReport {
+            non_mutual,
+            rotation_mismatches,
+        }
     }
 
     /// Deletes the alive nodes none of whose sides is glued and all of
@@ -199,6 +273,9 @@ impl<const D: usize> NodeGraph<D> {
             })
     }
 }
+
+#[cfg(test)]
+mod link_tests;
 
 #[cfg(test)]
 mod tests {

@@ -15,6 +15,7 @@ use crate::corners::{split, VertexCorners};
 use crate::topology_build::sorted_facets;
 use crate::SimplexMap;
 use dualex_util::union_find::UnionFind;
+use dualex_util::used::used_vertices;
 
 /// What [`weld`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -44,13 +45,8 @@ pub fn weld_owned<const N: usize, const D: usize>(
     map: SimplexMap<N, D>,
 ) -> (SimplexMap<N, D>, WeldReport) {
     let pairs = coincident_boundary_pairs(&map);
-    let mut used = vec![false; map.positions.len()];
-    for simplex in &map.simplices {
-        for &v in simplex {
-            used[v as usize] = true;
-        }
-    }
-    if pairs.is_empty() && !used.contains(&false) {
+    if pairs.is_empty() && used_vertices(map.positions.len(), &map.simplices) == map.positions.len()
+    {
         return (map, WeldReport::default());
     }
     weld_pairs(&map, &pairs)
@@ -71,6 +67,10 @@ fn coincident_boundary_pairs<const N: usize, const D: usize>(
         .map(|v| (position_key(&map.positions[v]), v as u32))
         .collect();
     by_pos.par_sort_unstable();
+    // most maps have no two vertices at one position: told in parallel
+    if !by_pos.par_windows(2).any(|w| w[0].0 == w[1].0) {
+        return Vec::new();
+    }
     let shared: Vec<&[([u64; 3], u32)]> = by_pos
         .chunk_by(|a, b| a.0 == b.0)
         .filter(|g| g.len() > 1)

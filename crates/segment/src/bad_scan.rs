@@ -48,6 +48,8 @@ pub struct BadScan {
     mask: Vec<u8>,
     /// Whether some mask may be [`PARTIAL`] (before the first update).
     partial: bool,
+    /// Per vertex and per simplex, the last update that met it (empty
+    /// until an update of a few simplices needs them).
     v_stamp: Vec<u32>,
     s_stamp: Vec<u32>,
     epoch: u32,
@@ -83,8 +85,8 @@ impl BadScan {
             bad,
             mask,
             partial,
-            v_stamp: vec![0; nv],
-            s_stamp: vec![0; map.simplices.len()],
+            v_stamp: Vec::new(),
+            s_stamp: Vec::new(),
             epoch: 0,
             min_task,
         }
@@ -93,6 +95,8 @@ impl BadScan {
     /// The bad vertices, in increasing order.
     pub fn list(&self) -> Vec<u32> {
         (0..self.bad.len() as u32)
+            .into_par_iter()
+            .with_min_len(LIST_TASK)
             .filter(|&v| self.bad[v as usize])
             .collect()
     }
@@ -131,6 +135,12 @@ impl BadScan {
             self.partial = false;
             self.bad = into_bools(flags);
             return;
+        }
+        // the stamps, made at the first update that reads them (an update
+        // of about half the simplices or more, above, never does)
+        if self.s_stamp.is_empty() {
+            self.v_stamp = vec![0; self.bad.len()];
+            self.s_stamp = vec![0; self.mask.len()];
         }
         // the simplices whose corners moved
         let mut redo = Vec::new();
@@ -188,6 +198,9 @@ fn is_bad<const D: usize>(stars: &Stars<D>, mask: &[u8], v: usize) -> bool {
         .iter()
         .any(|e| mask[e.simplex as usize] >> e.corner & 1 != 0)
 }
+
+/// Vertices per parallel task of [`BadScan::list`].
+const LIST_TASK: usize = 1 << 15;
 
 /// `n` vertex flags, all clear (1: bad).
 fn new_flags(n: usize) -> Vec<AtomicU8> {

@@ -19,7 +19,8 @@
 //!   library call;
 //! - [`union_find`]: the one union–find (path halving) of the workspace;
 //! - [`union_find_par`]: its twin that threads share (atomic parents,
-//!   the same representatives).
+//!   the same representatives);
+//! - [`used`]: how many vertices a list of simplices uses, in parallel.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -30,3 +31,4 @@ pub mod round;
 pub mod timing;
 pub mod union_find;
 pub mod union_find_par;
+pub mod used;

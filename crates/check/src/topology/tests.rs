@@ -219,3 +219,41 @@ fn bucketed_counts_equal_hash_maps() {
         );
     }
 }
+
+/// A surface's shape does not depend on the order of its faces (the
+/// boundary of a tet map is handed over unsorted): grids, tori and cube
+/// surfaces, of quads and of triangles, whole and with faces dropped
+/// (boundary loops, several components), against the same faces shuffled.
+#[test]
+fn the_shape_does_not_depend_on_the_faces_order() {
+    use crate::test_meshes::{cube, grid, torus};
+    use dualex_util::rng::SplitMix;
+    let mut rng = SplitMix::new(11);
+    let meshes = [grid(5, 4), torus(6, 5), {
+        let (p, q) = cube(3);
+        (p.len(), q)
+    }];
+    let mut seen = std::collections::BTreeSet::new();
+    for (n, quads) in meshes {
+        for keep in [4, 3, 2] {
+            let part: Vec<[u32; 4]> = quads
+                .iter()
+                .copied()
+                .filter(|_| rng.below(4) < keep)
+                .collect();
+            let tris: Vec<[u32; 3]> = part
+                .iter()
+                .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+                .collect();
+            let (mut part2, mut tris2) = (part.clone(), tris.clone());
+            rng.shuffle(&mut part2);
+            rng.shuffle(&mut tris2);
+            let shape = surface_shape(n, &part);
+            assert_eq!(surface_shape(n, &part2), shape);
+            assert_eq!(surface_shape(n, &tris2), surface_shape(n, &tris));
+            seen.insert((shape.components, shape.boundary_components));
+        }
+    }
+    // the cases hold several components and boundary loops
+    assert!(seen.iter().any(|&(c, _)| c > 1) && seen.iter().any(|&(_, b)| b > 1));
+}
