@@ -65,7 +65,8 @@ impl<'a> Cursor<'a> {
         self.bytes.get(self.pos).is_none_or(u8::is_ascii_whitespace)
     }
 
-    /// The next field on this line (empty at the line end).
+    /// The next field on this line (empty at the line end); one space
+    /// after it is consumed too.
     #[inline]
     pub(crate) fn field(&mut self) -> &'a [u8] {
         self.skip_blank();
@@ -77,7 +78,15 @@ impl<'a> Cursor<'a> {
         {
             self.pos += 1;
         }
-        self.bytes.get(start..self.pos).unwrap_or_default()
+        let field = self.bytes.get(start..self.pos).unwrap_or_default();
+        self.skip_space_once();
+        field
+    }
+
+    /// Consumes one space if the cursor stands at one.
+    #[inline(always)]
+    fn skip_space_once(&mut self) {
+        self.pos += usize::from(self.bytes.get(self.pos) == Some(&b' '));
     }
 
     /// Consumes the rest of the line and its `\n`, whatever they hold.
@@ -91,48 +100,62 @@ impl<'a> Cursor<'a> {
     }
 
     /// The next field on this line as a finite float (the same value and
-    /// decision as [`crate::scan::finite`] on the field; `finite_field`
-    /// reads the field whole, up to whitespace or the end). Inlined: the
-    /// callers' loops keep the parser's constants in registers (fewer
-    /// instructions per field, BENCHMARKS.md).
+    /// decision as [`crate::scan::finite`] on the field; `finite_field_spaced`
+    /// reads the field whole, up to whitespace or the end), and one space
+    /// after it. Inlined: the callers' loops keep the parser's constants in
+    /// registers (fewer instructions per field, BENCHMARKS.md).
+    ///
+    /// The field is first read where the cursor stands, without a look for
+    /// blanks: a field that starts with a blank (or the line end) is
+    /// refused there, and only then are the blanks skipped
+    /// ([`float_after_blanks`]); a field that does not start with
+    /// one is read the same either way.
     #[inline(always)]
     pub(crate) fn float(&mut self) -> Option<f64> {
-        self.skip_blank();
-        let (x, n) = crate::decimal::finite_field(self.bytes.get(self.pos..)?)?;
+        let (x, n) = match crate::decimal::finite_field_spaced(self.bytes.get(self.pos..)?) {
+            Some(found) => found,
+            None => float_after_blanks(self.bytes, self.pos)?,
+        };
         self.pos += n;
         Some(x)
     }
 
     /// The next field on this line as a decimal integer of at most
-    /// `max_digits` digits (digits only, no sign). A field of 1 to 7 digits
-    /// with 8 bytes left is read in one word.
+    /// `max_digits` digits (digits only, no sign), and one space after it.
+    /// A field of 1 to 7 digits with 8 bytes left, where the cursor
+    /// stands, is read in one word; anything else (blanks first, longer
+    /// fields, the end of the bytes) by [`integer_after_blanks`].
     #[inline]
     pub(crate) fn integer(&mut self, max_digits: usize) -> Option<u64> {
-        self.skip_blank();
         if let Some(w) = self.bytes.get(self.pos..).and_then(<[u8]>::first_chunk) {
             let w = u64::from_le_bytes(*w);
             let mut i = 0;
             let n = crate::decimal::part_word(w, &mut i);
-            if (1..8).contains(&n)
-                && n <= max_digits
-                && ((w >> (8 * n)) as u8).is_ascii_whitespace()
-            {
-                self.pos += n;
-                return Some(i);
+            if (1..8).contains(&n) && n <= max_digits {
+                match (w >> (8 * n)) as u8 {
+                    b' ' => {
+                        self.pos += n + 1;
+                        return Some(i);
+                    }
+                    c if c.is_ascii_whitespace() => {
+                        self.pos += n;
+                        return Some(i);
+                    }
+                    _ => {}
+                }
             }
         }
-        let (i, n) = leading_digits(self.rest());
+        let (i, n) = integer_after_blanks(self.bytes, self.pos, max_digits)?;
         self.pos += n;
-        (n > 0 && n <= max_digits && self.at_field_end()).then_some(i)
+        Some(i)
     }
 
-    /// The next field on this line when it is `digits/digits`, 1 to 7
-    /// digits each, read in two words (the OBJ corner `v/vt`); `None`, the
-    /// cursor after the blanks, when it is anything else or fewer than 16
-    /// bytes are left.
+    /// The field where the cursor stands, when it is `digits/digits`, 1
+    /// to 7 digits each, read in two words (the OBJ corner `v/vt`), and one
+    /// space after it; `None`, the cursor unmoved, when it is anything else
+    /// (blanks first included) or fewer than 16 bytes are left.
     #[inline]
     pub(crate) fn slash_pair(&mut self) -> Option<(u64, u64)> {
-        self.skip_blank();
         let b: &[u8; 16] = self.bytes.get(self.pos..)?.first_chunk()?;
         let word = |at: usize| crate::decimal::word_at(b, at);
         let (mut v, mut vt) = (0, 0);
@@ -143,10 +166,15 @@ impl<'a> Cursor<'a> {
         }
         let w = word(k + 1);
         let l = crate::decimal::part_word(w, &mut vt);
-        if !(1..8).contains(&l) || !((w >> (8 * l)) as u8).is_ascii_whitespace() {
+        if !(1..8).contains(&l) {
             return None;
         }
-        self.pos += k + 1 + l;
+        let gap = match (w >> (8 * l)) as u8 {
+            b' ' => 1,
+            c if c.is_ascii_whitespace() => 0,
+            _ => return None,
+        };
+        self.pos += k + 1 + l + gap;
         Some((v, vt))
     }
 
@@ -164,6 +192,36 @@ impl<'a> Cursor<'a> {
             Some(_) => None,
         }
     }
+}
+
+/// [`Cursor::float`] at `pos` of `bytes` after the blanks there (out of
+/// line, the cursor's fields passed by value so that the callers keep
+/// them in registers: more than one blank, a tab, or a bad field): the
+/// value and the bytes to move on by (blanks, field, one space).
+#[cold]
+#[inline(never)]
+fn float_after_blanks(bytes: &[u8], pos: usize) -> Option<(f64, usize)> {
+    let mut c = Cursor { bytes, pos };
+    c.skip_blank();
+    let (x, n) = crate::decimal::finite_field_spaced(c.rest())?;
+    Some((x, c.pos + n - pos))
+}
+
+/// [`Cursor::integer`] at `pos` of `bytes` after the blanks there, any
+/// length (out of line, as [`float_after_blanks`]): the value and the
+/// bytes to move on by (blanks, field, one space).
+#[cold]
+#[inline(never)]
+fn integer_after_blanks(bytes: &[u8], pos: usize, max_digits: usize) -> Option<(u64, usize)> {
+    let mut c = Cursor { bytes, pos };
+    c.skip_blank();
+    let (i, n) = leading_digits(c.rest());
+    c.pos += n;
+    if n == 0 || n > max_digits || !c.at_field_end() {
+        return None;
+    }
+    c.skip_space_once();
+    Some((i, c.pos - pos))
 }
 
 /// The value of the decimal digits at the start of `b` (wrapping past 19

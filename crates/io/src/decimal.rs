@@ -54,7 +54,7 @@ pub(crate) fn parse_field(b: &[u8]) -> Option<(f64, usize)> {
 
 /// [`parse_field`] when its value is finite: the fields read here always
 /// are, those `str::parse` reads are checked.
-#[inline(always)]
+#[inline]
 pub(crate) fn finite_field(b: &[u8]) -> Option<(f64, usize)> {
     match scan(b).and_then(Decimal::value) {
         Some(x) => Some(x),
@@ -62,12 +62,25 @@ pub(crate) fn finite_field(b: &[u8]) -> Option<(f64, usize)> {
     }
 }
 
-/// A field in the common form: `±mantissa · 10^exponent`, `len` bytes.
+/// [`finite_field`] with the length counting one space after the field
+/// too, when one follows (the cursor's next field then starts there in
+/// the common layout: one space between fields).
+#[inline(always)]
+pub(crate) fn finite_field_spaced(b: &[u8]) -> Option<(f64, usize)> {
+    match scan(b).and_then(Decimal::spaced_value) {
+        Some(x) => Some(x),
+        None => by_std_spaced(b).filter(|(x, _)| x.is_finite()),
+    }
+}
+
+/// A field in the common form: `±mantissa · 10^exponent`, `len` bytes,
+/// then `gap` bytes (1 when a space follows, else 0).
 struct Decimal {
     negative: bool,
     mantissa: u64,
     exponent: i32,
     len: usize,
+    gap: usize,
 }
 
 impl Decimal {
@@ -75,11 +88,25 @@ impl Decimal {
     /// decide.
     #[inline]
     fn value(self) -> Option<(f64, usize)> {
+        let len = self.len;
+        Some((self.signed()?, len))
+    }
+
+    /// [`Decimal::value`] with the length counting the gap.
+    #[inline(always)]
+    fn spaced_value(self) -> Option<(f64, usize)> {
+        let len = self.len + self.gap;
+        Some((self.signed()?, len))
+    }
+
+    /// The value, or `None` when [`crate::exact`] cannot decide.
+    #[inline(always)]
+    fn signed(self) -> Option<f64> {
         let x = match self.mantissa {
             0 => 0.0,
             w => crate::exact::to_f64(w, self.exponent)?,
         };
-        Some((if self.negative { -x } else { x }, self.len))
+        Some(if self.negative { -x } else { x })
     }
 }
 
@@ -97,27 +124,44 @@ fn scan(b: &[u8]) -> Option<Decimal> {
         return None;
     }
     // at most 19 digits: the cast is exact
-    let mut exponent = -(m.fraction as i32);
-    let mut len = m.end;
-    match m.next {
-        None => {}
-        Some(c) if c.is_ascii_whitespace() => {}
-        Some(c) if c | 0x20 == b'e' => {
-            let (e, n) = exponent_field(b.get(len + 1..)?)?;
-            exponent += e;
-            len += 1 + n;
-            if !b.get(len).is_none_or(u8::is_ascii_whitespace) {
-                return None;
-            }
-        }
-        Some(_) => return None,
-    }
+    let fraction = -(m.fraction as i32);
+    // one space or a line end after the mantissa: the common ends of a
+    // field, a comparison each; any other end out of line
+    let (exponent, len, gap) = match m.next {
+        Some(b' ') => (fraction, m.end, 1),
+        Some(b'\n') => (fraction, m.end, 0),
+        next => other_end(b, m.end, next, fraction)?,
+    };
     Some(Decimal {
         negative,
         mantissa: m.value,
         exponent,
         len,
+        gap,
     })
+}
+
+/// The end of a field whose mantissa (`fraction` the exponent it gives)
+/// ends at `end` before the byte `next` (not a space nor `\n`): whitespace, the end
+/// of the bytes, or an exponent and then one of them. The exponent, the
+/// field's length and the gap after it (1 for a space) as in [`Decimal`].
+#[cold]
+#[inline(never)]
+fn other_end(b: &[u8], end: usize, next: Option<u8>, fraction: i32) -> Option<(i32, usize, usize)> {
+    match next {
+        None => Some((fraction, end, 0)),
+        Some(c) if c.is_ascii_whitespace() => Some((fraction, end, 0)),
+        Some(c) if c | 0x20 == b'e' => {
+            let (e, n) = exponent_field(b.get(end + 1..)?)?;
+            let len = end + 1 + n;
+            match b.get(len) {
+                Some(b' ') => Some((fraction + e, len, 1)),
+                next if next.is_none_or(u8::is_ascii_whitespace) => Some((fraction + e, len, 0)),
+                _ => None,
+            }
+        }
+        Some(_) => None,
+    }
 }
 
 /// The digits of a field's mantissa, `[digits] [. digits]`, read up to
@@ -305,6 +349,13 @@ fn digit_values(v: u64) -> u64 {
     let ac = (v & LOW).wrapping_mul(100 + (1_000_000 << 32));
     let bd = ((v >> 16) & LOW).wrapping_mul(1 + (10_000 << 32));
     ac.wrapping_add(bd) >> 32
+}
+
+/// [`by_std`] with the length counting one space after the field.
+#[cold]
+fn by_std_spaced(b: &[u8]) -> Option<(f64, usize)> {
+    let (x, n) = by_std(b)?;
+    Some((x, n + usize::from(b.get(n) == Some(&b' '))))
 }
 
 /// The field at the start of `b` by `str::parse::<f64>`.

@@ -362,10 +362,9 @@ fn body_lines(
         }
     }
     for (slot_s, slot_c) in s.iter_mut().zip(k.iter_mut()) {
-        let Some((tet, uvw)) = tet_line(&mut t, nv) else {
+        if tet_line(&mut t, nv, slot_s, slot_c).is_none() {
             return false;
-        };
-        (*slot_s, *slot_c) = (tet, uvw);
+        }
     }
     t.skip_space();
     t.rest().is_empty()
@@ -382,12 +381,17 @@ fn vertex_line(t: &mut Cursor<'_>) -> Option<[f64; 3]> {
     Some(p)
 }
 
-/// One tet line: 4 distinct vertex indices below `nv` and 12 finite
-/// numbers, then the line end.
+/// One tet line: 4 distinct vertex indices below `nv` into `tet` and 12
+/// finite numbers into `uvw` (written where they go: on `None` the caller
+/// drops the whole map), then the line end.
 #[inline]
-fn tet_line(t: &mut Cursor<'_>, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> {
-    let mut tet = [0u32; 4];
-    for slot in &mut tet {
+fn tet_line(
+    t: &mut Cursor<'_>,
+    nv: usize,
+    tet: &mut [u32; 4],
+    uvw: &mut [[f64; 3]; 4],
+) -> Option<()> {
+    for slot in tet.iter_mut() {
         // digits only (as `str::parse::<u64>` without a sign), below nv
         let i = t.integer(10)?;
         if i >= nv as u64 {
@@ -395,15 +399,13 @@ fn tet_line(t: &mut Cursor<'_>, nv: usize) -> Option<([u32; 4], [[f64; 3]; 4])> 
         }
         *slot = i as u32;
     }
-    if !distinct_corners(&tet) {
+    if !distinct_corners(tet) {
         return None;
     }
-    let mut uvw = [[0.0; 3]; 4];
-    for corner in &mut uvw {
+    for corner in uvw.iter_mut() {
         for x in corner {
             *x = t.float()?;
         }
     }
-    t.end_line()?;
-    Some((tet, uvw))
+    t.end_line()
 }

@@ -51,6 +51,8 @@ pub mod write_map;
 pub mod write_uv;
 
 #[cfg(test)]
+mod cursor_tests;
+#[cfg(test)]
 mod data_tests;
 #[cfg(test)]
 mod fast_tests;
