@@ -254,6 +254,12 @@ impl NodeGraph<2> {
 
     /// Index fairing with paths of at most `max_path` edges.
     pub fn fair(&mut self, max_path: usize) -> FairingStats {
+        self.fair_glued(max_path).0
+    }
+
+    /// [`Self::fair`], also returning the vertices of the graph it leaves as
+    /// [`Self::glue_from`] takes them (none when all paths tried were undone).
+    pub fn fair_glued(&mut self, max_path: usize) -> (FairingStats, Option<Glued<2>>) {
         let v = Vertices::new(self);
         let mut st = FairingStats {
             valence1_before: v.count(1),
@@ -290,12 +296,13 @@ impl NodeGraph<2> {
             let v = Vertices::new(self);
             st.valence1_after = v.count(1);
             st.valence2_after = v.count(2);
-        } else {
-            // failed paths are undone exactly: the graph is as before
-            st.valence1_after = st.valence1_before;
-            st.valence2_after = st.valence2_before;
+            return (st, Some(v.glued));
         }
-        st
+        // failed paths are undone exactly: the graph is as before
+        st.valence1_after = st.valence1_before;
+        st.valence2_after = st.valence2_before;
+        let untouched = st.abandoned == 0;
+        (st, untouched.then_some(v.glued))
     }
 
     /// The corner to move from and its distance: of the interior vertices

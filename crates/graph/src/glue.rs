@@ -137,10 +137,21 @@ pub(crate) fn corners_on<const D: usize>(dir: usize) -> impl Iterator<Item = usi
 impl<const D: usize> NodeGraph<D> {
     /// Glues the alive nodes into a mesh (see the module docs).
     pub fn glue(&self) -> Glued<D> {
+        self.glue_from(None)
+    }
+
+    /// [`Self::glue`], from `vertices` when the caller has them: what
+    /// [`Self::glue_vertices`] returned for this very graph, unchanged
+    /// since (index fairing's last count, `NodeGraph::fair_glued`); the
+    /// whole-graph counts are added.
+    pub fn glue_from(&self, vertices: Option<Glued<D>>) -> Glued<D> {
         // two independent reads of the graph, side by side (each result is
         // the same whatever the threads); the boundary after them, so that
         // its array over all sides is not held at the same time
-        let (mut g, components) = rayon::join(|| self.glue_vertices(), || self.components());
+        let (mut g, components) = match vertices {
+            Some(g) => (g, self.components()),
+            None => rayon::join(|| self.glue_vertices(), || self.components()),
+        };
         g.boundary_loops = self.boundary_components();
         g.components = components;
         g

@@ -271,7 +271,10 @@ impl<const D: usize> NodeGraph<D> {
                 }
             }
         }
-        st.pleats_left = self.pleat_sides().len();
+        // no pleat to start from: nothing was popped, the graph is as it was
+        if !first.is_empty() {
+            st.pleats_left = self.pleat_sides().len();
+        }
         st.reverted_left = self.n_reverted_alive();
         st
     }

@@ -11,13 +11,20 @@
 //! - 9c. placed (`dualex_segment::place`): vertex positions by diagonal
 //!   tracing, each quad's source triangle and corners' map coordinates.
 //!
+//! 9c runs first, with the output's check of the same cells beside it;
+//! 9b runs only where that check finds an edge of more than two cells or
+//! a cell it leaves out, or a pair's corners did not match, and a pinch
+//! glues and places again.
+//!
 //! Input: the cleaned graph of step 8, the sanitized map, its nodes, the
-//! corners merges took over. Output: the gluing, the placed quads, the
-//! output counts. Invariant: the graph changes only by the zipped pairs,
+//! corners merges took over and fairing's vertices of the graph when
+//! unchanged since (not found again). Output: the gluing, the placed
+//! quads, the output counts. Invariant: the graph changes only by the zipped pairs,
 //! the collapsed folded corners and the pinched digons' pieces.
 
+use crate::graph_steps::Steps;
 use crate::{bubbles, digons, QuadStats};
-use dualex_graph::{Glued, Node, NodeGraph, Side, Takeover};
+use dualex_graph::{Glued, Node, NodeGraph, Side};
 use dualex_segment::nodes::Nodes;
 use dualex_segment::place::{place, Placed};
 use dualex_segment::steps::Sanitized;
@@ -28,17 +35,26 @@ pub fn glue_and_place(
     graph: &mut NodeGraph<2>,
     s: &Sanitized<'_, 3, 2>,
     nodes: &Nodes<3, 2>,
-    takeover: &Takeover<2>,
+    steps: Steps,
     st: &mut QuadStats,
 ) -> (Glued<2>, Placed<2, 4>) {
-    // 9a
-    let mut glued = graph.glue();
+    let takeover = &steps.takeover;
+    // 9a (fairing's vertices of this very graph: asserted where the
+    // crate's tests extract)
+    #[cfg(test)]
+    if let Some(v) = &steps.vertices {
+        assert!(
+            graph.glue_from(Some(v.clone())) == graph.glue(),
+            "stale vertices"
+        );
+    }
+    let mut glued = graph.glue_from(steps.vertices);
     st.zipped_sides = zip_two_side_holes(graph, &glued);
     if st.zipped_sides > 0 {
         st.folded_corners_collapsed += graph.collapse_folded_corners();
         glued = graph.glue();
     }
-    // 9b
+    // 9b's allowance of handles (asked only when a digon is found)
     let handles = |graph: &NodeGraph<2>| {
         let closed = s.topo.boundary_facets == 0 && glued.components == 1;
         let input_euler = || {
@@ -51,14 +67,39 @@ pub fn glue_and_place(
             None => 0,
         }
     };
-    st.digons_pinched = digons::pinch_digons(graph, &glued, handles);
+    // 9c, and the output's check of the same cells beside it (the placed
+    // mesh has the gluing's cells and vertices)
+    let (mut out, checked) = {
+        let g = &*graph;
+        rayon::join(
+            || place(s, nodes, g, &glued, takeover),
+            || digons::check(&glued),
+        )
+    };
+    #[cfg(test)]
+    assert!(checked == dualex_check::check_quad_mesh(out.mesh.positions.len(), &out.mesh.cells));
+    // 9b, only where the check finds an edge of more than two cells or a
+    // cell it leaves out, or a pair's corners did not match (two glued
+    // pairs between the same two vertices are four uses of one edge of
+    // good cells)
+    let clean = digons::none_by_check(&glued, &checked);
+    #[cfg(test)]
+    assert!(
+        !clean || !digons::any_digon(graph, &glued),
+        "a digon the check missed"
+    );
+    st.digons_pinched = 0;
+    if !clean {
+        st.digons_pinched = digons::pinch_digons(graph, &glued, handles);
+    }
+    let mut checked = Some(checked);
     if st.digons_pinched > 0 {
         st.bubbles_removed += bubbles::drop_bubbles(graph, &s.topo, &nodes.simplex);
         glued = graph.glue();
+        out = place(s, nodes, graph, &glued, takeover);
+        checked = None;
     }
-    // 9c
-    let out = place(s, nodes, graph, &glued, takeover);
-    st.finish_output(&glued, &out.mesh);
+    st.finish_output(&glued, &out.mesh, checked);
     (glued, out)
 }
 

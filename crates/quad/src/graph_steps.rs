@@ -16,10 +16,12 @@
 //!
 //! Input: the linked graph of step 7 and the walks' ends. Output: the
 //! graph ready to glue, the ends carried through the merges, the
-//! [`Takeover`] of merged corners. Laps `untangle` and `fairing`.
+//! [`Takeover`] of merged corners, and fairing's vertices of the graph
+//! ([`Steps::vertices`]) when steps 8b–8e changed nothing. Laps
+//! `untangle` and `fairing`.
 
 use crate::{bubbles, QuadOptions, QuadStats};
-use dualex_graph::{FairingStats, NodeGraph, Takeover};
+use dualex_graph::{FairingStats, Glued, NodeGraph, Takeover};
 use dualex_segment::nodes::Nodes;
 use dualex_segment::steps::Sanitized;
 use dualex_segment::trace::End;
@@ -39,6 +41,15 @@ pub fn fair(graph: &mut NodeGraph<2>) -> FairingStats {
     graph.fair(MAX_PATH)
 }
 
+/// What steps 7 and 8 hand to the gluing.
+pub struct Steps {
+    /// The corners merged doublets took over.
+    pub takeover: Takeover<2>,
+    /// The vertices of the graph as it is left, found by fairing
+    /// (`NodeGraph::fair_glued`; `None` when not found or changed since).
+    pub vertices: Option<Glued<2>>,
+}
+
 /// Steps 7 and 8 (module docs).
 pub fn run(
     graph: &mut NodeGraph<2>,
@@ -48,15 +59,15 @@ pub fn run(
     opts: &QuadOptions,
     st: &mut QuadStats,
     laps: &mut Laps,
-) -> Takeover<2> {
+) -> Steps {
     // 7 + 8a
-    let (ust, fst) = graph.untangle_best(UNTANGLE_ORDERS, |g| {
+    let (ust, (fst, mut vertices)) = graph.untangle_best(UNTANGLE_ORDERS, |g| {
         if opts.fairing {
-            let f = fair(g);
+            let (f, v) = g.fair_glued(MAX_PATH);
             let left = f.valence1_after + f.valence2_after;
-            (Some(f), left)
+            ((Some(f), v), left)
         } else {
-            (None, 0)
+            ((None, None), 0)
         }
     });
     st.segment.untangle = Some(ust);
@@ -74,6 +85,12 @@ pub fn run(
         st.doublets.dissolved = merged.merged;
         st.doublets.in_graph = merged.merged;
     }
+    // each of 8b–8e changes the graph only by what it counts (its
+    // operations check before they change anything)
+    let changed = st.folded_corners_collapsed + st.pillows_removed + st.bubbles_removed;
+    if changed + st.doublets.in_graph > 0 {
+        vertices = None;
+    }
     laps.lap("fairing");
-    takeover
+    Steps { takeover, vertices }
 }

@@ -176,9 +176,9 @@ fn graph_and_mesh(
         mut graph,
     } = seg;
     // 7–8: untangled, faired, cleaned up in the graph
-    let takeover = graph_steps::run(&mut graph, &mut ends, &s, &nodes, opts, st, laps);
+    let steps = graph_steps::run(&mut graph, &mut ends, &s, &nodes, opts, st, laps);
     // 9: glued and placed
-    let (glued, mut out) = gluing::glue_and_place(&mut graph, &s, &nodes, &takeover, st);
+    let (glued, mut out) = gluing::glue_and_place(&mut graph, &s, &nodes, steps, st);
     // 10: repairs on the mesh
     repairs::repair(&graph, &glued, &ends, &s.topo, &mut out, st);
     // 11: doublets the graph did not merge (only when the counts show an

@@ -4,6 +4,7 @@
 //! steps' own counts.
 
 use dualex_cells::QuadMesh;
+use dualex_check::QuadReport;
 use dualex_graph::Glued;
 use dualex_map::TriMap;
 use dualex_segment::sanitize_report::histogram_json;
@@ -102,20 +103,33 @@ impl AsMut<SegmentStats> for QuadStats {
 
 impl QuadStats {
     /// Fills the output counts from the final gluing (its graph's counts)
-    /// and mesh.
-    pub fn finish_output(&mut self, glued: &Glued<2>, mesh: &QuadMesh) {
+    /// and mesh; `checked`: the checker's report of this very mesh, when
+    /// made already.
+    pub fn finish_output(
+        &mut self,
+        glued: &Glued<2>,
+        mesh: &QuadMesh,
+        checked: Option<QuadReport>,
+    ) {
         self.unmatched_sides = glued.unmatched_sides;
         self.boundary_loops = glued.boundary_loops;
         self.components = glued.components;
-        self.finish_mesh(mesh);
+        let n = mesh.positions.len();
+        let c = checked.unwrap_or_else(|| dualex_check::check_quad_mesh(n, &mesh.cells));
+        self.finish_checked(mesh, c);
     }
 
     /// Fills the counts read from the output mesh itself.
     pub fn finish_mesh(&mut self, mesh: &QuadMesh) {
+        let c = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
+        self.finish_checked(mesh, c);
+    }
+
+    /// [`Self::finish_mesh`] with the checker's report `c` of `mesh`.
+    fn finish_checked(&mut self, mesh: &QuadMesh, c: QuadReport) {
         self.quads = mesh.cells.len();
         self.vertices = mesh.positions.len();
         // the counts of the validity checker (one piece of code for both)
-        let c = dualex_check::check_quad_mesh(mesh.positions.len(), &mesh.cells);
         let hist = |h: &BTreeMap<u32, usize>| h.iter().map(|(&k, &v)| (k as usize, v)).collect();
         self.valence_interior = hist(&c.interior_valence);
         self.valence_boundary = hist(&c.boundary_valence);

@@ -97,3 +97,33 @@ fn fairing_ignores_node_numbers_and_charts() {
     assert!(faired_cases >= 30, "only {faired_cases} disks with lifts");
     assert!(differ.is_empty(), "faired into other graphs: {differ:?}");
 }
+
+/// `fair_glued`'s vertices are those of the graph it leaves: gluing from
+/// them is gluing afresh, on the disks it changes (lifts kept) and those
+/// it leaves alone, with paths of 1 and 10 edges (none where it undid
+/// every path tried).
+#[test]
+fn fairings_vertices_are_the_graphs() {
+    let (mut after_lifts, mut untouched) = (0, 0);
+    for (name, g) in cases() {
+        for max_path in [1, 10] {
+            let mut h = g.clone();
+            let (st, vertices) = h.fair_glued(max_path);
+            assert_eq!(st, g.clone().fair(max_path), "{name}: same fairing");
+            let Some(v) = vertices else {
+                assert!(st.merged == 0 && st.abandoned > 0, "{name}: none");
+                continue;
+            };
+            assert!(h.glue_from(Some(v)) == h.glue(), "{name}, {max_path}");
+            if st.merged > 0 {
+                after_lifts += 1;
+            } else {
+                untouched += 1;
+            }
+        }
+    }
+    assert!(
+        after_lifts >= 30 && untouched > 0,
+        "{after_lifts} {untouched}"
+    );
+}
