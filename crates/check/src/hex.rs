@@ -32,7 +32,7 @@
 use crate::quad::{check_quad_mesh, QuadReport};
 use crate::tally::Tally;
 use dualex_util::bucket;
-use dualex_util::union_find::UnionFind;
+use dualex_util::union_find_par::AtomicUnionFind;
 use std::collections::BTreeMap;
 
 /// The 6 faces of a hex, oriented outwards for a positive hex (the one
@@ -188,24 +188,65 @@ fn face_key(h: &[u32; 8], f: &[usize; 4]) -> [u32; 4] {
 
 /// The faces of the cells (vertices below `n`, [`face_uses`]) counted
 /// into `r` (faces, misoriented and non-manifold ones, sorted); returns
-/// the boundary faces (one cell), as outward cycles, sorted.
+/// the boundary faces (one cell), as outward cycles, sorted. The runs
+/// (one per face) are read in parallel; every list is sorted after, so
+/// the result does not depend on the threads.
 fn face_stats(n: usize, cells: &[[u32; 8]], r: &mut HexReport) -> Vec<[u32; 4]> {
+    use rayon::prelude::*;
     let faces = face_uses(n, cells);
-    let mut boundary_quads = Vec::new();
-    for uses in faces.chunk_by(|x, y| x.0 == y.0) {
-        r.faces += 1;
-        let key = uses[0].0;
-        match uses {
-            [one] => boundary_quads.push(one.1),
-            [a, b] if !opposite(&a.1, &b.1) => r.misoriented_faces.push(key),
-            [_, _] => {}
-            _ => r.non_manifold_faces.push(key),
-        }
+    let (count, mut lists) = faces
+        .par_chunk_by(|x, y| x.0 == y.0)
+        .fold(
+            || (0, FaceLists::default()),
+            |(count, mut l), uses| {
+                let key = uses[0].0;
+                match uses {
+                    [one] => l.boundary.push(one.1),
+                    [a, b] if !opposite(&a.1, &b.1) => l.misoriented.push(key),
+                    [_, _] => {}
+                    _ => l.non_manifold.push(key),
+                }
+                (count + 1, l)
+            },
+        )
+        .reduce(
+            || (0, FaceLists::default()),
+            |(n, mut a), (m, b)| {
+                a.append(b);
+                (n + m, a)
+            },
+        );
+    drop(faces);
+    r.faces += count;
+    r.misoriented_faces.append(&mut lists.misoriented);
+    r.non_manifold_faces.append(&mut lists.non_manifold);
+    r.misoriented_faces.par_sort_unstable();
+    r.non_manifold_faces.par_sort_unstable();
+    lists.boundary.par_sort_unstable();
+    lists.boundary
+}
+
+/// Cells per parallel task of [`used_and_components`].
+const CELL_TASK: usize = 1 << 12;
+
+/// What [`face_stats`] collects from the face runs.
+#[derive(Default)]
+struct FaceLists {
+    /// The faces of one cell, as their outward cycles.
+    boundary: Vec<[u32; 4]>,
+    /// The faces of two cells that run the same way.
+    misoriented: Vec<[u32; 4]>,
+    /// The faces of more than two cells.
+    non_manifold: Vec<[u32; 4]>,
+}
+
+impl FaceLists {
+    /// `other`'s faces added to these.
+    fn append(&mut self, mut other: FaceLists) {
+        self.boundary.append(&mut other.boundary);
+        self.misoriented.append(&mut other.misoriented);
+        self.non_manifold.append(&mut other.non_manifold);
     }
-    r.misoriented_faces.sort_unstable();
-    r.non_manifold_faces.sort_unstable();
-    boundary_quads.sort_unstable();
-    boundary_quads
 }
 
 /// Every face of every cell (vertices below `n`) as (sorted vertices,
@@ -271,18 +312,28 @@ fn sorted_edges(n: usize, cells: &[[u32; 8]]) -> Vec<u64> {
 }
 
 /// The number of vertices used by the cells, and of the cells' connected
-/// components (through shared vertices).
+/// components (through shared vertices); the unions in parallel (the
+/// shared union–find's representative of a set is its smallest element,
+/// whatever the order: a set is counted at its representative).
 fn used_and_components(n_vertices: usize, cells: &[[u32; 8]]) -> (usize, usize) {
-    let mut used = vec![false; n_vertices];
-    let mut uf = UnionFind::new(n_vertices);
-    for h in cells {
-        for &v in h {
-            used[v as usize] = true;
-            uf.union(h[0] as usize, v as usize);
+    use rayon::prelude::*;
+    use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
+    let used: Vec<AtomicBool> = (0..n_vertices).map(|_| AtomicBool::new(false)).collect();
+    let uf = AtomicUnionFind::new(n_vertices);
+    cells.par_chunks(CELL_TASK).for_each(|part| {
+        for h in part {
+            for &v in h {
+                used[v as usize].store(true, Relaxed);
+                uf.union(h[0] as usize, v as usize);
+            }
         }
-    }
-    let components = uf.count_sets((0..n_vertices).filter(|&v| used[v]));
-    (used.iter().filter(|&&u| u).count(), components)
+    });
+    (0..n_vertices)
+        .into_par_iter()
+        .with_min_len(1 << 14)
+        .filter(|&v| used[v].load(Relaxed))
+        .map(|v| (1, usize::from(uf.root(v) == v)))
+        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
 /// Edge count and the valence histogram of interior edges, from the
@@ -294,7 +345,7 @@ fn edge_stats(edges: &[u64], boundary: &[[u32; 4]], r: &mut HexReport) {
         .iter()
         .flat_map(|q| (0..4).map(move |i| key(q[i], q[(i + 1) % 4])))
         .collect();
-    on_boundary.sort_unstable();
+    on_boundary.par_sort_unstable();
     // runs (one per edge) counted in parallel
     let (count, valences) = edges
         .par_chunk_by(|x, y| x == y)

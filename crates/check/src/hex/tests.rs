@@ -172,3 +172,69 @@ fn lone_hex_faces_equal_a_hash_count() {
         assert_eq!(lone_hex_faces(&cells), reference(&cells), "{cells:?}");
     }
 }
+
+/// The faces' lists and the components, read in parallel tasks, against
+/// a map of the faces and a serial union–find, on a block large enough
+/// for many tasks: cells flipped (misoriented faces), removed (cavities),
+/// a third cell on some faces (non-manifold), and a second block apart.
+#[test]
+fn face_lists_and_components_match_a_serial_count() {
+    use dualex_util::union_find::UnionFind;
+    let (mut p, mut h) = block(24, 24, 24);
+    for c in (5..h.len()).step_by(997) {
+        let x = h[c];
+        h[c] = [x[4], x[5], x[6], x[7], x[0], x[1], x[2], x[3]];
+    }
+    for c in (300..h.len()).step_by(1409).rev() {
+        h.remove(c);
+    }
+    for c in (40..h.len()).step_by(2003) {
+        let x = h[c];
+        let n = p.len() as u32;
+        p.extend([[0.0; 3]; 4]);
+        h.push([n, n + 1, n + 2, n + 3, x[4], x[5], x[6], x[7]]);
+    }
+    let (p2, h2) = block(3, 2, 2);
+    let base = p.len() as u32;
+    p.extend(p2);
+    h.extend(h2.iter().map(|c| c.map(|v| v + base)));
+    let r = check_hex_mesh(p.len(), &h, None);
+    // the reference: every face's uses in a map
+    let mut uses: BTreeMap<[u32; 4], Vec<[u32; 4]>> = BTreeMap::new();
+    for c in &h {
+        for f in &HEX_FACES {
+            uses.entry(face_key(c, f))
+                .or_default()
+                .push(f.map(|i| c[i]));
+        }
+    }
+    let (mut boundary, mut mis, mut non) = (Vec::new(), Vec::new(), Vec::new());
+    for (key, u) in &uses {
+        match u[..] {
+            [one] => boundary.push(one),
+            [a, b] if !opposite(&a, &b) => mis.push(*key),
+            [_, _] => {}
+            _ => non.push(*key),
+        }
+    }
+    boundary.sort_unstable();
+    assert_eq!(r.faces, uses.len());
+    assert_eq!(
+        (r.misoriented_faces.clone(), r.non_manifold_faces.clone()),
+        (mis, non)
+    );
+    assert!(!r.misoriented_faces.is_empty() && !r.non_manifold_faces.is_empty());
+    assert_eq!(r.boundary_faces, boundary.len());
+    let mut uf = UnionFind::new(p.len());
+    let mut used = vec![false; p.len()];
+    for c in &h {
+        for &v in c {
+            used[v as usize] = true;
+            uf.union(c[0] as usize, v as usize);
+        }
+    }
+    let n_used = used.iter().filter(|&&u| u).count();
+    let components = uf.count_sets((0..p.len()).filter(|&v| used[v]));
+    assert_eq!((r.vertices_used, r.components), (n_used, components));
+    assert_eq!(components, 2);
+}
