@@ -29,8 +29,9 @@ pub(super) fn sizes<const K: usize>(
     x: &[[f64; 3]],
     mean_edge: f64,
 ) -> (Vec<f64>, Vec<bool>, f64) {
+    use rayon::prelude::*;
     let h: Vec<f64> = cells
-        .iter()
+        .par_iter()
         .map(|c| {
             let l = edges
                 .iter()
@@ -45,11 +46,21 @@ pub(super) fn sizes<const K: usize>(
             }
         })
         .collect();
-    let mut sorted = h.clone();
-    sorted.sort_unstable_by(f64::total_cmp);
-    let median = sorted.get(sorted.len() / 2).copied().unwrap_or(1.0);
-    let flags = h.iter().map(|&v| v > STRETCHED * median).collect();
+    let median = median_of(&h);
+    let flags = h.par_iter().map(|&v| v > STRETCHED * median).collect();
     (h, flags, median)
+}
+
+/// The element at place `len / 2` of `values` sorted by
+/// [`f64::total_cmp`] (1 when empty): found by selection, not a sort
+/// (a total order: the same element).
+fn median_of(values: &[f64]) -> f64 {
+    let mut v = values.to_vec();
+    if v.is_empty() {
+        return 1.0;
+    }
+    let mid = v.len() / 2;
+    *v.select_nth_unstable_by(mid, f64::total_cmp).1
 }
 
 /// The cells of the folds: the `flagged` ones and the `stretched` ones
@@ -262,5 +273,28 @@ mod tests {
         assert_eq!(joined, [false, true, true, false, false, false]);
         let flagged = [true, false, false, false, false, false];
         assert!(fold(&cells, &around, &flagged, &stretched).is_none());
+    }
+
+    /// The median by selection is the element a sort puts at `len / 2`
+    /// (ties, signed zeros, infinities; 1 when empty).
+    #[test]
+    fn median_by_selection_as_by_sort() {
+        let mut rng = dualex_util::rng::SplitMix::new(7);
+        let special = [0.0, -0.0, 1.0, 2.5, f64::INFINITY, 1e-300];
+        for n in [0, 1, 2, 3, 4, 5, 20, 21, 100, 1001] {
+            for _ in 0..20 {
+                let values: Vec<f64> = (0..n)
+                    .map(|_| match rng.below(3) {
+                        0 => special[rng.below(special.len())],
+                        1 => (rng.unit() * 4.0).round(),
+                        _ => rng.unit() * 10.0,
+                    })
+                    .collect();
+                let mut sorted = values.clone();
+                sorted.sort_unstable_by(f64::total_cmp);
+                let want = sorted.get(sorted.len() / 2).copied().unwrap_or(1.0);
+                assert_eq!(median_of(&values).to_bits(), want.to_bits(), "{values:?}");
+            }
+        }
     }
 }
