@@ -32,6 +32,20 @@ impl Aabb {
         b
     }
 
+    /// [`Aabb::of`] by chunks in parallel: the same box (a minimum or
+    /// maximum is exact in any order; only the sign of a zero bound may
+    /// differ, which no length or distance of the box sees).
+    pub fn of_par(points: &[[f64; 3]]) -> Aabb {
+        use rayon::prelude::*;
+        points.par_chunks(1 << 14).map(Aabb::of).reduce(
+            || Aabb::of(&[]),
+            |mut a, b| {
+                a.grow(&b);
+                a
+            },
+        )
+    }
+
     fn grow(&mut self, o: &Aabb) {
         for k in 0..3 {
             self.min[k] = self.min[k].min(o.min[k]);
@@ -402,5 +416,20 @@ mod tests {
             }
         }
         assert!(Bvh::new(&[]).nearest([0.; 3], |_| Some(0.0)).is_none());
+    }
+
+    /// The box by chunks in parallel is the serial box (random points of
+    /// many magnitudes and signs, across several chunks; none: empty).
+    #[test]
+    fn box_in_parallel_as_serial() {
+        let mut rng = dualex_util::rng::SplitMix::new(3);
+        for n in [0, 1, 2, 1000, (1 << 14) + 1, 3 << 14] {
+            let points: Vec<[f64; 3]> = (0..n)
+                .map(|_| [0; 3].map(|_| (rng.unit() - 0.5) * 10f64.powi(rng.below(9) as i32 - 4)))
+                .collect();
+            let (a, b) = (Aabb::of(&points), Aabb::of_par(&points));
+            assert_eq!((a.min, a.max), (b.min, b.max), "{n} points");
+            assert_eq!(a.diagonal().to_bits(), b.diagonal().to_bits());
+        }
     }
 }

@@ -111,7 +111,7 @@ impl Reference {
                 }
             }
         }
-        let bbox = Aabb::of(positions);
+        let bbox = Aabb::of_par(positions);
         let triangle_bvh = Bvh::new(
             &triangles
                 .par_iter()
@@ -169,7 +169,8 @@ impl Reference {
                 tri
             })
             .collect();
-        tris.sort_unstable();
+        // fully ordered keys: the order of the serial sort
+        tris.par_sort_unstable();
         Self::surface(positions, &tris, feature_deg)
     }
 

@@ -11,6 +11,7 @@ use super::Segment;
 use crate::quality::{dot, norm, sub};
 use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
+use rayon::prelude::*;
 
 /// Feature curves (connected sets of feature segments) of fewer than this
 /// many segments are noise (a coarse smooth surface), not features.
@@ -41,26 +42,37 @@ pub(super) fn curve_segments(
             }
         }
     });
-    let mut segments = Vec::new();
-    for a in 0..n {
-        for ts in other[start[a]..start[a + 1]].chunk_by(|x, y| x.0 == y.0) {
-            let boundary = ts.len() == 1;
-            let feature = ts.len() > 2
-                || (ts.len() == 2 && {
-                    let (n0, n1) = (normals[ts[0].1 as usize], normals[ts[1].1 as usize]);
-                    norm(n0) > 0.0 && norm(n1) > 0.0 && dot(n0, n1) < cos
-                });
-            if boundary || feature {
-                segments.push(Segment {
+    // the buckets scanned by groups in parallel, the groups joined in order
+    let scan = |a: usize| {
+        other[start[a]..start[a + 1]]
+            .chunk_by(|x, y| x.0 == y.0)
+            .filter_map(move |ts| {
+                let boundary = ts.len() == 1;
+                let feature = ts.len() > 2
+                    || (ts.len() == 2 && {
+                        let (n0, n1) = (normals[ts[0].1 as usize], normals[ts[1].1 as usize]);
+                        norm(n0) > 0.0 && norm(n1) > 0.0 && dot(n0, n1) < cos
+                    });
+                (boundary || feature).then_some(Segment {
                     ends: [a as u32, ts[0].0],
                     boundary,
                     arc: u32::MAX,
-                });
-            }
-        }
-    }
-    segments
+                })
+            })
+    };
+    let groups: Vec<Vec<Segment>> = (0..n.div_ceil(SCAN_GROUP))
+        .into_par_iter()
+        .map(|g| {
+            (g * SCAN_GROUP..n.min((g + 1) * SCAN_GROUP))
+                .flat_map(scan)
+                .collect()
+        })
+        .collect();
+    groups.concat()
 }
+
+/// Vertices (buckets) per parallel task of [`curve_segments`]' scan.
+const SCAN_GROUP: usize = 1 << 12;
 
 /// Drops the feature segments of curves shorter than
 /// [`MIN_FEATURE_SEGMENTS`]; boundary segments stay.
@@ -77,7 +89,6 @@ pub(super) fn drop_short_features(segments: &mut Vec<Segment>, n: usize) {
         .retain(|s| s.boundary || size[curves.find(s.ends[0] as usize)] >= MIN_FEATURE_SEGMENTS);
 }
 
-/// Per vertex: a corner of the curves (see the module docs).
 /// [`Segment::arc`] for every segment: a flood over segments through
 /// vertices that are no corner.
 pub(super) fn label_arcs(segments: &mut [Segment], corner: &[bool]) {
@@ -112,26 +123,36 @@ pub(super) fn label_arcs(segments: &mut [Segment], corner: &[bool]) {
     }
 }
 
+/// Per vertex: a corner of the curves (see the module docs), from the
+/// segments' ends alone (a vertex on no segment is none).
 pub(super) fn corners(positions: &[[f64; 3]], segments: &[Segment], cos: f64) -> Vec<bool> {
-    let mut around: Vec<Vec<u32>> = vec![Vec::new(); positions.len()];
-    for s in segments {
-        around[s.ends[0] as usize].push(s.ends[1]);
-        around[s.ends[1] as usize].push(s.ends[0]);
-    }
-    around
+    let mut corner = vec![false; positions.len()];
+    // (vertex, segment, other end): a vertex's neighbours in segment order
+    let mut at: Vec<(u32, u32, u32)> = segments
         .iter()
         .enumerate()
-        .map(|(v, n)| match n.len() {
+        .flat_map(|(i, s)| {
+            [
+                (s.ends[0], i as u32, s.ends[1]),
+                (s.ends[1], i as u32, s.ends[0]),
+            ]
+        })
+        .collect();
+    at.sort_unstable();
+    for run in at.chunk_by(|a, b| a.0 == b.0) {
+        let v = run[0].0 as usize;
+        corner[v] = match run {
             // an end of a curve is where a ridge fades out, not a corner
-            0 | 1 => false,
-            2 => {
+            [_] => false,
+            [(_, _, n0), (_, _, n1)] => {
                 let p = positions[v];
-                let a = sub(p, positions[n[0] as usize]);
-                let b = sub(positions[n[1] as usize], p);
+                let a = sub(p, positions[*n0 as usize]);
+                let b = sub(positions[*n1 as usize], p);
                 let l = norm(a) * norm(b);
                 l > 0.0 && dot(a, b) < cos * l
             }
             _ => true,
-        })
-        .collect()
+        };
+    }
+    corner
 }

@@ -54,3 +54,66 @@ fn cube_boundary_has_12_feature_edges() {
         );
     }
 }
+
+/// The corners' former form: a list of curve neighbours per vertex.
+fn corners_by_lists(positions: &[[f64; 3]], segments: &[Segment], cos: f64) -> Vec<bool> {
+    let mut around: Vec<Vec<u32>> = vec![Vec::new(); positions.len()];
+    for s in segments {
+        around[s.ends[0] as usize].push(s.ends[1]);
+        around[s.ends[1] as usize].push(s.ends[0]);
+    }
+    around
+        .iter()
+        .enumerate()
+        .map(|(v, n)| match n.len() {
+            0 | 1 => false,
+            2 => {
+                let p = positions[v];
+                let a = sub(p, positions[n[0] as usize]);
+                let b = sub(positions[n[1] as usize], p);
+                let l = norm(a) * norm(b);
+                l > 0.0 && dot(a, b) < cos * l
+            }
+            _ => true,
+        })
+        .collect()
+}
+
+/// Corners from the sorted segment ends as from per-vertex lists: random
+/// curves over few vertices (many of degree 0 to 4), points on a coarse
+/// grid (repeated positions, straight and turning pairs), any threshold.
+#[test]
+fn corners_as_by_lists() {
+    let mut rng = dualex_util::rng::SplitMix::new(25);
+    for round in 0..400 {
+        let n = 2 + rng.below(40);
+        let positions: Vec<[f64; 3]> = (0..n)
+            .map(|_| [0; 3].map(|_| (rng.below(3) as f64) - 1.0))
+            .collect();
+        let mut ends: Vec<[u32; 2]> = (0..rng.below(3 * n))
+            .filter_map(|_| {
+                let (a, b) = (rng.below(n) as u32, rng.below(n) as u32);
+                (a != b).then_some([a.min(b), a.max(b)])
+            })
+            .collect();
+        ends.sort_unstable();
+        ends.dedup();
+        if round % 2 == 1 {
+            rng.shuffle(&mut ends);
+        }
+        let segments: Vec<Segment> = ends
+            .into_iter()
+            .map(|ends| Segment {
+                ends,
+                boundary: rng.below(2) == 0,
+                arc: u32::MAX,
+            })
+            .collect();
+        let cos = [1.0, 0.9, 0.0, -0.5, -1.0][rng.below(5)];
+        assert_eq!(
+            super::curves::corners(&positions, &segments, cos),
+            corners_by_lists(&positions, &segments, cos),
+            "round {round}"
+        );
+    }
+}

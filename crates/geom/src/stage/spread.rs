@@ -12,7 +12,11 @@
 //! conjugate gradients. The caller projects the result onto the
 //! reference and untangles what is left.
 //!
-//! Deterministic: sequential sums in vertex order.
+//! Also the cells' sizes: [`mean_edge`] (the mesh's mean edge, step 1)
+//! and [`sizes`] (each cell's mean edge, the median).
+//!
+//! Deterministic: sequential sums in vertex order (the mean edge's
+//! lengths are taken in parallel, summed in cell and edge order).
 
 use crate::quality::{norm, sub};
 
@@ -29,8 +33,9 @@ pub(super) fn sizes<const K: usize>(
     x: &[[f64; 3]],
     mean_edge: f64,
 ) -> (Vec<f64>, Vec<bool>, f64) {
+    use rayon::prelude::*;
     let h: Vec<f64> = cells
-        .iter()
+        .par_iter()
         .map(|c| {
             let l = edges
                 .iter()
@@ -45,11 +50,57 @@ pub(super) fn sizes<const K: usize>(
             }
         })
         .collect();
-    let mut sorted = h.clone();
-    sorted.sort_unstable_by(f64::total_cmp);
-    let median = sorted.get(sorted.len() / 2).copied().unwrap_or(1.0);
-    let flags = h.iter().map(|&v| v > STRETCHED * median).collect();
+    let median = median_of(&h);
+    let flags = h.par_iter().map(|&v| v > STRETCHED * median).collect();
     (h, flags, median)
+}
+
+/// Cells per block of [`mean_edge`]: a block's lengths (12 a hex) in
+/// 96 KiB, under glibc's mmap threshold.
+const MEAN_EDGE_BLOCK: usize = 1 << 10;
+
+/// The mean length of the cells' edges (each cell's edges counted; 0 for
+/// none): the lengths of a block of cells in parallel, summed in cell and
+/// edge order (the serial sum's rounding).
+pub(super) fn mean_edge<const K: usize>(
+    x: &[[f64; 3]],
+    cells: &[[u32; K]],
+    edges: &[[usize; 2]],
+) -> f64 {
+    use rayon::prelude::*;
+    let n = cells.len() * edges.len();
+    if n == 0 {
+        return 0.0;
+    }
+    let mut sum = 0.0;
+    let mut lengths = vec![0.0; MEAN_EDGE_BLOCK.min(cells.len()) * edges.len()];
+    for block in cells.chunks(MEAN_EDGE_BLOCK) {
+        let lengths = &mut lengths[..block.len() * edges.len()];
+        lengths
+            .par_chunks_mut(edges.len())
+            .zip(block)
+            .for_each(|(l, c)| {
+                for (l, e) in l.iter_mut().zip(edges) {
+                    *l = norm(sub(x[c[e[1]] as usize], x[c[e[0]] as usize]));
+                }
+            });
+        for &l in lengths.iter() {
+            sum += l;
+        }
+    }
+    sum / n as f64
+}
+
+/// The element at place `len / 2` of `values` sorted by
+/// [`f64::total_cmp`] (1 when empty): found by selection, not a sort
+/// (a total order: the same element).
+fn median_of(values: &[f64]) -> f64 {
+    let mut v = values.to_vec();
+    if v.is_empty() {
+        return 1.0;
+    }
+    let mid = v.len() / 2;
+    *v.select_nth_unstable_by(mid, f64::total_cmp).1
 }
 
 /// The cells of the folds: the `flagged` ones and the `stretched` ones
@@ -262,5 +313,64 @@ mod tests {
         assert_eq!(joined, [false, true, true, false, false, false]);
         let flagged = [true, false, false, false, false, false];
         assert!(fold(&cells, &around, &flagged, &stretched).is_none());
+    }
+
+    /// The median by selection is the element a sort puts at `len / 2`
+    /// (ties, signed zeros, infinities; 1 when empty).
+    #[test]
+    fn median_by_selection_as_by_sort() {
+        let mut rng = dualex_util::rng::SplitMix::new(7);
+        let special = [0.0, -0.0, 1.0, 2.5, f64::INFINITY, 1e-300];
+        for n in [0, 1, 2, 3, 4, 5, 20, 21, 100, 1001] {
+            for _ in 0..20 {
+                let values: Vec<f64> = (0..n)
+                    .map(|_| match rng.below(3) {
+                        0 => special[rng.below(special.len())],
+                        1 => (rng.unit() * 4.0).round(),
+                        _ => rng.unit() * 10.0,
+                    })
+                    .collect();
+                let mut sorted = values.clone();
+                sorted.sort_unstable_by(f64::total_cmp);
+                let want = sorted.get(sorted.len() / 2).copied().unwrap_or(1.0);
+                assert_eq!(median_of(&values).to_bits(), want.to_bits(), "{values:?}");
+            }
+        }
+    }
+
+    /// The mean edge by blocks of lengths taken in parallel is the serial
+    /// sum's, bit for bit: lengths of many magnitudes (the order of the
+    /// sum shows in its rounding), across several blocks.
+    #[test]
+    fn mean_edge_as_the_serial_sum() {
+        let mut rng = dualex_util::rng::SplitMix::new(11);
+        let edges = [[0, 1], [1, 2], [2, 3], [3, 0]];
+        for cells_n in [
+            0,
+            1,
+            7,
+            MEAN_EDGE_BLOCK - 1,
+            MEAN_EDGE_BLOCK,
+            3 * MEAN_EDGE_BLOCK + 5,
+        ] {
+            let x: Vec<[f64; 3]> = (0..500)
+                .map(|_| {
+                    let s = 10f64.powi(rng.below(12) as i32 - 6);
+                    [0; 3].map(|_| rng.unit() * s)
+                })
+                .collect();
+            let cells: Vec<[u32; 4]> = (0..cells_n)
+                .map(|_| [0; 4].map(|_| rng.below(x.len()) as u32))
+                .collect();
+            let (mut sum, mut n) = (0.0, 0usize);
+            for c in &cells {
+                for e in &edges {
+                    sum += norm(sub(x[c[e[1]] as usize], x[c[e[0]] as usize]));
+                    n += 1;
+                }
+            }
+            let want = if n > 0 { sum / n as f64 } else { 0.0 };
+            assert_eq!(mean_edge(&x, &cells, &edges).to_bits(), want.to_bits());
+        }
     }
 }

@@ -111,14 +111,7 @@ fn measure_before<const D: usize, const K: usize>(
         ..Default::default()
     };
     rep.after = rep.before;
-    let (mut sum, mut n) = (0.0, 0usize);
-    for c in input.cells {
-        for e in input.edges {
-            sum += norm(sub(x[c[e[1]] as usize], x[c[e[0]] as usize]));
-            n += 1;
-        }
-    }
-    rep.mean_edge = if n > 0 { sum / n as f64 } else { 0.0 };
+    rep.mean_edge = spread::mean_edge(x, input.cells, input.edges);
     (rep, values)
 }
 
