@@ -48,8 +48,10 @@ pub struct BadScan {
     mask: Vec<u8>,
     /// Whether some mask may be [`PARTIAL`] (before the first update).
     partial: bool,
-    /// Per vertex and per simplex, the last update that met it (empty
-    /// until an update of a few simplices needs them).
+    /// Per vertex and per simplex, the last update that met it (made with
+    /// the scan: made at the first small update instead, they raised
+    /// t1000's peak by ~24 MB through glibc's dynamic mmap threshold,
+    /// BENCHMARKS.md; zeroed pages never touched cost no memory).
     v_stamp: Vec<u32>,
     s_stamp: Vec<u32>,
     epoch: u32,
@@ -85,8 +87,8 @@ impl BadScan {
             bad,
             mask,
             partial,
-            v_stamp: Vec::new(),
-            s_stamp: Vec::new(),
+            v_stamp: vec![0; nv],
+            s_stamp: vec![0; map.simplices.len()],
             epoch: 0,
             min_task,
         }
@@ -135,12 +137,6 @@ impl BadScan {
             self.partial = false;
             self.bad = into_bools(flags);
             return;
-        }
-        // the stamps, made at the first update that reads them (an update
-        // of about half the simplices or more, above, never does)
-        if self.s_stamp.is_empty() {
-            self.v_stamp = vec![0; self.bad.len()];
-            self.s_stamp = vec![0; self.mask.len()];
         }
         // the simplices whose corners moved
         let mut redo = Vec::new();
