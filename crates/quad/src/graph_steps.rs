@@ -21,7 +21,7 @@
 //! `untangle` and `fairing`.
 
 use crate::{bubbles, QuadOptions, QuadStats};
-use dualex_graph::{FairingStats, Glued, NodeGraph, Takeover};
+use dualex_graph::{Glued, NodeGraph, Takeover};
 use dualex_segment::nodes::Nodes;
 use dualex_segment::steps::Sanitized;
 use dualex_segment::trace::End;
@@ -35,11 +35,6 @@ pub const MAX_PATH: usize = 10;
 /// at their poles, 4 orders fixed 5 of the 9 split poles in 67 500 maps,
 /// and more orders fixed none of the other 4.
 pub const UNTANGLE_ORDERS: u64 = 4;
-
-/// Runs index fairing (step 8a).
-pub fn fair(graph: &mut NodeGraph<2>) -> FairingStats {
-    graph.fair(MAX_PATH)
-}
 
 /// What steps 7 and 8 hand to the gluing.
 pub struct Steps {

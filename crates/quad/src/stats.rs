@@ -114,9 +114,10 @@ impl QuadStats {
         self.unmatched_sides = glued.unmatched_sides;
         self.boundary_loops = glued.boundary_loops;
         self.components = glued.components;
-        let n = mesh.positions.len();
-        let c = checked.unwrap_or_else(|| dualex_check::check_quad_mesh(n, &mesh.cells));
-        self.finish_checked(mesh, c);
+        match checked {
+            Some(c) => self.finish_checked(mesh, c),
+            None => self.finish_mesh(mesh),
+        }
     }
 
     /// Fills the counts read from the output mesh itself.
