@@ -444,9 +444,7 @@ fn tet_line(
         return None;
     }
     for corner in uvw.iter_mut() {
-        for x in corner {
-            *x = t.float()?;
-        }
+        *corner = [t.float()?, t.float()?, t.float()?];
     }
     t.end_line()
 }
