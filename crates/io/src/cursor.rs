@@ -83,6 +83,16 @@ impl<'a> Cursor<'a> {
         field
     }
 
+    /// Consumes `prefix` if the bytes at the cursor start with it.
+    #[inline(always)]
+    pub(crate) fn eat(&mut self, prefix: &[u8]) -> bool {
+        let found = self.rest().starts_with(prefix);
+        if found {
+            self.pos += prefix.len();
+        }
+        found
+    }
+
     /// Consumes one space if the cursor stands at one.
     #[inline(always)]
     fn skip_space_once(&mut self) {
@@ -127,7 +137,9 @@ impl<'a> Cursor<'a> {
     /// fields, the end of the bytes) by [`integer_after_blanks`].
     #[inline]
     pub(crate) fn integer(&mut self, max_digits: usize) -> Option<u64> {
-        if let Some(w) = self.bytes.get(self.pos..).and_then(<[u8]>::first_chunk) {
+        // one bounds check: `pos + 8` cannot wrap (`pos ≤ len`)
+        let word = self.bytes.get(self.pos..self.pos + 8);
+        if let Some(w) = word.and_then(<[u8]>::first_chunk) {
             let w = u64::from_le_bytes(*w);
             let mut i = 0;
             let n = crate::decimal::part_word(w, &mut i);
@@ -182,6 +194,10 @@ impl<'a> Cursor<'a> {
     /// (or the end of the bytes).
     #[inline]
     pub(crate) fn end_line(&mut self) -> Option<()> {
+        // the common case first: the `\n` right where the cursor stands
+        if self.eat(b"\n") {
+            return Some(());
+        }
         self.skip_blank();
         match self.bytes.get(self.pos) {
             None => Some(()),
@@ -237,24 +253,34 @@ pub(crate) fn leading_digits(b: &[u8]) -> (u64, usize) {
     (i, n)
 }
 
+/// Bytes per block of the counting loops: a multiple of 32, so that a
+/// block is whole vector steps with no tail loop of its own, and below
+/// 256, so that a count per byte lane cannot overflow.
+const BLOCK: usize = 224;
+
 /// The number of lines of `bytes` as `str::lines` counts them: one per
 /// `\n`, plus a last line without one.
 pub(crate) fn count_lines(bytes: &[u8]) -> usize {
-    // blocks of at most 255 bytes summed in u8: the loop vectorizes
-    let newlines: usize = bytes
-        .chunks(255)
+    // whole blocks summed in u8: the loop vectorizes and unrolls
+    let blocks = bytes.chunks_exact(BLOCK);
+    let tail = blocks.remainder();
+    let newlines: usize = blocks
         .map(|c| usize::from(c.iter().fold(0u8, |n, &b| n + u8::from(b == b'\n'))))
         .sum();
-    newlines + usize::from(bytes.last().is_some_and(|&b| b != b'\n'))
+    let tail_newlines = tail.iter().filter(|&&b| b == b'\n').count();
+    newlines + tail_newlines + usize::from(bytes.last().is_some_and(|&b| b != b'\n'))
 }
 
 /// [`count_lines`] of `bytes` if they are text (valid UTF-8 without a NUL
-/// byte), in one pass: per block of 255 bytes the newlines are counted
-/// and the bytes or-ed and min-ed (the loop vectorizes); only bytes with
-/// a non-ASCII one are checked as UTF-8 again (`str::from_utf8`).
+/// byte), in one pass: per block of [`BLOCK`] bytes the newlines are
+/// counted and the bytes or-ed and min-ed (the loop vectorizes); only
+/// bytes with a non-ASCII one are checked as UTF-8 again
+/// (`str::from_utf8`).
 pub(crate) fn text_lines(bytes: &[u8]) -> Option<usize> {
     let (mut newlines, mut any, mut least) = (0usize, 0u8, u8::MAX);
-    for c in bytes.chunks(255) {
+    let blocks = bytes.chunks_exact(BLOCK);
+    let tail = blocks.remainder();
+    for c in blocks.chain(std::iter::once(tail)) {
         let (mut n, mut or, mut min) = (0u8, 0u8, u8::MAX);
         for &b in c {
             n += u8::from(b == b'\n');

@@ -82,6 +82,11 @@ fn numbers<const K: usize>(t: &mut Cursor<'_>) -> Option<[f64; K]> {
     for slot in &mut out {
         *slot = t.float()?;
     }
+    // the common end: the line's `\n` right after the last number (what
+    // `field` then `end_line` would consume)
+    if t.eat(b"\n") {
+        return Some(out);
+    }
     loop {
         match t.field() {
             [] => break t.end_line()?,
@@ -104,10 +109,12 @@ fn face(t: &mut Cursor<'_>) -> Option<([u32; 3], [u32; 3])> {
             None => corner(t.field())?,
         };
     }
-    match t.field() {
-        [] => t.end_line()?,
-        [b'#', ..] => t.skip_line(),
-        _ => return None,
+    if !t.eat(b"\n") {
+        match t.field() {
+            [] => t.end_line()?,
+            [b'#', ..] => t.skip_line(),
+            _ => return None,
+        }
     }
     Some((v, vt))
 }
@@ -145,20 +152,54 @@ fn obj_chunk(text: &[u8]) -> Option<ObjChunk> {
     let mut c = reserved(text, text_lines(text)?);
     let mut t = Cursor::new(text);
     while !t.rest().is_empty() {
-        match t.field() {
-            [] => t.end_line()?,
-            b"v" => c.positions.push(numbers::<3>(&mut t)?),
-            b"vt" => c.uvs.push(numbers::<2>(&mut t)?),
-            b"f" => {
+        match line_start(&mut t) {
+            Line::Vertex => c.positions.push(numbers::<3>(&mut t)?),
+            Line::Uv => c.uvs.push(numbers::<2>(&mut t)?),
+            Line::Face => {
                 let (v, vt) = face(&mut t)?;
                 c.v.push(v);
                 c.vt.push(vt);
             }
-            kw if skippable(kw) => t.skip_line(),
-            _ => return None,
+            Line::Other([]) => t.end_line()?,
+            Line::Other(kw) if skippable(kw) => t.skip_line(),
+            Line::Other(_) => return None,
         }
     }
     Some(c)
+}
+
+/// What an OBJ line starts with, as the fast path reads it.
+enum Line<'a> {
+    /// `v`: a position.
+    Vertex,
+    /// `vt`: texture coordinates.
+    Uv,
+    /// `f`: a face.
+    Face,
+    /// Any other first field (empty on a blank line).
+    Other(&'a [u8]),
+}
+
+/// The first field of the line at `t` ([`Cursor::field`], one space after
+/// it consumed): `v `, `vt ` and `f ` compared whole, without the field's
+/// byte loop (the cursor then stands where `field` leaves it).
+#[inline]
+fn line_start<'a>(t: &mut Cursor<'a>) -> Line<'a> {
+    if t.eat(b"v ") {
+        return Line::Vertex;
+    }
+    if t.eat(b"f ") {
+        return Line::Face;
+    }
+    if t.eat(b"vt ") {
+        return Line::Uv;
+    }
+    match t.field() {
+        b"v" => Line::Vertex,
+        b"vt" => Line::Uv,
+        b"f" => Line::Face,
+        kw => Line::Other(kw),
+    }
 }
 
 /// The OBJ fast path (see the module docs).
@@ -403,9 +444,7 @@ fn tet_line(
         return None;
     }
     for corner in uvw.iter_mut() {
-        for x in corner {
-            *x = t.float()?;
-        }
+        *corner = [t.float()?, t.float()?, t.float()?];
     }
     t.end_line()
 }

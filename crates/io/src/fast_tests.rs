@@ -5,6 +5,7 @@
 //! joins.
 
 use crate::fast::{hexex_chunked, obj_chunked};
+use crate::float_tests::Rng;
 use crate::fuzz_tests::mutants;
 use crate::hexex::parse_hexex_sequential;
 use crate::obj::parse_obj_sequential;
@@ -234,7 +235,7 @@ fn shared_data_reads_the_same() {
 /// `text_lines` against its definition (`str::from_utf8`, no NUL, then
 /// `count_lines` as `str::lines` counts): ASCII, multi-byte and invalid
 /// UTF-8, NUL bytes, CR, a last line with or without `\n`, blocks longer
-/// than the 255 bytes its loop sums at a time.
+/// than the 224 bytes its loop sums at a time.
 #[test]
 fn text_lines_is_utf8_without_nul_and_the_line_count() {
     use crate::cursor::{count_lines, text_lines};
@@ -259,7 +260,7 @@ fn text_lines_is_utf8_without_nul_and_the_line_count() {
     ];
     for case in 0..3000 {
         let mut bytes = Vec::new();
-        let len = [3, 40, 300, 2000][case % 4];
+        let len = [3, 40, 300, 2000, 223, 224, 225, 449][case % 8];
         // most cases from the harmless symbols only
         let kinds = if case % 3 == 0 { alphabet.len() } else { 5 };
         while bytes.len() < len {
@@ -280,4 +281,96 @@ fn text_lines_is_utf8_without_nul_and_the_line_count() {
         );
     }
     assert_eq!(text_lines(b""), Some(0));
+}
+
+/// `count_lines` and `text_lines` on runs of newlines (every byte of a
+/// block a newline: the per-lane byte counts at their largest) and of
+/// other bytes, of every length up to four blocks and then some, with and
+/// without a last byte that is not a newline.
+#[test]
+fn line_counts_of_newline_runs() {
+    use crate::cursor::{count_lines, text_lines};
+    for len in 0..1000 {
+        for last in [None, Some(b'x')] {
+            let mut bytes = vec![b'\n'; len];
+            bytes.extend(last);
+            let want = len + usize::from(last.is_some());
+            assert_eq!(count_lines(&bytes), want, "{len} {last:?}");
+            assert_eq!(text_lines(&bytes), Some(want), "{len} {last:?}");
+            // newlines every third byte
+            let spaced: Vec<u8> = (0..len)
+                .map(|i| if i % 3 == 2 { b'\n' } else { b'7' })
+                .collect();
+            let want = len / 3 + usize::from(len % 3 != 0);
+            assert_eq!(count_lines(&spaced), want, "{len}");
+            assert_eq!(text_lines(&spaced), Some(want), "{len}");
+        }
+    }
+}
+
+/// Random OBJ texts of three vertices, three `vt` and a few faces, each
+/// line's start and end taken from a list: the keywords `v`, `vt`, `f`
+/// with one space, two, a tab, a blank before, glued to more letters, or
+/// other keywords; the line ends `\n` right after the last field, blanks
+/// first, `\r\n`, a comment, or the end of the file. The fast path reads
+/// the keyword and the common line end without the field loop; it must
+/// read each text as the sequential reader does or step aside.
+#[test]
+fn obj_line_starts_and_ends_read_as_the_sequential_reader() {
+    let mut r = Rng(0x51_7cc1_b727_220a);
+    let starts = ["", "", "", "", " ", "  ", "\t", "\x0c", ""];
+    let seps = [" ", " ", " ", " ", "  ", "\t", " \t"];
+    let ends = [
+        " \n", "\r\n", "\t\n", " # c\n", "#c\n", " 7\n", " x\n", "  x\n",
+    ];
+    let (mut fast, mut seen) = (0, 0);
+    for case in 0..20_000 {
+        let mut text = String::new();
+        let mut line = |r: &mut Rng, kw: &str, fields: &[&str], last: bool| {
+            text.push_str(r.pick(&starts));
+            text.push_str(kw);
+            for f in fields {
+                text.push_str(r.pick(&seps));
+                text.push_str(f);
+            }
+            if !last || r.below(2) == 0 {
+                text.push_str(if r.below(6) == 0 { r.pick(&ends) } else { "\n" });
+            }
+        };
+        let kinds = ["v", "vt", "f", "vn", "vtx", "fv", "g", "#", "", "v1"];
+        let kw = |r: &mut Rng, own: &'static str| {
+            if r.below(24) == 0 {
+                r.pick(&kinds)
+            } else {
+                own
+            }
+        };
+        for p in ["0 0 0", "1 0 0.5", "-0.0 1 0"] {
+            let k = kw(&mut r, "v");
+            line(&mut r, k, &p.split(' ').collect::<Vec<_>>(), false);
+        }
+        for p in ["0 0", "1 0.25", "0 1"] {
+            let k = kw(&mut r, "vt");
+            line(&mut r, k, &p.split(' ').collect::<Vec<_>>(), false);
+        }
+        let faces = 1 + r.below(3);
+        for n in 0..faces {
+            let k = kw(&mut r, "f");
+            let f = r.pick(&[
+                "1/1 2/2 3/3",
+                "3/3 2/2 1/1",
+                "1/1/1 2/2/2 3/3/3",
+                "2/2 3/3 1/1",
+            ]);
+            line(&mut r, k, &f.split(' ').collect::<Vec<_>>(), n + 1 == faces);
+        }
+        seen += 1;
+        fast += usize::from(agree_obj(
+            text.as_bytes(),
+            [7, 64, 1 << 20][case % 3],
+            false,
+        ));
+    }
+    // most texts are of the common form
+    assert!(fast * 4 > seen, "{fast} of {seen} read by the fast path");
 }
