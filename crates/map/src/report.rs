@@ -15,7 +15,8 @@
 use std::collections::BTreeMap;
 use std::fmt;
 
-use crate::singularity::{edge_singularities, quality, vertex_singularities};
+use crate::corners::VertexCorners;
+use crate::singularity::{edge_singularities, quality, vertex_singularities_with};
 use crate::weld::weld;
 use crate::{
     InputError, SimplexMap, Stars, TetMap, Topology, TransitionOptions, Transitions, TriMap,
@@ -160,8 +161,20 @@ pub fn singularity_histogram(
     topo: &Topology<3>,
     trans: &Transitions<3, 2>,
 ) -> (BTreeMap<String, usize>, BTreeMap<String, usize>) {
+    let lists = VertexCorners::build(&map.simplices, map.positions.len(), false);
+    singularity_histogram_with(map, topo, trans, &lists)
+}
+
+/// [`singularity_histogram`] with the map's corner lists
+/// ([`crate::singularity::vertex_singularities_with`]).
+pub fn singularity_histogram_with(
+    map: &TriMap,
+    topo: &Topology<3>,
+    trans: &Transitions<3, 2>,
+    lists: &VertexCorners,
+) -> (BTreeMap<String, usize>, BTreeMap<String, usize>) {
     let (mut known, mut unknown) = (BTreeMap::new(), BTreeMap::new());
-    for s in vertex_singularities(map, topo, trans) {
+    for s in vertex_singularities_with(map, topo, trans, lists) {
         match s.index_quarters {
             Some(q) => *known.entry(quarters(q)).or_default() += 1,
             None => *unknown.entry(quarters(s.turns)).or_default() += 1,

@@ -98,6 +98,18 @@ pub fn vertex_singularities(
     trans: &Transitions<3, 2>,
 ) -> Vec<VertexSingularity> {
     let lists = VertexCorners::build(&map.simplices, map.positions.len(), false);
+    vertex_singularities_with(map, topo, trans, &lists)
+}
+
+/// [`vertex_singularities`] with the map's corner lists `lists` (built
+/// with or without their positions: the same lists), for a caller that
+/// holds them already (the extraction's model).
+pub fn vertex_singularities_with(
+    map: &TriMap,
+    topo: &Topology<3>,
+    trans: &Transitions<3, 2>,
+    lists: &VertexCorners,
+) -> Vec<VertexSingularity> {
     let fold_free = fold_free_bits(map);
     // per vertex in parallel, collected in vertex order
     (0..map.positions.len())
@@ -368,6 +380,22 @@ mod tests {
         assert_eq!((topo.boundary_facets, topo.components()), (0, 1));
         assert!(vertex_singularities(&t, &topo, &tr).is_empty());
         assert!(sing(&grid(3)).is_empty());
+    }
+
+    /// The corner lists handed in (the model's, built with positions)
+    /// give what the function's own build gives.
+    #[test]
+    fn the_models_corner_lists_give_the_same_singularities() {
+        let mut singular = 0;
+        for mut m in [cube_surface(3), cone(7), cone(2), grid(6)] {
+            rechart(&mut m, 3);
+            let (topo, tr) = derive(&m);
+            let lists = VertexCorners::build(&m.simplices, m.positions.len(), true);
+            let got = vertex_singularities_with(&m, &topo, &tr, &lists);
+            assert_eq!(got, vertex_singularities(&m, &topo, &tr));
+            singular += got.len();
+        }
+        assert!(singular > 0);
     }
 
     #[test]

@@ -22,7 +22,8 @@
 //! map is read off the two orders and its orientation off the two
 //! parities, without matching vertices. Blocks of vertices are bucketed
 //! and glued in parallel: a glued
-//! pair writes the other half-facet's id into a per-half-facet `mate`
+//! pair writes the other simplex's id and the corner map to it (whose
+//! byte at the apex is the other's facet) into a per-half-facet `mate`
 //! (each half-facet is in one bucket), each block stops at its first
 //! error and the first block's error is returned; the adjacency is then
 //! read off `mate` per simplex, in parallel.
@@ -104,8 +105,8 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
     corners: &VertexCorners,
 ) -> Result<Topology<N>, InputError> {
     let (nv, ns) = (map.positions.len(), map.len());
-    // the other half-facet of each glued one in the low 32 bits and the
-    // corner map to it (`nbr_corner`, N ≤ 4 bytes) above, written by the
+    // the other simplex of each glued half-facet in the low 32 bits and
+    // the corner map to it (`nbr_corner`, N ≤ 4 bytes) above, written by the
     // bucket that holds both (each half-facet is in exactly one bucket)
     let mate: Vec<AtomicU64> = (0..ns * N)
         .into_par_iter()
@@ -148,10 +149,11 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
             for (f, m) in mates.iter().enumerate() {
                 let m = m.load(Relaxed);
                 if m != UNGLUED {
-                    let (n, g) = split::<N>(m as u32);
-                    adj[f] = n as u32;
-                    adj_facet[f] = g as u8;
+                    // the neighbour's facet is the corner the apex `f`
+                    // maps to (no division of a half-facet id)
                     nbr[f] = std::array::from_fn(|c| (m >> (32 + 8 * c)) as u8);
+                    adj[f] = m as u32;
+                    adj_facet[f] = nbr[f][f];
                 }
             }
             (adj, (adj_facet, nbr))
@@ -303,13 +305,13 @@ fn glue_pair<const N: usize, const D: usize>(
         return Err(opposite_orientations(map, s, f, n));
     }
     // `mate` words: corner `c` of one side to the corner of the other in
-    // byte `c` above the other half-facet's id (the apexes `f` and `g`
-    // are the corners the orders leave out)
+    // byte `c` above the other simplex's id (the apexes `f` and `g` are
+    // the corners the orders leave out: byte `f` holds `g`)
     debug_assert!(f < N && g < N);
     let maps = &CornerMaps::<N>::TABLE;
     let (o1, o2) = (usize::from(o1 & 63), usize::from(o2 & 63));
-    let there = u64::from(h2) | u64::from(maps[o1][o2]) << 32;
-    let back = u64::from(h1) | u64::from(maps[o2][o1]) << 32;
+    let there = n as u64 | u64::from(maps[o1][o2]) << 32;
+    let back = s as u64 | u64::from(maps[o2][o1]) << 32;
     mate[h1 as usize].store(there, Relaxed);
     mate[h2 as usize].store(back, Relaxed);
     Ok(())

@@ -192,8 +192,12 @@ impl QuadStats {
 /// (read on the first pass of steps 1–3; integer part unknown: "k/4 mod
 /// 1").
 pub fn input_singularities(map: &TriMap, model: &Model<3, 2>) -> BTreeMap<String, usize> {
-    let (mut known, unknown) =
-        dualex_map::report::singularity_histogram(map, &model.topo, &model.trans);
+    let (mut known, unknown) = dualex_map::report::singularity_histogram_with(
+        map,
+        &model.topo,
+        &model.trans,
+        &model.corners,
+    );
     known.extend(unknown.into_iter().map(|(k, n)| (format!("{k} mod 1"), n)));
     known
 }

@@ -178,6 +178,10 @@ pub struct Model<const N: usize, const D: usize> {
     pub trans: Transitions<N, D>,
     /// Vertex stars, singular flags.
     pub stars: Stars<D>,
+    /// The corner lists the model was built from, without their
+    /// positions (read by a first pass: the 2D singularity statistics;
+    /// dropped before the local map).
+    pub corners: VertexCorners,
 }
 
 /// What steps 1–3 leave: the map the rest runs on and its local map.
@@ -247,7 +251,17 @@ pub fn model<const N: usize, const D: usize>(
     st.snapped_transitions = trep.snapped;
     let stars = Stars::build_checked(map, &topo, &trans, &corners)?;
     st.singular_vertices = stars.singular.iter().filter(|&&s| s).count();
-    Ok(Model { topo, trans, stars })
+    // the positions were for the walks only
+    let corners = VertexCorners {
+        position: Vec::new(),
+        ..corners
+    };
+    Ok(Model {
+        topo,
+        trans,
+        stars,
+        corners,
+    })
 }
 
 /// Steps 1–3, repeated until nothing is left to split: the model, the
@@ -282,7 +296,13 @@ where
         if let Some(read) = first_pass.take() {
             read(&map, &m, &singular);
         }
-        let Model { topo, trans, stars } = m;
+        let Model {
+            topo,
+            trans,
+            stars,
+            corners,
+        } = m;
+        drop(corners);
         // step 2: the local map takes the transitions over (no copy)
         let (local, snap, choice) = local_map(&map, &topo, trans, &stars, opts.grid_offset, chosen);
         chosen = Some(choice);
