@@ -79,24 +79,81 @@ pub fn walk_all<const D: usize>(
         .with_min_len(1024)
         .map(|i| walk(i / (2 * D), i % (2 * D)))
         .unzip_into_vecs(&mut ends, &mut steps);
-    let (counts, max_steps) = tally(&ends, &steps);
-    let [to_node, to_boundary, inconsistent, loops] = counts;
-    let rep = TraceReport {
-        to_node,
-        to_boundary,
-        inconsistent,
-        loops,
-        max_steps,
-    };
+    let rep = tally(&ends, &steps);
     (ends, rep)
 }
 
-/// How many `ends` are of each kind (node, boundary, inconsistent, loop),
-/// and the most `steps` of a walk; in parallel, per chunk.
-fn tally<const D: usize>(ends: &[End<D>], steps: &[usize]) -> ([usize; 4], usize) {
+/// A walk's step count marked as reversible ([`walk_all_paired`]; above
+/// any count: a walk takes at most `N · simplices + N` steps).
+const BACK: usize = 1 << (usize::BITS - 1);
+/// A step count marked as derived from the reverse walk.
+const DERIVED: usize = 1 << (usize::BITS - 2);
+/// The count without its marks.
+const STEPS: usize = DERIVED - 1;
+
+/// [`walk_all`] when `walk(node, dir) -> (end, steps, back)` also says
+/// whether the walk from the side reached (an [`End::Node`]) is this walk
+/// reversed (`back`: the same steps, back to this side, the inverse
+/// rotation). The sides of even direction (positive along an axis) are
+/// walked first; each odd side one of them reached with `back` is then
+/// written as that walk reversed instead of walked; the other odd sides
+/// are walked. Each side's end is what walking it gives, as with
+/// [`walk_all`], provided `back` is only said when true.
+pub fn walk_all_paired<const D: usize>(
+    n_nodes: usize,
+    walk: impl Fn(usize, usize) -> (End<D>, usize, bool) + Sync,
+) -> (Vec<End<D>>, TraceReport) {
+    use rayon::prelude::*;
+    let sides = n_nodes * 2 * D;
+    // 1. the even sides (the odd ones hold a placeholder)
+    let (mut ends, mut steps) = (Vec::new(), Vec::new());
+    (0..sides)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|i| {
+            if i % 2 == 1 {
+                return (End::Loop, 0);
+            }
+            let (end, k, back) = walk(i / (2 * D), i % (2 * D));
+            (end, k | if back { BACK } else { 0 })
+        })
+        .unzip_into_vecs(&mut ends, &mut steps);
+    // 2. the odd sides they reached, reversed
+    for i in (0..sides).step_by(2) {
+        let (End::Node { side, rho }, true) = (ends[i], steps[i] & BACK != 0) else {
+            continue;
+        };
+        let j = side as usize;
+        if j % 2 == 1 && j < sides {
+            ends[j] = End::Node {
+                side: i as u32,
+                rho: rho.inverse(),
+            };
+            steps[j] = steps[i] & STEPS | DERIVED;
+        }
+    }
+    // 3. the other odd sides, walked
+    ends.par_iter_mut()
+        .zip(steps.par_iter_mut())
+        .enumerate()
+        .with_min_len(1024)
+        .filter(|(i, (_, k))| i % 2 == 1 && **k & DERIVED == 0)
+        .for_each(|(i, (end, k))| {
+            let (e, s, _) = walk(i / (2 * D), i % (2 * D));
+            (*end, *k) = (e, s);
+        });
+    let rep = tally(&ends, &steps);
+    (ends, rep)
+}
+
+/// The report of `ends`: how many are of each kind (node, boundary,
+/// inconsistent, loop), and the most `steps` of a walk (without
+/// [`walk_all_paired`]'s marks); in parallel, per chunk.
+fn tally<const D: usize>(ends: &[End<D>], steps: &[usize]) -> TraceReport {
     use rayon::prelude::*;
     const CHUNK: usize = 4096;
-    ends.par_chunks(CHUNK)
+    let (counts, max_steps) = ends
+        .par_chunks(CHUNK)
         .zip(steps.par_chunks(CHUNK))
         .map(|(ends, steps)| {
             let mut counts = [0; 4];
@@ -109,12 +166,21 @@ fn tally<const D: usize>(ends: &[End<D>], steps: &[usize]) -> ([usize; 4], usize
                 };
                 counts[kind] += 1;
             }
-            (counts, steps.iter().copied().max().unwrap_or(0))
+            let most = steps.iter().map(|&k| k & STEPS).max().unwrap_or(0);
+            (counts, most)
         })
         .reduce(
             || ([0; 4], 0),
             |(a, m), (b, n)| (std::array::from_fn(|k| a[k] + b[k]), m.max(n)),
-        )
+        );
+    let [to_node, to_boundary, inconsistent, loops] = counts;
+    TraceReport {
+        to_node,
+        to_boundary,
+        inconsistent,
+        loops,
+        max_steps,
+    }
 }
 
 /// Sides per parallel task of [`NodeGraph::link_mutual`].
@@ -276,6 +342,8 @@ impl<const D: usize> NodeGraph<D> {
 
 #[cfg(test)]
 mod link_tests;
+#[cfg(test)]
+mod paired_tests;
 
 #[cfg(test)]
 mod tests {
