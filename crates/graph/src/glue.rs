@@ -448,13 +448,6 @@ impl Glued<2> {
 }
 
 impl Glued<3> {
-    /// The hexes' vertices, in VTK order (one per node of [`Glued::nodes`]).
-    pub fn hexes(&self) -> &[[u32; 8]] {
-        let (hexes, rest) = self.cells.as_chunks::<8>();
-        debug_assert!(rest.is_empty(), "bug: a glued hex without 8 corners");
-        hexes
-    }
-
     /// The hexes, in VTK order, with their nodes.
     pub fn cells(&self) -> impl Iterator<Item = (Node, [u32; 8])> + '_ {
         self.nodes

@@ -40,7 +40,7 @@ pub mod doublets;
 pub mod stats;
 
 use dualex_cells::HexMesh;
-use dualex_graph::{Glued, Takeover};
+use dualex_graph::Takeover;
 use dualex_map::{InputCounts, InputError, TetMap, TransitionOptions};
 pub use dualex_segment::grid_offset::GridOffset;
 use dualex_segment::place::{place, Placed};
@@ -163,19 +163,10 @@ fn graph_and_mesh(
     st.doublets.edges = merged.pairs;
     st.doublets.rounds = merged.rounds;
     st.doublets.in_graph = merged.merged;
-    // 9, and the output's check of the same cells beside it (the placed
-    // mesh has the gluing's cells, in its order, and vertex count)
+    // 9
     let glued = graph.glue();
-    let (mut out, checked) = rayon::join(
-        || place(&s, &nodes, &graph, &glued, &takeover),
-        || check_glued(&glued),
-    );
-    #[cfg(test)]
-    assert!(
-        checked == dualex_check::check_hex_mesh(out.mesh.positions.len(), &out.mesh.cells, None),
-        "the glued cells' check differs from the placed mesh's"
-    );
-    st.finish_output(&glued, &out.mesh, checked);
+    let mut out = place(&s, &nodes, &graph, &glued, &takeover);
+    st.finish_output(&glued, &out.mesh);
     // 10: holes through columns repaired locally
     let closed = s.topo.boundary_facets == 0;
     columns::repair_open(&graph, &glued, &ends, closed, &mut out, st);
@@ -183,12 +174,6 @@ fn graph_and_mesh(
     doublets::collapse_and_dissolve(&mut out, st);
     laps.lap("glue_geometry");
     out
-}
-
-/// The checker's report of the glued cells (as [`place`] places them:
-/// the same cells, in order, and vertex count), read in place.
-fn check_glued(glued: &Glued<3>) -> dualex_check::HexReport {
-    dualex_check::check_hex_mesh(glued.n_vertices, glued.hexes(), None)
 }
 
 #[cfg(test)]

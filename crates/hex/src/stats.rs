@@ -5,7 +5,6 @@
 //! …) with the hex steps' own counts (`output`, `fairing`, `repair`).
 
 use dualex_cells::HexMesh;
-use dualex_check::HexReport;
 use dualex_graph::Glued;
 use dualex_segment::sanitize_report::histogram_json;
 use dualex_segment::stats::SegmentStats;
@@ -78,16 +77,15 @@ impl AsMut<SegmentStats> for HexStats {
 
 impl HexStats {
     /// Fills the output counts from the final gluing (its graph's counts)
-    /// and mesh, given the checker's report `checked` of `mesh` (made
-    /// beside the placement from the glued cells: the same cells).
-    pub fn finish_output(&mut self, glued: &Glued<3>, mesh: &HexMesh, checked: HexReport) {
+    /// and mesh.
+    pub fn finish_output(&mut self, glued: &Glued<3>, mesh: &HexMesh) {
         self.hexes = mesh.cells.len();
         self.vertices = mesh.positions.len();
         self.unmatched_sides = glued.unmatched_sides;
         self.boundary_surfaces = glued.boundary_loops;
         self.components = glued.components;
         self.corner_mismatches = glued.corner_mismatches;
-        self.keep_checked(mesh, checked);
+        self.count_checked(mesh);
     }
 
     /// Recounts the output after a change of the mesh alone (holes through
@@ -110,13 +108,8 @@ impl HexStats {
     /// The counts of the validity checker (one piece of code for both):
     /// Euler characteristic, validity, edge valences; its report kept
     /// ([`HexStats::checked`]) and returned.
-    fn count_checked(&mut self, mesh: &HexMesh) -> &HexReport {
+    fn count_checked(&mut self, mesh: &HexMesh) -> &dualex_check::HexReport {
         let c = dualex_check::check_hex_mesh(mesh.positions.len(), &mesh.cells, None);
-        self.keep_checked(mesh, c)
-    }
-
-    /// [`Self::count_checked`] with the checker's report `c` of `mesh`.
-    fn keep_checked(&mut self, mesh: &HexMesh, c: HexReport) -> &HexReport {
         self.euler = c.euler;
         self.mesh_valid = c.is_valid();
         self.edge_valence_interior = c
