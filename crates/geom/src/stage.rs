@@ -88,14 +88,19 @@ pub fn quads(
     } else {
         boundary_vertices(positions.len(), cells, &QUAD_EDGES)
     };
-    let mut hint = vec![[0.0; 3]; positions.len()];
-    for (cell, n) in cells.iter().zip(&normals) {
-        for &v in cell {
-            for k in 0..3 {
-                hint[v as usize][k] += n[k];
+    // summed only when the stage goes past its first step
+    let nv = positions.len();
+    let hint = || {
+        let mut hint = vec![[0.0; 3]; nv];
+        for (cell, n) in cells.iter().zip(&normals) {
+            for &v in cell {
+                for k in 0..3 {
+                    hint[v as usize][k] += n[k];
+                }
             }
         }
-    }
+        hint
+    };
     // each quad's nearest-triangle search starts from the last one found,
     // first its source (less work, the same answer)
     let feet: Vec<std::sync::atomic::AtomicU32> = (0..cells.len())
@@ -116,7 +121,7 @@ pub fn quads(
         edges: &QUAD_EDGES,
         role: Role::Surface,
         on_boundary,
-        hint,
+        hint: &hint,
     };
     let mut rep = run(positions, input, &measure, reference, &make, opts);
     rep.time_ms = t.elapsed().as_secs_f64() * 1e3;
@@ -162,7 +167,7 @@ pub fn hexes(
         edges: &HEX_EDGES,
         role: Role::Volume,
         on_boundary,
-        hint,
+        hint: &|| hint.clone(),
     };
     let mut rep = run(positions, input, &measure, None, &make, opts);
     rep.time_ms = t.elapsed().as_secs_f64() * 1e3;
@@ -185,7 +190,10 @@ struct Input<'a, const D: usize, const K: usize> {
     edges: &'a [[usize; 2]],
     role: Role,
     on_boundary: Vec<bool>,
-    hint: Vec<[f64; 3]>,
+    /// Per vertex, the sum of its cells' normals (quads) or boundary
+    /// faces' normals (hexes): the side of the surface it faces; made only
+    /// when the stage goes past step 1.
+    hint: &'a (dyn Fn() -> Vec<[f64; 3]> + Sync),
 }
 
 /// A quad's edges (corner pairs, cell order).

@@ -17,16 +17,42 @@
 use crate::graph::NodeGraph;
 use crate::ids::Node;
 use crate::ops::OpError;
-use dualex_util::union_find::UnionFind;
+use rayon::prelude::*;
 
 /// Marker for dead nodes in [`NodeGraph::component_labels`].
 pub const NO_COMPONENT: u32 = u32::MAX;
 
 impl<const D: usize> NodeGraph<D> {
     /// Per node its component (ids `0..k` by first node), [`NO_COMPONENT`]
-    /// for dead nodes; and k.
+    /// for dead nodes; and k. The unions run in parallel
+    /// (`NodeGraph::node_sets`), the roots are read in parallel, the
+    /// numbering by first alive node is one serial pass over the nodes.
     pub fn component_labels(&self) -> (Vec<u32>, usize) {
-        let mut uf = UnionFind::new(self.n_nodes());
+        let uf = self.node_sets();
+        let mut labels: Vec<u32> = (0..self.n_nodes() as u32)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(|x| match self.is_alive(Node(x)) {
+                true => uf.root(x as usize) as u32,
+                false => NO_COMPONENT,
+            })
+            .collect();
+        let mut id_of_root = vec![NO_COMPONENT; self.n_nodes()];
+        let mut k = 0u32;
+        for l in labels.iter_mut().filter(|l| **l != NO_COMPONENT) {
+            let id = &mut id_of_root[*l as usize];
+            if *id == NO_COMPONENT {
+                (*id, k) = (k, k + 1);
+            }
+            *l = *id;
+        }
+        (labels, k as usize)
+    }
+
+    /// [`Self::component_labels`] by a serial union–find (its test oracle).
+    #[cfg(test)]
+    pub(crate) fn component_labels_serial(&self) -> (Vec<u32>, usize) {
+        let mut uf = dualex_util::union_find::UnionFind::new(self.n_nodes());
         for s in (0..self.n_sides() as u32).map(crate::ids::Side) {
             if let Some(t) = self.opposite(s) {
                 uf.union(self.node_of(s).idx(), self.node_of(t).idx());
@@ -117,5 +143,42 @@ mod tests {
         g.delete_components(&[Node(2), Node(3)]).expect("open");
         g.check_structure().expect("valid");
         assert_eq!(g.n_alive(), 0);
+    }
+
+    /// The parallel labels are the serial union–find's, in both dimensions,
+    /// on grids cut into pieces by random unlinks, with whole pieces
+    /// deleted (dead nodes among the alive) and the nodes renumbered.
+    #[test]
+    fn parallel_labels_are_the_serial_ones() {
+        fn case<const D: usize>(dims: [usize; D], cuts: usize, seed: u64) -> usize {
+            use crate::testgrid::{random_permutation, GridSpec};
+            let mut rng = dualex_util::rng::SplitMix::new(seed);
+            let mut g = GridSpec::regular(dims).build();
+            for _ in 0..cuts {
+                let s = crate::ids::Side(rng.below(g.n_sides()) as u32);
+                if g.opposite(s).is_some() {
+                    g.unlink(s).expect("unlink");
+                }
+            }
+            let perm = random_permutation(g.n_nodes(), seed);
+            let mut g = crate::testgrid::renumber(&g, &perm);
+            // delete every third piece
+            let (labels, k) = g.component_labels_serial();
+            for c in (0..k as u32).filter(|c| c % 3 == 1) {
+                let piece: Vec<Node> = g.alive_nodes().filter(|x| labels[x.idx()] == c).collect();
+                g.delete_components(&piece).expect("a piece");
+            }
+            let want = g.component_labels_serial();
+            assert_eq!(g.component_labels(), want, "D = {D}, seed {seed}");
+            want.1
+        }
+        let mut pieces = 0;
+        for seed in 0..40 {
+            pieces += case([12, 9], 40 + 5 * seed as usize, seed);
+            pieces += case([5, 4, 6], 60 + 8 * seed as usize, 100 + seed);
+        }
+        assert!(pieces > 400, "too few pieces to compare: {pieces}");
+        assert_eq!(case([40, 40], 0, 7), 1);
+        assert!(case([200, 50], 6000, 8) > 10);
     }
 }

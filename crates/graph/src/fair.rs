@@ -160,19 +160,17 @@ impl Vertices {
         let mut first = vec![(Node(0), 0); nv];
         let (mut corners, mut interior) = (vec![0usize; nv], vec![true; nv]);
         for n in &glued.nodes {
-            for c in 0..4 {
-                let v = glued.vertex(*n, c) as usize;
+            // a corner is interior when both its sides are glued
+            let paired: [bool; 4] = std::array::from_fn(|d| g.opposite(g.side(*n, d)).is_some());
+            let at = n.idx() * 4;
+            for (c, &v) in glued.vertex_of[at..at + 4].iter().enumerate() {
+                let v = v as usize;
                 if corners[v] == 0 {
                     first[v] = (*n, c);
                 }
                 corners[v] += 1;
                 let (du, dv) = corner_sides(c);
-                if [du, dv]
-                    .iter()
-                    .any(|&d| g.opposite(g.side(*n, d)).is_none())
-                {
-                    interior[v] = false;
-                }
+                interior[v] &= paired[du] && paired[dv];
             }
         }
         Vertices {

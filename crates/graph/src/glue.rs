@@ -224,20 +224,79 @@ impl<const D: usize> NodeGraph<D> {
     /// The vertex of every corner of the alive `nodes` (the corners' sets
     /// in `uf`), numbered by first corner in node order, [`NO_VERTEX`] for
     /// dead nodes; and the number of vertices. The roots are read in
-    /// parallel (no path is changed), the numbering is one serial pass.
+    /// parallel (no path is changed). A set's root is its smallest corner
+    /// (`node·2^D + code`, the node order's), so when every alive corner's
+    /// root is an alive node's, the first corners are the roots and their
+    /// numbers a parallel prefix count; otherwise one serial pass numbers
+    /// them ([`Self::number_serial`]).
     fn number_vertices(&self, uf: &AtomicUnionFind, nodes: &[Node]) -> (Vec<u32>, usize) {
         let k = 1usize << D;
         let mut vertex_of = vec![NO_VERTEX; self.n_nodes() * k];
-        vertex_of
+        let roots_alive = vertex_of
             .par_chunks_mut(k)
             .enumerate()
             .filter(|(n, _)| self.is_alive(Node(*n as u32)))
-            .for_each(|(n, corners)| {
+            .map(|(n, corners)| {
+                let mut alive = true;
                 for (c, v) in corners.iter_mut().enumerate() {
                     *v = uf.root(n * k + c) as u32;
+                    alive &= self.is_alive(Node(*v / k as u32));
+                }
+                alive
+            })
+            .reduce(|| true, |a, b| a && b);
+        let mut id_of_root = vec![NO_VERTEX; self.n_nodes() * k];
+        if !roots_alive {
+            let n_vertices = Self::number_serial(&mut vertex_of, &mut id_of_root, nodes);
+            return (vertex_of, n_vertices);
+        }
+        // per block of nodes its first corners (the roots), counted, then
+        // numbered from the blocks' prefix sums
+        const BLOCK: usize = 4096;
+        // the first corners (roots) of node `n`, whose roots are `corners`
+        fn is_first((n, corners): (usize, &[u32])) -> impl Iterator<Item = usize> + '_ {
+            let at = n * corners.len();
+            (at..at + corners.len()).filter(move |&i| corners[i - at] as usize == i)
+        }
+        let counts: Vec<u32> = vertex_of
+            .par_chunks(BLOCK * k)
+            .enumerate()
+            .map(|(b, block)| {
+                let nodes = block.chunks(k).enumerate().map(|(j, c)| (b * BLOCK + j, c));
+                nodes.flat_map(is_first).count() as u32
+            })
+            .collect();
+        let mut base = Vec::with_capacity(counts.len());
+        let mut n_vertices = 0u32;
+        for c in counts {
+            base.push(n_vertices);
+            n_vertices += c;
+        }
+        id_of_root
+            .par_chunks_mut(BLOCK * k)
+            .zip(vertex_of.par_chunks(BLOCK * k))
+            .zip(base)
+            .enumerate()
+            .for_each(|(b, ((ids, block), mut next))| {
+                let nodes = block.chunks(k).enumerate().map(|(j, c)| (b * BLOCK + j, c));
+                for i in nodes.flat_map(is_first) {
+                    ids[i - b * BLOCK * k] = next;
+                    next += 1;
                 }
             });
-        let mut id_of_root = vec![NO_VERTEX; self.n_nodes() * k];
+        vertex_of.par_iter_mut().for_each(|v| {
+            if *v != NO_VERTEX {
+                *v = id_of_root[*v as usize];
+            }
+        });
+        (vertex_of, n_vertices as usize)
+    }
+
+    /// The numbering of [`Self::number_vertices`] in one serial pass over
+    /// the alive `nodes`' corners (`vertex_of`: their roots on entry; the
+    /// vertices on return); the number of vertices.
+    fn number_serial(vertex_of: &mut [u32], id_of_root: &mut [u32], nodes: &[Node]) -> usize {
+        let k = 1usize << D;
         let mut n_vertices = 0u32;
         for n in nodes {
             for v in &mut vertex_of[n.idx() * k..(n.idx() + 1) * k] {
@@ -249,21 +308,43 @@ impl<const D: usize> NodeGraph<D> {
                 *v = *id;
             }
         }
-        (vertex_of, n_vertices as usize)
+        n_vertices as usize
     }
 
-    /// Connected components of alive nodes (through glued pairs).
-    pub fn components(&self) -> usize {
+    /// The nodes' sets through glued pairs, united in parallel (once per
+    /// pair, from its smaller side: the link is mutual); the sets do not
+    /// depend on the order of the unions.
+    pub(crate) fn node_sets(&self) -> AtomicUnionFind {
         let uf = AtomicUnionFind::new(self.n_nodes());
         (0..self.n_sides() as u32)
             .into_par_iter()
             .with_min_len(1024)
             .map(Side)
             .for_each(|s| {
-                if let Some(t) = self.opposite(s) {
+                if let Some(t) = self.opposite(s).filter(|&t| t > s) {
                     uf.union(self.node_of(s).idx(), self.node_of(t).idx());
                 }
             });
+        uf
+    }
+
+    /// Connected components of alive nodes (through glued pairs).
+    pub fn components(&self) -> usize {
+        let uf = self.node_sets();
+        // a set's root is its smallest node: when every alive node's root
+        // is alive, the components are the alive roots, counted in parallel
+        let (roots, roots_alive) = (0..self.n_nodes())
+            .into_par_iter()
+            .with_min_len(1024)
+            .filter(|&x| self.is_alive(Node(x as u32)))
+            .map(|x| {
+                let r = uf.root(x);
+                (usize::from(r == x), self.is_alive(Node(r as u32)))
+            })
+            .reduce(|| (0, true), |a, b| (a.0 + b.0, a.1 && b.1));
+        if roots_alive {
+            return roots;
+        }
         let mut roots: Vec<usize> = self.alive_nodes().map(|n| uf.root(n.idx())).collect();
         roots.sort_unstable();
         roots.dedup();

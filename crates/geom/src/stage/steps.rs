@@ -64,14 +64,8 @@ pub(super) fn run<const D: usize, const K: usize>(
     let r = reference.unwrap_or_else(make);
     reframe(x, &mut input, measure, &r, &mut values, &mut rep);
     let tol = ON_BOUNDARY * rep.mean_edge.max(f64::MIN_POSITIVE);
-    let mut cons = Constraints::classify(
-        &r,
-        x,
-        &input.on_boundary,
-        input.hint.clone(),
-        input.role,
-        tol,
-    );
+    let mut cons =
+        Constraints::classify(&r, x, &input.on_boundary, (input.hint)(), input.role, tol);
     let start = x.to_vec();
     let around = vertex_cells(x.len(), input.cells);
     // 3. boundary vertices onto the input's boundary

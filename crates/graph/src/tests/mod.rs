@@ -2,6 +2,7 @@
 
 mod fair_order_tests;
 mod fair_tests;
+mod glue_par_tests;
 mod glue_tests;
 mod ops_tests;
 pub(crate) mod support;
