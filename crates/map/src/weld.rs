@@ -75,9 +75,6 @@ fn coincident_boundary_pairs<const N: usize, const D: usize>(
         .chunk_by(|a, b| a.0 == b.0)
         .filter(|g| g.len() > 1)
         .collect();
-    if shared.is_empty() {
-        return Vec::new();
-    }
     let boundary = boundary_vertices(&map.simplices, nv);
     let mut pairs = Vec::new();
     for group in shared {
