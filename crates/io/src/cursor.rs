@@ -144,16 +144,9 @@ impl<'a> Cursor<'a> {
             let mut i = 0;
             let n = crate::decimal::part_word(w, &mut i);
             if (1..8).contains(&n) && n <= max_digits {
-                match (w >> (8 * n)) as u8 {
-                    b' ' => {
-                        self.pos += n + 1;
-                        return Some(i);
-                    }
-                    c if c.is_ascii_whitespace() => {
-                        self.pos += n;
-                        return Some(i);
-                    }
-                    _ => {}
+                if let Some(gap) = gap_after((w >> (8 * n)) as u8) {
+                    self.pos += n + gap;
+                    return Some(i);
                 }
             }
         }
@@ -181,11 +174,7 @@ impl<'a> Cursor<'a> {
         if !(1..8).contains(&l) {
             return None;
         }
-        let gap = match (w >> (8 * l)) as u8 {
-            b' ' => 1,
-            c if c.is_ascii_whitespace() => 0,
-            _ => return None,
-        };
+        let gap = gap_after((w >> (8 * l)) as u8)?;
         self.pos += k + 1 + l + gap;
         Some((v, vt))
     }
@@ -207,6 +196,19 @@ impl<'a> Cursor<'a> {
             }
             Some(_) => None,
         }
+    }
+}
+
+/// The bytes a word-read field's end takes when `byte` follows its
+/// digits: 1 for a space (consumed with the field), 0 for other
+/// whitespace (left for the line's end), `None` for anything else (the
+/// field goes on: not one of the fast reads').
+#[inline(always)]
+fn gap_after(byte: u8) -> Option<usize> {
+    match byte {
+        b' ' => Some(1),
+        c if c.is_ascii_whitespace() => Some(0),
+        _ => None,
     }
 }
 
