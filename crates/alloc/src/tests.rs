@@ -1,5 +1,6 @@
 //! The advised range stays inside the block; blocks allocated, grown,
-//! zeroed and freed through [`HugePages`] keep their contents.
+//! shrunk, zeroed and freed through [`HugePages`] keep their contents;
+//! the cache of large blocks reuses them and keeps its peak invariant.
 
 use super::*;
 
@@ -36,11 +37,15 @@ fn the_advised_range_is_whole_huge_pages_inside_the_block() {
 }
 
 /// A vector of `n` values through the allocator, its values read back
-/// after growing it and after a zeroed block beside it.
+/// after growing it, shrinking it and after a zeroed block beside it; sizes
+/// on both sides of the cache's threshold, so that blocks cross it when
+/// they grow or shrink. Then the cache's own rules, on the global cache
+/// (one test: the cache is the process's, tests run in parallel).
 #[test]
-fn blocks_keep_their_contents() {
+fn blocks_keep_their_contents_and_the_cache_its_rules() {
     let a = HugePages;
-    for n in [1usize, 1000, ADVISE_FROM / 8 - 3, ADVISE_FROM / 4 + 17] {
+    let large = LARGE_FROM / 8;
+    for n in [1usize, 1000, large / 3, large - 1, large, 3 * large + 17] {
         let layout = Layout::array::<u64>(n).expect("layout");
         // SAFETY: a non-zero layout; every block is freed with its layout
         unsafe {
@@ -52,12 +57,61 @@ fn blocks_keep_their_contents() {
             let z = a.alloc_zeroed(layout).cast::<u64>();
             assert!(!z.is_null());
             assert!((0..n).all(|i| z.add(i).read() == 0), "{n}");
+            z.write_bytes(0xab, n);
+            a.dealloc(z.cast(), layout);
+            // the block just freed, its bytes dirty, handed out zeroed
+            let z = a.alloc_zeroed(layout).cast::<u64>();
+            assert!((0..n).all(|i| z.add(i).read() == 0), "{n}");
             let grown = Layout::array::<u64>(3 * n).expect("layout");
             let q = a.realloc(p.cast(), layout, grown.size()).cast::<u64>();
             assert!(!q.is_null());
             assert!((0..n).all(|i| q.add(i).read() == i as u64 * 7), "{n}");
-            a.dealloc(q.cast(), grown);
+            let m = n / 2 + 1;
+            let r = a.realloc(q.cast(), grown, m * 8).cast::<u64>();
+            assert!((0..m).all(|i| r.add(i).read() == i as u64 * 7), "{n}");
+            a.dealloc(r.cast(), Layout::array::<u64>(m).expect("layout"));
             a.dealloc(z.cast(), layout);
         }
+    }
+    #[cfg(target_os = "linux")]
+    cache_rules(&a);
+}
+
+/// A freed, touched block is handed out again; one never touched is too,
+/// but the other free ranges are unmapped first (the peak invariant); a
+/// block that no free range holds is mapped fresh, after every free range
+/// is unmapped.
+#[cfg(target_os = "linux")]
+fn cache_rules(a: &HugePages) {
+    let layout = Layout::from_size_align(8 * LARGE_FROM, 8).expect("layout");
+    let small = Layout::from_size_align(LARGE_FROM, 8).expect("layout");
+    // SAFETY: non-zero layouts; every block is freed with its layout
+    unsafe {
+        let p = a.alloc(layout);
+        p.write_bytes(1, layout.size());
+        let s = a.alloc(small);
+        s.write_bytes(1, small.size());
+        a.dealloc(s, small);
+        a.dealloc(p, layout);
+        assert!(cache::free_now().0 >= 2);
+        // touched: reused in place, the other range kept
+        let q = a.alloc(layout);
+        assert_eq!(q, p);
+        assert!(cache::free_now().0 >= 1);
+        a.dealloc(q, layout);
+        // never touched: reused, every other free range unmapped
+        let big = Layout::from_size_align(64 * LARGE_FROM, 8).expect("layout");
+        let u = a.alloc(big);
+        a.dealloc(u, big);
+        let v = a.alloc(big);
+        assert_eq!(v, u);
+        assert_eq!(cache::free_now(), (0, 0));
+        a.dealloc(v, big);
+        // larger than any free range: fresh, after unmapping them all
+        let huge = Layout::from_size_align(128 * LARGE_FROM, 8).expect("layout");
+        let w = a.alloc(huge);
+        assert!(!w.is_null());
+        assert_eq!(cache::free_now(), (0, 0));
+        a.dealloc(w, huge);
     }
 }

@@ -49,15 +49,30 @@ const PNG_SIZE: u32 = 1000;
 fn main() -> ExitCode {
     // help and version: stdout, exit 0; usage errors: stderr, exit 2
     let cli = Cli::try_parse().unwrap_or_else(|e| e.exit());
+    // the command runs on one of the pool's threads: its parallel loops
+    // split there, without handing each one to the pool and waiting for
+    // it asleep (two thread switches a loop, BENCHMARKS.md)
+    let mut pool = rayon::ThreadPoolBuilder::new().stack_size(STACK);
     if let Some(n) = cli.global.threads {
-        if let Err(e) = rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build_global()
-        {
+        pool = pool.num_threads(n);
+    }
+    match pool.build() {
+        Ok(pool) => pool.install(|| run(&cli)),
+        Err(e) => {
+            let n = cli.global.threads.unwrap_or(0);
             eprintln!("dualex: --threads {n}: {e}");
-            return ExitCode::from(1);
+            ExitCode::from(1)
         }
     }
+}
+
+/// Stack of each pool thread, the commands' own included: a program's
+/// main thread has 8 MiB on Linux, rayon's threads 2 MiB; reserved, not
+/// used, memory.
+const STACK: usize = 64 << 20;
+
+/// The command, its errors said on stderr.
+fn run(cli: &Cli) -> ExitCode {
     let g = &cli.global;
     let result = match &cli.command {
         Command::Quad(a) => quad::quad(a, g),

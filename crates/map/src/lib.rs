@@ -60,6 +60,7 @@ pub mod report;
 #[allow(clippy::needless_range_loop)]
 pub mod rotation;
 pub mod scan;
+mod shared_key;
 pub mod singularity;
 pub mod star;
 mod star_build;

@@ -12,6 +12,7 @@
 //! simplices keep their order and their per-corner coordinates.
 
 use crate::corners::{split, VertexCorners};
+use crate::shared_key;
 use crate::topology_build::sorted_facets;
 use crate::SimplexMap;
 use dualex_util::union_find::UnionFind;
@@ -53,24 +54,25 @@ pub fn weld_owned<const N: usize, const D: usize>(
 }
 
 /// Pairs of boundary vertices at exactly the same position (consecutive
-/// in position order). The vertices sharing a position are found first,
-/// over all vertices (a parallel sort): the boundary, a walk over the
-/// simplices, is found only when some exist (none in a mesh whose seams
-/// are in its texture coordinates only, as OBJ's `v/vt`).
+/// in position order). Whether any two vertices share a position is told
+/// first, over all vertices, by a parallel hash set ([`shared_key`]): most
+/// maps have none (an uncut mesh, or seams in the texture coordinates
+/// only, as OBJ's `v/vt`). Only then are the groups found by a parallel
+/// sort, and the boundary, a walk over the simplices.
 fn coincident_boundary_pairs<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
 ) -> Vec<(u32, u32)> {
     use rayon::prelude::*;
     let nv = map.positions.len();
-    let mut by_pos: Vec<([u64; 3], u32)> = (0..nv)
-        .into_par_iter()
-        .map(|v| (position_key(&map.positions[v]), v as u32))
-        .collect();
-    by_pos.par_sort_unstable();
-    // most maps have no two vertices at one position: told in parallel
-    if !by_pos.par_windows(2).any(|w| w[0].0 == w[1].0) {
+    let key = |v: usize| position_key(&map.positions[v]);
+    if !shared_key::any_equal(nv, key, shared_key::hash3) {
         return Vec::new();
     }
+    let mut by_pos: Vec<([u64; 3], u32)> = (0..nv)
+        .into_par_iter()
+        .map(|v| (key(v), v as u32))
+        .collect();
+    by_pos.par_sort_unstable();
     let shared: Vec<&[([u64; 3], u32)]> = by_pos
         .chunk_by(|a, b| a.0 == b.0)
         .filter(|g| g.len() > 1)
