@@ -63,6 +63,7 @@ pub mod scan;
 pub mod singularity;
 pub mod star;
 mod star_build;
+mod star_fan;
 pub mod topology;
 mod topology_build;
 pub mod transition;
