@@ -160,17 +160,43 @@ fn first_slots(starts: &mut [Vec<u32>], nv: usize) -> Vec<u32> {
         .par_chunks_mut(PREFIX_BLOCK)
         .zip(parts)
         .zip(firsts)
-        .for_each(|((off, mut parts), mut at)| {
-            for (i, o) in off.iter_mut().enumerate() {
-                *o = at;
-                for part in parts.iter_mut() {
-                    let n = part[i];
-                    part[i] = at;
-                    at += n;
-                }
-            }
-        });
+        .for_each(|((off, mut parts), at)| block_slots(off, &mut parts, at));
     offsets
+}
+
+/// [`first_slots`] on one block of vertices whose first slot is `at`:
+/// `off` gets the block's offsets and each chunk's counts `parts[k]`
+/// their first slots, in passes over whole slices (vectorizable) and one
+/// running sum over the vertices: the counts summed across the chunks in
+/// place (each chunk then holds its own and the earlier ones'), the
+/// offsets from the last chunk's sums, then from the last chunk down,
+/// each chunk's first slot the offset plus the chunk before's sum.
+fn block_slots(off: &mut [u32], parts: &mut [&mut [u32]], mut at: u32) {
+    for k in 1..parts.len() {
+        let (before, after) = parts.split_at_mut(k);
+        for (x, &y) in after[0].iter_mut().zip(before[k - 1].iter()) {
+            *x += y;
+        }
+    }
+    if let Some(last) = parts.last() {
+        for (o, &t) in off.iter_mut().zip(last.iter()) {
+            *o = at;
+            at += t;
+        }
+    }
+    for k in (1..parts.len()).rev() {
+        let (before, after) = parts.split_at_mut(k);
+        for ((x, &y), &o) in after[0]
+            .iter_mut()
+            .zip(before[k - 1].iter())
+            .zip(off.iter())
+        {
+            *x = o + y;
+        }
+    }
+    if let Some(first) = parts.first_mut() {
+        first.copy_from_slice(off);
+    }
 }
 
 /// Simplex and corner of corner id `id = s·N + c`.

@@ -64,6 +64,7 @@ mod shared_key;
 pub mod singularity;
 pub mod star;
 mod star_build;
+mod star_fan;
 pub mod topology;
 mod topology_build;
 pub mod transition;

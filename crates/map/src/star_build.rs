@@ -18,8 +18,16 @@
 //! the layout of the vertices' corner lists: blocks of vertices are walked
 //! in parallel, each into its own slice of the entries (the same entries,
 //! in the same order, as one sequential walk).
+//!
+//! In 2D a vertex whose triangles form one fan is walked by
+//! [`crate::star_fan`], which reads no corner positions. The walk also
+//! takes corner lists built without positions: a corner is then found by
+//! a binary search of its vertex's list (in simplex order, so sorted).
+//! The model still builds them (without them, t1000's peak rose by
+//! ~30 MB through glibc's dynamic mmap threshold; BENCHMARKS.md).
 
 use crate::corners::{split, VertexCorners};
+use crate::star_fan::fan_of;
 use crate::topology::NONE;
 use crate::{InputError, Rot, SimplexMap, StarEntry, Stars, Topology, Transitions};
 use rayon::prelude::*;
@@ -47,14 +55,14 @@ pub(crate) fn build<const N: usize, const D: usize>(
     build_with(map, topo, trans, &corners)
 }
 
-/// [`build`] with the map's corner lists (built `indexed`).
+/// [`build`] with the map's corner lists (built `indexed` or not: module docs).
 pub(crate) fn build_with<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
     corners: &VertexCorners,
 ) -> Stars<D> {
-    walk(map, topo, trans, corners).0
+    walk(map, topo, trans, corners, N == 3).0
 }
 
 /// [`build_with`] on a topology whose vertices were not checked
@@ -67,18 +75,20 @@ pub(crate) fn build_checked<const N: usize, const D: usize>(
     trans: &Transitions<N, D>,
     corners: &VertexCorners,
 ) -> Result<Stars<D>, InputError> {
-    match walk(map, topo, trans, corners) {
+    match walk(map, topo, trans, corners, N == 3) {
         (_, Some(v)) => Err(crate::topology_build::non_manifold_vertex::<N>(v)),
         (stars, None) => Ok(stars),
     }
 }
 
-/// The stars, and the first vertex whose star is in more than one piece.
-fn walk<const N: usize, const D: usize>(
+/// The stars, and the first vertex whose star is in more than one piece;
+/// with `fan` (triangles only), each vertex first by [`fan_of`].
+pub(crate) fn walk<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
     corners: &VertexCorners,
+    fan: bool,
 ) -> (Stars<D>, Option<usize>) {
     let nv = map.positions.len();
     let offsets = corners.offsets.clone();
@@ -122,8 +132,15 @@ fn walk<const N: usize, const D: usize>(
                 let out = &mut e[lo - base..hi - base];
                 let star = &corners[lo..hi];
                 let one;
-                (*sv, *bv, one) =
-                    star_of(topo, trans, star, position, out, &mut reached, &mut done);
+                if let Some((sing, bound)) = fan
+                    .then(|| fan_of(topo, trans, star, out, &mut done))
+                    .flatten()
+                {
+                    (*sv, *bv, one) = (sing, bound, true);
+                } else {
+                    (*sv, *bv, one) =
+                        star_of(topo, trans, star, position, out, &mut reached, &mut done);
+                }
                 if !one && apart.is_none() {
                     apart = Some(v);
                 }
@@ -139,7 +156,7 @@ fn walk<const N: usize, const D: usize>(
 /// (one entry per corner): breadth-first from each corner not reached yet
 /// (more than one only when the topology was not checked; each new
 /// component's first simplex is its own reference chart). `position` (of
-/// [`VertexCorners`]) finds a corner in `corners`; `reached[k]`
+/// [`VertexCorners`]; empty: a binary search) finds a corner in `corners`; `reached[k]`
 /// is the queue slot of corner `k`'s entry times 256 plus the rank of its
 /// rotation ([`Rot::rank`]), or [`UNREACHED`]. Returns
 /// `(singular, boundary, one piece)`.
@@ -151,7 +168,7 @@ fn walk<const N: usize, const D: usize>(
 /// against (the transitions back are the inverses, [`crate::transition`]'s
 /// invariant): the same comparison again, never boundary, never a new
 /// entry. Each facet between two entries of the star is thus crossed once.
-fn star_of<const N: usize, const D: usize>(
+pub(crate) fn star_of<const N: usize, const D: usize>(
     topo: &Topology<N>,
     trans: &Transitions<N, D>,
     corners: &[u32],
@@ -209,7 +226,7 @@ fn star_of<const N: usize, const D: usize>(
                     e.rot.then(step)
                 };
                 let corner = nbr[f][c];
-                let k = position[n * N + corner as usize] as usize;
+                let k = place_of(corners, position, (n * N) as u32 + u32::from(corner));
                 // the neighbour's facet back to `s`: its corner opposite
                 // (`nbr_corner`'s entry `f`)
                 let back = 1u8 << nbr[f][f];
@@ -233,6 +250,21 @@ fn star_of<const N: usize, const D: usize>(
     }
     debug_assert_eq!(len, out.len());
     (singular, boundary, pieces <= 1)
+}
+
+/// The place of corner id `id` in its vertex's list `corners`: read in
+/// `position` when built, else found by a binary search of the list (in
+/// simplex order: sorted). The corner must be in the list (the walk
+/// reaches only corners of the vertex).
+#[inline]
+fn place_of(corners: &[u32], position: &[u32], id: u32) -> usize {
+    if !position.is_empty() {
+        return position[id as usize] as usize;
+    }
+    match corners.binary_search(&id) {
+        Ok(k) => k,
+        Err(_) => unreachable!("a corner reached around a vertex is in its list"),
+    }
 }
 
 #[cfg(test)]
