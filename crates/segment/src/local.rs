@@ -19,6 +19,7 @@ use crate::grid_offset::GridOffset;
 use crate::scatter::{self, Buckets};
 use dualex_map::topology::NONE;
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
+use dualex_util::round::{round_small, FAST};
 use rayon::prelude::*;
 
 /// A map in local shifted coordinates.
@@ -231,6 +232,13 @@ impl<const N: usize, const D: usize> LocalMap<N, D> {
 /// [`LocalMap::snap`] of the vertices `vs`, reading `coords`: the
 /// corners whose bits change, into `out` (cleared first); returns the
 /// number of vertices snapped and the largest move.
+///
+/// A corner whose difference from its snapped place is below [`FAST`] on
+/// every axis (every corner of a valid local map) is snapped in the loop
+/// without a library call ([`round_small`]); the others (huge or not
+/// finite) after it, by [`snap_corner`]. Each corner is in one star and
+/// written once, and the largest move does not depend on the order: the
+/// same result as one pass in order.
 fn snap_block<const N: usize, const D: usize>(
     coords: &[[[f64; D]; N]],
     stars: &Stars<D>,
@@ -239,6 +247,8 @@ fn snap_block<const N: usize, const D: usize>(
 ) -> (usize, f64) {
     out.clear();
     let (mut count, mut max_move) = (0, 0.0f64);
+    // the corners left for after the loop, with their places `y`
+    let mut slow: Vec<(u32, u8, [f64; D])> = Vec::new();
     for v in vs {
         let star = stars.of(v);
         let Some(first) = star.first() else { continue };
@@ -252,20 +262,45 @@ fn snap_block<const N: usize, const D: usize>(
             // (branch-free: `==` per axis, no early exit)
             let same = (0..D).fold(true, |same, k| same & (old[k] == y[k]));
             let x = if same {
-                // the common case, the same point: `x − y = +0`, which
-                // rounds to itself, and the move is 0
+                // the common case in 3D, the same point: `x − y = +0`,
+                // which rounds to itself, and the move is 0
                 y.map(|yk| yk + 0.0)
             } else {
-                snap_corner(&old, &y, &mut max_move)
+                let d: [f64; D] = std::array::from_fn(|k| old[k] - y[k]);
+                // (branch-free: one test for every axis)
+                let fast = (0..D).fold(true, |f, k| f & (d[k].abs() < FAST));
+                if !fast {
+                    slow.push((e.simplex, e.corner, y));
+                    continue;
+                }
+                let x: [f64; D] = std::array::from_fn(|k| y[k] + round_small(d[k]));
+                for k in 0..D {
+                    // not NaN (`fast`): as `f64::max`
+                    let m = (x[k] - old[k]).abs();
+                    max_move = if m > max_move { m } else { max_move };
+                }
+                x
             };
-            let changed = (0..D).fold(false, |c, k| c | (x[k].to_bits() != old[k].to_bits()));
-            if changed {
+            if changed(&x, &old) {
                 out.push(e.simplex, e.corner, x);
             }
         }
         count += 1;
     }
+    for (s, c, y) in slow {
+        let old = coords[s as usize][c as usize];
+        let x = snap_corner(&old, &y, &mut max_move);
+        if changed(&x, &old) {
+            out.push(s, c, x);
+        }
+    }
     (count, max_move)
+}
+
+/// Whether `x` differs from `old` in some bit (branch-free).
+#[inline]
+fn changed<const D: usize>(x: &[f64; D], old: &[f64; D]) -> bool {
+    (0..D).fold(false, |c, k| c | (x[k].to_bits() != old[k].to_bits()))
 }
 
 /// A corner `x` snapped onto `y` plus the nearest integer translation
@@ -364,6 +399,45 @@ mod tests {
         let got = local.snap(&stars);
         assert_eq!(got, snap_reference(&mut want, &stars));
         assert!(got.0 > 16000 && got.1 > 0.0, "{got:?}");
+        let bits = |l: &LocalMap<3, 2>| -> Vec<u64> {
+            l.coords
+                .iter()
+                .flatten()
+                .flatten()
+                .map(|x| x.to_bits())
+                .collect()
+        };
+        assert_eq!(bits(&local), bits(&want));
+    }
+
+    /// The snap equals the sequential one bit for bit on corners set to
+    /// quarters (ties of the rounding both ways), signed zeros, and values
+    /// at and beyond [`FAST`] (the path after the loop).
+    #[test]
+    fn snap_equals_reference_on_ties_zeros_and_huge_values() {
+        use dualex_map::test_maps::{grid, rechart, Lcg};
+        use dualex_map::{Topology, Transitions};
+        let mut map = grid(60);
+        rechart(&mut map, 3);
+        let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
+        let (trans, _) =
+            Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+        let stars = Stars::build(&map, &topo, &trans);
+        let mut local = LocalMap::new(&map, &topo, &trans);
+        let mut rng = Lcg(11);
+        for x in local.coords.iter_mut().flatten().flatten() {
+            let q = rng.below(33) as f64 * 0.25 - 4.0;
+            *x = match rng.below(40) {
+                0 => -0.0,
+                1 => 0.0,
+                2 => 3e15 + q,
+                3 => -1e300,
+                _ => q,
+            };
+        }
+        let mut want = local.clone();
+        let got = local.snap(&stars);
+        assert_eq!(got, snap_reference(&mut want, &stars));
         let bits = |l: &LocalMap<3, 2>| -> Vec<u64> {
             l.coords
                 .iter()

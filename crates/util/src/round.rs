@@ -27,13 +27,23 @@ pub fn nearest_even(x: f64) -> f64 {
 #[inline]
 pub fn round(x: f64) -> f64 {
     if x.abs() < FAST {
-        let r = nearest_even(x);
-        // ties (`x − r = ±½`, exact) go away from zero in `f64::round`
-        if (x - r).abs() != 0.5 {
-            return r.copysign(x);
-        }
+        return round_small(x);
     }
     x.round()
+}
+
+/// `x.round()`, bit for bit, for `|x| <` [`FAST`] (the caller's check;
+/// other values give a wrong result, never a panic), without a library
+/// call: the nearest even integer `r`, moved one step away from zero at a
+/// tie (`x − r = ±½`, exact) where `r` lies on zero's side of `x`
+/// (`f64::round` rounds ties away from zero); the sign of `x` on a zero.
+#[inline]
+pub fn round_small(x: f64) -> f64 {
+    let r = nearest_even(x);
+    let t = x - r;
+    let inward_tie = t.abs() == 0.5 && t * x > 0.0;
+    let r = if inward_tie { r + 2.0 * t } else { r };
+    r.copysign(x)
 }
 
 /// `x.ceil()`, bit for bit (see [`round`]).

@@ -7,8 +7,9 @@ use crate::boxes::Boxes;
 #[cfg(doc)]
 use crate::grid::spanned_axes_small;
 use crate::grid::{
-    axis_range, dist2d_below_eps as below_eps, floor_above, grid_point_near_segment, near_int,
-    near_int_on, point_near_line, segment_clear_of_grid, EPS,
+    axis_range, dist2d_below_eps as below_eps, floor_above, floor_above_small,
+    grid_point_near_segment, near_int, near_int_on, near_int_on_small, point_near_line,
+    segment_clear_of_grid, EPS,
 };
 use crate::local::LocalMap;
 use dualex_map::{Stars, Topology};
@@ -18,6 +19,10 @@ use std::collections::BTreeMap;
 
 /// Every corner of a triangle bad.
 const FULL: u8 = 0b111;
+
+/// Below it in magnitude, a triangle's range may be tested against its
+/// one grid point ([`Span`]).
+const SMALL: f64 = 1024.0;
 
 impl Predicates<3, 2> for Dim<3, 2> {
     const MIN_TASK: usize = 1024;
@@ -93,10 +98,11 @@ fn tri_mask(c: &[[f64; 2]; 3], known: u8) -> u8 {
     }
     let span = Span::of(c);
     if span.axes != 0b11 {
-        return if span.axes == 0 {
-            0
-        } else {
-            near_int_on(c, span.axes.trailing_zeros() as usize)
+        let a = span.axes.trailing_zeros() as usize;
+        return match (span.axes, span.small) {
+            (0, _) => 0,
+            (_, true) => near_int_on_small(c, a),
+            (_, false) => near_int_on(c, a),
         };
     }
     match span.point {
@@ -117,10 +123,40 @@ struct Span {
 }
 
 impl Span {
-    /// The span of the corners `c` (not NaN: validated input).
+    /// The span of the corners `c` (not NaN: validated input). Corners
+    /// below `FAST/2` (those of every local map) take a path without a
+    /// library call ([`floor_above_small`]: the call's spills slowed every
+    /// triangle); the others [`Self::of_large`].
     #[inline(always)]
     fn of(c: &[[f64; 2]; 3]) -> Self {
-        const SMALL: f64 = 1024.0;
+        let range = [axis_range(c, 0), axis_range(c, 1)];
+        let small = range.iter().fold(true, |s, &(lo, hi)| {
+            s & (-0.5 * FAST < lo) & (hi < 0.5 * FAST)
+        });
+        if !small {
+            return Self::of_large(c);
+        }
+        let (mut axes, mut one) = (0u8, true);
+        let mut g = [0.0; 2];
+        for (a, (ga, &(lo, hi))) in g.iter_mut().zip(&range).enumerate() {
+            one &= -SMALL < lo && hi < SMALL;
+            // the range's integers: `ceil(l)..=h`
+            let (l, h) = (lo - 2.0 * EPS, floor_above_small(hi));
+            axes |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
+            one &= l > h - 1.0;
+            *ga = h;
+        }
+        Span {
+            axes,
+            small,
+            point: one.then_some(g),
+        }
+    }
+
+    /// [`Self::of`] for any corners (out of line, rarely taken).
+    #[cold]
+    #[inline(never)]
+    fn of_large(c: &[[f64; 2]; 3]) -> Self {
         let (mut axes, mut small, mut one) = (0u8, true, true);
         let mut g = [0.0; 2];
         for (a, ga) in g.iter_mut().enumerate() {

@@ -308,3 +308,33 @@ fn mask_given_known_corners_keeps_every_bit() {
     }
     assert!(bad > 10000, "{bad}");
 }
+
+/// The 2D mask equals its unfiltered tests on triangles at and past the
+/// bounds of its call-free path (`FAST/2` = 2^50; every double past 2^52
+/// is an integer): whole triangles shifted (one corner shifted alone
+/// makes the oracle walk 2^50 grid points).
+#[test]
+fn triangle_mask_equals_unfiltered_tests_on_large_coordinates() {
+    let p = |e: i32| 2f64.powi(e);
+    let shifts = [
+        p(49),
+        p(50) - 8.0,
+        p(50),
+        p(50) + 0.5,
+        p(51),
+        -p(51),
+        p(53),
+        -p(60),
+    ];
+    let mut rng = SplitMix::new(41);
+    let mut bad = 0usize;
+    for n in 0..20000 {
+        let c = tet(&mut rng, n);
+        let s = pick(&mut rng, &shifts);
+        let t = [0, 1, 2].map(|k| [c[k][0] + s, c[k][1] + s]);
+        let got = <Dim<3, 2>>::mask(&t);
+        assert_eq!(got, tri_mask_unfiltered(&t), "{t:?}");
+        bad += usize::from(got != 0);
+    }
+    assert!(bad > 5000, "{bad}");
+}
