@@ -234,8 +234,10 @@ pub fn model<const N: usize, const D: usize>(
     opts: &TransitionOptions,
     st: &mut SegmentStats,
 ) -> Result<Model<N, D>, InputError> {
-    // the corner lists, built once for the topology and the stars
-    let corners = VertexCorners::build(&map.simplices, map.positions.len(), true);
+    // the corner lists, built once for the topology and the stars; each
+    // corner's place in its list only in 3D (the 2D stars' fans find
+    // their way without it, a vertex of several fans by a search)
+    let corners = VertexCorners::build(&map.simplices, map.positions.len(), D == 3);
     // the topology's vertex check is made by the stars' walk (no walk of
     // its own); errors keep their order: a transition's error comes after
     // a vertex's
@@ -243,7 +245,15 @@ pub fn model<const N: usize, const D: usize>(
     let (trans, trep) = match Transitions::derive(map, &topo, opts) {
         Ok(derived) => derived,
         Err(e) => {
-            topo.check_vertices(map, &corners)?;
+            // the vertex check's walk needs the places (an error's path)
+            let indexed;
+            let corners = if corners.position.is_empty() {
+                indexed = VertexCorners::build(&map.simplices, map.positions.len(), true);
+                &indexed
+            } else {
+                &corners
+            };
+            topo.check_vertices(map, corners)?;
             return Err(e);
         }
     };
