@@ -378,19 +378,27 @@ mod tests {
         (count, max_move)
     }
 
-    /// The parallel snap equals the sequential one bit for bit, on a map
-    /// with random charts and per-corner noise spanning several waves.
-    #[test]
-    fn snap_equals_sequential_reference() {
-        use dualex_map::test_maps::{grid, rechart, Lcg};
+    /// A grid of `n` cells a side, its charts turned at random (`seed`):
+    /// its stars and local map.
+    fn recharted_grid(n: u32, seed: u64) -> (Stars<2>, LocalMap<3, 2>) {
+        use dualex_map::test_maps::{grid, rechart};
         use dualex_map::{Topology, Transitions};
-        let mut map = grid(130);
-        rechart(&mut map, 5);
+        let mut map = grid(n);
+        rechart(&mut map, seed);
         let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
         let (trans, _) =
             Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
         let stars = Stars::build(&map, &topo, &trans);
-        let mut local = LocalMap::new(&map, &topo, &trans);
+        let local = LocalMap::new(&map, &topo, &trans);
+        (stars, local)
+    }
+
+    /// The parallel snap equals the sequential one bit for bit, on a map
+    /// with random charts and per-corner noise spanning several waves.
+    #[test]
+    fn snap_equals_sequential_reference() {
+        use dualex_map::test_maps::Lcg;
+        let (stars, mut local) = recharted_grid(130, 5);
         let mut rng = Lcg(3);
         for x in local.coords.iter_mut().flatten().flatten() {
             *x += (rng.below(2001) as f64 - 1000.0) * 1e-9;
@@ -415,15 +423,8 @@ mod tests {
     /// at and beyond [`FAST`] (the path after the loop).
     #[test]
     fn snap_equals_reference_on_ties_zeros_and_huge_values() {
-        use dualex_map::test_maps::{grid, rechart, Lcg};
-        use dualex_map::{Topology, Transitions};
-        let mut map = grid(60);
-        rechart(&mut map, 3);
-        let topo = Topology::build(&map).unwrap_or_else(|e| panic!("{e}"));
-        let (trans, _) =
-            Transitions::derive(&map, &topo, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
-        let stars = Stars::build(&map, &topo, &trans);
-        let mut local = LocalMap::new(&map, &topo, &trans);
+        use dualex_map::test_maps::Lcg;
+        let (stars, mut local) = recharted_grid(60, 3);
         let mut rng = Lcg(11);
         for x in local.coords.iter_mut().flatten().flatten() {
             let q = rng.below(33) as f64 * 0.25 - 4.0;
