@@ -378,6 +378,24 @@ mod tests {
         (count, max_move)
     }
 
+    /// Snaps `local` and checks the result against the sequential
+    /// reference: the counts and every coordinate's bits; the counts.
+    fn snap_as_reference(local: &mut LocalMap<3, 2>, stars: &Stars<2>) -> (usize, f64) {
+        let mut want = local.clone();
+        let got = local.snap(stars);
+        assert_eq!(got, snap_reference(&mut want, stars));
+        let bits = |l: &LocalMap<3, 2>| -> Vec<u64> {
+            l.coords
+                .iter()
+                .flatten()
+                .flatten()
+                .map(|x| x.to_bits())
+                .collect()
+        };
+        assert_eq!(bits(local), bits(&want));
+        got
+    }
+
     /// A grid of `n` cells a side, its charts turned at random (`seed`):
     /// its stars and local map.
     fn recharted_grid(n: u32, seed: u64) -> (Stars<2>, LocalMap<3, 2>) {
@@ -403,19 +421,8 @@ mod tests {
         for x in local.coords.iter_mut().flatten().flatten() {
             *x += (rng.below(2001) as f64 - 1000.0) * 1e-9;
         }
-        let mut want = local.clone();
-        let got = local.snap(&stars);
-        assert_eq!(got, snap_reference(&mut want, &stars));
+        let got = snap_as_reference(&mut local, &stars);
         assert!(got.0 > 16000 && got.1 > 0.0, "{got:?}");
-        let bits = |l: &LocalMap<3, 2>| -> Vec<u64> {
-            l.coords
-                .iter()
-                .flatten()
-                .flatten()
-                .map(|x| x.to_bits())
-                .collect()
-        };
-        assert_eq!(bits(&local), bits(&want));
     }
 
     /// The snap equals the sequential one bit for bit on corners set to
@@ -436,18 +443,7 @@ mod tests {
                 _ => q,
             };
         }
-        let mut want = local.clone();
-        let got = local.snap(&stars);
-        assert_eq!(got, snap_reference(&mut want, &stars));
-        let bits = |l: &LocalMap<3, 2>| -> Vec<u64> {
-            l.coords
-                .iter()
-                .flatten()
-                .flatten()
-                .map(|x| x.to_bits())
-                .collect()
-        };
-        assert_eq!(bits(&local), bits(&want));
+        snap_as_reference(&mut local, &stars);
     }
 
     #[test]
