@@ -23,8 +23,26 @@
 use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// The page size assumed; blocks of a larger alignment are not the
-/// cache's.
+/// cache's, and on a kernel of another page size there is no cache
+/// ([`page_size_ok`]).
 pub const PAGE: usize = 4096;
+
+/// Whether the kernel's page size is [`PAGE`] (asked once; 1 yes, 2 no).
+pub fn page_size_ok() -> bool {
+    use std::sync::atomic::{AtomicU8, Ordering::Relaxed};
+    static OK: AtomicU8 = AtomicU8::new(0);
+    match OK.load(Relaxed) {
+        1 => true,
+        2 => false,
+        _ => {
+            // SAFETY: sysconf reads a constant of the process.
+            let size = unsafe { libc::sysconf(libc::_SC_PAGESIZE) };
+            let ok = usize::try_from(size) == Ok(PAGE);
+            OK.store(if ok { 1 } else { 2 }, Relaxed);
+            ok
+        }
+    }
+}
 
 /// A transparent huge page (x86-64 and aarch64 with 4 KiB pages).
 const HUGE: usize = crate::HUGE;

@@ -61,7 +61,7 @@ fn hint(_: usize, _: usize) {}
 /// its length in whole pages.
 #[cfg(target_os = "linux")]
 fn large(layout: Layout) -> Option<usize> {
-    if layout.size() < LARGE_FROM || layout.align() > cache::PAGE {
+    if layout.size() < LARGE_FROM || layout.align() > cache::PAGE || !cache::page_size_ok() {
         return None;
     }
     cache::pages(layout.size())
