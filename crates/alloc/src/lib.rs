@@ -53,10 +53,6 @@ fn hint(start: usize, len: usize) {
     }
 }
 
-/// No advice off Linux.
-#[cfg(not(target_os = "linux"))]
-fn hint(_: usize, _: usize) {}
-
 /// Whether a block of `layout` is the cache's ([`cache`], Linux), and
 /// its length in whole pages.
 #[cfg(target_os = "linux")]
