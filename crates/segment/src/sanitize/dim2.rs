@@ -134,37 +134,29 @@ impl Span {
             s & (-0.5 * FAST < lo) & (hi < 0.5 * FAST)
         });
         if !small {
-            return Self::of_large(c);
+            return Self::of_large(range);
         }
+        Self::of_ranges(range, true, floor_above_small)
+    }
+
+    /// [`Self::of`] for corners at or beyond `FAST/2` (out of line, rarely
+    /// taken): the library's floor.
+    #[cold]
+    #[inline(never)]
+    fn of_large(range: [(f64, f64); 2]) -> Self {
+        Self::of_ranges(range, false, floor_above)
+    }
+
+    /// The span of the per-axis ranges `range` (`small`: whether they are
+    /// below `FAST/2`), the integers below a range's top by `floor`.
+    #[inline(always)]
+    fn of_ranges(range: [(f64, f64); 2], small: bool, floor: impl Fn(f64) -> f64) -> Self {
         let (mut axes, mut one) = (0u8, true);
         let mut g = [0.0; 2];
         for (a, (ga, &(lo, hi))) in g.iter_mut().zip(&range).enumerate() {
             one &= -SMALL < lo && hi < SMALL;
             // the range's integers: `ceil(l)..=h`
-            let (l, h) = (lo - 2.0 * EPS, floor_above_small(hi));
-            axes |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
-            one &= l > h - 1.0;
-            *ga = h;
-        }
-        Span {
-            axes,
-            small,
-            point: one.then_some(g),
-        }
-    }
-
-    /// [`Self::of`] for any corners (out of line, rarely taken).
-    #[cold]
-    #[inline(never)]
-    fn of_large(c: &[[f64; 2]; 3]) -> Self {
-        let (mut axes, mut small, mut one) = (0u8, true, true);
-        let mut g = [0.0; 2];
-        for (a, ga) in g.iter_mut().enumerate() {
-            let (lo, hi) = axis_range(c, a);
-            small &= -0.5 * FAST < lo && hi < 0.5 * FAST;
-            one &= -SMALL < lo && hi < SMALL;
-            // the range's integers: `ceil(l)..=h`
-            let (l, h) = (lo - 2.0 * EPS, floor_above(hi));
+            let (l, h) = (lo - 2.0 * EPS, floor(hi));
             axes |= u8::from(l.partial_cmp(&h) != Some(std::cmp::Ordering::Greater)) << a;
             one &= l > h - 1.0;
             *ga = h;
