@@ -1,24 +1,32 @@
-//! Large blocks (Linux): mapped by the allocator itself, and when freed
-//! kept, to be handed out again, instead of given back to the kernel.
+//! Large blocks (Linux): carved by the allocator itself from arenas it
+//! maps, and when freed kept, to be handed out again, instead of given
+//! back to the kernel.
 //!
 //! Why: a page the kernel hands out fresh is zeroed and faulted in on its
 //! first touch, and on a virtual machine its host may have to back it too.
 //! The extraction's stages each allocate their arrays anew: on torus537
 //! about a third of the process's CPU time went to faults and zeroing
-//! (BENCHMARKS.md, "Large blocks kept for the next stage").
+//! (BENCHMARKS.md, "Large blocks kept for the next stage"). A 4 KiB fault
+//! costs here about three times what the same bytes cost in a 2 MiB
+//! transparent huge page ("Large blocks from huge-page arenas").
 //!
-//! Input and output: blocks of at least [`crate::LARGE_FROM`] bytes whose alignment is
-//! at most a page; the others are [`std::alloc::System`]'s (the caller's
-//! choice, [`crate::HugePages`]). A block is a whole number of pages,
-//! either a fresh mapping (2 MiB aligned and advised as transparent huge
-//! pages from 2 MiB on) or a piece of a free range (the smallest that holds
-//! it; the rest stays free).
+//! Input and output: blocks of at least [`crate::LARGE_FROM`] bytes whose
+//! alignment is at most a page; the others are [`std::alloc::System`]'s
+//! (the caller's choice, [`crate::HugePages`]). A block is a whole number
+//! of pages, either fresh (the next pages of the current arena: arenas are
+//! mapped 2 MiB aligned, at least [`ARENA_LEN`] long and advised as
+//! transparent huge pages whole, so consecutive blocks share their huge
+//! pages and no block's end is left to 4 KiB faults) or a piece of a free
+//! range (the smallest that holds it; the rest stays free).
 //!
 //! Invariant, the peak: the free ranges are unmapped, all of them, before
-//! any fresh memory is mapped. So the resident memory is at most the live
-//! blocks plus the free ranges, and it grows only by a fresh mapping,
-//! made when nothing is free: the process's peak is that of its live
-//! blocks, as without the cache (up to the pages each block rounds up to).
+//! any fresh memory is handed out. So the resident memory is at most the
+//! live blocks plus the free ranges, and it grows only by fresh memory,
+//! handed out when nothing is free: the process's peak is that of its
+//! live blocks, as without the cache, up to the huge pages' granularity
+//! (a huge page is resident whole once any of its bytes is touched; in an
+//! arena the blocks are packed, so that is the blocks' untouched parts
+//! and the arena's last huge page).
 
 use std::sync::{Mutex, MutexGuard, PoisonError};
 
@@ -140,12 +148,64 @@ fn unmap(at: usize, len: usize) {
     }
 }
 
-/// A fresh mapping of `len` bytes (whole pages), 2 MiB aligned and
-/// advised as huge pages from 2 MiB on; null when the kernel refuses.
+/// Fresh memory for a block of `len` bytes (whole pages), after the free
+/// ranges are unmapped (the peak invariant): [`fresh`].
 fn map_fresh(len: usize) -> *mut u8 {
     unmap_free();
-    let extra = if len >= HUGE { HUGE } else { 0 };
-    let Some(total) = len.checked_add(extra) else {
+    fresh(len)
+}
+
+/// The current arena's part never handed out, `[top, end)`: mapped, and
+/// zero (never touched).
+static ARENA: Mutex<(usize, usize)> = Mutex::new((0, 0));
+
+/// Arenas are mapped at least this long (address space; only the pages
+/// touched are backed).
+pub const ARENA_LEN: usize = 64 << 20;
+
+fn arena() -> MutexGuard<'static, (usize, usize)> {
+    ARENA.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// `len` bytes (whole pages) never handed out: the current arena's next
+/// pages, or the first of a new arena (the old one's rest unmapped); null
+/// when the kernel refuses.
+fn fresh(len: usize) -> *mut u8 {
+    let mut a = arena();
+    let (top, end) = *a;
+    if end - top >= len {
+        a.0 = top + len;
+        return top as *mut u8;
+    }
+    let Some(size) = len.max(ARENA_LEN).checked_next_multiple_of(HUGE) else {
+        return std::ptr::null_mut();
+    };
+    let p = map_huge(size);
+    if p.is_null() {
+        return p;
+    }
+    if end > top {
+        unmap(top, end - top);
+    }
+    *a = (p as usize + len, p as usize + size);
+    p
+}
+
+/// Grows the block `[p, p + old)` to `new` bytes in place when it ends
+/// where the arena's fresh part begins and the arena has room.
+fn grow_at_top(p: usize, old: usize, new: usize) -> bool {
+    let mut a = arena();
+    let ok = a.0 == p + old && a.1 - p >= new;
+    if ok {
+        a.0 = p + new;
+    }
+    ok
+}
+
+/// A fresh mapping of `len` bytes (a whole number of huge pages), 2 MiB
+/// aligned and advised as huge pages; null when the kernel refuses.
+fn map_huge(len: usize) -> *mut u8 {
+    let Some(total) = len.checked_add(HUGE) else {
         return std::ptr::null_mut();
     };
     // SAFETY: a new private anonymous mapping; nothing else is touched.
@@ -163,18 +223,12 @@ fn map_fresh(len: usize) -> *mut u8 {
         return std::ptr::null_mut();
     }
     let p = p as usize;
-    let start = if extra > 0 {
-        p.next_multiple_of(HUGE)
-    } else {
-        p
-    };
+    let start = p.next_multiple_of(HUGE);
     // the ends beyond [start, start + len) given back
     if start > p {
         unmap(p, start - p);
     }
-    if p + total > start + len {
-        unmap(start + len, p + total - (start + len));
-    }
+    unmap(start + len, p + total - (start + len));
     if let Some((at, n)) = crate::inside(start, len) {
         crate::hint(at, n);
     }
@@ -249,6 +303,10 @@ pub fn realloc(p: *mut u8, old: usize, new: usize) -> *mut u8 {
             unmap_free();
         }
         return moved(p, old, at as *mut u8);
+    }
+    if grow_at_top(p as usize, old, new) {
+        unmap_free();
+        return p;
     }
     // nothing free holds it: the pages moved by the kernel (no copy),
     // after the free ranges are unmapped (the peak invariant)

@@ -1,12 +1,13 @@
 //! The binaries' global allocator: [`System`] for small blocks; blocks of
-//! at least [`LARGE_FROM`] bytes (Linux) mapped by the allocator itself,
-//! those of 2 MiB and more advised as transparent huge pages
+//! at least [`LARGE_FROM`] bytes (Linux) carved by the allocator itself
+//! from arenas it maps and advises as transparent huge pages
 //! (`madvise(MADV_HUGEPAGE)`), and kept when freed for the next large
 //! block (`cache`). Elsewhere the allocator is `System` as it is.
 //!
 //! Why: a page the kernel hands out fresh is faulted in and zeroed on its
 //! first touch, 4 KiB at a time unless advised as a huge page (Debian's THP
-//! mode is `madvise`). The extraction's stages each allocate their arrays
+//! mode is `madvise`), and a 4 KiB fault costs about three times the same
+//! bytes in a huge page. The extraction's stages each allocate their arrays
 //! anew (tens to hundreds of MB): that cost a third of the process's CPU
 //! time on torus537 (BENCHMARKS.md, "Huge pages for the large arrays" and
 //! "Large blocks kept for the next stage").
@@ -14,8 +15,9 @@
 //! Input and output: those of [`GlobalAlloc`]. A small block comes from
 //! and goes back to `System` with the caller's layout; a large one is the
 //! cache's from its allocation to its release. Invariants: only whole huge
-//! pages inside a fresh mapping are advised ([`inside`]); the peak of the
-//! resident memory is not raised by the cache (the `cache` module's docs).
+//! pages inside a fresh mapping are advised ([`inside`]); the cache raises
+//! the peak of the resident memory only by the huge pages' granularity
+//! (the `cache` module's docs).
 
 use std::alloc::{GlobalAlloc, Layout, System};
 

@@ -1,6 +1,7 @@
 //! The advised range stays inside the block; blocks allocated, grown,
 //! shrunk, zeroed and freed through [`HugePages`] keep their contents;
-//! the cache of large blocks reuses them and keeps its peak invariant.
+//! the cache of large blocks reuses them and keeps its peak invariant,
+//! and packs fresh blocks in its arenas.
 
 use super::*;
 
@@ -93,7 +94,8 @@ fn cache_rules(a: &HugePages) {
         s.write_bytes(1, small.size());
         a.dealloc(s, small);
         a.dealloc(p, layout);
-        assert!(cache::free_now().0 >= 2);
+        // (packed in one arena, the two may have merged into one range)
+        assert!(cache::free_now().1 >= layout.size() + small.size());
         // touched: reused in place, the other range kept
         let q = a.alloc(layout);
         assert_eq!(q, p);
@@ -113,5 +115,38 @@ fn cache_rules(a: &HugePages) {
         assert!(!w.is_null());
         assert_eq!(cache::free_now(), (0, 0));
         a.dealloc(w, huge);
+        arena_rules(a);
+    }
+}
+
+/// Fresh blocks are the arena's next pages, packed; the last one grows in
+/// place; one that cannot grow there moves, its contents kept.
+#[cfg(target_os = "linux")]
+fn arena_rules(a: &HugePages) {
+    const MIB: usize = 1 << 20;
+    let block = |n: usize| Layout::from_size_align(n * MIB, 8).expect("layout");
+    // SAFETY: non-zero layouts; every block is freed with its layout
+    unsafe {
+        // larger than every free range and than an arena's rest: fresh,
+        // at the start of a new arena of 64 MiB
+        let x = a.alloc(block(40));
+        assert!(!x.is_null());
+        assert_eq!(x as usize % (2 * MIB), 0);
+        assert_eq!(cache::free_now(), (0, 0));
+        let y = a.alloc_zeroed(block(1));
+        assert_eq!(y as usize, x as usize + 40 * MIB);
+        assert!((0..MIB).all(|i| y.add(i).read() == 0));
+        y.write_bytes(7, MIB);
+        let g = a.realloc(y, block(1), 4 * MIB);
+        assert_eq!(g, y);
+        assert!((0..MIB).all(|i| g.add(i).read() == 7));
+        g.add(MIB).write_bytes(9, 3 * MIB);
+        // past the arena's end: moved
+        let m = a.realloc(g, block(4), 30 * MIB);
+        assert!(!m.is_null() && m != g);
+        assert!((0..MIB).all(|i| m.add(i).read() == 7));
+        assert!((MIB..4 * MIB).all(|i| m.add(i).read() == 9));
+        a.dealloc(m, block(30));
+        a.dealloc(x, block(40));
     }
 }
