@@ -31,7 +31,8 @@
 //! - [`transition`]: per-facet rotation and integer translation (derived
 //!   by `transition_derive`, one facet fitted by `transition_fit`, or by
 //!   `transition_same` when its corners are equal in both charts, the fits
-//!   counted by `transition_tally`, all private);
+//!   counted by `transition_tally`; or each fitted where the topology
+//!   glues its pair, by `transition_glue`; all private);
 //! - [`star`]: vertex stars with rotations; singular vertices (built by
 //!   `star_build`, private);
 //! - [`holonomy`]: rotation around a vertex (2D) or an edge (3D);
@@ -70,6 +71,7 @@ mod topology_build;
 pub mod transition;
 mod transition_derive;
 mod transition_fit;
+mod transition_glue;
 mod transition_same;
 mod transition_tally;
 pub mod weld;

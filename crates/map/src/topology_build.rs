@@ -104,6 +104,35 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     corners: &VertexCorners,
 ) -> Result<Topology<N>, InputError> {
+    glue_into(map, corners, || ()).map(|(topo, ())| topo)
+}
+
+/// What a glue does with each pair it glues besides `mate`: nothing
+/// (`()`), or the pair's transition fitted there
+/// (`crate::transition_glue`). One sink per block of vertices, the
+/// blocks' sinks combined in block order.
+pub(crate) trait PairSink<const N: usize, const D: usize>: Send + Sized {
+    /// Half-facets `h1 < h2` (ids `s·N + f`) glued, `corner` the corner
+    /// map from `h1`'s simplex to `h2`'s (a `mate` word's high half).
+    fn glued(&mut self, map: &SimplexMap<N, D>, h1: u32, h2: u32, corner: u32);
+    /// This block's sink followed by a later block's.
+    fn then(self, later: Self) -> Self;
+}
+
+impl<const N: usize, const D: usize> PairSink<N, D> for () {
+    #[inline]
+    fn glued(&mut self, _: &SimplexMap<N, D>, _: u32, _: u32, _: u32) {}
+    fn then(self, _: Self) -> Self {}
+}
+
+/// [`glue_with`], each glued pair also given to a sink made by `sink`
+/// (one per block; a bucket with an error gives none of its pairs once
+/// sorted: its error is returned).
+pub(crate) fn glue_into<const N: usize, const D: usize, S: PairSink<N, D>>(
+    map: &SimplexMap<N, D>,
+    corners: &VertexCorners,
+    sink: impl Fn() -> S + Sync,
+) -> Result<(Topology<N>, S), InputError> {
     let (nv, ns) = (map.positions.len(), map.len());
     // the other simplex of each glued half-facet in the low 32 bits and
     // the corner map to it (`nbr_corner`, N ≤ 4 bytes) above, written by the
@@ -112,33 +141,36 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
         .into_par_iter()
         .map(|_| AtomicU64::new(UNGLUED))
         .collect();
-    let blocks: Vec<Result<usize, InputError>> = (0..nv.div_ceil(SORT_BLOCK))
+    let blocks: Vec<Result<(usize, S), InputError>> = (0..nv.div_ceil(SORT_BLOCK))
         .into_par_iter()
         .map(|b| {
             let (mut bucket, mut table) = (Vec::new(), Vec::new());
-            let mut boundary = 0;
+            let (mut boundary, mut out) = (0, sink());
             for v in b * SORT_BLOCK..nv.min((b + 1) * SORT_BLOCK) {
                 facets_from(map, corners.of(v), v as u32, &mut bucket);
                 let paired = if bucket.len() > SMALL_BUCKET {
-                    pair_bucket(map, &bucket, &mate, &mut table)
+                    pair_bucket(map, &bucket, &mate, &mut table, &mut out)
                 } else {
-                    pair_small(map, &bucket, &mate)
+                    pair_small(map, &bucket, &mate, &mut out)
                 };
                 boundary += match paired {
                     Some(boundary) => boundary,
                     None => {
-                        // an error (the sorted bucket names the first)
+                        // an error (the sorted bucket names the first;
+                        // its pairs go to no sink)
                         bucket.sort_unstable();
-                        glue_bucket(map, &bucket, &mate)?
+                        glue_bucket(map, &bucket, &mate, &mut ())?
                     }
                 };
             }
-            Ok(boundary)
+            Ok((boundary, out))
         })
         .collect();
-    let mut boundary_facets = 0;
+    let (mut boundary_facets, mut fits) = (0, sink());
     for block in blocks {
-        boundary_facets += block?;
+        let (boundary, out) = block?;
+        boundary_facets += boundary;
+        fits = fits.then(out);
     }
     let (adj, (adj_facet, nbr_corner)) = mate
         .par_chunks(N)
@@ -159,12 +191,13 @@ pub(crate) fn glue_with<const N: usize, const D: usize>(
             (adj, (adj_facet, nbr))
         })
         .unzip();
-    Ok(Topology {
+    let topo = Topology {
         adj,
         adj_facet,
         nbr_corner,
         boundary_facets,
-    })
+    };
+    Ok((topo, fits))
 }
 
 /// The half-facets `(rest, s·N + f, order)` ([`rest_without`]) whose least vertex is `v`,
@@ -221,6 +254,7 @@ fn pair_bucket<const N: usize, const D: usize>(
     bucket: &[Half],
     mate: &[AtomicU64],
     table: &mut Vec<u32>,
+    sink: &mut impl PairSink<N, D>,
 ) -> Option<usize> {
     let size = (2 * bucket.len()).next_power_of_two().max(8);
     let shift = 64 - size.trailing_zeros();
@@ -242,7 +276,7 @@ fn pair_bucket<const N: usize, const D: usize>(
                     return None;
                 }
                 table[at] = slot | PAIRED;
-                glue_pair(map, (first, first_order), (h, order), mate).ok()?;
+                glue_pair(map, (first, first_order), (h, order), mate, sink).ok()?;
                 pairs += 1;
                 break;
             }
@@ -261,6 +295,7 @@ fn pair_small<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     bucket: &[Half],
     mate: &[AtomicU64],
+    sink: &mut impl PairSink<N, D>,
 ) -> Option<usize> {
     debug_assert!(bucket.len() <= SMALL_BUCKET);
     let (mut glued, mut pairs) = (0u32, 0);
@@ -279,7 +314,7 @@ fn pair_small<const N: usize, const D: usize>(
         }
         if let Some((j, &(_, h2, o2))) = other {
             glued |= 1 << j;
-            glue_pair(map, (h, order), (h2, o2), mate).ok()?;
+            glue_pair(map, (h, order), (h2, o2), mate, sink).ok()?;
             pairs += 1;
         }
     }
@@ -299,7 +334,9 @@ fn glue_pair<const N: usize, const D: usize>(
     (h1, o1): (u32, u8),
     (h2, o2): (u32, u8),
     mate: &[AtomicU64],
+    sink: &mut impl PairSink<N, D>,
 ) -> Result<(), InputError> {
+    debug_assert!(h1 < h2, "a bucket lists its half-facets by id");
     let ((s, f), (n, g)) = (split::<N>(h1), split::<N>(h2));
     if (o1 ^ o2) & ODD == 0 {
         return Err(opposite_orientations(map, s, f, n));
@@ -314,6 +351,7 @@ fn glue_pair<const N: usize, const D: usize>(
     let back = s as u64 | u64::from(maps[o2][o1]) << 32;
     mate[h1 as usize].store(there, Relaxed);
     mate[h2 as usize].store(back, Relaxed);
+    sink.glued(map, h1, h2, maps[o1][o2]);
     Ok(())
 }
 
@@ -343,6 +381,7 @@ fn glue_bucket<const N: usize, const D: usize>(
     map: &SimplexMap<N, D>,
     bucket: &[Half],
     mate: &[AtomicU64],
+    sink: &mut impl PairSink<N, D>,
 ) -> Result<usize, InputError> {
     let mut boundary = 0;
     let mut i = 0;
@@ -355,7 +394,7 @@ fn glue_bucket<const N: usize, const D: usize>(
             1 => boundary += 1,
             2 => {
                 let (a, b) = (&bucket[i], &bucket[i + 1]);
-                glue_pair(map, (a.1, a.2), (b.1, b.2), mate)?;
+                glue_pair(map, (a.1, a.2), (b.1, b.2), mate, sink)?;
             }
             n => {
                 let (s, f) = split::<N>(bucket[i].1);

@@ -15,6 +15,11 @@
 
 use crate::{topology::Topology, InputError, Rot, SimplexMap};
 
+/// The transitions and their report, or the transitions' error
+/// ([`Transitions::glue_derive`]).
+pub type Derived<const N: usize, const D: usize> =
+    Result<(Transitions<N, D>, TransitionReport), InputError>;
+
 /// Options of transition derivation.
 #[derive(Clone, Copy, Debug)]
 pub struct TransitionOptions {
@@ -108,6 +113,19 @@ impl<const N: usize, const D: usize> Transitions<N, D> {
         opts: &TransitionOptions,
     ) -> Result<(Self, TransitionReport), InputError> {
         crate::transition_derive::derive(map, topo, opts)
+    }
+
+    /// The topology ([`Topology::glue_with`]: the vertex check left out)
+    /// and the transitions ([`Self::derive`]) in one glue, each facet's
+    /// transition fitted where its pair is glued: the glue's error, or
+    /// the topology and the transitions or their error, the same values
+    /// and errors as the two calls.
+    pub fn glue_derive(
+        map: &SimplexMap<N, D>,
+        corners: &crate::corners::VertexCorners,
+        opts: &TransitionOptions,
+    ) -> Result<(Topology<N>, Derived<N, D>), InputError> {
+        crate::transition_glue::glue_derive(map, corners, opts)
     }
 
     /// Maps a point of `s`'s chart into the chart of the neighbour across `f`.

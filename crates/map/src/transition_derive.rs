@@ -71,16 +71,8 @@ pub(crate) fn derive<const N: usize, const D: usize>(
 ) -> Result<(Transitions<N, D>, TransitionReport), InputError> {
     let ns = map.len();
     // every interior entry is written below, the boundary's stay as they
-    // are: the rotations filled in parallel (the pages touched by both
-    // threads), the translations zeroed by the allocator (fresh pages,
-    // first touched by the parallel writes below)
-    let mut tr = Transitions {
-        rot: (0..ns)
-            .into_par_iter()
-            .map(|_| [Rot::<D>::IDENTITY; N])
-            .collect(),
-        trans: vec![[[0i64; D]; N]; ns],
-    };
+    // are
+    let mut tr = identity_transitions(ns);
     let mut rep = TransitionReport::default();
     let group = Group::<D>::new();
     // the fits of a batch in parallel, in place into one buffer reused by
@@ -120,18 +112,47 @@ pub(crate) fn derive<const N: usize, const D: usize>(
     rep.worst_facet = tally.worst.map(|w| (w.1, w.2));
     rep.snapped = tally.snapped;
     if let Some((res, tol, s, f)) = tally.failed {
-        let n = topo.adj[s][f];
-        return Err(MapError::NonIntegralTransition {
-            simplex: ElementKind::simplex(N).at(s),
-            facet: f,
-            neighbour: n as usize,
-            residual: res,
-            tolerance: tol,
-            round_limit: opts.round_limit,
-        }
-        .into());
+        return Err(non_integral(topo, (s, f), res, tol, opts));
     }
-    let (ambiguous, mut non_identity) = (tally.ambiguous, tally.non_identity);
+    resolve(
+        topo,
+        &mut tr,
+        &tally.ambiguous,
+        tally.non_identity,
+        &mut rep,
+    );
+    Ok((tr, rep))
+}
+
+/// The error of facet `f` of `s` whose residual `res` is above its
+/// tolerance `tol` and not rounded.
+pub(crate) fn non_integral<const N: usize>(
+    topo: &Topology<N>,
+    (s, f): (usize, usize),
+    res: f64,
+    tol: f64,
+    opts: &TransitionOptions,
+) -> InputError {
+    MapError::NonIntegralTransition {
+        simplex: ElementKind::simplex(N).at(s),
+        facet: f,
+        neighbour: topo.adj[s][f] as usize,
+        residual: res,
+        tolerance: tol,
+        round_limit: opts.round_limit,
+    }
+    .into()
+}
+
+/// Resolves the ambiguous facets (in facet order) and counts them and
+/// the non-identity rotations (`non_identity` of the fits) in `rep`.
+pub(crate) fn resolve<const N: usize, const D: usize>(
+    topo: &Topology<N>,
+    tr: &mut Transitions<N, D>,
+    ambiguous: &[Ambiguous<D>],
+    non_identity: usize,
+    rep: &mut TransitionReport,
+) {
     rep.ambiguous_facets = ambiguous.len();
     // the ambiguous facets' rotations may change: counted again after
     let changing = |tr: &Transitions<N, D>| {
@@ -140,10 +161,20 @@ pub(crate) fn derive<const N: usize, const D: usize>(
             .filter(|a| !tr.rot[a.s][a.f].is_identity())
             .count()
     };
-    non_identity -= changing(&tr);
-    fix_ambiguous(topo, &mut tr, &ambiguous, 3);
-    rep.non_identity = non_identity + changing(&tr);
-    Ok((tr, rep))
+    let non_identity = non_identity - changing(tr);
+    fix_ambiguous(topo, tr, ambiguous, 3);
+    rep.non_identity = non_identity + changing(tr);
+}
+
+/// The transitions of `ns` simplices, all the identity: the rotations
+/// written as one block of zero bytes (the identity's rank is 0), the
+/// translations zeroed by the allocator (fresh pages, first touched by
+/// the writes of the fits).
+pub(crate) fn identity_transitions<const N: usize, const D: usize>(ns: usize) -> Transitions<N, D> {
+    Transitions {
+        rot: vec![[Rot::<D>::IDENTITY; N]; ns],
+        trans: vec![[[0i64; D]; N]; ns],
+    }
 }
 
 /// Writes the transitions of simplices `lo..lo + fits.len()` (in
@@ -194,7 +225,7 @@ fn owns(n: u32, g: u8, s: usize, f: usize) -> bool {
 
 /// The transition back across a facet, from the one across it.
 #[inline]
-fn inverse<const D: usize>((rot, t): (Rot<D>, [i64; D])) -> (Rot<D>, [i64; D]) {
+pub(crate) fn inverse<const D: usize>((rot, t): (Rot<D>, [i64; D])) -> (Rot<D>, [i64; D]) {
     // the identity is its own inverse and leaves `t` as it is
     let (inv, back) = if rot.is_identity() {
         (rot, t)

@@ -105,11 +105,40 @@ pub(crate) fn fit_facet<const N: usize, const D: usize>(
     group: &Group<D>,
     opts: &TransitionOptions,
 ) -> Result<Fit<D>, Box<InputError>> {
-    let all = &group.all[..];
     let n = topo.adj[s][f] as usize;
+    let pair = Pair {
+        s,
+        f,
+        n,
+        corner: &topo.nbr_corner[s][f],
+    };
+    fit_pair(map, pair, group, opts)
+}
+
+/// An interior facet to fit: facet `f` of `s`, its neighbour `n` and the
+/// corner map to it (`corner[c]`: the corner of `n` holding corner `c`'s
+/// vertex, as in `Topology::nbr_corner`).
+#[derive(Clone, Copy)]
+pub(crate) struct Pair<'a, const N: usize> {
+    pub(crate) s: usize,
+    pub(crate) f: usize,
+    pub(crate) n: usize,
+    pub(crate) corner: &'a [u8; N],
+}
+
+/// [`fit_facet`] of the facet `pair`, given its neighbour and corner map
+/// (where a pair is glued, before the topology is read off).
+#[inline]
+pub(crate) fn fit_pair<const N: usize, const D: usize>(
+    map: &SimplexMap<N, D>,
+    Pair { s, f, n, corner }: Pair<'_, N>,
+    group: &Group<D>,
+    opts: &TransitionOptions,
+) -> Result<Fit<D>, Box<InputError>> {
+    let all = &group.all[..];
     let m = N - 1;
     // a[i], b[i] for i < m: the facet's corners in the charts of s and n
-    let (cs, cn, corner) = (&map.coords[s], &map.coords[n], &topo.nbr_corner[s][f]);
+    let (cs, cn) = (&map.coords[s], &map.coords[n]);
     let mut a = [[0.0f64; D]; N];
     let mut b = [[0.0f64; D]; N];
     let mut scale = 0.0f64;

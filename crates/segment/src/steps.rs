@@ -241,8 +241,9 @@ pub fn model<const N: usize, const D: usize>(
     // the topology's vertex check is made by the stars' walk (no walk of
     // its own); errors keep their order: a transition's error comes after
     // a vertex's
-    let topo = Topology::glue_with(map, &corners)?;
-    let (trans, trep) = match Transitions::derive(map, &topo, opts) {
+    // (each transition fitted where the topology glues its pair)
+    let (topo, derived) = Transitions::glue_derive(map, &corners, opts)?;
+    let (trans, trep) = match derived {
         Ok(derived) => derived,
         Err(e) => {
             // the vertex check's walk needs the places (an error's path)
