@@ -229,9 +229,9 @@ fn map_huge(len: usize) -> *mut u8 {
         unmap(p, start - p);
     }
     unmap(start + len, p + total - (start + len));
-    if let Some((at, n)) = crate::inside(start, len) {
-        crate::hint(at, n);
-    }
+    // whole huge pages from a huge page's start: advised whole
+    debug_assert_eq!(len % HUGE, 0);
+    crate::hint(start, len);
     start as *mut u8
 }
 

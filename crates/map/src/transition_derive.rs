@@ -219,7 +219,7 @@ fn write_batch<const N: usize, const D: usize>(
 /// [`NONE`]) across its facet `g`: the facet is interior and `(n, g) >
 /// (s, f)` (the owner's fit is the one derived).
 #[inline]
-fn owns(n: u32, g: u8, s: usize, f: usize) -> bool {
+pub(crate) fn owns(n: u32, g: u8, s: usize, f: usize) -> bool {
     n != NONE && (n as usize, usize::from(g)) > (s, f)
 }
 
@@ -237,7 +237,7 @@ pub(crate) fn inverse<const D: usize>((rot, t): (Rot<D>, [i64; D])) -> (Rot<D>, 
 }
 
 /// Stores the transition across facet `f` of `s` and its inverse.
-fn set<const N: usize, const D: usize>(
+pub(crate) fn set<const N: usize, const D: usize>(
     topo: &Topology<N>,
     tr: &mut Transitions<N, D>,
     s: usize,

@@ -22,7 +22,7 @@
 use crate::corners::{split, VertexCorners};
 use crate::topology_build::{glue_into, PairSink};
 use crate::transition::Derived;
-use crate::transition_derive::{identity_transitions, inverse, non_integral, resolve};
+use crate::transition_derive::{identity_transitions, non_integral, owns, resolve, set};
 use crate::transition_fit::{fit_pair, Group, Pair};
 use crate::transition_tally::{Ambiguous, FitResult};
 use crate::{
@@ -66,7 +66,7 @@ impl<const N: usize, const D: usize> PairSink<N, D> for PairFits<'_, D> {
             corner: &corner,
         };
         let fit = fit_pair(map, pair, self.group, self.opts);
-        self.tally.add(h1, h2, fit, self.opts);
+        self.tally.add(h1, fit, self.opts);
     }
 
     fn then(mut self, later: Self) -> Self {
@@ -79,8 +79,8 @@ impl<const N: usize, const D: usize> PairSink<N, D> for PairFits<'_, D> {
 type Candidates<const D: usize> = Vec<(Rot<D>, [i64; D])>;
 
 /// A fit other than the identity with a zero translation: the owner's
-/// half-facet, the other, the transition from the owner.
-type Moved<const D: usize> = (u32, u32, Rot<D>, [i64; D]);
+/// half-facet and the transition from the owner.
+type Moved<const D: usize> = (u32, Rot<D>, [i64; D]);
 
 /// What the fits of any set of facets found, in any order: `derive`'s
 /// tally in facet order (`crate::transition_tally::Tally`) with each
@@ -128,15 +128,13 @@ fn before(x: f64, h: u32, y: f64, k: u32) -> bool {
 }
 
 impl<const D: usize> Unordered<D> {
-    /// Counts the fit of the facet `h1` (glued to `h2`).
+    /// Counts the fit of the facet `h1` (the owner's half-facet).
     #[inline]
-    pub(crate) fn add(&mut self, h1: u32, h2: u32, fit: FitResult<D>, opts: &TransitionOptions) {
+    pub(crate) fn add(&mut self, h1: u32, fit: FitResult<D>, opts: &TransitionOptions) {
         let fit = match fit {
             Ok(fit) => fit,
             Err(e) => {
-                if self.error.as_ref().is_none_or(|x| h1 < x.0) {
-                    self.error = Some((h1, e));
-                }
+                self.keep_error(h1, e);
                 return;
             }
         };
@@ -144,22 +142,22 @@ impl<const D: usize> Unordered<D> {
         let identity = fit.rot.is_identity();
         self.non_identity += usize::from(!identity);
         if r.is_nan() {
-            self.nan = Some(self.nan.map_or(h1, |k| k.min(h1)));
-        } else if self.worst.is_none_or(|(w, k)| before(r, h1, w, k)) {
-            self.worst = Some((r, h1));
+            self.keep_nan(h1);
+        } else {
+            self.keep_worst(r, h1);
         }
         if r > fit.tol {
             if opts.rounds(r) {
                 self.snapped += 1;
-            } else if self.failed.is_none_or(|(w, _, k)| before(r, h1, w, k)) {
-                self.failed = Some((r, fit.tol, h1));
+            } else {
+                self.keep_failed(r, fit.tol, h1);
             }
         }
         if let Some(cands) = fit.ambiguous {
             self.ambiguous.push((h1, cands));
         }
         if !identity || fit.rounded != [0; D] {
-            self.moved.push((h1, h2, fit.rot, fit.rounded));
+            self.moved.push((h1, fit.rot, fit.rounded));
         }
     }
 
@@ -168,26 +166,52 @@ impl<const D: usize> Unordered<D> {
         self.non_identity += other.non_identity;
         self.snapped += other.snapped;
         if let Some((r, h)) = other.worst {
-            if self.worst.is_none_or(|(w, k)| before(r, h, w, k)) {
-                self.worst = Some((r, h));
-            }
+            self.keep_worst(r, h);
         }
         if let Some(h) = other.nan {
-            self.nan = Some(self.nan.map_or(h, |k| k.min(h)));
+            self.keep_nan(h);
         }
         if let Some((r, tol, h)) = other.failed {
-            if self.failed.is_none_or(|(w, _, k)| before(r, h, w, k)) {
-                self.failed = Some((r, tol, h));
-            }
+            self.keep_failed(r, tol, h);
         }
         if let Some((h, e)) = other.error {
-            if self.error.as_ref().is_none_or(|x| h < x.0) {
-                self.error = Some((h, e));
-            }
+            self.keep_error(h, e);
         }
         self.ambiguous.extend(other.ambiguous);
         self.moved.extend(other.moved);
         self
+    }
+
+    /// The residual `r` of facet `h` kept as the worst if it comes before
+    /// ([`before`]) the one kept.
+    #[inline]
+    fn keep_worst(&mut self, r: f64, h: u32) {
+        if self.worst.is_none_or(|(w, k)| before(r, h, w, k)) {
+            self.worst = Some((r, h));
+        }
+    }
+
+    /// Facet `h`, whose residual is NaN, kept if it is the least.
+    #[inline]
+    fn keep_nan(&mut self, h: u32) {
+        self.nan = Some(self.nan.map_or(h, |k| k.min(h)));
+    }
+
+    /// The refused residual `r` (tolerance `tol`) of facet `h` kept if it
+    /// comes before ([`before`]) the one kept.
+    #[inline]
+    fn keep_failed(&mut self, r: f64, tol: f64, h: u32) {
+        if self.failed.is_none_or(|(w, _, k)| before(r, h, w, k)) {
+            self.failed = Some((r, tol, h));
+        }
+    }
+
+    /// The error of facet `h` kept if `h` is the least.
+    #[inline]
+    fn keep_error(&mut self, h: u32, e: Box<InputError>) {
+        if self.error.as_ref().is_none_or(|x| h < x.0) {
+            self.error = Some((h, e));
+        }
     }
 
     /// The transitions of a map of `ns` simplices glued as `topo`, and
@@ -202,10 +226,9 @@ impl<const D: usize> Unordered<D> {
             return Err(*e);
         }
         let mut tr = identity_transitions::<N, D>(ns);
-        for &(h1, h2, rot, t) in &self.moved {
-            let ((s, f), (n, g)) = (split::<N>(h1), split::<N>(h2));
-            (tr.rot[s][f], tr.trans[s][f]) = (rot, t);
-            (tr.rot[n][g], tr.trans[n][g]) = inverse((rot, t));
+        for &(h1, rot, t) in &self.moved {
+            let (s, f) = split::<N>(h1);
+            set(topo, &mut tr, s, f, rot, t);
         }
         // a NaN residual is the worst only as the first facet fitted
         let worst = match (self.nan, self.worst) {
@@ -240,8 +263,7 @@ impl<const D: usize> Unordered<D> {
 fn first_owned<const N: usize>(topo: &Topology<N>) -> u32 {
     for (s, (adj, back)) in topo.adj.iter().zip(&topo.adj_facet).enumerate() {
         for f in 0..N {
-            let (n, g) = (adj[f], usize::from(back[f]));
-            if n != crate::topology::NONE && (n as usize, g) > (s, f) {
+            if owns(adj[f], back[f], s, f) {
                 return (s * N + f) as u32;
             }
         }
