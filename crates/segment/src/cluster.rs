@@ -24,7 +24,8 @@ pub struct Clusters<const D: usize> {
     /// [`UnionFind::union_into`], whose root gives the reference chart).
     sets: UnionFind,
     /// Per vertex: rotation from its cluster root's reference chart to its
-    /// own reference chart; `None` when the cluster cannot move.
+    /// own reference chart; `None` when the cluster cannot move. (With
+    /// `sets`, empty when no edge is collapsed: [`Self::lone`].)
     rot_from_root: Vec<Option<Rot<D>>>,
     members: HashMap<u32, Vec<u32>>,
 }
@@ -37,24 +38,41 @@ impl<const D: usize> Clusters<D> {
         coords: &[[[f64; D]; N]],
     ) -> Self {
         let nv = map.positions.len();
-        let mut sets = UnionFind::new(nv);
         // a singular vertex never moves: a vertex collapsed onto it moves
         // on its own, away from it
         let singular = |v: u32| stars.singular[v as usize];
+        let collapsed = |tet: &[u32; N], c: &[[f64; D]; N], k: usize, l: usize| {
+            c[k] == c[l] && !singular(tet[k]) && !singular(tet[l])
+        };
+        // first whether any edge is collapsed (the common answer: none), by
+        // plain loops in tasks of `EDGE_TASK` simplices
+        let any = map
+            .simplices
+            .par_chunks(EDGE_TASK)
+            .zip(coords.par_chunks(EDGE_TASK))
+            .any(|(ts, cs)| {
+                ts.iter()
+                    .zip(cs)
+                    .any(|(t, c)| (0..N).any(|k| (k + 1..N).any(|l| collapsed(t, c, k, l))))
+            });
+        if !any {
+            return Self::lone();
+        }
         // the collapsed edges, found in parallel, in simplex order
         let edges: Vec<(u32, u32, usize)> = map
             .simplices
             .par_iter()
             .zip(coords)
             .enumerate()
-            .with_min_len(4096)
+            .with_min_len(EDGE_TASK)
             .flat_map_iter(|(s, (tet, c))| {
                 (0..N)
                     .flat_map(|k| (k + 1..N).map(move |l| (k, l)))
-                    .filter(move |&(k, l)| c[k] == c[l] && !singular(tet[k]) && !singular(tet[l]))
+                    .filter(move |&(k, l)| collapsed(tet, c, k, l))
                     .map(move |(k, l)| (tet[k], tet[l], s))
             })
             .collect();
+        let mut sets = UnionFind::new(nv);
         // joined in that order (the roots depend on it)
         for &(a, b, _) in &edges {
             sets.union_into(a as usize, b as usize);
@@ -90,6 +108,17 @@ impl<const D: usize> Clusters<D> {
         }
     }
 
+    /// No collapsed edge: every vertex its own root, movable, alone (what
+    /// the sets and rotations of [`Self::build`] say then, without their
+    /// per-vertex arrays).
+    fn lone() -> Self {
+        Clusters {
+            sets: UnionFind::new(0),
+            rot_from_root: Vec::new(),
+            members: HashMap::new(),
+        }
+    }
+
     /// Number of clusters with more than one vertex.
     pub fn count_nontrivial(&self) -> usize {
         self.members.len()
@@ -97,13 +126,16 @@ impl<const D: usize> Clusters<D> {
 
     /// The cluster root of `v`.
     pub fn root(&self, v: u32) -> u32 {
+        if self.sets.is_empty() {
+            return v;
+        }
         self.sets.root(v as usize) as u32
     }
 
     /// Whether the cluster of `root` can move consistently (every member
     /// has a rotation from the root's chart: all or none of them have).
     pub fn movable(&self, root: u32) -> bool {
-        self.rot_from_root[root as usize].is_some()
+        self.rot_from_root.is_empty() || self.rot_from_root[root as usize].is_some()
     }
 
     /// Calls `f` with every member of the cluster of `root` (which
@@ -127,6 +159,9 @@ impl<const D: usize> Clusters<D> {
         }
     }
 }
+
+/// Simplices per parallel task of the collapsed-edge scans.
+const EDGE_TASK: usize = 4096;
 
 type Adjacency<const D: usize> = HashMap<u32, Vec<(u32, Rot<D>)>>;
 
@@ -170,4 +205,50 @@ fn spread<const D: usize>(root: u32, adj: &Adjacency<D>) -> Option<HashMap<u32, 
         }
     }
     Some(seen)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Clusters;
+    use crate::local::LocalMap;
+    use dualex_map::{Rot, Stars, Topology, Transitions};
+
+    /// Without a collapsed edge, the clusters answer as the sets and
+    /// rotations built for every vertex did (no union: each vertex its own
+    /// root; every rotation the identity: movable, alone); with collapsed
+    /// edges (the collapsed square) the sets are built.
+    #[test]
+    fn lone_clusters_answer_as_built_ones() {
+        let mut lone = 0;
+        for name in dualex_gen::names() {
+            let Some((map, _)) = dualex_gen::by_name(&name, 1) else {
+                continue;
+            };
+            let Ok(topo) = Topology::build(&map) else {
+                continue;
+            };
+            let Ok((trans, _)) = Transitions::derive(&map, &topo, &Default::default()) else {
+                continue;
+            };
+            let stars = Stars::build(&map, &topo, &trans);
+            let mut local = LocalMap::new(&map, &topo, &trans);
+            local.snap(&stars);
+            let c = Clusters::build(&map, &stars, &local.coords);
+            if name == "square_collapsed" {
+                assert!(c.count_nontrivial() > 0, "{name}");
+            }
+            if c.count_nontrivial() > 0 {
+                continue;
+            }
+            lone += 1;
+            for v in 0..map.positions.len() as u32 {
+                assert_eq!(c.root(v), v, "{name} {v}");
+                assert!(c.movable(v), "{name} {v}");
+                let mut members = Vec::new();
+                c.for_each_member(v, |w, r| members.push((w, r)));
+                assert_eq!(members, vec![(v, Rot::IDENTITY)], "{name} {v}");
+            }
+        }
+        assert!(lone >= 10, "{lone}");
+    }
 }

@@ -44,11 +44,13 @@ use crate::sanitize_report::{amplitude, ROUNDS};
 pub use crate::sanitize_report::{SanitizeReport, AMPLITUDE};
 use dualex_map::{Rot, SimplexMap, Stars, Topology, Transitions};
 use dualex_util::rng::SplitMix;
+use mover::Mover;
 use rayon::prelude::*;
-use std::collections::{BTreeMap, BTreeSet, HashSet};
+use std::collections::BTreeMap;
 
 mod dim2;
 mod dim3;
+mod mover;
 
 /// The dimension marker of every generic step ([`Predicates`] is
 /// implemented at `Dim<3, 2>` and `Dim<4, 3>`).
@@ -104,24 +106,14 @@ where
 {
     let mut rep = SanitizeReport::default();
     (rep.snapped_vertices, rep.max_snap) = local.snap(stars);
-    let clusters = Clusters::build(map, stars, &local.coords);
+    // the clusters beside the first scan (both read the snapped corners
+    // only): the clusters' serial part overlaps the scan's tasks
+    let (clusters, mut scan) = rayon::join(
+        || Clusters::build(map, stars, &local.coords),
+        || Scan::new(map, &local.coords),
+    );
     rep.clusters = clusters.count_nontrivial();
-    let mut mv = Mover {
-        stars,
-        clusters: &clusters,
-        free_axis,
-        rng: SplitMix::new(seed),
-        moved: vec![false; map.positions.len()],
-        moved_singular: HashSet::new(),
-        touched: Vec::new(),
-        deltas: Vec::new(),
-        plan: Vec::new(),
-        done_epoch: vec![0; map.positions.len()],
-        epoch: 0,
-        stuck: BTreeSet::new(),
-        apart: BTreeSet::new(),
-    };
-    let mut scan = Scan::new(map, &local.coords);
+    let mut mv = Mover::new(stars, &clusters, free_axis, seed);
     let mut bad = scan.list();
     let mut executed: usize = 0;
     for round in 0.. {
@@ -158,182 +150,6 @@ where
     rep.singular_moved = mv.moved_singular.len();
     rep.perturbed_vertices = mv.moved.iter().filter(|&&m| m).count();
     rep
-}
-
-/// The state of the perturbation rounds.
-struct Mover<'a, const D: usize> {
-    stars: &'a Stars<D>,
-    clusters: &'a Clusters<D>,
-    /// Per vertex: the only axis a singular vertex may move along.
-    free_axis: &'a [Option<usize>],
-    rng: SplitMix,
-    moved: Vec<bool>,
-    moved_singular: HashSet<u32>,
-    /// Vertices moved in the current round, in order.
-    touched: Vec<u32>,
-    /// Their moves, in their reference charts (applied by [`move_all`]).
-    deltas: Vec<[f64; D]>,
-    /// Their moves before the steps are drawn (one per `touched`).
-    plan: Vec<Move<D>>,
-    /// Per cluster root: the last round (epoch) in which it moved.
-    done_epoch: Vec<u32>,
-    epoch: u32,
-    /// Roots of the clusters that could not move as one.
-    stuck: BTreeSet<u32>,
-    /// Roots of the stuck clusters whose members moved one by one.
-    apart: BTreeSet<u32>,
-}
-
-impl<const D: usize> Mover<'_, D> {
-    fn free(&self, v: u32) -> Option<usize> {
-        self.free_axis.get(v as usize).copied().flatten()
-    }
-
-    /// The vertices of `bad` that may move: the non-singular ones, and in
-    /// the ordinary rounds the singular ones with a free axis (the extra
-    /// rounds are for non-singular vertices only: a singular vertex still
-    /// on the grid after the ordinary rounds is on an iso its free axis
-    /// does not cross).
-    fn movable(&self, bad: &[u32], last_resort: bool) -> Vec<u32> {
-        let movable = |v: &&u32| {
-            !self.stars.singular[**v as usize] || (!last_resort && self.free(**v).is_some())
-        };
-        bad.iter().filter(movable).copied().collect()
-    }
-
-    /// Moves every vertex of `todo` (its whole cluster, once) by a random
-    /// vector of length `amp` (into `touched` and `deltas`). With
-    /// `last_resort` (the extra rounds), the members of a stuck cluster
-    /// move one by one (each is non-singular: consistent in its own
-    /// charts).
-    ///
-    /// The moves and their places in the random sequence are chosen in
-    /// `todo`'s order; the steps, which draw a fixed number of values
-    /// each, are then drawn in parallel, each from its own place
-    /// ([`SplitMix::ahead`]): the same numbers as drawn one after the
-    /// other.
-    fn round<const N: usize>(&mut self, todo: &[u32], amp: f64, last_resort: bool)
-    where
-        Dim<N, D>: Predicates<N, D>,
-    {
-        let step = <Dim<N, D>>::step;
-        let per_step = self
-            .rng
-            .draws_of(STEP_DRAWS, |r| {
-                step(r, amp);
-            })
-            .expect("a step draws a fixed number of values, at most STEP_DRAWS");
-        self.epoch += 1;
-        let mut draws = Draws {
-            start: self.rng.clone(),
-            used: 0,
-            per_step,
-        };
-        self.plan.clear();
-        for block in todo.chunks(PLAN_BLOCK) {
-            for &v in block {
-                self.plan_move(v, &mut draws, amp, last_resort);
-            }
-            // this block's moves, drawn in parallel (the plan stays small)
-            self.draw_deltas::<N>(&draws.start, amp);
-        }
-        self.rng = draws.start.ahead(draws.used);
-    }
-
-    /// Plans the move of `v` (its whole cluster, once per round) in
-    /// [`Self::round`]: into `touched` and `plan`, its step at the next
-    /// place of `draws`.
-    fn plan_move(&mut self, v: u32, draws: &mut Draws, amp: f64, last_resort: bool) {
-        if let Some(axis) = self.free(v) {
-            let mut d = [0.0; D];
-            d[axis] = if draws.start.ahead(draws.used).unit() < 0.5 {
-                amp
-            } else {
-                -amp
-            };
-            draws.used += 1;
-            self.touched.push(v);
-            self.plan.push(Move::Fixed(d));
-            self.moved_singular.insert(v);
-            return;
-        }
-        let root = self.clusters.root(v);
-        let movable = self.clusters.movable(root);
-        if !movable && last_resort {
-            self.apart.insert(root);
-            self.moved[v as usize] = true;
-            self.touched.push(v);
-            self.plan.push(Move::Step(draws.next_step(), Rot::IDENTITY));
-            return;
-        }
-        if self.done_epoch[root as usize] == self.epoch {
-            return;
-        }
-        self.done_epoch[root as usize] = self.epoch;
-        let at = draws.next_step();
-        if !movable {
-            self.stuck.insert(root);
-            return;
-        }
-        let (moved, touched, plan) = (&mut self.moved, &mut self.touched, &mut self.plan);
-        self.clusters.for_each_member(root, |w, r| {
-            moved[w as usize] = true;
-            touched.push(w);
-            plan.push(Move::Step(at, r));
-        });
-    }
-
-    /// The moves of the `plan` into `deltas`, in parallel: each step drawn
-    /// from `rng` (the round's start) at its place, of length `amp`; the
-    /// plan emptied.
-    fn draw_deltas<const N: usize>(&mut self, rng: &SplitMix, amp: f64)
-    where
-        Dim<N, D>: Predicates<N, D>,
-    {
-        let delta = |m: &Move<D>| match *m {
-            Move::Fixed(d) => d,
-            Move::Step(at, r) => r.apply(&<Dim<N, D>>::step(&mut rng.ahead(at), amp)),
-        };
-        self.deltas
-            .par_extend(self.plan.par_iter().with_min_len(STEP_TASK).map(delta));
-        self.plan.clear();
-    }
-}
-
-/// Where a round's random values come from: the generator at the round's
-/// start, the draws taken so far, the draws of one step.
-struct Draws {
-    start: SplitMix,
-    used: u64,
-    per_step: u64,
-}
-
-impl Draws {
-    /// The place of the next step; its draws taken.
-    fn next_step(&mut self) -> u64 {
-        let at = self.used;
-        self.used += self.per_step;
-        at
-    }
-}
-
-/// The most values one [`Predicates::step`] may draw.
-pub(crate) const STEP_DRAWS: u64 = 8;
-
-/// Steps per parallel task of [`Mover::round`].
-const STEP_TASK: usize = 4096;
-
-/// Vertices of `todo` planned before their steps are drawn, in
-/// [`Mover::round`] (the plan's memory stays below 1 MB).
-const PLAN_BLOCK: usize = 4 * STEP_TASK;
-
-/// One vertex's move in a round: a fixed vector, or the random step drawn
-/// at a place of the sequence (draws from the round's start) carried by a
-/// rotation (from the cluster root's chart).
-#[derive(Clone, Copy)]
-enum Move<const D: usize> {
-    Fixed([f64; D]),
-    Step(u64, Rot<D>),
 }
 
 /// Corners moved below which [`move_all`] runs as one task.
@@ -482,5 +298,7 @@ impl Scan {
 
 #[cfg(test)]
 mod mask_tests;
+#[cfg(test)]
+mod mover_tests;
 #[cfg(test)]
 mod tests;

@@ -400,7 +400,8 @@ mod dim3 {
 /// `Mover::round` draws them in parallel) are those drawn one after the
 /// other, in both dimensions.
 mod steps_ahead {
-    use crate::sanitize::{Dim, Predicates, STEP_DRAWS};
+    use crate::sanitize::mover::STEP_DRAWS;
+    use crate::sanitize::{Dim, Predicates};
     use dualex_util::rng::SplitMix;
 
     fn same_steps<const N: usize, const D: usize>()
