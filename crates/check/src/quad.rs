@@ -22,6 +22,7 @@
 use crate::tally::Tally;
 use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
+use std::borrow::Cow;
 use std::collections::{BTreeMap, HashMap};
 
 /// What [`check_quad_mesh`] found; see the module docs for definitions.
@@ -83,7 +84,7 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     };
     let good = classify_faces(n_vertices, quads, &mut r);
     let mut used = vec![false; n_vertices];
-    for q in &good {
+    for q in good.iter() {
         for &v in q {
             used[v as usize] = true;
         }
@@ -139,8 +140,23 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     r
 }
 
-/// Sorts faces into out of range, degenerate and good (returned).
-fn classify_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32; 4]> {
+/// Sorts faces into out of range, degenerate and good (returned: the
+/// input itself, borrowed, when every face is good).
+fn classify_faces<'a>(n: usize, quads: &'a [[u32; 4]], r: &mut QuadReport) -> Cow<'a, [[u32; 4]]> {
+    if quads.iter().all(|q| good_face(n, q)) {
+        return Cow::Borrowed(quads);
+    }
+    Cow::Owned(sort_faces(n, quads, r))
+}
+
+/// Whether a face's four vertices are distinct and below `n`.
+fn good_face(n: usize, q: &[u32; 4]) -> bool {
+    q.iter().all(|&v| (v as usize) < n) && (1..4).all(|i| !q[..i].contains(&q[i]))
+}
+
+/// [`classify_faces`]' sort: the out of range and degenerate faces in
+/// the report, the good ones returned.
+fn sort_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32; 4]> {
     let mut good = Vec::with_capacity(quads.len());
     for (f, q) in quads.iter().enumerate() {
         if q.iter().any(|&v| v as usize >= n) {

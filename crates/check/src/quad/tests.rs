@@ -1,6 +1,17 @@
 use super::*;
 use crate::test_meshes::{cube, grid, torus};
 
+/// A xorshift generator from `seed`: draws below `m`.
+fn xorshift(seed: u64) -> impl FnMut(u64) -> u32 {
+    let mut s = seed;
+    move |m| {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s % m) as u32
+    }
+}
+
 fn hist(pairs: &[(u32, usize)]) -> BTreeMap<u32, usize> {
     pairs.iter().copied().collect()
 }
@@ -102,18 +113,47 @@ fn empty_and_unused() {
 fn small_fans_count_as_the_general_rule() {
     // random corner groups at one vertex: (vertex, prev, next) with
     // neighbours drawn from a few ids, so that some share edges
-    let mut s = 0x2545_f491_4f6c_dd1du64;
-    let mut next = |m: u64| {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s % m) as u32
-    };
+    let mut next = xorshift(0x2545_f491_4f6c_dd1d);
     for _ in 0..2000 {
         let k = 1 + next(12) as usize;
         let ids = 2 + u64::from(next(20));
         let group: Vec<(u32, u32, u32)> =
             (0..k).map(|_| (0, 1 + next(ids), 1 + next(ids))).collect();
         assert_eq!(super::fans(&group), super::fans_large(&group), "{group:?}");
+    }
+}
+
+#[test]
+fn good_faces_borrowed_are_the_sorted_ones() {
+    // the former classification (`sort_faces`, always a copy) as oracle:
+    // all good (borrowed), one face out of range, one repeated corner at
+    // each pair of places, random faces over few ids
+    let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut cases: Vec<(usize, Vec<[u32; 4]>)> = vec![(0, vec![]), torus(5, 3), grid(3, 4)];
+    let (n, q) = torus(4, 4);
+    for f in [0, 7, 15] {
+        for i in 0..4 {
+            let mut out = q.clone();
+            out[f][i] = n as u32 + next(3);
+            cases.push((n, out));
+            for j in 0..4 {
+                let mut rep = q.clone();
+                rep[f][j] = rep[f][i];
+                cases.push((n, rep));
+            }
+        }
+    }
+    for _ in 0..300 {
+        let n = 1 + next(9) as usize;
+        let faces = (0..next(12)).map(|_| std::array::from_fn(|_| next(n as u64 + 1)));
+        cases.push((n, faces.collect()));
+    }
+    for (n, q) in &cases {
+        let (mut r, mut oracle) = (QuadReport::default(), QuadReport::default());
+        let good = classify_faces(*n, q, &mut r);
+        let want = sort_faces(*n, q, &mut oracle);
+        assert_eq!(*good, want[..], "{n} {q:?}");
+        assert_eq!(r, oracle, "{n} {q:?}");
+        assert_eq!(matches!(good, Cow::Borrowed(_)), want.len() == q.len());
     }
 }
