@@ -157,3 +157,59 @@ fn good_faces_borrowed_are_the_sorted_ones() {
         assert_eq!(matches!(good, Cow::Borrowed(_)), want.len() == q.len());
     }
 }
+
+/// The former edge list (every face side bucketed by its lower vertex and
+/// sorted there), the oracle of [`edge_uses`] from the corners.
+fn sides_edge_uses(n: usize, faces: &[[u32; 4]]) -> Vec<((u32, u32), (u32, u32))> {
+    let (_, sides) = bucket::sorted(n, |emit| {
+        for q in faces {
+            for i in 0..4 {
+                let (a, b) = (q[i], q[(i + 1) % 4]);
+                emit(a.min(b) as usize, (a.min(b), a.max(b), a > b));
+            }
+        }
+    });
+    sides
+        .chunk_by(|x, y| (x.0, x.1) == (y.0, y.1))
+        .map(|run| {
+            let backward = run.iter().filter(|s| s.2).count() as u32;
+            (
+                (run[0].0, run[0].1),
+                (run.len() as u32 - backward, backward),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn edges_from_the_corners_are_the_sides_ones() {
+    // good faces (distinct vertices) over few ids: shared, repeated,
+    // misoriented and non-manifold edges; grids, tori, a cube, faces
+    // repeated and reversed
+    let mut next = xorshift(0x2545_f491_4f6c_dd1d);
+    let mut cases: Vec<(usize, Vec<[u32; 4]>)> = vec![(0, vec![]), grid(3, 4), torus(5, 3)];
+    let (p, c) = cube(3);
+    cases.push((p.len(), c));
+    let (n, mut q) = torus(4, 4);
+    q.extend(q.clone().iter().map(|f| [f[3], f[2], f[1], f[0]]));
+    q.push(q[0]);
+    cases.push((n, q));
+    for _ in 0..400 {
+        let n = 4 + next(40) as usize;
+        let mut faces = Vec::new();
+        while faces.len() < next(30) as usize {
+            let f: [u32; 4] = std::array::from_fn(|_| next(n as u64));
+            if (1..4).all(|i| !f[..i].contains(&f[i])) {
+                faces.push(f);
+            }
+        }
+        cases.push((n, faces));
+    }
+    for (n, q) in &cases {
+        let got: Vec<_> = edge_uses(&corner_groups(*n, q))
+            .into_iter()
+            .map(|(e, u)| (e, (u.forward, u.backward)))
+            .collect();
+        assert_eq!(got, sides_edge_uses(*n, q), "{n} {q:?}");
+    }
+}
