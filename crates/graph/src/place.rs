@@ -79,7 +79,9 @@ impl<const D: usize> Glued<D> {
             offsets[v + 1] += offsets[v];
         }
         let mut fill: Vec<u32> = offsets[..nv].to_vec();
-        let mut corners = vec![0u32; offsets[nv] as usize];
+        // every slot is written below (a fill, not a zeroed block: no
+        // memset of a block the allocator hands back)
+        let mut corners = vec![u32::MAX; offsets[nv] as usize];
         for n in &self.nodes {
             for code in 0..k {
                 let slot = &mut fill[self.vertex(*n, code) as usize];

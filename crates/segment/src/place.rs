@@ -58,10 +58,10 @@ where
         |c| c.dist,
         |b| b.map_or([0.0; 3], |c| c.pos),
     );
-    // the gluing's cells, copied whole
+    // the gluing's cells, copied in parallel
     let mesh = CellMesh {
         positions,
-        cells: glued.cell_array().to_vec(),
+        cells: glued.cell_array().par_iter().copied().collect(),
     };
     // each source on its own, in parallel, collected in order
     let sources = glued
