@@ -22,6 +22,7 @@
 use crate::tally::Tally;
 use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
+use std::borrow::Cow;
 use std::collections::{BTreeMap, HashMap};
 
 /// What [`check_quad_mesh`] found; see the module docs for definitions.
@@ -83,21 +84,20 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     };
     let good = classify_faces(n_vertices, quads, &mut r);
     let mut used = vec![false; n_vertices];
-    for q in &good {
+    for q in good.iter() {
         for &v in q {
             used[v as usize] = true;
         }
     }
-    // three independent passes over the good faces, side by side
-    let (edges, (components, non_manifold)) = rayon::join(
-        || edge_uses(n_vertices, &good),
-        || {
-            rayon::join(
-                || components(n_vertices, &good, &used),
-                || non_manifold_vertices(n_vertices, &good),
-            )
-        },
+    // the corners by vertex beside the components; the edges and the fans
+    // read from the same corners, side by side
+    let (corners, components) = rayon::join(
+        || corner_groups(n_vertices, &good),
+        || components(n_vertices, &good, &used),
     );
+    let (edges, non_manifold) =
+        rayon::join(|| edge_uses(&corners), || non_manifold_vertices(&corners));
+    drop(corners);
     r.edges = edges.len();
     let mut on_boundary = vec![false; n_vertices];
     let mut valence = vec![0u32; n_vertices];
@@ -139,8 +139,23 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     r
 }
 
-/// Sorts faces into out of range, degenerate and good (returned).
-fn classify_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32; 4]> {
+/// Sorts faces into out of range, degenerate and good (returned: the
+/// input itself, borrowed, when every face is good).
+fn classify_faces<'a>(n: usize, quads: &'a [[u32; 4]], r: &mut QuadReport) -> Cow<'a, [[u32; 4]]> {
+    if quads.iter().all(|q| good_face(n, q)) {
+        return Cow::Borrowed(quads);
+    }
+    Cow::Owned(sort_faces(n, quads, r))
+}
+
+/// Whether a face's four vertices are distinct and below `n`.
+fn good_face(n: usize, q: &[u32; 4]) -> bool {
+    q.iter().all(|&v| (v as usize) < n) && (1..4).all(|i| !q[..i].contains(&q[i]))
+}
+
+/// [`classify_faces`]' sort: the out of range and degenerate faces in
+/// the report, the good ones returned.
+fn sort_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32; 4]> {
     let mut good = Vec::with_capacity(quads.len());
     for (f, q) in quads.iter().enumerate() {
         if q.iter().any(|&v| v as usize >= n) {
@@ -154,28 +169,48 @@ fn classify_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32;
     good
 }
 
-/// Directed uses of every undirected edge of the faces (vertices below
-/// `n`), by edge.
-fn edge_uses(n: usize, faces: &[[u32; 4]]) -> Vec<((u32, u32), EdgeUse)> {
-    // (lo, hi, backward) per face side, bucketed by `lo` and sorted in
-    // each bucket (a vertex's few sides; no sort of them all): one run per
-    // undirected edge, in (lo, hi) order
-    let (_, sides) = bucket::sorted(n, |emit| {
+/// (vertex, previous vertex, next vertex) for every corner of every face
+/// (vertices below `n`), bucketed by vertex, each vertex's few corners
+/// sorted (no sort of them all).
+fn corner_groups(n: usize, faces: &[[u32; 4]]) -> Vec<(u32, u32, u32)> {
+    let (_, corners) = bucket::sorted(n, |emit| {
         for q in faces {
             for i in 0..4 {
-                let (a, b) = (q[i], q[(i + 1) % 4]);
-                emit(a.min(b) as usize, (a.min(b), a.max(b), a > b));
+                emit(q[i] as usize, (q[i], q[(i + 3) % 4], q[(i + 1) % 4]));
             }
         }
     });
-    sides
-        .chunk_by(|x, y| (x.0, x.1) == (y.0, y.1))
-        .map(|run| {
-            let backward = run.iter().filter(|s| s.2).count() as u32;
+    corners
+}
+
+/// Directed uses of every undirected edge `(lo, hi)` of the faces, in
+/// `(lo, hi)` order, read from the corners by vertex ([`corner_groups`]):
+/// a side `a → b` is the next of `a`'s corner and the previous of `b`'s,
+/// so it is counted once, at its lower end: `lo → next` forward,
+/// `prev → lo` backward.
+fn edge_uses(corners: &[(u32, u32, u32)]) -> Vec<((u32, u32), EdgeUse)> {
+    let mut edges = Vec::new();
+    // (hi, backward) of the sides at one vertex
+    let mut ends: Vec<(u32, bool)> = Vec::new();
+    for group in corners.chunk_by(|a, b| a.0 == b.0) {
+        let lo = group[0].0;
+        ends.clear();
+        for &(_, prev, next) in group {
+            if next > lo {
+                ends.push((next, false));
+            }
+            if prev > lo {
+                ends.push((prev, true));
+            }
+        }
+        ends.sort_unstable();
+        for run in ends.chunk_by(|x, y| x.0 == y.0) {
+            let backward = run.iter().filter(|e| e.1).count() as u32;
             let forward = run.len() as u32 - backward;
-            ((run[0].0, run[0].1), EdgeUse { forward, backward })
-        })
-        .collect()
+            edges.push(((lo, run[0].0), EdgeUse { forward, backward }));
+        }
+    }
+    edges
 }
 
 /// Connected components of the faces through shared vertices.
@@ -189,18 +224,9 @@ fn components(n: usize, faces: &[[u32; 4]], used: &[bool]) -> usize {
     uf.count_sets((0..n).filter(|&v| used[v]))
 }
 
-/// Vertices (below `n`) whose incident faces form more than one fan.
-fn non_manifold_vertices(n: usize, faces: &[[u32; 4]]) -> Vec<u32> {
-    // (vertex, previous vertex, next vertex) for every corner of every
-    // face, bucketed by vertex (its few corners sorted; no sort of them
-    // all)
-    let (_, corners) = bucket::sorted(n, |emit| {
-        for q in faces {
-            for i in 0..4 {
-                emit(q[i] as usize, (q[i], q[(i + 3) % 4], q[(i + 1) % 4]));
-            }
-        }
-    });
+/// Vertices whose incident faces form more than one fan, from the
+/// corners by vertex ([`corner_groups`]).
+fn non_manifold_vertices(corners: &[(u32, u32, u32)]) -> Vec<u32> {
     let mut out = Vec::new();
     for group in corners.chunk_by(|a, b| a.0 == b.0) {
         if fans(group) > 1 {

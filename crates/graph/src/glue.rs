@@ -359,6 +359,10 @@ impl<const D: usize> NodeGraph<D> {
             .map(Side)
             .filter(|&s| self.opposite(s).is_none() && self.is_alive(self.node_of(s)))
             .collect();
+        // none (a closed graph): no union–find over every side to build
+        if free.is_empty() {
+            return 0;
+        }
         let mut uf = UnionFind::new(self.n_sides());
         for &s in &free {
             let sd = self.dir_of(s);
@@ -397,6 +401,13 @@ impl<const D: usize> Glued<D> {
     /// Number of cells.
     pub fn n_cells(&self) -> usize {
         self.nodes.len()
+    }
+
+    /// Every cell's `K = 2^D` vertices in output order, in cell order
+    /// (borrowed: no copy).
+    pub fn cell_array<const K: usize>(&self) -> &[[u32; K]] {
+        assert_eq!(K, 1 << D, "bug: a cell of dimension {D} has 2^{D} corners");
+        self.cells.as_chunks::<K>().0
     }
 
     /// The vertices of cell `i` in output order (`None` out of range).

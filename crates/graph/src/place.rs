@@ -4,7 +4,8 @@
 //! Input: a [`Glued`] mesh, what doublet merges took over ([`Takeover`]:
 //! a merged node's corner is traced from the corners it took over) and a
 //! candidate function `(node, corner code) → C` with a distance (0 =
-//! exact). Output: per vertex, the candidate with the smallest distance
+//! exact). Output: per vertex, a value of (written once: a position)
+//! the candidate with the smallest distance
 //! among the corners of that vertex (their origins), taken in node order
 //! then corner-code order, the first one on ties (so, the same as before
 //! the merges); candidates after an exact one (distance 0) are not
@@ -46,17 +47,24 @@ impl<const D: usize> Glued<D> {
             .collect()
     }
 
-    /// The best candidate of every vertex (see the module docs); `None` for
-    /// a vertex no alive corner uses.
-    pub fn best_per_vertex<C: Send>(
+    /// `out` of the best candidate of every vertex (see the module docs;
+    /// `None` for a vertex no alive corner uses), written once per vertex.
+    pub fn best_per_vertex<C: Send, T: Send>(
         &self,
         takeover: &Takeover<D>,
         candidate: impl Fn(Node, usize) -> C + Sync,
         dist: impl Fn(&C) -> f64 + Sync,
-    ) -> Vec<Option<C>> {
+        out: impl Fn(Option<C>) -> T + Sync,
+    ) -> Vec<T> {
         let k = 1usize << D;
         let nv = self.n_vertices;
-        // the corners (origins) of each vertex, in (node, code) order (CSR)
+        // a corner's id `node·2^D + code` is a u32 (as the takeover's)
+        assert!(
+            u32::try_from(self.vertex_of.len()).is_ok(),
+            "bug: more corners than u32 ids"
+        );
+        // the corners (origins) of each vertex, in (node, code) order, that
+        // is in id order (CSR)
         let mut offsets = vec![0u32; nv + 1];
         for n in &self.nodes {
             for code in 0..k {
@@ -71,12 +79,14 @@ impl<const D: usize> Glued<D> {
             offsets[v + 1] += offsets[v];
         }
         let mut fill: Vec<u32> = offsets[..nv].to_vec();
-        let mut corners = vec![(Node(0), 0u8); offsets[nv] as usize];
+        // every slot is written below (a fill, not a zeroed block: no
+        // memset of a block the allocator hands back)
+        let mut corners = vec![u32::MAX; offsets[nv] as usize];
         for n in &self.nodes {
             for code in 0..k {
                 let slot = &mut fill[self.vertex(*n, code) as usize];
                 takeover.for_each_origin(*n, code, |m, c| {
-                    corners[*slot as usize] = (m, c as u8);
+                    corners[*slot as usize] = m.0 * k as u32 + c as u32;
                     *slot += 1;
                 });
             }
@@ -91,16 +101,16 @@ impl<const D: usize> Glued<D> {
             .with_min_len(1024)
             .map(|v| {
                 let mut best: Option<C> = None;
-                for &(n, code) in &corners[offsets[v] as usize..offsets[v + 1] as usize] {
+                for &id in &corners[offsets[v] as usize..offsets[v + 1] as usize] {
                     if best.as_ref().is_some_and(|b| dist(b) == 0.0) {
                         break;
                     }
-                    let c = candidate(n, code as usize);
+                    let c = candidate(Node(id / k as u32), id as usize % k);
                     if best.as_ref().is_none_or(|b| dist(&c) < dist(b)) {
                         best = Some(c);
                     }
                 }
-                best
+                out(best)
             })
             .collect()
     }

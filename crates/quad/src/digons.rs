@@ -126,8 +126,7 @@ pub fn pinch_digons(
 /// The checker's report of the glued cells (as placed: the same cells and
 /// vertex count).
 pub(crate) fn check(glued: &Glued<2>) -> QuadReport {
-    let cells: Vec<[u32; 4]> = glued.cells().map(|(_, q)| q).collect();
-    dualex_check::check_quad_mesh(glued.n_vertices, &cells)
+    dualex_check::check_quad_mesh(glued.n_vertices, glued.cell_array())
 }
 
 /// Whether the check `c` of the `glued` cells ([`check`]) shows that no

@@ -18,7 +18,7 @@ use crate::simplex::Dim;
 use crate::steps::{Dimension, Sanitized};
 use dualex_cells::corners::{carry, Corners};
 use dualex_cells::CellMesh;
-use dualex_graph::{Glued, NodeGraph, Takeover, NO_VERTEX};
+use dualex_graph::{Glued, NodeGraph, Takeover};
 use rayon::prelude::*;
 
 /// The output cells (`K = 2^D` corners each) with, per cell, the input
@@ -47,30 +47,23 @@ pub fn place<const N: usize, const D: usize, const K: usize>(
 where
     Dim<N, D>: Dimension<N, D>,
 {
-    let best = glued.best_per_vertex(
+    // each vertex's position written once (a vertex no alive corner uses
+    // at the origin)
+    let positions = glued.best_per_vertex(
         takeover,
         |node, code| {
             let sgn = std::array::from_fn(|a| if code >> a & 1 == 1 { 1.0 } else { -1.0 });
             diagonal(&s.map, &s.local, &s.topo, nodes, node.idx(), sgn)
         },
         |c| c.dist,
+        |b| b.map_or([0.0; 3], |c| c.pos),
     );
-    // each cell, vertex and source on its own, in parallel, collected in
-    // order
-    let cells = (0..glued.n_cells())
-        .into_par_iter()
-        .map(|i| {
-            let c = glued.cell(i).unwrap_or_default();
-            std::array::from_fn(|k| c.get(k).copied().unwrap_or(NO_VERTEX))
-        })
-        .collect();
+    // the gluing's cells, copied in parallel
     let mesh = CellMesh {
-        positions: best
-            .par_iter()
-            .map(|b| b.map_or([0.0; 3], |c| c.pos))
-            .collect(),
-        cells,
+        positions,
+        cells: glued.cell_array().par_iter().copied().collect(),
     };
+    // each source on its own, in parallel, collected in order
     let sources = glued
         .nodes
         .par_iter()

@@ -1,6 +1,17 @@
 use super::*;
 use crate::test_meshes::{cube, grid, torus};
 
+/// A xorshift generator from `seed`: draws below `m`.
+fn xorshift(seed: u64) -> impl FnMut(u64) -> u32 {
+    let mut s = seed;
+    move |m| {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s % m) as u32
+    }
+}
+
 fn hist(pairs: &[(u32, usize)]) -> BTreeMap<u32, usize> {
     pairs.iter().copied().collect()
 }
@@ -102,18 +113,103 @@ fn empty_and_unused() {
 fn small_fans_count_as_the_general_rule() {
     // random corner groups at one vertex: (vertex, prev, next) with
     // neighbours drawn from a few ids, so that some share edges
-    let mut s = 0x2545_f491_4f6c_dd1du64;
-    let mut next = |m: u64| {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s % m) as u32
-    };
+    let mut next = xorshift(0x2545_f491_4f6c_dd1d);
     for _ in 0..2000 {
         let k = 1 + next(12) as usize;
         let ids = 2 + u64::from(next(20));
         let group: Vec<(u32, u32, u32)> =
             (0..k).map(|_| (0, 1 + next(ids), 1 + next(ids))).collect();
         assert_eq!(super::fans(&group), super::fans_large(&group), "{group:?}");
+    }
+}
+
+#[test]
+fn good_faces_borrowed_are_the_sorted_ones() {
+    // the former classification (`sort_faces`, always a copy) as oracle:
+    // all good (borrowed), one face out of range, one repeated corner at
+    // each pair of places, random faces over few ids
+    let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut cases: Vec<(usize, Vec<[u32; 4]>)> = vec![(0, vec![]), torus(5, 3), grid(3, 4)];
+    let (n, q) = torus(4, 4);
+    for f in [0, 7, 15] {
+        for i in 0..4 {
+            let mut out = q.clone();
+            out[f][i] = n as u32 + next(3);
+            cases.push((n, out));
+            for j in 0..4 {
+                let mut rep = q.clone();
+                rep[f][j] = rep[f][i];
+                cases.push((n, rep));
+            }
+        }
+    }
+    for _ in 0..300 {
+        let n = 1 + next(9) as usize;
+        let faces = (0..next(12)).map(|_| std::array::from_fn(|_| next(n as u64 + 1)));
+        cases.push((n, faces.collect()));
+    }
+    for (n, q) in &cases {
+        let (mut r, mut oracle) = (QuadReport::default(), QuadReport::default());
+        let good = classify_faces(*n, q, &mut r);
+        let want = sort_faces(*n, q, &mut oracle);
+        assert_eq!(*good, want[..], "{n} {q:?}");
+        assert_eq!(r, oracle, "{n} {q:?}");
+        assert_eq!(matches!(good, Cow::Borrowed(_)), want.len() == q.len());
+    }
+}
+
+/// The former edge list (every face side bucketed by its lower vertex and
+/// sorted there), the oracle of [`edge_uses`] from the corners.
+fn sides_edge_uses(n: usize, faces: &[[u32; 4]]) -> Vec<((u32, u32), (u32, u32))> {
+    let (_, sides) = bucket::sorted(n, |emit| {
+        for q in faces {
+            for i in 0..4 {
+                let (a, b) = (q[i], q[(i + 1) % 4]);
+                emit(a.min(b) as usize, (a.min(b), a.max(b), a > b));
+            }
+        }
+    });
+    sides
+        .chunk_by(|x, y| (x.0, x.1) == (y.0, y.1))
+        .map(|run| {
+            let backward = run.iter().filter(|s| s.2).count() as u32;
+            (
+                (run[0].0, run[0].1),
+                (run.len() as u32 - backward, backward),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn edges_from_the_corners_are_the_sides_ones() {
+    // good faces (distinct vertices) over few ids: shared, repeated,
+    // misoriented and non-manifold edges; grids, tori, a cube, faces
+    // repeated and reversed
+    let mut next = xorshift(0x2545_f491_4f6c_dd1d);
+    let mut cases: Vec<(usize, Vec<[u32; 4]>)> = vec![(0, vec![]), grid(3, 4), torus(5, 3)];
+    let (p, c) = cube(3);
+    cases.push((p.len(), c));
+    let (n, mut q) = torus(4, 4);
+    q.extend(q.clone().iter().map(|f| [f[3], f[2], f[1], f[0]]));
+    q.push(q[0]);
+    cases.push((n, q));
+    for _ in 0..400 {
+        let n = 4 + next(40) as usize;
+        let mut faces = Vec::new();
+        while faces.len() < next(30) as usize {
+            let f: [u32; 4] = std::array::from_fn(|_| next(n as u64));
+            if (1..4).all(|i| !f[..i].contains(&f[i])) {
+                faces.push(f);
+            }
+        }
+        cases.push((n, faces));
+    }
+    for (n, q) in &cases {
+        let got: Vec<_> = edge_uses(&corner_groups(*n, q))
+            .into_iter()
+            .map(|(e, u)| (e, (u.forward, u.backward)))
+            .collect();
+        assert_eq!(got, sides_edge_uses(*n, q), "{n} {q:?}");
     }
 }

@@ -115,3 +115,17 @@ fn dead_nodes_still_linked_fall_back_to_the_serial_numbering() {
         same_as_serial(&g, &format!("3D dead, seed {seed}"));
     }
 }
+
+/// The borrowed cell array is the cells' iterator, cell by cell.
+#[test]
+fn cell_array_is_the_cells() {
+    for seed in 0..10 {
+        let g = scrambled([7, 6], 10 + 4 * seed as usize, seed).glue();
+        let cells: Vec<[u32; 4]> = g.cells().map(|(_, q)| q).collect();
+        assert_eq!(g.cell_array::<4>(), &cells[..], "2D seed {seed}");
+        assert_eq!(g.cell_array::<4>().len(), g.n_cells());
+        let g = scrambled([4, 3, 5], 20 + 6 * seed as usize, 50 + seed).glue();
+        let cells: Vec<[u32; 8]> = g.cells().map(|(_, h)| h).collect();
+        assert_eq!(g.cell_array::<8>(), &cells[..], "3D seed {seed}");
+    }
+}
