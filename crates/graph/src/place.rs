@@ -4,13 +4,12 @@
 //! Input: a [`Glued`] mesh, what doublet merges took over ([`Takeover`]:
 //! a merged node's corner is traced from the corners it took over) and a
 //! candidate function `(node, corner code) → C` with a distance (0 =
-//! exact). Output: per vertex, a value of (written once: a position)
-//! the candidate with the smallest distance
-//! among the corners of that vertex (their origins), taken in node order
-//! then corner-code order, the first one on ties (so, the same as before
-//! the merges); candidates after an exact one (distance 0) are not
-//! computed. Vertices are processed in
-//! parallel (rayon); each vertex's corners are visited in the same order
+//! exact). Output: per vertex, the caller's value (e.g. a position,
+//! written once) of the candidate with the smallest distance among the
+//! corners of that vertex (their origins), taken in node order then
+//! corner-code order, the first one on ties (so, the same as before the
+//! merges); candidates after an exact one (distance 0) are not computed.
+//! Vertices are processed in parallel (rayon); each vertex's corners are visited in the same order
 //! as a sequential sweep over the cells would, so the result does not
 //! depend on the thread count.
 
