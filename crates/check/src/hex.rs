@@ -29,6 +29,7 @@
 //!   non-manifold edges/vertices are those of the boundary surface;
 //! - the volume Euler characteristic is `V − E + F − C` over good cells.
 
+use crate::classify::{classify, out_of_range, repeated, Class};
 use crate::quad::{check_quad_mesh, QuadReport};
 use crate::tally::Tally;
 use dualex_util::bucket;
@@ -111,7 +112,9 @@ pub fn check_hex_mesh(
         cells: hexes.len(),
         ..HexReport::default()
     };
-    let good = classify_cells(n_vertices, hexes, &mut r);
+    let sorted = classify(hexes, |h| class_of(n_vertices, h));
+    (r.out_of_range_cells, r.degenerate_cells) = (sorted.out_of_range, sorted.degenerate);
+    let good = sorted.good;
     // independent passes, one after the other (side by side, their
     // buffers, allocated on the pool's threads, raised the peak); the
     // faces (the largest buffer, 192 bytes a cell) are gone before the
@@ -131,44 +134,12 @@ pub fn check_hex_mesh(
     r
 }
 
-/// Sorts cells into out of range, degenerate and good (returned); the
-/// cells are judged in parallel ([`class_of`]), the lists made in cell
-/// order.
-fn classify_cells(n: usize, hexes: &[[u32; 8]], r: &mut HexReport) -> Vec<[u32; 8]> {
-    use rayon::prelude::*;
-    let class: Vec<Class> = hexes
-        .par_iter()
-        .with_min_len(1 << 12)
-        .map(|h| class_of(n, h))
-        .collect();
-    let mut good = Vec::with_capacity(hexes.len());
-    for (c, (h, class)) in hexes.iter().zip(&class).enumerate() {
-        match class {
-            Class::OutOfRange => r.out_of_range_cells.push(c),
-            Class::Degenerate => r.degenerate_cells.push(c),
-            Class::Good => good.push(*h),
-        }
-    }
-    good
-}
-
-/// What [`classify_cells`] finds a cell to be.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Class {
-    /// A vertex at or beyond the vertex count.
-    OutOfRange,
-    /// A repeated vertex, or fewer than 6 distinct faces.
-    Degenerate,
-    /// Neither.
-    Good,
-}
-
 /// The [`Class`] of hex `h` among `n` vertices.
 fn class_of(n: usize, h: &[u32; 8]) -> Class {
-    if h.iter().any(|&v| v as usize >= n) {
+    if out_of_range(n, h) {
         return Class::OutOfRange;
     }
-    let repeated = (0..8).any(|i| h[..i].contains(&h[i]));
+    let repeated = repeated(h);
     let mut keys = HEX_FACES.map(|f| face_key(h, &f));
     keys.sort_unstable();
     let distinct = 1 + keys.windows(2).filter(|w| w[0] != w[1]).count();

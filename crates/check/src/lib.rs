@@ -19,6 +19,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod classify;
 pub mod glued;
 #[cfg(test)]
 mod glued_tests;

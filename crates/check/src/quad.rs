@@ -19,10 +19,10 @@
 //!   (number of distinct edges at a vertex) are histogrammed separately for
 //!   interior and boundary vertices.
 
+use crate::classify::{classify, out_of_range, repeated, Class};
 use crate::tally::Tally;
 use dualex_util::bucket;
 use dualex_util::union_find::UnionFind;
-use std::borrow::Cow;
 use std::collections::{BTreeMap, HashMap};
 
 /// What [`check_quad_mesh`] found; see the module docs for definitions.
@@ -82,7 +82,9 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
         faces: quads.len(),
         ..QuadReport::default()
     };
-    let good = classify_faces(n_vertices, quads, &mut r);
+    let sorted = classify(quads, |q| class_of(n_vertices, q));
+    (r.out_of_range_faces, r.degenerate_faces) = (sorted.out_of_range, sorted.degenerate);
+    let good = sorted.good;
     let mut used = vec![false; n_vertices];
     for q in good.iter() {
         for &v in q {
@@ -139,34 +141,15 @@ pub fn check_quad_mesh(n_vertices: usize, quads: &[[u32; 4]]) -> QuadReport {
     r
 }
 
-/// Sorts faces into out of range, degenerate and good (returned: the
-/// input itself, borrowed, when every face is good).
-fn classify_faces<'a>(n: usize, quads: &'a [[u32; 4]], r: &mut QuadReport) -> Cow<'a, [[u32; 4]]> {
-    if quads.iter().all(|q| good_face(n, q)) {
-        return Cow::Borrowed(quads);
+/// The [`Class`] of face `q` among `n` vertices.
+fn class_of(n: usize, q: &[u32; 4]) -> Class {
+    if out_of_range(n, q) {
+        Class::OutOfRange
+    } else if repeated(q) {
+        Class::Degenerate
+    } else {
+        Class::Good
     }
-    Cow::Owned(sort_faces(n, quads, r))
-}
-
-/// Whether a face's four vertices are distinct and below `n`.
-fn good_face(n: usize, q: &[u32; 4]) -> bool {
-    q.iter().all(|&v| (v as usize) < n) && (1..4).all(|i| !q[..i].contains(&q[i]))
-}
-
-/// [`classify_faces`]' sort: the out of range and degenerate faces in
-/// the report, the good ones returned.
-fn sort_faces(n: usize, quads: &[[u32; 4]], r: &mut QuadReport) -> Vec<[u32; 4]> {
-    let mut good = Vec::with_capacity(quads.len());
-    for (f, q) in quads.iter().enumerate() {
-        if q.iter().any(|&v| v as usize >= n) {
-            r.out_of_range_faces.push(f);
-        } else if (0..4).any(|i| q[..i].contains(&q[i])) {
-            r.degenerate_faces.push(f);
-        } else {
-            good.push(*q);
-        }
-    }
-    good
 }
 
 /// (vertex, previous vertex, next vertex) for every corner of every face

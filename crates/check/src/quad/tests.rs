@@ -1,5 +1,6 @@
 use super::*;
 use crate::test_meshes::{cube, grid, torus};
+use std::borrow::Cow;
 
 /// A xorshift generator from `seed`: draws below `m`.
 fn xorshift(seed: u64) -> impl FnMut(u64) -> u32 {
@@ -123,13 +124,30 @@ fn small_fans_count_as_the_general_rule() {
     }
 }
 
+/// The former classification (always a copy), the oracle of
+/// [`classify`] with the quad check's [`class_of`].
+fn sort_faces(n: usize, quads: &[[u32; 4]]) -> (Vec<[u32; 4]>, Vec<usize>, Vec<usize>) {
+    let (mut good, mut out, mut degenerate) = (Vec::new(), Vec::new(), Vec::new());
+    for (f, q) in quads.iter().enumerate() {
+        if q.iter().any(|&v| v as usize >= n) {
+            out.push(f);
+        } else if (0..4).any(|i| q[..i].contains(&q[i])) {
+            degenerate.push(f);
+        } else {
+            good.push(*q);
+        }
+    }
+    (good, out, degenerate)
+}
+
 #[test]
 fn good_faces_borrowed_are_the_sorted_ones() {
-    // the former classification (`sort_faces`, always a copy) as oracle:
-    // all good (borrowed), one face out of range, one repeated corner at
-    // each pair of places, random faces over few ids
+    // the former classification as oracle: all good (borrowed), one face
+    // out of range, one repeated corner at each pair of places, random
+    // faces over few ids; across task boundaries (10 000 faces)
     let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
-    let mut cases: Vec<(usize, Vec<[u32; 4]>)> = vec![(0, vec![]), torus(5, 3), grid(3, 4)];
+    let mut cases: Vec<(usize, Vec<[u32; 4]>)> =
+        vec![(0, vec![]), torus(5, 3), grid(3, 4), torus(100, 100)];
     let (n, q) = torus(4, 4);
     for f in [0, 7, 15] {
         for i in 0..4 {
@@ -143,18 +161,25 @@ fn good_faces_borrowed_are_the_sorted_ones() {
             }
         }
     }
+    let (n, mut big) = torus(100, 100);
+    big[9_000][2] = big[9_000][0];
+    big[4_100][1] = n as u32;
+    cases.push((n, big));
     for _ in 0..300 {
         let n = 1 + next(9) as usize;
         let faces = (0..next(12)).map(|_| std::array::from_fn(|_| next(n as u64 + 1)));
         cases.push((n, faces.collect()));
     }
     for (n, q) in &cases {
-        let (mut r, mut oracle) = (QuadReport::default(), QuadReport::default());
-        let good = classify_faces(*n, q, &mut r);
-        let want = sort_faces(*n, q, &mut oracle);
-        assert_eq!(*good, want[..], "{n} {q:?}");
-        assert_eq!(r, oracle, "{n} {q:?}");
-        assert_eq!(matches!(good, Cow::Borrowed(_)), want.len() == q.len());
+        let got = classify(q, |f| class_of(*n, f));
+        let (good, out, degenerate) = sort_faces(*n, q);
+        assert_eq!(*got.good, good[..], "{n} {q:?}");
+        assert_eq!(
+            (got.out_of_range, got.degenerate),
+            (out, degenerate),
+            "{n} {q:?}"
+        );
+        assert_eq!(matches!(got.good, Cow::Borrowed(_)), good.len() == q.len());
     }
 }
 
